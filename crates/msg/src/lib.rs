@@ -1,0 +1,1 @@
+//! ROS interface model: parser, registry and dynamic codecs (see issue 4).

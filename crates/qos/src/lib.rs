@@ -1,0 +1,1 @@
+//! Schedulers, drop policies, link estimation and capacity sharing (see issue 3).
