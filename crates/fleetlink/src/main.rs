@@ -8,7 +8,11 @@ mod cmd;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
-#[command(name = "fleetlink", version, about = "Communication for robot fleets: hub, agent, demo and tools")]
+#[command(
+    name = "fleetlink",
+    version,
+    about = "Communication for robot fleets: hub, agent, demo and tools"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

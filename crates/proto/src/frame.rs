@@ -1,0 +1,524 @@
+//! `fleetlink.v1` frames: the binary protocol between agents and the hub.
+//!
+//! A WebSocket binary message carries one or more frames back to back, so a sender can
+//! pack many small messages into one write. Every frame is
+//!
+//! ```text
+//! +---------+----------------+--------------------+
+//! | kind u8 | body_len varint| body (body_len)    |
+//! +---------+----------------+--------------------+
+//! ```
+//!
+//! and a decoder skips frames of unknown kind and ignores bytes after the fields it knows,
+//! so later versions can add frames and append fields. Body layouts are drawn per variant
+//! below and in `docs/protocol.md`.
+
+use bytes::{BufMut, Bytes, BytesMut};
+
+use crate::error::DecodeError;
+use crate::payload::{Encoding, Schema};
+use crate::wire::{Reader, put_bytes, put_str, put_varint, varint_len};
+
+/// The WebSocket subprotocol name agents ask for.
+pub const SUBPROTOCOL: &str = "fleetlink.v1";
+/// Protocol version carried in `HELLO`.
+pub const VERSION: u32 = 1;
+/// Payloads larger than this are sent as `CHUNK` frames by default.
+pub const DEFAULT_CHUNK_SIZE: usize = 64 * 1024;
+
+/// Frame kind bytes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(u8)]
+pub enum FrameKind {
+    Hello = 0x01,
+    Welcome = 0x02,
+    Advertise = 0x03,
+    Unadvertise = 0x04,
+    Subscribe = 0x05,
+    Unsubscribe = 0x06,
+    Message = 0x07,
+    Chunk = 0x08,
+    Ping = 0x09,
+    Pong = 0x0a,
+    Ack = 0x0b,
+    Status = 0x0c,
+}
+
+/// Severity of a `STATUS` frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(u8)]
+pub enum Level {
+    Info = 0,
+    Warning = 1,
+    Error = 2,
+}
+
+impl Level {
+    fn from_u8(v: u8) -> Level {
+        match v {
+            0 => Level::Info,
+            1 => Level::Warning,
+            _ => Level::Error,
+        }
+    }
+
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Level::Info => "info",
+            Level::Warning => "warning",
+            Level::Error => "error",
+        }
+    }
+}
+
+/// `ADVERTISE` flag: the publisher wants late subscribers to get its last message.
+pub const ADVERTISE_LATCHED: u8 = 0x01;
+/// `SUBSCRIBE` flag: `pattern` is a regular expression matched against whole topic names.
+pub const SUBSCRIBE_REGEX: u8 = 0x01;
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Frame {
+    /// Agent → hub, first frame on a connection.
+    /// `version varint | robot str | token str | heartbeat_ms varint`
+    Hello {
+        version: u32,
+        robot: String,
+        token: String,
+        heartbeat_ms: u32,
+    },
+    /// Hub → agent, answers `HELLO`.
+    /// `session str | namespace str | hub_time_ns u64le | heartbeat_ms varint`
+    Welcome {
+        session: String,
+        namespace: String,
+        hub_time_ns: u64,
+        heartbeat_ms: u32,
+    },
+    /// Either direction: binds `alias` to a topic for the rest of the connection.
+    /// `alias varint | topic str | type str | schema_encoding str | schema_text bytes |
+    ///  encoding u8 | flags u8`
+    Advertise {
+        alias: u32,
+        topic: String,
+        schema: Schema,
+        encoding: Encoding,
+        flags: u8,
+    },
+    /// `alias varint`
+    Unadvertise { alias: u32 },
+    /// Either direction: ask the peer for topics matching `pattern`.
+    /// `id varint | pattern str | flags u8 | throttle_ms varint | queue_length varint`
+    Subscribe {
+        id: u32,
+        pattern: String,
+        flags: u8,
+        throttle_ms: u32,
+        queue_length: u32,
+    },
+    /// `id varint`
+    Unsubscribe { id: u32 },
+    /// One whole message. `alias varint | seq varint | stamp_ns u64le | payload (rest)`
+    Message {
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Bytes,
+    },
+    /// A piece of a large message; pieces of one message arrive in order, pieces of
+    /// different topics may interleave.
+    /// `alias varint | seq varint | stamp_ns u64le | total_len varint | offset varint |
+    ///  data (rest)`
+    Chunk {
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        total_len: u64,
+        offset: u64,
+        data: Bytes,
+    },
+    /// `id u64le | sent_ns u64le`
+    Ping { id: u64, sent_ns: u64 },
+    /// `id u64le | echo_ns u64le | responder_ns u64le`
+    Pong {
+        id: u64,
+        echo_ns: u64,
+        responder_ns: u64,
+    },
+    /// Receiver → sender: this many `MESSAGE`/`CHUNK` frames arrived since the last `ACK`.
+    /// `frames varint`
+    Ack { frames: u32 },
+    /// `level u8 | code varint | alias varint (0 = none) | text str`
+    Status {
+        level: Level,
+        code: u32,
+        alias: u32,
+        text: String,
+    },
+    /// A kind this decoder does not know; skipped.
+    Unknown { kind: u8 },
+}
+
+impl Frame {
+    pub fn kind_byte(&self) -> u8 {
+        match self {
+            Frame::Hello { .. } => FrameKind::Hello as u8,
+            Frame::Welcome { .. } => FrameKind::Welcome as u8,
+            Frame::Advertise { .. } => FrameKind::Advertise as u8,
+            Frame::Unadvertise { .. } => FrameKind::Unadvertise as u8,
+            Frame::Subscribe { .. } => FrameKind::Subscribe as u8,
+            Frame::Unsubscribe { .. } => FrameKind::Unsubscribe as u8,
+            Frame::Message { .. } => FrameKind::Message as u8,
+            Frame::Chunk { .. } => FrameKind::Chunk as u8,
+            Frame::Ping { .. } => FrameKind::Ping as u8,
+            Frame::Pong { .. } => FrameKind::Pong as u8,
+            Frame::Ack { .. } => FrameKind::Ack as u8,
+            Frame::Status { .. } => FrameKind::Status as u8,
+            Frame::Unknown { kind } => *kind,
+        }
+    }
+
+    /// Appends this frame to `buf`.
+    pub fn encode(&self, buf: &mut BytesMut) {
+        let mut body = BytesMut::new();
+        self.encode_body(&mut body);
+        buf.reserve(1 + varint_len(body.len() as u64) + body.len());
+        buf.put_u8(self.kind_byte());
+        put_varint(buf, body.len() as u64);
+        buf.put_slice(&body);
+    }
+
+    /// This frame alone, as the bytes of one WebSocket message.
+    pub fn to_bytes(&self) -> Bytes {
+        let mut b = BytesMut::new();
+        self.encode(&mut b);
+        b.freeze()
+    }
+
+    fn encode_body(&self, b: &mut BytesMut) {
+        match self {
+            Frame::Hello {
+                version,
+                robot,
+                token,
+                heartbeat_ms,
+            } => {
+                put_varint(b, u64::from(*version));
+                put_str(b, robot);
+                put_str(b, token);
+                put_varint(b, u64::from(*heartbeat_ms));
+            }
+            Frame::Welcome {
+                session,
+                namespace,
+                hub_time_ns,
+                heartbeat_ms,
+            } => {
+                put_str(b, session);
+                put_str(b, namespace);
+                b.put_u64_le(*hub_time_ns);
+                put_varint(b, u64::from(*heartbeat_ms));
+            }
+            Frame::Advertise {
+                alias,
+                topic,
+                schema,
+                encoding,
+                flags,
+            } => {
+                put_varint(b, u64::from(*alias));
+                put_str(b, topic);
+                put_str(b, &schema.type_name);
+                put_str(b, &schema.encoding);
+                put_bytes(b, schema.text.as_bytes());
+                b.put_u8(*encoding as u8);
+                b.put_u8(*flags);
+            }
+            Frame::Unadvertise { alias } => put_varint(b, u64::from(*alias)),
+            Frame::Subscribe {
+                id,
+                pattern,
+                flags,
+                throttle_ms,
+                queue_length,
+            } => {
+                put_varint(b, u64::from(*id));
+                put_str(b, pattern);
+                b.put_u8(*flags);
+                put_varint(b, u64::from(*throttle_ms));
+                put_varint(b, u64::from(*queue_length));
+            }
+            Frame::Unsubscribe { id } => put_varint(b, u64::from(*id)),
+            Frame::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+            } => {
+                put_message_header(b, *alias, *seq, *stamp_ns);
+                b.put_slice(payload);
+            }
+            Frame::Chunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            } => {
+                put_message_header(b, *alias, *seq, *stamp_ns);
+                put_varint(b, *total_len);
+                put_varint(b, *offset);
+                b.put_slice(data);
+            }
+            Frame::Ping { id, sent_ns } => {
+                b.put_u64_le(*id);
+                b.put_u64_le(*sent_ns);
+            }
+            Frame::Pong {
+                id,
+                echo_ns,
+                responder_ns,
+            } => {
+                b.put_u64_le(*id);
+                b.put_u64_le(*echo_ns);
+                b.put_u64_le(*responder_ns);
+            }
+            Frame::Ack { frames } => put_varint(b, u64::from(*frames)),
+            Frame::Status {
+                level,
+                code,
+                alias,
+                text,
+            } => {
+                b.put_u8(*level as u8);
+                put_varint(b, u64::from(*code));
+                put_varint(b, u64::from(*alias));
+                put_str(b, text);
+            }
+            Frame::Unknown { .. } => {}
+        }
+    }
+
+    /// Decodes the frame starting at `pos` in `buf`; returns it and where the next frame
+    /// starts. Payload bytes are shared slices of `buf`.
+    pub fn decode(buf: &Bytes, pos: usize) -> Result<(Frame, usize), DecodeError> {
+        let mut head = Reader::sub(buf, pos, buf.len() - pos);
+        let kind = head.u8("frame.kind")?;
+        let len = head.len_prefix("frame.body_len")?;
+        let start = head.position();
+        let mut r = Reader::sub(buf, start, len);
+        let frame = decode_body(kind, &mut r)?;
+        Ok((frame, start + len))
+    }
+}
+
+/// Writes the fields `MESSAGE` and `CHUNK` start with.
+fn put_message_header(b: &mut impl BufMut, alias: u32, seq: u64, stamp_ns: u64) {
+    put_varint(b, u64::from(alias));
+    put_varint(b, seq);
+    b.put_u64_le(stamp_ns);
+}
+
+/// Appends a `MESSAGE` frame whose payload is `payload`, copying it once into `buf`.
+/// Same bytes as `Frame::Message{..}.encode` without building the frame first.
+pub fn encode_message(buf: &mut BytesMut, alias: u32, seq: u64, stamp_ns: u64, payload: &[u8]) {
+    let body_len = varint_len(u64::from(alias)) + varint_len(seq) + 8 + payload.len();
+    buf.reserve(1 + varint_len(body_len as u64) + body_len);
+    buf.put_u8(FrameKind::Message as u8);
+    put_varint(buf, body_len as u64);
+    put_message_header(buf, alias, seq, stamp_ns);
+    buf.put_slice(payload);
+}
+
+/// Appends a `CHUNK` frame carrying `data`, which starts at `offset` of a message of
+/// `total_len` bytes.
+pub fn encode_chunk(
+    buf: &mut BytesMut,
+    alias: u32,
+    seq: u64,
+    stamp_ns: u64,
+    total_len: u64,
+    offset: u64,
+    data: &[u8],
+) {
+    let body_len = varint_len(u64::from(alias))
+        + varint_len(seq)
+        + 8
+        + varint_len(total_len)
+        + varint_len(offset)
+        + data.len();
+    buf.reserve(1 + varint_len(body_len as u64) + body_len);
+    buf.put_u8(FrameKind::Chunk as u8);
+    put_varint(buf, body_len as u64);
+    put_message_header(buf, alias, seq, stamp_ns);
+    put_varint(buf, total_len);
+    put_varint(buf, offset);
+    buf.put_slice(data);
+}
+
+fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
+    let frame = match kind {
+        0x01 => Frame::Hello {
+            version: r.varint_u32("HELLO.version")?,
+            robot: r.string("HELLO.robot")?,
+            token: r.string("HELLO.token")?,
+            heartbeat_ms: r.varint_u32("HELLO.heartbeat_ms")?,
+        },
+        0x02 => Frame::Welcome {
+            session: r.string("WELCOME.session")?,
+            namespace: r.string("WELCOME.namespace")?,
+            hub_time_ns: r.u64_le("WELCOME.hub_time_ns")?,
+            heartbeat_ms: r.varint_u32("WELCOME.heartbeat_ms")?,
+        },
+        0x03 => {
+            let alias = r.varint_u32("ADVERTISE.alias")?;
+            let topic = r.string("ADVERTISE.topic")?;
+            let type_name = r.string("ADVERTISE.type")?;
+            let schema_encoding = r.string("ADVERTISE.schema_encoding")?;
+            let text = r.string("ADVERTISE.schema_text")?;
+            let enc = r.u8("ADVERTISE.encoding")?;
+            let encoding = Encoding::from_u8(enc).ok_or_else(|| {
+                DecodeError::invalid("ADVERTISE.encoding", format!("unknown encoding {enc}"))
+            })?;
+            let flags = r.u8("ADVERTISE.flags")?;
+            Frame::Advertise {
+                alias,
+                topic,
+                schema: Schema {
+                    type_name,
+                    encoding: schema_encoding,
+                    text,
+                },
+                encoding,
+                flags,
+            }
+        }
+        0x04 => Frame::Unadvertise {
+            alias: r.varint_u32("UNADVERTISE.alias")?,
+        },
+        0x05 => Frame::Subscribe {
+            id: r.varint_u32("SUBSCRIBE.id")?,
+            pattern: r.string("SUBSCRIBE.pattern")?,
+            flags: r.u8("SUBSCRIBE.flags")?,
+            throttle_ms: r.varint_u32("SUBSCRIBE.throttle_ms")?,
+            queue_length: r.varint_u32("SUBSCRIBE.queue_length")?,
+        },
+        0x06 => Frame::Unsubscribe {
+            id: r.varint_u32("UNSUBSCRIBE.id")?,
+        },
+        0x07 => Frame::Message {
+            alias: r.varint_u32("MESSAGE.alias")?,
+            seq: r.varint("MESSAGE.seq")?,
+            stamp_ns: r.u64_le("MESSAGE.stamp_ns")?,
+            payload: r.rest(),
+        },
+        0x08 => {
+            let alias = r.varint_u32("CHUNK.alias")?;
+            let seq = r.varint("CHUNK.seq")?;
+            let stamp_ns = r.u64_le("CHUNK.stamp_ns")?;
+            let total_len = r.varint("CHUNK.total_len")?;
+            let offset = r.varint("CHUNK.offset")?;
+            let data = r.rest();
+            if offset
+                .checked_add(data.len() as u64)
+                .is_none_or(|end| end > total_len)
+            {
+                return Err(DecodeError::invalid(
+                    "CHUNK.offset",
+                    format!(
+                        "{} bytes at offset {offset} overrun total length {total_len}",
+                        data.len()
+                    ),
+                ));
+            }
+            Frame::Chunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            }
+        }
+        0x09 => Frame::Ping {
+            id: r.u64_le("PING.id")?,
+            sent_ns: r.u64_le("PING.sent_ns")?,
+        },
+        0x0a => Frame::Pong {
+            id: r.u64_le("PONG.id")?,
+            echo_ns: r.u64_le("PONG.echo_ns")?,
+            responder_ns: r.u64_le("PONG.responder_ns")?,
+        },
+        0x0b => Frame::Ack {
+            frames: r.varint_u32("ACK.frames")?,
+        },
+        0x0c => Frame::Status {
+            level: Level::from_u8(r.u8("STATUS.level")?),
+            code: r.varint_u32("STATUS.code")?,
+            alias: r.varint_u32("STATUS.alias")?,
+            text: r.string("STATUS.text")?,
+        },
+        other => Frame::Unknown { kind: other },
+    };
+    Ok(frame)
+}
+
+/// Iterates over the frames packed in one WebSocket message. Stops at the first error.
+pub fn frames(buf: &Bytes) -> Frames<'_> {
+    Frames {
+        buf,
+        pos: 0,
+        failed: false,
+    }
+}
+
+pub struct Frames<'a> {
+    buf: &'a Bytes,
+    pos: usize,
+    failed: bool,
+}
+
+impl Iterator for Frames<'_> {
+    type Item = Result<Frame, DecodeError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.failed || self.pos >= self.buf.len() {
+            return None;
+        }
+        match Frame::decode(self.buf, self.pos) {
+            Ok((frame, next)) => {
+                self.pos = next;
+                Some(Ok(frame))
+            }
+            Err(e) => {
+                self.failed = true;
+                Some(Err(e))
+            }
+        }
+    }
+}
+
+/// Splits `payload` into `CHUNK` frames of at most `chunk_size` data bytes each. The
+/// pieces share `payload`'s storage.
+pub fn chunk_frames(
+    alias: u32,
+    seq: u64,
+    stamp_ns: u64,
+    payload: &Bytes,
+    chunk_size: usize,
+) -> impl Iterator<Item = Frame> + '_ {
+    let total = payload.len();
+    let step = chunk_size.max(1);
+    (0..total.div_ceil(step)).map(move |i| {
+        let start = i * step;
+        let end = (start + step).min(total);
+        Frame::Chunk {
+            alias,
+            seq,
+            stamp_ns,
+            total_len: total as u64,
+            offset: start as u64,
+            data: payload.slice(start..end),
+        }
+    })
+}

@@ -1,0 +1,452 @@
+//! Parsing client operations.
+//!
+//! Both frame kinds are first turned into a small JSON envelope (the operation's scalar
+//! fields) plus, for operations that carry a message, the message object as encoded bytes
+//! in the frame's own encoding. Field checks then run once, on the envelope.
+
+use bytes::Bytes;
+use serde_json::{Map, Value};
+
+use crate::payload::{Encoding, Payload};
+use crate::rosbridge::convert;
+
+/// A parsed client operation with the `id` it carried (echoed verbatim in replies).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request {
+    pub id: Option<Value>,
+    pub op: Op,
+}
+
+/// How a subscriber wants messages delivered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Compression {
+    #[default]
+    None,
+    /// The message as CBOR (typed arrays, byte strings) in a binary frame.
+    Cbor,
+    /// The raw ROS serialization in a CBOR envelope (`secs`, `nsecs`, `bytes`).
+    CborRaw,
+    /// rosbridge's PNG packing; not supported, served as `none` with a warning.
+    Png,
+}
+
+impl Compression {
+    fn parse(s: &str) -> Option<Compression> {
+        Some(match s {
+            "none" | "" => Compression::None,
+            "cbor" => Compression::Cbor,
+            "cbor-raw" => Compression::CborRaw,
+            "png" => Compression::Png,
+            _ => return None,
+        })
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Op {
+    Advertise {
+        topic: String,
+        type_name: String,
+        latch: bool,
+        queue_size: u32,
+    },
+    Unadvertise {
+        topic: String,
+    },
+    Publish {
+        topic: String,
+        msg: Payload,
+    },
+    Subscribe {
+        topic: String,
+        type_name: Option<String>,
+        throttle_rate: u32,
+        queue_length: u32,
+        fragment_size: Option<u32>,
+        compression: Compression,
+        /// fleetlink extension: `topic` is a regular expression matched against whole
+        /// topic names (field `"regex": true`).
+        regex: bool,
+    },
+    Unsubscribe {
+        topic: String,
+    },
+    CallService {
+        service: String,
+        type_name: Option<String>,
+        args: Payload,
+    },
+    /// rosbridge's authentication operation; fields kept for the auth layer.
+    Auth {
+        fields: Map<String, Value>,
+    },
+    /// Valid envelope, operation name we do not serve.
+    Unknown {
+        op: String,
+    },
+}
+
+impl Op {
+    pub fn name(&self) -> &str {
+        match self {
+            Op::Advertise { .. } => "advertise",
+            Op::Unadvertise { .. } => "unadvertise",
+            Op::Publish { .. } => "publish",
+            Op::Subscribe { .. } => "subscribe",
+            Op::Unsubscribe { .. } => "unsubscribe",
+            Op::CallService { .. } => "call_service",
+            Op::Auth { .. } => "auth",
+            Op::Unknown { op } => op,
+        }
+    }
+}
+
+/// Why a frame could not be turned into a [`Request`]. Carries the `id` and `op` when the
+/// envelope got far enough to have them, so the error reply can reference the request.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct ParseError {
+    pub id: Option<Value>,
+    pub op: Option<String>,
+    pub message: String,
+}
+
+impl ParseError {
+    fn new(message: impl Into<String>) -> Self {
+        ParseError {
+            id: None,
+            op: None,
+            message: message.into(),
+        }
+    }
+}
+
+impl Request {
+    /// Parses a JSON text frame.
+    pub fn from_json(text: &[u8]) -> Result<Request, ParseError> {
+        let value: Value = serde_json::from_slice(text)
+            .map_err(|e| ParseError::new(format!("invalid JSON: {e}")))?;
+        let Value::Object(mut obj) = value else {
+            return Err(ParseError::new("invalid operation: expected a JSON object"));
+        };
+        let body = match take_body_field(&obj) {
+            Some(key) => obj.remove(key).map(|v| {
+                let bytes = serde_json::to_vec(&v).expect("a parsed JSON value serializes");
+                Payload::new(Encoding::Json, bytes)
+            }),
+            None => None,
+        };
+        parse_envelope(obj, body)
+    }
+
+    /// Parses a CBOR binary frame.
+    pub fn from_cbor(data: &[u8]) -> Result<Request, ParseError> {
+        let value: ciborium::Value = ciborium::from_reader(data)
+            .map_err(|e| ParseError::new(format!("invalid CBOR: {e}")))?;
+        let ciborium::Value::Map(entries) = value else {
+            return Err(ParseError::new("invalid operation: expected a CBOR map"));
+        };
+        let mut obj = Map::new();
+        let mut body_value = None;
+        let mut pending = Vec::new();
+        for (k, v) in entries {
+            let ciborium::Value::Text(key) = k else {
+                return Err(ParseError::new(
+                    "invalid operation: CBOR map keys must be text",
+                ));
+            };
+            pending.push((key, v));
+        }
+        let op_name = pending.iter().find_map(|(k, v)| match (k.as_str(), v) {
+            ("op", ciborium::Value::Text(s)) => Some(s.clone()),
+            _ => None,
+        });
+        let body_key = op_name.as_deref().and_then(body_field_for);
+        for (key, v) in pending {
+            if Some(key.as_str()) == body_key {
+                body_value = Some(v);
+            } else {
+                let j = convert::cbor_value_to_json(v)
+                    .map_err(|e| ParseError::new(format!("invalid CBOR field '{key}': {e}")))?;
+                obj.insert(key, j);
+            }
+        }
+        let body = match body_value {
+            Some(v) => {
+                let mut out = Vec::new();
+                ciborium::into_writer(&v, &mut out)
+                    .map_err(|e| ParseError::new(format!("cannot re-encode CBOR message: {e}")))?;
+                Some(Payload::new(Encoding::Cbor, out))
+            }
+            None => None,
+        };
+        parse_envelope(obj, body)
+    }
+}
+
+/// The field that holds a message object, for operations that carry one.
+fn body_field_for(op: &str) -> Option<&'static str> {
+    match op {
+        "publish" => Some("msg"),
+        "call_service" => Some("args"),
+        _ => None,
+    }
+}
+
+fn take_body_field(obj: &Map<String, Value>) -> Option<&'static str> {
+    obj.get("op")
+        .and_then(Value::as_str)
+        .and_then(body_field_for)
+}
+
+fn parse_envelope(
+    mut obj: Map<String, Value>,
+    body: Option<Payload>,
+) -> Result<Request, ParseError> {
+    let id = obj.remove("id");
+    let op = match obj.get("op") {
+        Some(Value::String(s)) => s.clone(),
+        Some(other) => {
+            return Err(ParseError {
+                id,
+                op: None,
+                message: format!("field 'op' must be a string, got {}", json_kind(other)),
+            });
+        }
+        None => {
+            return Err(ParseError {
+                id,
+                op: None,
+                message: "missing field 'op'".into(),
+            });
+        }
+    };
+    let fields = Fields { obj: &obj, op: &op };
+    let result = (|| -> Result<Op, String> {
+        Ok(match op.as_str() {
+            "advertise" => Op::Advertise {
+                topic: fields.topic("topic")?,
+                type_name: fields.req_str("type")?,
+                latch: fields.opt_bool("latch")?.unwrap_or(false),
+                queue_size: fields.opt_u32("queue_size")?.unwrap_or(100),
+            },
+            "unadvertise" => Op::Unadvertise {
+                topic: fields.topic("topic")?,
+            },
+            "publish" => Op::Publish {
+                topic: fields.topic("topic")?,
+                msg: body
+                    .clone()
+                    .ok_or_else(|| "missing field 'msg'".to_string())?,
+            },
+            "subscribe" => {
+                let compression = match fields.opt_str("compression")? {
+                    None => Compression::None,
+                    Some(s) => Compression::parse(&s).ok_or_else(|| {
+                        format!("unknown compression '{s}' (use none, cbor or cbor-raw)")
+                    })?,
+                };
+                let regex = fields.opt_bool("regex")?.unwrap_or(false);
+                Op::Subscribe {
+                    topic: if regex {
+                        fields.req_str("topic")?
+                    } else {
+                        fields.topic("topic")?
+                    },
+                    type_name: fields.opt_str("type")?,
+                    throttle_rate: fields.opt_u32("throttle_rate")?.unwrap_or(0),
+                    queue_length: fields.opt_u32("queue_length")?.unwrap_or(0),
+                    fragment_size: fields.opt_u32("fragment_size")?,
+                    compression,
+                    regex,
+                }
+            }
+            "unsubscribe" => Op::Unsubscribe {
+                topic: fields.req_str("topic")?,
+            },
+            "call_service" => Op::CallService {
+                service: fields.req_str("service")?,
+                type_name: fields.opt_str("type")?,
+                args: body.clone().unwrap_or_else(|| Payload::json(&b"{}"[..])),
+            },
+            "auth" => Op::Auth {
+                fields: obj.clone(),
+            },
+            _ => Op::Unknown { op: op.clone() },
+        })
+    })();
+    match result {
+        Ok(op) => Ok(Request { id, op }),
+        Err(message) => Err(ParseError {
+            id,
+            op: Some(op),
+            message,
+        }),
+    }
+}
+
+struct Fields<'a> {
+    obj: &'a Map<String, Value>,
+    op: &'a str,
+}
+
+impl Fields<'_> {
+    fn req_str(&self, key: &str) -> Result<String, String> {
+        match self.obj.get(key) {
+            Some(Value::String(s)) => Ok(s.clone()),
+            Some(other) => Err(format!(
+                "{}: field '{key}' must be a string, got {}",
+                self.op,
+                json_kind(other)
+            )),
+            None => Err(format!("{}: missing field '{key}'", self.op)),
+        }
+    }
+
+    /// A topic name: non-empty, no whitespace or control characters.
+    fn topic(&self, key: &str) -> Result<String, String> {
+        let s = self.req_str(key)?;
+        if s.is_empty() || s.len() > 1024 || s.chars().any(|c| c.is_whitespace() || c.is_control())
+        {
+            return Err(format!(
+                "{}: field '{key}' is not a valid topic name: {s:?}",
+                self.op
+            ));
+        }
+        Ok(s)
+    }
+
+    fn opt_str(&self, key: &str) -> Result<Option<String>, String> {
+        match self.obj.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::String(s)) => Ok(Some(s.clone())),
+            Some(other) => Err(format!(
+                "{}: field '{key}' must be a string, got {}",
+                self.op,
+                json_kind(other)
+            )),
+        }
+    }
+
+    fn opt_bool(&self, key: &str) -> Result<Option<bool>, String> {
+        match self.obj.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::Bool(b)) => Ok(Some(*b)),
+            Some(other) => Err(format!(
+                "{}: field '{key}' must be a boolean, got {}",
+                self.op,
+                json_kind(other)
+            )),
+        }
+    }
+
+    fn opt_u32(&self, key: &str) -> Result<Option<u32>, String> {
+        match self.obj.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::Number(n)) => {
+                let v = n
+                    .as_u64()
+                    .or_else(|| {
+                        n.as_f64()
+                            .filter(|f| *f >= 0.0 && f.fract() == 0.0)
+                            .map(|f| f as u64)
+                    })
+                    .ok_or_else(|| {
+                        format!(
+                            "{}: field '{key}' must be a non-negative integer, got {n}",
+                            self.op
+                        )
+                    })?;
+                u32::try_from(v)
+                    .map(Some)
+                    .map_err(|_| format!("{}: field '{key}' is too large: {v}", self.op))
+            }
+            Some(other) => Err(format!(
+                "{}: field '{key}' must be a number, got {}",
+                self.op,
+                json_kind(other)
+            )),
+        }
+    }
+}
+
+fn json_kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// The `msg` of a publish as a shared slice, for tests and tools.
+pub fn payload_bytes(op: &Op) -> Option<&Bytes> {
+    match op {
+        Op::Publish { msg, .. } => Some(&msg.bytes),
+        Op::CallService { args, .. } => Some(&args.bytes),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn publish_keeps_message_as_json_bytes() {
+        let r =
+            Request::from_json(br#"{"op":"publish","id":"p1","topic":"/a","msg":{"data":"hi"}}"#)
+                .unwrap();
+        assert_eq!(r.id, Some(Value::String("p1".into())));
+        let Op::Publish { topic, msg } = r.op else {
+            panic!("not a publish")
+        };
+        assert_eq!(topic, "/a");
+        assert_eq!(msg.encoding, Encoding::Json);
+        assert_eq!(&msg.bytes[..], br#"{"data":"hi"}"#);
+    }
+
+    #[test]
+    fn wrong_type_names_the_field_and_keeps_the_id() {
+        let e =
+            Request::from_json(br#"{"op":"subscribe","id":7,"topic":"/a","throttle_rate":"fast"}"#)
+                .unwrap_err();
+        assert_eq!(e.id, Some(Value::from(7)));
+        assert!(e.message.contains("throttle_rate"), "{}", e.message);
+    }
+
+    #[test]
+    fn cbor_publish_keeps_message_as_cbor_bytes() {
+        let v = ciborium::Value::Map(vec![
+            (
+                ciborium::Value::Text("op".into()),
+                ciborium::Value::Text("publish".into()),
+            ),
+            (
+                ciborium::Value::Text("topic".into()),
+                ciborium::Value::Text("/b".into()),
+            ),
+            (
+                ciborium::Value::Text("msg".into()),
+                ciborium::Value::Map(vec![(
+                    ciborium::Value::Text("data".into()),
+                    ciborium::Value::Bytes(vec![1, 2, 3]),
+                )]),
+            ),
+        ]);
+        let mut buf = Vec::new();
+        ciborium::into_writer(&v, &mut buf).unwrap();
+        let r = Request::from_cbor(&buf).unwrap();
+        let Op::Publish { msg, .. } = r.op else {
+            panic!("not a publish")
+        };
+        assert_eq!(msg.encoding, Encoding::Cbor);
+        let back: ciborium::Value = ciborium::from_reader(&msg.bytes[..]).unwrap();
+        assert_eq!(
+            back.as_map().unwrap()[0].1,
+            ciborium::Value::Bytes(vec![1, 2, 3])
+        );
+    }
+}

@@ -1,0 +1,173 @@
+//! Frames the server sends to rosbridge clients.
+//!
+//! A `publish` frame is built by splicing the already-encoded message object into a small
+//! envelope, so a message converted once can be framed without being parsed again.
+
+use bytes::{BufMut, Bytes, BytesMut};
+use serde_json::{Value, json};
+
+/// `{"op":"publish","topic":T,"msg":<msg_json>}` as JSON text.
+pub fn publish_json(topic: &str, msg_json: &[u8]) -> Bytes {
+    let topic = serde_json::to_string(topic).expect("a string serializes");
+    let mut b = BytesMut::with_capacity(msg_json.len() + topic.len() + 40);
+    b.put_slice(br#"{"op":"publish","topic":"#);
+    b.put_slice(topic.as_bytes());
+    b.put_slice(br#","msg":"#);
+    b.put_slice(msg_json);
+    b.put_u8(b'}');
+    b.freeze()
+}
+
+/// The same publish as a CBOR map, with `msg_cbor` spliced in as the `msg` value.
+pub fn publish_cbor(topic: &str, msg_cbor: &[u8]) -> Bytes {
+    let mut b = BytesMut::with_capacity(msg_cbor.len() + topic.len() + 32);
+    cbor_head(&mut b, 5, 3);
+    cbor_text(&mut b, "op");
+    cbor_text(&mut b, "publish");
+    cbor_text(&mut b, "topic");
+    cbor_text(&mut b, topic);
+    cbor_text(&mut b, "msg");
+    b.put_slice(msg_cbor);
+    b.freeze()
+}
+
+/// A `cbor-raw` publish: `msg` is `{secs, nsecs, bytes}` with the raw ROS serialization.
+pub fn publish_cbor_raw(topic: &str, stamp_ns: u64, raw: &[u8]) -> Bytes {
+    let mut b = BytesMut::with_capacity(raw.len() + topic.len() + 64);
+    cbor_head(&mut b, 5, 3);
+    cbor_text(&mut b, "op");
+    cbor_text(&mut b, "publish");
+    cbor_text(&mut b, "topic");
+    cbor_text(&mut b, topic);
+    cbor_text(&mut b, "msg");
+    cbor_head(&mut b, 5, 3);
+    cbor_text(&mut b, "secs");
+    cbor_head(&mut b, 0, stamp_ns / 1_000_000_000);
+    cbor_text(&mut b, "nsecs");
+    cbor_head(&mut b, 0, stamp_ns % 1_000_000_000);
+    cbor_text(&mut b, "bytes");
+    cbor_head(&mut b, 2, raw.len() as u64);
+    b.put_slice(raw);
+    b.freeze()
+}
+
+/// A `status` message: the error/warning reply to a request.
+pub fn status(level: &str, msg: &str, id: Option<&Value>) -> String {
+    let mut v = json!({"op": "status", "level": level, "msg": msg});
+    if let Some(id) = id {
+        v["id"] = id.clone();
+    }
+    v.to_string()
+}
+
+/// A `service_response`, echoing the service name and id exactly.
+pub fn service_response(service: &str, id: Option<&Value>, values: Value, result: bool) -> Value {
+    let mut v =
+        json!({"op": "service_response", "service": service, "values": values, "result": result});
+    if let Some(id) = id {
+        v["id"] = id.clone();
+    }
+    v
+}
+
+/// Splits `text` into rosbridge `fragment` operations of at most `size` characters of data.
+/// Fragments are cut on character boundaries so each is valid UTF-8.
+pub fn fragments(id: &str, text: &str, size: usize) -> Vec<String> {
+    let size = size.max(1);
+    let mut pieces = Vec::new();
+    let mut start = 0;
+    while start < text.len() {
+        let mut end = (start + size).min(text.len());
+        while !text.is_char_boundary(end) {
+            end -= 1;
+        }
+        if end == start {
+            end = start + text[start..].chars().next().map_or(1, char::len_utf8);
+        }
+        pieces.push(&text[start..end]);
+        start = end;
+    }
+    let total = pieces.len();
+    pieces
+        .into_iter()
+        .enumerate()
+        .map(|(num, data)| {
+            json!({"op": "fragment", "id": id, "data": data, "num": num, "total": total})
+                .to_string()
+        })
+        .collect()
+}
+
+fn cbor_head(b: &mut BytesMut, major: u8, len: u64) {
+    let m = major << 5;
+    match len {
+        0..=23 => b.put_u8(m | len as u8),
+        24..=0xff => {
+            b.put_u8(m | 24);
+            b.put_u8(len as u8);
+        }
+        0x100..=0xffff => {
+            b.put_u8(m | 25);
+            b.put_u16(len as u16);
+        }
+        0x1_0000..=0xffff_ffff => {
+            b.put_u8(m | 26);
+            b.put_u32(len as u32);
+        }
+        _ => {
+            b.put_u8(m | 27);
+            b.put_u64(len);
+        }
+    }
+}
+
+fn cbor_text(b: &mut BytesMut, s: &str) {
+    cbor_head(b, 3, s.len() as u64);
+    b.put_slice(s.as_bytes());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn publish_json_is_valid_json_with_escaped_topic() {
+        let f = publish_json("/a\"b", br#"{"x":1}"#);
+        let v: Value = serde_json::from_slice(&f).unwrap();
+        assert_eq!(v, json!({"op":"publish","topic":"/a\"b","msg":{"x":1}}));
+    }
+
+    #[test]
+    fn publish_cbor_decodes_as_a_map() {
+        let mut msg = Vec::new();
+        ciborium::into_writer(&ciborium::Value::Bytes(vec![9; 300]), &mut msg).unwrap();
+        let f = publish_cbor("/t", &msg);
+        let v: ciborium::Value = ciborium::from_reader(&f[..]).unwrap();
+        let m = v.as_map().unwrap();
+        assert_eq!(m[1].1, ciborium::Value::Text("/t".into()));
+        assert_eq!(m[2].1, ciborium::Value::Bytes(vec![9; 300]));
+    }
+
+    #[test]
+    fn cbor_raw_carries_stamp_and_bytes() {
+        let f = publish_cbor_raw("/t", 3_000_000_007, &[1, 2]);
+        let v: ciborium::Value = ciborium::from_reader(&f[..]).unwrap();
+        let inner = v.as_map().unwrap()[2].1.as_map().unwrap().clone();
+        assert_eq!(inner[0].1, ciborium::Value::Integer(3.into()));
+        assert_eq!(inner[1].1, ciborium::Value::Integer(7.into()));
+        assert_eq!(inner[2].1, ciborium::Value::Bytes(vec![1, 2]));
+    }
+
+    #[test]
+    fn fragments_reassemble_to_the_original() {
+        let text = "héllo wörld ✓".repeat(5);
+        let parts = fragments("f1", &text, 7);
+        let mut joined = String::new();
+        for p in &parts {
+            let v: Value = serde_json::from_str(p).unwrap();
+            assert_eq!(v["total"], parts.len());
+            joined.push_str(v["data"].as_str().unwrap());
+        }
+        assert_eq!(joined, text);
+    }
+}
