@@ -1,9 +1,21 @@
 //! The robot side of fleetlink.
 //!
+//! An agent runs a local [`Router`](fleetlink_relay::Router) with three kinds of
+//! participants: local rosbridge clients ([`local`]), the simulator ([`sim`]), and the
+//! hub link ([`uplink`]), which carries every local topic up and the robot's inputs down.
+//!
 //! # Layout
 //!
+//! - [`agent`]: assembles and runs the pieces from one set of options.
 //! - [`config`]: the agent's YAML configuration, with errors that name file, line and field.
+//! - [`local`]: the local rosbridge-compatible listener.
 //! - [`sim`]: a simulated robot producing plausible sensor data at configured rates.
+//! - [`uplink`]: the `fleetlink.v1` link to the hub: reconnects, heartbeat, name mapping.
 
+pub mod agent;
 pub mod config;
+pub mod local;
 pub mod sim;
+pub mod uplink;
+
+pub use agent::{Agent, AgentOptions};

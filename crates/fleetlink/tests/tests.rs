@@ -1,0 +1,8 @@
+//! End-to-end tests: hub and agents in-process on port 0, real WebSocket clients.
+//! One test binary (ripgrep style); shared plumbing in `util`.
+
+mod util;
+
+mod e2e {
+    mod relay;
+}

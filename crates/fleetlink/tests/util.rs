@@ -1,0 +1,306 @@
+//! Test plumbing: start hubs and agents on port 0, a small rosbridge client, and waits
+//! bounded by a timeout (never a bare sleep).
+
+#![allow(dead_code)]
+
+use std::future::Future;
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Duration;
+
+use fleetlink_agent::uplink::{LinkState, NameMap, UplinkConfig};
+use fleetlink_agent::{Agent, AgentOptions};
+use fleetlink_hub::{Hub, HubConfig};
+use fleetlink_relay::GenericTranscoder;
+use futures_util::{SinkExt, StreamExt};
+use serde_json::{Value, json};
+use tokio::net::TcpStream;
+use tokio::sync::watch;
+use tokio_tungstenite::tungstenite::Message as WsMessage;
+use tokio_tungstenite::{MaybeTlsStream, WebSocketStream};
+use tokio_util::sync::CancellationToken;
+
+/// Upper bound for anything a test waits for.
+pub const WAIT: Duration = Duration::from_secs(20);
+
+pub async fn within<T>(what: &str, f: impl Future<Output = T>) -> T {
+    match tokio::time::timeout(WAIT, f).await {
+        Ok(v) => v,
+        Err(_) => panic!("timed out after {WAIT:?} waiting for {what}"),
+    }
+}
+
+pub struct TestHub {
+    pub addr: SocketAddr,
+    pub stop: CancellationToken,
+    pub state: Arc<fleetlink_hub::server::HubState>,
+    pub task: tokio::task::JoinHandle<()>,
+    pub data_dir: PathBuf,
+}
+
+pub fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "fleetlink-test-{tag}-{}-{}",
+        std::process::id(),
+        fastrand_u64()
+    ));
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn fastrand_u64() -> u64 {
+    use std::hash::{BuildHasher, RandomState};
+    RandomState::new().hash_one(std::time::Instant::now())
+}
+
+pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Duration) -> TestHub {
+    let cfg = HubConfig {
+        listen: addr,
+        data_dir: data_dir.clone(),
+        heartbeat,
+        ..HubConfig::default()
+    };
+    let hub = Hub::bind(cfg, Arc::new(GenericTranscoder))
+        .await
+        .expect("hub binds");
+    let addr = hub.local_addr();
+    let state = hub.state();
+    let stop = CancellationToken::new();
+    let s = stop.clone();
+    let task = tokio::spawn(async move {
+        hub.run(async move { s.cancelled().await })
+            .await
+            .expect("hub runs");
+    });
+    TestHub {
+        addr,
+        stop,
+        state,
+        task,
+        data_dir,
+    }
+}
+
+pub async fn start_hub() -> TestHub {
+    start_hub_at(
+        "127.0.0.1:0".parse().unwrap(),
+        temp_dir("hub"),
+        Duration::from_millis(500),
+    )
+    .await
+}
+
+impl TestHub {
+    pub fn ws_url(&self) -> String {
+        format!("ws://{}", self.addr)
+    }
+
+    pub async fn shutdown(self) {
+        self.stop.cancel();
+        let _ = within("hub shutdown", self.task).await;
+    }
+}
+
+pub struct TestAgent {
+    pub router: Arc<fleetlink_relay::Router>,
+    pub local: Option<SocketAddr>,
+    pub state: watch::Receiver<LinkState>,
+    pub stats: Arc<fleetlink_agent::uplink::UplinkStats>,
+    pub stop: CancellationToken,
+    pub task: tokio::task::JoinHandle<()>,
+}
+
+pub fn uplink_config(hub: &str, robot: &str) -> UplinkConfig {
+    UplinkConfig {
+        hub_url: hub.to_owned(),
+        robot: robot.to_owned(),
+        token: String::new(),
+        heartbeat: Duration::from_millis(200),
+        reconnect_initial: Duration::from_millis(50),
+        reconnect_max: Duration::from_millis(400),
+        names: NameMap::default(),
+        queue_length: 1000,
+    }
+}
+
+pub async fn start_agent_with(uplink: UplinkConfig, local: bool) -> TestAgent {
+    let opts = AgentOptions {
+        uplink,
+        local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
+    };
+    let agent = Agent::bind(opts, Arc::new(GenericTranscoder))
+        .await
+        .expect("agent binds");
+    let router = agent.router();
+    let local = agent.local_addr();
+    let state = agent.link_state();
+    let stats = agent.uplink_stats();
+    let stop = CancellationToken::new();
+    let s = stop.clone();
+    let task = tokio::spawn(agent.run(s));
+    TestAgent {
+        router,
+        local,
+        state,
+        stats,
+        stop,
+        task,
+    }
+}
+
+pub async fn start_agent(hub: &TestHub, robot: &str) -> TestAgent {
+    let a = start_agent_with(uplink_config(&hub.ws_url(), robot), true).await;
+    a.wait_connected().await;
+    a
+}
+
+impl TestAgent {
+    pub async fn wait_connected(&self) {
+        let mut rx = self.state.clone();
+        within(
+            "agent to connect",
+            rx.wait_for(|s| matches!(s, LinkState::Connected { .. })),
+        )
+        .await
+        .expect("state channel open");
+    }
+
+    pub async fn wait_disconnected(&self) -> String {
+        let mut rx = self.state.clone();
+        let s = within(
+            "agent to notice the link is down",
+            rx.wait_for(|s| matches!(s, LinkState::Disconnected { .. })),
+        )
+        .await
+        .expect("state channel open")
+        .clone();
+        match s {
+            LinkState::Disconnected { reason } => reason,
+            _ => unreachable!(),
+        }
+    }
+
+    pub fn local_url(&self) -> String {
+        format!("ws://{}", self.local.expect("local listener enabled"))
+    }
+
+    pub async fn shutdown(self) {
+        self.stop.cancel();
+        let _ = within("agent shutdown", self.task).await;
+    }
+}
+
+/// A minimal rosbridge client for tests that run in Rust.
+pub struct Rosbridge {
+    ws: WebSocketStream<MaybeTlsStream<TcpStream>>,
+}
+
+impl Rosbridge {
+    pub async fn connect(url: &str) -> Rosbridge {
+        let (ws, _) = within("rosbridge connect", tokio_tungstenite::connect_async(url))
+            .await
+            .expect("connects");
+        Rosbridge { ws }
+    }
+
+    pub async fn send(&mut self, v: Value) {
+        self.ws
+            .send(WsMessage::text(v.to_string()))
+            .await
+            .expect("send");
+    }
+
+    pub async fn send_raw(
+        &mut self,
+        m: WsMessage,
+    ) -> Result<(), tokio_tungstenite::tungstenite::Error> {
+        self.ws.send(m).await
+    }
+
+    /// Next JSON text or CBOR binary frame, decoded to JSON.
+    pub async fn recv(&mut self) -> Value {
+        self.try_recv().await.expect("connection open")
+    }
+
+    pub async fn try_recv(&mut self) -> Option<Value> {
+        loop {
+            let m = within("a rosbridge frame", self.ws.next()).await?;
+            match m {
+                Ok(WsMessage::Text(t)) => {
+                    return Some(serde_json::from_str(t.as_str()).expect("server sends JSON"));
+                }
+                Ok(WsMessage::Binary(b)) => {
+                    let j = fleetlink_proto::rosbridge::convert::cbor_to_json(&b)
+                        .expect("server sends CBOR");
+                    return Some(serde_json::from_slice(&j).expect("converted JSON parses"));
+                }
+                Ok(WsMessage::Close(_)) | Err(_) => return None,
+                Ok(_) => continue,
+            }
+        }
+    }
+
+    /// Next frame with `op` equal to `op`, skipping others.
+    pub async fn recv_op(&mut self, op: &str) -> Value {
+        loop {
+            let v = self.recv().await;
+            if v["op"] == op {
+                return v;
+            }
+        }
+    }
+
+    pub async fn call(&mut self, service: &str, args: Value, id: &str) -> Value {
+        self.send(json!({"op": "call_service", "service": service, "args": args, "id": id}))
+            .await;
+        loop {
+            let v = self.recv_op("service_response").await;
+            if v["id"] == id {
+                return v;
+            }
+        }
+    }
+
+    pub fn raw(&mut self) -> &mut WebSocketStream<MaybeTlsStream<TcpStream>> {
+        &mut self.ws
+    }
+}
+
+/// Publishes on the agent's local router as an in-process participant.
+pub struct LocalPublisher {
+    topic: Arc<fleetlink_relay::Topic>,
+    client: fleetlink_relay::ClientId,
+    seq: u64,
+}
+
+impl LocalPublisher {
+    pub fn new(router: &fleetlink_relay::Router, name: &str, type_name: &str) -> LocalPublisher {
+        let (client, _) = router.connect(
+            fleetlink_relay::ClientKind::Internal {
+                role: "test".into(),
+            },
+            None,
+        );
+        let n = fleetlink_relay::TopicName::parse(name).unwrap();
+        let topic = router
+            .advertise(client, &n, fleetlink_proto::Schema::named(type_name), false)
+            .unwrap();
+        LocalPublisher {
+            topic,
+            client,
+            seq: 0,
+        }
+    }
+
+    pub fn publish_json(&mut self, v: &Value) {
+        self.seq += 1;
+        let payload = fleetlink_proto::Payload::json(serde_json::to_vec(v).unwrap());
+        self.topic.publish(
+            self.client,
+            self.seq,
+            fleetlink_relay::unix_nanos(),
+            payload,
+        );
+    }
+}

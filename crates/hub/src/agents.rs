@@ -1,0 +1,438 @@
+//! Agents on the hub: one `fleetlink.v1` session per robot, and the registry of robots
+//! that are online.
+//!
+//! A robot that reconnects while its old connection still looks alive (a half-open TCP
+//! connection after a Wi-Fi drop) replaces it: the old session is told to close and its
+//! topics are withdrawn before the new one advertises, so a robot never appears twice.
+
+use std::collections::HashMap;
+use std::net::SocketAddr;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, SystemTime};
+
+use bytes::Bytes;
+use fleetlink_proto::frame::{Frame, Level, VERSION};
+use fleetlink_relay::link::{Control, LinkEvent, LinkIn, write_link};
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
+use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
+use futures_util::{Sink, SinkExt, Stream, StreamExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+use tokio_util::sync::CancellationToken;
+
+use crate::store::Store;
+
+/// How long a new connection has to send `HELLO`.
+const HELLO_TIMEOUT: Duration = Duration::from_secs(10);
+/// Heartbeat bounds a robot may ask for.
+const MIN_HEARTBEAT_MS: u32 = 50;
+const MAX_HEARTBEAT_MS: u32 = 60_000;
+
+/// A robot that is online now.
+pub struct LiveRobot {
+    pub name: String,
+    pub client: ClientId,
+    pub session: u64,
+    pub addr: Option<SocketAddr>,
+    pub connected_at: SystemTime,
+    pub heartbeat_ms: u32,
+    /// Round trip of the last ping the hub sent, in nanoseconds (0 = none yet).
+    pub rtt_ns: AtomicU64,
+    pub last_seen_ns: AtomicU64,
+    control: mpsc::Sender<Control>,
+}
+
+/// Robots online, by name.
+#[derive(Default)]
+pub struct Registry {
+    // std Mutex: lookups and swaps only, never held across an await.
+    robots: Mutex<HashMap<String, Arc<LiveRobot>>>,
+    next_session: AtomicU64,
+}
+
+impl Registry {
+    pub fn list(&self) -> Vec<Arc<LiveRobot>> {
+        let mut v: Vec<_> = self
+            .robots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .values()
+            .cloned()
+            .collect();
+        v.sort_by(|a, b| a.name.cmp(&b.name));
+        v
+    }
+
+    fn insert(&self, robot: Arc<LiveRobot>) -> Option<Arc<LiveRobot>> {
+        self.robots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(robot.name.clone(), robot)
+    }
+
+    fn remove_if_session(&self, name: &str, session: u64) {
+        let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
+        if m.get(name).is_some_and(|r| r.session == session) {
+            m.remove(name);
+        }
+    }
+}
+
+/// What an agent session needs from the hub.
+pub struct AgentContext {
+    pub router: Arc<Router>,
+    pub registry: Arc<Registry>,
+    pub store: Store,
+    pub shutdown: CancellationToken,
+    /// Heartbeat used when the agent does not ask for one.
+    pub default_heartbeat_ms: u32,
+}
+
+/// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
+pub fn valid_robot_name(name: &str) -> bool {
+    !name.is_empty()
+        && name.len() <= 64
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.starts_with(|c: char| c.is_ascii_digit())
+}
+
+/// Runs one agent connection to the end.
+pub async fn serve_agent<S>(ws: S, ctx: Arc<AgentContext>, addr: Option<SocketAddr>)
+where
+    S: Stream<Item = Result<WsMessage, WsError>>
+        + Sink<WsMessage, Error = WsError>
+        + Unpin
+        + Send
+        + 'static,
+{
+    let (sink, mut stream) = ws.split();
+    let mut link = LinkIn::default();
+
+    // HELLO first.
+    let hello = tokio::time::timeout(HELLO_TIMEOUT, async {
+        while let Some(m) = stream.next().await {
+            let Ok(WsMessage::Binary(b)) = m else {
+                if matches!(m, Ok(WsMessage::Text(_)) | Err(_) | Ok(WsMessage::Close(_))) {
+                    return Err("expected a binary HELLO frame".to_owned());
+                }
+                continue;
+            };
+            let frames = fleetlink_relay::link::decode_all(&b)
+                .map_err(|e| format!("malformed HELLO: {e}"))?;
+            for f in frames {
+                if let Ok(LinkEvent::Hello {
+                    version,
+                    robot,
+                    token,
+                    heartbeat_ms,
+                }) = link.on_frame(f)
+                {
+                    return Ok((version, robot, token, heartbeat_ms));
+                }
+            }
+            return Err("the first frame must be HELLO".to_owned());
+        }
+        Err("connection closed before HELLO".to_owned())
+    })
+    .await;
+    let (robot, heartbeat_ms) = match hello {
+        Ok(Ok((version, robot, _token, hb))) => {
+            if version != VERSION {
+                return refuse(
+                    sink,
+                    format!("unsupported protocol version {version}; this hub speaks {VERSION}"),
+                )
+                .await;
+            }
+            if !valid_robot_name(&robot) {
+                return refuse(sink, format!("invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)")).await;
+            }
+            let hb = if hb == 0 {
+                ctx.default_heartbeat_ms
+            } else {
+                hb.clamp(MIN_HEARTBEAT_MS, MAX_HEARTBEAT_MS)
+            };
+            (robot, hb)
+        }
+        Ok(Err(reason)) => return refuse(sink, reason).await,
+        Err(_) => return refuse(sink, "no HELLO within 10 s".into()).await,
+    };
+    let namespace = format!("/{robot}");
+    let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(1024);
+
+    let (client, outbox) = ctx.router.connect(
+        ClientKind::Agent {
+            robot: robot.clone(),
+        },
+        addr,
+    );
+    let session = ctx.registry.next_session.fetch_add(1, Relaxed) + 1;
+    let live = Arc::new(LiveRobot {
+        name: robot.clone(),
+        client,
+        session,
+        addr,
+        connected_at: SystemTime::now(),
+        heartbeat_ms,
+        rtt_ns: AtomicU64::new(0),
+        last_seen_ns: AtomicU64::new(fleetlink_relay::unix_nanos()),
+        control: ctrl_tx.clone(),
+    });
+    if let Some(old) = ctx.registry.insert(live.clone()) {
+        tracing::info!(robot = %robot, "robot reconnected; replacing its previous connection");
+        let _ = old.control.try_send(Control::Close);
+        ctx.router.disconnect(old.client);
+    }
+    tracing::info!(robot = %robot, ?addr, "robot connected");
+    let store = ctx.store.clone();
+    let (r, a) = (
+        robot.clone(),
+        addr.map(|a| a.to_string()).unwrap_or_default(),
+    );
+    tokio::task::spawn_blocking(move || {
+        if let Err(e) = store.robot_seen(&r, &a, true) {
+            tracing::warn!("cannot record robot {r}: {e}");
+        }
+    });
+
+    let _ = ctrl_tx
+        .send(Control::Frame(Frame::Welcome {
+            session: format!("{session}"),
+            namespace: namespace.clone(),
+            hub_time_ns: fleetlink_relay::unix_nanos(),
+            heartbeat_ms,
+        }))
+        .await;
+    let heartbeat = Duration::from_millis(u64::from(heartbeat_ms));
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        heartbeat,
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+    ));
+
+    let mut st = AgentSession {
+        ctx: ctx.clone(),
+        client,
+        topics: HashMap::new(),
+        subs: HashMap::new(),
+        ctrl: ctrl_tx.clone(),
+        live: live.clone(),
+    };
+    let dead_after = heartbeat * 2;
+    loop {
+        let next = tokio::select! {
+            _ = ctx.shutdown.cancelled() => break,
+            n = tokio::time::timeout(dead_after, stream.next()) => n,
+        };
+        let msg = match next {
+            Err(_) => {
+                tracing::warn!(robot = %robot, "no traffic for {dead_after:?}; declaring the link dead");
+                break;
+            }
+            Ok(None) | Ok(Some(Err(_))) | Ok(Some(Ok(WsMessage::Close(_)))) => break,
+            Ok(Some(Ok(m))) => m,
+        };
+        live.last_seen_ns
+            .store(fleetlink_relay::unix_nanos(), Relaxed);
+        match msg {
+            WsMessage::Binary(b) => {
+                if let Err(e) = st.on_binary(&mut link, &b).await {
+                    st.status(Level::Error, 1, e).await;
+                }
+            }
+            WsMessage::Text(_) => {
+                st.status(
+                    Level::Error,
+                    2,
+                    "fleetlink.v1 carries binary frames only".into(),
+                )
+                .await
+            }
+            _ => {}
+        }
+    }
+    ctx.router.disconnect(client);
+    ctx.registry.remove_if_session(&robot, session);
+    let _ = ctrl_tx.try_send(Control::Close);
+    drop(st);
+    drop(ctrl_tx);
+    let _ = writer.await;
+    let store = ctx.store.clone();
+    let a = addr.map(|a| a.to_string()).unwrap_or_default();
+    tokio::task::spawn_blocking(move || store.robot_seen(&robot, &a, false));
+}
+
+/// Tells a connection why it is not accepted, then closes it.
+async fn refuse<K>(mut sink: K, reason: String)
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    tracing::warn!("refusing agent: {reason}");
+    let status = Frame::Status {
+        level: Level::Error,
+        code: 401,
+        alias: 0,
+        text: reason.clone(),
+    };
+    let _ = sink.send(WsMessage::Binary(status.to_bytes())).await;
+    let reason: String = reason.chars().take(120).collect();
+    let close = CloseFrame {
+        code: CloseCode::Policy,
+        reason: reason.into(),
+    };
+    let _ = sink.send(WsMessage::Close(Some(close))).await;
+}
+
+struct PubTopic {
+    topic: Arc<Topic>,
+}
+
+struct AgentSession {
+    ctx: Arc<AgentContext>,
+    client: ClientId,
+    topics: HashMap<u32, PubTopic>,
+    subs: HashMap<u32, SubscriptionId>,
+    ctrl: mpsc::Sender<Control>,
+    live: Arc<LiveRobot>,
+}
+
+impl AgentSession {
+    async fn status(&self, level: Level, code: u32, text: String) {
+        let _ = self
+            .ctrl
+            .send(Control::Frame(Frame::Status {
+                level,
+                code,
+                alias: 0,
+                text,
+            }))
+            .await;
+    }
+
+    async fn on_binary(&mut self, link: &mut LinkIn, data: &Bytes) -> Result<(), String> {
+        for f in fleetlink_proto::frame::frames(data) {
+            let f = f.map_err(|e| format!("malformed frame: {e}"))?;
+            match link.on_frame(f) {
+                Ok(ev) => self.apply(ev).await,
+                Err(e) => self.status(Level::Error, 3, e.to_string()).await,
+            }
+        }
+        Ok(())
+    }
+
+    async fn apply(&mut self, ev: LinkEvent) {
+        match ev {
+            LinkEvent::Advertise { alias, topic } => {
+                let name = match TopicName::parse(&topic.name) {
+                    Ok(n) => n,
+                    Err(e) => {
+                        return self
+                            .status(Level::Error, 4, format!("advertise: {e}"))
+                            .await;
+                    }
+                };
+                match self
+                    .ctx
+                    .router
+                    .advertise(self.client, &name, topic.schema, topic.latched)
+                {
+                    Ok(t) => {
+                        self.topics.insert(alias, PubTopic { topic: t });
+                    }
+                    Err(e) => {
+                        self.status(Level::Error, 5, format!("advertise: {e}"))
+                            .await
+                    }
+                }
+            }
+            LinkEvent::Unadvertise { alias, topic } => {
+                if self.topics.remove(&alias).is_some()
+                    && let Ok(name) = TopicName::parse(&topic.name)
+                {
+                    self.ctx.router.unadvertise(self.client, &name);
+                }
+            }
+            LinkEvent::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+            } => {
+                if let Some(p) = self.topics.get(&alias) {
+                    p.topic.publish(self.client, seq, stamp_ns, payload);
+                }
+            }
+            LinkEvent::Subscribe {
+                id,
+                pattern,
+                regex,
+                throttle_ms,
+                queue_length,
+            } => {
+                let target = if regex {
+                    match Router::compile_pattern(&pattern) {
+                        Ok(r) => Target::Pattern(r),
+                        Err(e) => {
+                            return self
+                                .status(Level::Error, 6, format!("subscribe: {e}"))
+                                .await;
+                        }
+                    }
+                } else {
+                    match TopicName::parse(&pattern) {
+                        Ok(n) => Target::Exact(n),
+                        Err(e) => {
+                            return self
+                                .status(Level::Error, 6, format!("subscribe: {e}"))
+                                .await;
+                        }
+                    }
+                };
+                if let Some(old) = self.subs.remove(&id) {
+                    self.ctx.router.unsubscribe(self.client, old);
+                }
+                let opts = SubOptions {
+                    queue_length,
+                    throttle_ms,
+                    ..Default::default()
+                };
+                match self.ctx.router.subscribe(self.client, target, opts) {
+                    Ok(sid) => {
+                        self.subs.insert(id, sid);
+                    }
+                    Err(e) => {
+                        self.status(Level::Error, 6, format!("subscribe: {e}"))
+                            .await
+                    }
+                }
+            }
+            LinkEvent::Unsubscribe { id } => {
+                if let Some(sid) = self.subs.remove(&id) {
+                    self.ctx.router.unsubscribe(self.client, sid);
+                }
+            }
+            LinkEvent::Ping { id, sent_ns } => {
+                let pong = Frame::Pong {
+                    id,
+                    echo_ns: sent_ns,
+                    responder_ns: fleetlink_relay::unix_nanos(),
+                };
+                let _ = self.ctrl.send(Control::Frame(pong)).await;
+            }
+            LinkEvent::Pong { echo_ns, .. } => {
+                let now = fleetlink_relay::unix_nanos();
+                self.live.rtt_ns.store(now.saturating_sub(echo_ns), Relaxed);
+            }
+            LinkEvent::Status { level, text, .. } => {
+                tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
+            }
+            LinkEvent::Hello { .. } | LinkEvent::Welcome { .. } | LinkEvent::None => {}
+        }
+    }
+}

@@ -1,0 +1,140 @@
+//! The JSON API (`/api/v1/*`) and the status page at `/`.
+//!
+//! Everything here is read from live state at request time: the router's tables and
+//! counters, the registry of online robots, and the database for robots seen before.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use axum::Json;
+use axum::extract::State;
+use axum::response::Html;
+use axum::routing::get;
+use fleetlink_relay::queue::DropReason;
+use fleetlink_relay::router::ClientKind;
+use serde_json::{Value, json};
+
+use crate::server::HubState;
+
+pub fn routes() -> axum::Router<Arc<HubState>> {
+    axum::Router::new()
+        .route("/api/v1/robots", get(robots))
+        .route("/api/v1/topics", get(topics))
+        .route("/api/v1/clients", get(clients))
+}
+
+fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
+    fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id)
+}
+
+/// Robots online now and robots seen before, online first.
+async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
+    let live = st.registry.list();
+    let topics = st.router.topics();
+    let mut out: Vec<Value> = live
+        .iter()
+        .map(|r| {
+            let ns = format!("/{}/", r.name);
+            let own: Vec<&str> = topics.iter().map(|t| t.meta.name.as_str()).filter(|n| n.starts_with(&ns)).collect();
+            json!({
+                "name": r.name,
+                "online": true,
+                "namespace": format!("/{}", r.name),
+                "addr": r.addr.map(|a| a.to_string()),
+                "connected_at_ms": ms(r.connected_at),
+                "heartbeat_ms": r.heartbeat_ms,
+                "rtt_ms": r.rtt_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
+                "last_seen_ms": r.last_seen_ns.load(std::sync::atomic::Ordering::Relaxed) / 1_000_000,
+                "topics": own,
+            })
+        })
+        .collect();
+    let store = st.store.clone();
+    let known = tokio::task::spawn_blocking(move || store.robots())
+        .await
+        .ok()
+        .and_then(Result::ok)
+        .unwrap_or_default();
+    for k in known {
+        if !live.iter().any(|r| r.name == k.name) {
+            out.push(json!({
+                "name": k.name,
+                "online": false,
+                "namespace": format!("/{}", k.name),
+                "addr": k.last_addr,
+                "last_seen_ms": k.last_seen_ms,
+                "connects": k.connects,
+                "topics": [],
+            }));
+        }
+    }
+    Json(json!({ "robots": out }))
+}
+
+async fn topics(State(st): State<Arc<HubState>>) -> Json<Value> {
+    let now = fleetlink_relay::unix_nanos();
+    let list: Vec<Value> = st
+        .router
+        .topics()
+        .iter()
+        .map(|t| {
+            let (rate, bw) = t.stats.rates(now);
+            let last = t.stats.last_message_ns.load(std::sync::atomic::Ordering::Relaxed);
+            let drops: serde_json::Map<String, Value> =
+                DropReason::ALL.iter().map(|r| (r.as_str().to_owned(), json!(t.stats.drops(*r)))).collect();
+            json!({
+                "name": t.meta.name.as_str(),
+                "type": t.meta.schema.type_name,
+                "publishers": t.publishers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
+                "subscribers": t.subscribers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
+                "rate_hz": (rate * 100.0).round() / 100.0,
+                "bandwidth_bps": bw.round(),
+                "messages": t.stats.messages.load(std::sync::atomic::Ordering::Relaxed),
+                "bytes": t.stats.bytes.load(std::sync::atomic::Ordering::Relaxed),
+                "last_message_ms": if last == 0 { Value::Null } else { json!(last / 1_000_000) },
+                "drops": drops,
+            })
+        })
+        .collect();
+    Json(json!({ "topics": list }))
+}
+
+async fn clients(State(st): State<Arc<HubState>>) -> Json<Value> {
+    let now = Instant::now();
+    let list: Vec<Value> = st
+        .router
+        .clients()
+        .iter()
+        .map(|(info, outbox, subs)| {
+            let kind = match &info.kind {
+                ClientKind::Rosbridge => "rosbridge".to_owned(),
+                ClientKind::Agent { .. } => "agent".to_owned(),
+                ClientKind::Internal { role } => format!("internal:{role}"),
+            };
+            json!({
+                "id": info.id.0,
+                "name": client_label(&st, info.id),
+                "kind": kind,
+                "addr": info.addr.map(|a| a.to_string()),
+                "connected_at_ms": ms(info.connected_at),
+                "subscriptions": subs,
+                "queue_depth": outbox.depth(),
+                "lag_ms": outbox.lag(now).as_secs_f64() * 1e3,
+                "sent": outbox.sent.load(std::sync::atomic::Ordering::Relaxed),
+                "dropped": outbox.dropped.load(std::sync::atomic::Ordering::Relaxed),
+            })
+        })
+        .collect();
+    Json(json!({ "clients": list }))
+}
+
+fn ms(t: std::time::SystemTime) -> u64 {
+    t.duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_millis() as u64)
+        .unwrap_or(0)
+}
+
+/// The minimal status page: robots and topics with rates, refreshed every second.
+pub fn page() -> Html<&'static str> {
+    Html(include_str!("page.html"))
+}

@@ -1,0 +1,24 @@
+//! The fleetlink hub: the relay every robot connects out to.
+//!
+//! One TCP port serves WebSocket agents (`fleetlink.v1`), rosbridge v2 clients (any
+//! other WebSocket), and HTTP (health, metrics, JSON API, a status page). Routing is the
+//! shared [`fleetlink_relay::Router`]; this crate adds the listener, the agent side of
+//! the link, durable state and the HTTP surface.
+//!
+//! # Layout
+//!
+//! - [`server`]: binds the port, tells WebSocket upgrades from plain HTTP, spawns one task
+//!   per connection, shuts everything down on request.
+//! - [`agents`]: one agent's `fleetlink.v1` session on the hub, and the registry of live
+//!   robots.
+//! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
+//! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
+//! - [`store`]: the SQLite database in the data directory (robots seen so far).
+
+pub mod agents;
+pub mod api;
+pub mod metrics;
+pub mod server;
+pub mod store;
+
+pub use server::{Hub, HubConfig};

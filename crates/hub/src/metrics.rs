@@ -1,0 +1,153 @@
+//! Prometheus `/metrics`.
+//!
+//! The relay keeps its counters as plain atomics on the hot path; this module reads them
+//! only when scraped, through a prometheus-client collector, so metrics cost the fan-out
+//! nothing.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use axum::extract::State;
+use axum::http::{StatusCode, header};
+use axum::response::{IntoResponse, Response};
+use fleetlink_relay::queue::DropReason;
+use prometheus_client::collector::Collector;
+use prometheus_client::encoding::{DescriptorEncoder, EncodeMetric};
+use prometheus_client::metrics::MetricType;
+use prometheus_client::metrics::counter::ConstCounter;
+use prometheus_client::metrics::gauge::ConstGauge;
+use prometheus_client::registry::Registry;
+
+use crate::server::HubState;
+
+struct HubCollector(Arc<HubState>);
+
+impl std::fmt::Debug for HubCollector {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("HubCollector")
+    }
+}
+
+impl Collector for HubCollector {
+    fn encode(&self, mut enc: DescriptorEncoder) -> Result<(), std::fmt::Error> {
+        let st = &self.0;
+        let topics = st.router.topics();
+        let relaxed = std::sync::atomic::Ordering::Relaxed;
+
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_messages",
+            "Messages published on a topic",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            ConstCounter::new(t.stats.messages.load(relaxed))
+                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_bytes",
+            "Payload bytes published on a topic",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            ConstCounter::new(t.stats.bytes.load(relaxed))
+                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_deliveries",
+            "Messages queued to subscribers of a topic",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            ConstCounter::new(t.stats.deliveries.load(relaxed))
+                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_drops",
+            "Messages a subscriber of a topic lost, by reason",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            for r in DropReason::ALL {
+                let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
+                ConstCounter::new(t.stats.drops(r)).encode(m.encode_family(&labels)?)?;
+            }
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_subscribers",
+            "Subscribers of a topic",
+            None,
+            MetricType::Gauge,
+        )?;
+        for t in &topics {
+            ConstGauge::new(t.subscribers.len() as i64)
+                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+
+        let now = Instant::now();
+        let clients = st.router.clients();
+        let label = |id| fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id);
+        let mut m = enc.encode_descriptor(
+            "fleetlink_client_queue_depth",
+            "Messages waiting in a client's outbound queues",
+            None,
+            MetricType::Gauge,
+        )?;
+        for (info, outbox, _) in &clients {
+            let l = [("client", label(info.id))];
+            ConstGauge::new(outbox.depth() as i64).encode(m.encode_family(&l)?)?;
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_client_lag_seconds",
+            "Age of the oldest message waiting for a client",
+            None,
+            MetricType::Gauge,
+        )?;
+        for (info, outbox, _) in &clients {
+            let l = [("client", label(info.id))];
+            ConstGauge::new(outbox.lag(now).as_secs_f64()).encode(m.encode_family(&l)?)?;
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_client_dropped",
+            "Messages a client lost",
+            None,
+            MetricType::Counter,
+        )?;
+        for (info, outbox, _) in &clients {
+            let l = [("client", label(info.id))];
+            ConstCounter::new(outbox.dropped.load(relaxed)).encode(m.encode_family(&l)?)?;
+        }
+        let m = enc.encode_descriptor(
+            "fleetlink_robots_online",
+            "Robots connected now",
+            None,
+            MetricType::Gauge,
+        )?;
+        ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
+        Ok(())
+    }
+}
+
+pub async fn handler(State(st): State<Arc<HubState>>) -> Response {
+    let mut reg = Registry::default();
+    reg.register_collector(Box::new(HubCollector(st)));
+    let mut out = String::new();
+    match prometheus_client::encoding::text::encode(&mut out, &reg) {
+        Ok(()) => (
+            [(
+                header::CONTENT_TYPE,
+                "text/plain; version=0.0.4; charset=utf-8",
+            )],
+            out,
+        )
+            .into_response(),
+        Err(e) => (
+            StatusCode::INTERNAL_SERVER_ERROR,
+            format!("cannot encode metrics: {e}\n"),
+        )
+            .into_response(),
+    }
+}

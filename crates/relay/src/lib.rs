@@ -1,0 +1,48 @@
+//! The routing core shared by the hub and the agent.
+//!
+//! A hub routes between robots and operators; an agent routes between its local programs,
+//! its simulator and the hub link. Both are the same problem — topics with publishers and
+//! subscribers, fan-out without copies, a bounded queue per subscriber — so both run a
+//! [`Router`] from this crate and differ only in the connections they attach to it.
+//!
+//! # Layout
+//!
+//! - [`names`]: identifier newtypes ([`TopicName`], [`ClientId`], [`TopicId`]).
+//! - [`message`]: [`Message`], one published message shared by every subscriber, with a
+//!   cache of its ready-to-send frames (each target encoding built at most once).
+//! - [`transcode`]: converting a message between encodings ([`Transcoder`]).
+//! - [`queue`]: the per-subscription outbound queue seam ([`OutboundQueue`]) and the
+//!   default drop-oldest queue.
+//! - [`outbox`]: one client's outbound side: its subscriptions' queues, served round-robin
+//!   to the task that writes the client's socket.
+//! - [`link`]: what hub and agent share on a `fleetlink.v1` link: received frames to
+//!   events, and the writer that sends an outbox as (chunked) frames.
+//! - [`stats`]: per-topic counters and rates read by metrics and the API.
+//! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
+//! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
+//!   `/rosapi` services the hub answers itself.
+
+pub mod link;
+pub mod message;
+pub mod names;
+pub mod outbox;
+pub mod queue;
+pub mod rosbridge;
+pub mod router;
+pub mod stats;
+pub mod transcode;
+
+pub use message::Message;
+pub use names::{ClientId, NameError, TopicId, TopicName};
+pub use outbox::Outbox;
+pub use queue::{DropOldest, DropReason, OutboundQueue};
+pub use router::{ClientInfo, ClientKind, Router, Topic};
+pub use transcode::{GenericTranscoder, TranscodeError, Transcoder};
+
+/// Nanoseconds since the Unix epoch, the unit of message stamps.
+pub fn unix_nanos() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_nanos() as u64)
+        .unwrap_or(0)
+}

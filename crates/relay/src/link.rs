@@ -1,0 +1,493 @@
+//! The parts of a `fleetlink.v1` link that hub and agent share: turning received frames
+//! into topic events ([`LinkIn`]) and writing an outbox onto the link ([`write_link`]).
+//!
+//! On every link a topic's alias is its id in the *sending* router, so a message's frames
+//! ([`Message::link_frames`]) are the same bytes for every link it goes out on. Large
+//! messages go out as `CHUNK`s, one chunk per topic per round, so a small message on
+//! another topic overtakes a large one that is half sent.
+
+use std::collections::{HashMap, VecDeque};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use bytes::{Bytes, BytesMut};
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, Frame, Level};
+use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
+use fleetlink_proto::{Encoding, Payload, Schema};
+use futures_util::{Sink, SinkExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+
+use crate::message::{Message, TopicMeta};
+use crate::names::TopicId;
+use crate::outbox::Outbox;
+
+/// Largest message reassembled from chunks.
+pub const MAX_LINK_MESSAGE: usize = 64 << 20;
+/// Largest total of partially received chunked messages on one link.
+pub const MAX_LINK_REASSEMBLY: usize = 128 << 20;
+
+/// A topic the peer announced on this link.
+#[derive(Debug, Clone)]
+pub struct InTopic {
+    pub name: String,
+    pub schema: Schema,
+    pub encoding: Encoding,
+    pub latched: bool,
+}
+
+/// What a received frame means for the router.
+#[derive(Debug)]
+pub enum LinkEvent {
+    Advertise {
+        alias: u32,
+        topic: InTopic,
+    },
+    Unadvertise {
+        alias: u32,
+        topic: InTopic,
+    },
+    Message {
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Payload,
+    },
+    Subscribe {
+        id: u32,
+        pattern: String,
+        regex: bool,
+        throttle_ms: u32,
+        queue_length: u32,
+    },
+    Unsubscribe {
+        id: u32,
+    },
+    Ping {
+        id: u64,
+        sent_ns: u64,
+    },
+    Pong {
+        id: u64,
+        echo_ns: u64,
+        responder_ns: u64,
+    },
+    Status {
+        level: Level,
+        code: u32,
+        text: String,
+    },
+    Hello {
+        version: u32,
+        robot: String,
+        token: String,
+        heartbeat_ms: u32,
+    },
+    Welcome {
+        session: String,
+        namespace: String,
+        hub_time_ns: u64,
+        heartbeat_ms: u32,
+    },
+    /// Nothing for the router (an ACK, an unknown frame, a chunk that is not complete).
+    None,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum LinkError {
+    #[error("message on alias {0} that was never advertised")]
+    UnknownAlias(u32),
+    #[error(transparent)]
+    Reassembly(#[from] ReassemblyError),
+}
+
+/// Per-link receive state: the peer's aliases and partially received chunked messages.
+pub struct LinkIn {
+    aliases: HashMap<u32, InTopic>,
+    reassembly: Reassembler,
+    /// Data frames received since the last `ACK` we sent.
+    pub unacked: u32,
+}
+
+impl Default for LinkIn {
+    fn default() -> Self {
+        LinkIn {
+            aliases: HashMap::new(),
+            reassembly: Reassembler::new(MAX_LINK_MESSAGE, MAX_LINK_REASSEMBLY),
+            unacked: 0,
+        }
+    }
+}
+
+impl LinkIn {
+    pub fn topic(&self, alias: u32) -> Option<&InTopic> {
+        self.aliases.get(&alias)
+    }
+
+    pub fn on_frame(&mut self, frame: Frame) -> Result<LinkEvent, LinkError> {
+        Ok(match frame {
+            Frame::Advertise {
+                alias,
+                topic,
+                schema,
+                encoding,
+                flags,
+            } => {
+                let t = InTopic {
+                    name: topic,
+                    schema,
+                    encoding,
+                    latched: flags & ADVERTISE_LATCHED != 0,
+                };
+                self.aliases.insert(alias, t.clone());
+                LinkEvent::Advertise { alias, topic: t }
+            }
+            Frame::Unadvertise { alias } => {
+                self.reassembly.forget(alias);
+                match self.aliases.remove(&alias) {
+                    Some(topic) => LinkEvent::Unadvertise { alias, topic },
+                    None => LinkEvent::None,
+                }
+            }
+            Frame::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+            } => {
+                self.unacked += 1;
+                let t = self
+                    .aliases
+                    .get(&alias)
+                    .ok_or(LinkError::UnknownAlias(alias))?;
+                LinkEvent::Message {
+                    alias,
+                    seq,
+                    stamp_ns,
+                    payload: Payload::new(t.encoding, payload),
+                }
+            }
+            Frame::Chunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            } => {
+                self.unacked += 1;
+                let encoding = self
+                    .aliases
+                    .get(&alias)
+                    .ok_or(LinkError::UnknownAlias(alias))?
+                    .encoding;
+                match self
+                    .reassembly
+                    .push(alias, seq, stamp_ns, total_len, offset, &data)?
+                {
+                    Some(done) => LinkEvent::Message {
+                        alias,
+                        seq: done.seq,
+                        stamp_ns: done.stamp_ns,
+                        payload: Payload::new(encoding, done.payload),
+                    },
+                    None => LinkEvent::None,
+                }
+            }
+            Frame::Subscribe {
+                id,
+                pattern,
+                flags,
+                throttle_ms,
+                queue_length,
+            } => LinkEvent::Subscribe {
+                id,
+                pattern,
+                regex: flags & fleetlink_proto::frame::SUBSCRIBE_REGEX != 0,
+                throttle_ms,
+                queue_length,
+            },
+            Frame::Unsubscribe { id } => LinkEvent::Unsubscribe { id },
+            Frame::Ping { id, sent_ns } => LinkEvent::Ping { id, sent_ns },
+            Frame::Pong {
+                id,
+                echo_ns,
+                responder_ns,
+            } => LinkEvent::Pong {
+                id,
+                echo_ns,
+                responder_ns,
+            },
+            Frame::Status {
+                level, code, text, ..
+            } => LinkEvent::Status { level, code, text },
+            Frame::Hello {
+                version,
+                robot,
+                token,
+                heartbeat_ms,
+            } => LinkEvent::Hello {
+                version,
+                robot,
+                token,
+                heartbeat_ms,
+            },
+            Frame::Welcome {
+                session,
+                namespace,
+                hub_time_ns,
+                heartbeat_ms,
+            } => LinkEvent::Welcome {
+                session,
+                namespace,
+                hub_time_ns,
+                heartbeat_ms,
+            },
+            Frame::Ack { .. } | Frame::Unknown { .. } => LinkEvent::None,
+        })
+    }
+}
+
+/// Maps a router topic to the name it has on this link; `None` keeps it off the link.
+pub type LinkNamer = Arc<dyn Fn(&TopicMeta) -> Option<String> + Send + Sync>;
+
+/// Frames written on a link besides messages (replies, subscriptions, status).
+#[derive(Debug)]
+pub enum Control {
+    Frame(Frame),
+    /// Close the link (after flushing what is queued).
+    Close,
+}
+
+/// A large message being sent one chunk per round, and messages of the same topic
+/// waiting behind it.
+struct Lane {
+    topic: TopicId,
+    frames: Arc<[Bytes]>,
+    next: usize,
+    waiting: VecDeque<Arc<Message>>,
+}
+
+/// Writes `outbox` and `control` onto the link until either side closes; sends a `PING`
+/// every `heartbeat`. `announce_first` topics are advertised before anything else.
+pub async fn write_link<K>(
+    mut sink: K,
+    outbox: Arc<Outbox>,
+    mut control: mpsc::Receiver<Control>,
+    heartbeat: Duration,
+    namer: LinkNamer,
+    announce_first: Vec<(Arc<TopicMeta>, Encoding)>,
+) where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    let mut advertised: HashMap<TopicId, Encoding> = HashMap::new();
+    let mut buf = BytesMut::new();
+    // Topics the peer should know before any message flows (e.g. after a reconnect).
+    for (meta, enc) in announce_first {
+        if let Some(name) = namer(&meta) {
+            Frame::Advertise {
+                alias: meta.id.0,
+                topic: name,
+                schema: meta.schema.clone(),
+                encoding: enc,
+                flags: 0,
+            }
+            .encode(&mut buf);
+            advertised.insert(meta.id, enc);
+        }
+    }
+    let mut lanes: Vec<Lane> = Vec::new();
+    let mut ping_id = 0u64;
+    let mut next_ping = tokio::time::Instant::now() + heartbeat;
+    // Small frames are packed into one WebSocket message up to this size.
+    const PACK: usize = 64 * 1024;
+    loop {
+        // 1. Control frames first: they are small and often answers the peer waits for.
+        loop {
+            match control.try_recv() {
+                Ok(Control::Frame(f)) => f.encode(&mut buf),
+                Ok(Control::Close) => {
+                    let _ = flush_buf(&mut sink, &mut buf).await;
+                    let _ = sink.close().await;
+                    return;
+                }
+                Err(mpsc::error::TryRecvError::Empty) => break,
+                Err(mpsc::error::TryRecvError::Disconnected) => {
+                    let _ = flush_buf(&mut sink, &mut buf).await;
+                    let _ = sink.close().await;
+                    return;
+                }
+            }
+        }
+        if tokio::time::Instant::now() >= next_ping {
+            ping_id += 1;
+            Frame::Ping {
+                id: ping_id,
+                sent_ns: crate::unix_nanos(),
+            }
+            .encode(&mut buf);
+            next_ping = tokio::time::Instant::now() + heartbeat;
+        }
+        // 2. One chunk from every lane in progress.
+        let mut i = 0;
+        while i < lanes.len() {
+            let lane = &mut lanes[i];
+            if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
+                return;
+            }
+            if lane.next < lane.frames.len() {
+                let f = &lane.frames[lane.next];
+                lane.next += 1;
+                if send_large(&mut sink, &mut buf, f, PACK).await.is_err() {
+                    return;
+                }
+            }
+            if lane.next >= lane.frames.len() {
+                // Done: start the next waiting message of the same topic, if any.
+                match lane.waiting.pop_front() {
+                    Some(m) => {
+                        lane.frames = m.link_frames();
+                        lane.next = 0;
+                        if !announce(&mut buf, &mut advertised, &m, &namer) {
+                            lane.next = lane.frames.len();
+                        }
+                    }
+                    None => {
+                        lanes.swap_remove(i);
+                        continue;
+                    }
+                }
+            }
+            i += 1;
+        }
+        // 3. A batch from the outbox.
+        let taken = outbox.take(512, 4 << 20, Instant::now());
+        for (_, _, msg) in &taken.items {
+            let tid = msg.topic.id;
+            if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
+                lane.waiting.push_back(msg.clone());
+                continue;
+            }
+            if !announce(&mut buf, &mut advertised, msg, &namer) {
+                continue;
+            }
+            let frames = msg.link_frames();
+            if frames.len() == 1 {
+                if send_large(&mut sink, &mut buf, &frames[0], PACK)
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+            } else {
+                if send_large(&mut sink, &mut buf, &frames[0], PACK)
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+                lanes.push(Lane {
+                    topic: tid,
+                    frames,
+                    next: 1,
+                    waiting: VecDeque::new(),
+                });
+            }
+        }
+        if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
+            return;
+        }
+        if !taken.items.is_empty() || !lanes.is_empty() {
+            continue;
+        }
+        if outbox.is_closed() {
+            let _ = sink.close().await;
+            return;
+        }
+        tokio::select! {
+            c = control.recv() => match c {
+                Some(Control::Frame(f)) => f.encode(&mut buf),
+                Some(Control::Close) | None => {
+                    let _ = flush_buf(&mut sink, &mut buf).await;
+                    let _ = sink.close().await;
+                    return;
+                }
+            },
+            _ = outbox.ready() => {}
+            _ = tokio::time::sleep_until(next_ping) => {}
+        }
+    }
+}
+
+/// Sends `ADVERTISE` for the message's topic the first time (or when its encoding
+/// changes). Returns false when the topic is not carried on this link.
+fn announce(
+    buf: &mut BytesMut,
+    advertised: &mut HashMap<TopicId, Encoding>,
+    msg: &Message,
+    namer: &LinkNamer,
+) -> bool {
+    let enc = msg.payload.encoding;
+    if advertised.get(&msg.topic.id) == Some(&enc) {
+        return true;
+    }
+    let Some(name) = namer(&msg.topic) else {
+        return false;
+    };
+    Frame::Advertise {
+        alias: msg.topic.id.0,
+        topic: name,
+        schema: msg.topic.schema.clone(),
+        encoding: enc,
+        flags: 0,
+    }
+    .encode(buf);
+    advertised.insert(msg.topic.id, enc);
+    true
+}
+
+/// Appends a small frame to the pack buffer, or sends a large one as its own message
+/// (after what is packed, to keep order). The large frame's bytes are shared, not copied.
+async fn send_large<K>(
+    sink: &mut K,
+    buf: &mut BytesMut,
+    frame: &Bytes,
+    pack: usize,
+) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if frame.len() < pack / 4 {
+        buf.extend_from_slice(frame);
+        return flush_if_full(sink, buf, pack).await;
+    }
+    flush_buf(sink, buf).await?;
+    sink.feed(WsMessage::Binary(frame.clone())).await
+}
+
+async fn flush_if_full<K>(sink: &mut K, buf: &mut BytesMut, pack: usize) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if buf.len() >= pack {
+        flush_buf(sink, buf).await
+    } else {
+        Ok(())
+    }
+}
+
+async fn flush_buf<K>(sink: &mut K, buf: &mut BytesMut) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if buf.is_empty() {
+        return Ok(());
+    }
+    let b = buf.split().freeze();
+    sink.feed(WsMessage::Binary(b)).await
+}
+
+/// Parses every frame of one received WebSocket message.
+pub fn decode_all(data: &Bytes) -> Result<Vec<Frame>, fleetlink_proto::DecodeError> {
+    fleetlink_proto::frame::frames(data).collect()
+}

@@ -1,0 +1,119 @@
+//! Identifier newtypes, so a topic name, a client and a topic index cannot be mixed up.
+
+use std::fmt;
+use std::sync::Arc;
+
+/// A validated, absolute topic name such as `/robot1/scan`. Cheap to clone.
+#[derive(Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct TopicName(Arc<str>);
+
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("invalid topic name {name:?}: {reason}")]
+pub struct NameError {
+    pub name: String,
+    pub reason: &'static str,
+}
+
+impl TopicName {
+    /// Accepts ROS-style names; a missing leading `/` is added (rosbridge clients often
+    /// omit it), so `scan` and `/scan` are the same topic.
+    pub fn parse(raw: &str) -> Result<TopicName, NameError> {
+        let err = |reason| NameError {
+            name: raw.to_owned(),
+            reason,
+        };
+        if raw.is_empty() || raw == "/" {
+            return Err(err("empty"));
+        }
+        if raw.len() > 1024 {
+            return Err(err("longer than 1024 bytes"));
+        }
+        if raw.chars().any(|c| c.is_whitespace() || c.is_control()) {
+            return Err(err("contains whitespace or control characters"));
+        }
+        if raw.contains("//") {
+            return Err(err("contains an empty segment"));
+        }
+        let name = if raw.starts_with('/') {
+            raw.to_owned()
+        } else {
+            format!("/{raw}")
+        };
+        let name = name.trim_end_matches('/').to_owned();
+        Ok(TopicName(name.into()))
+    }
+
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+
+    /// `namespace` + `self`, e.g. `/robot1` + `/scan` = `/robot1/scan`.
+    pub fn in_namespace(&self, namespace: &str) -> TopicName {
+        let ns = namespace.trim_end_matches('/');
+        if ns.is_empty() {
+            return self.clone();
+        }
+        TopicName(format!("{ns}{}", self.0).into())
+    }
+
+    /// The name relative to `namespace` when it lies inside it.
+    pub fn strip_namespace(&self, namespace: &str) -> Option<TopicName> {
+        let ns = namespace.trim_end_matches('/');
+        let rest = self.0.strip_prefix(ns)?;
+        rest.starts_with('/').then(|| TopicName(rest.into()))
+    }
+}
+
+impl fmt::Display for TopicName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl fmt::Debug for TopicName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:?}", &*self.0)
+    }
+}
+
+/// One connection (or in-process participant) attached to a router.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, PartialOrd, Ord)]
+pub struct ClientId(pub u64);
+
+impl fmt::Display for ClientId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "c{}", self.0)
+    }
+}
+
+/// A topic's index in one router; used as the alias of the topic on every downstream
+/// `fleetlink.v1` link, so a message's frame is the same bytes for every subscriber.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, PartialOrd, Ord)]
+pub struct TopicId(pub u32);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn leading_slash_is_added_and_trailing_removed() {
+        assert_eq!(TopicName::parse("scan").unwrap().as_str(), "/scan");
+        assert_eq!(TopicName::parse("/a/b/").unwrap().as_str(), "/a/b");
+    }
+
+    #[test]
+    fn bad_names_are_refused_with_a_reason() {
+        for bad in ["", "/", "a b", "/a//b", "x\u{0}"] {
+            assert!(TopicName::parse(bad).is_err(), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn namespaces_compose_and_strip() {
+        let scan = TopicName::parse("/scan").unwrap();
+        let full = scan.in_namespace("/robot1");
+        assert_eq!(full.as_str(), "/robot1/scan");
+        assert_eq!(full.strip_namespace("/robot1").unwrap(), scan);
+        assert!(full.strip_namespace("/robot").is_none());
+    }
+}

@@ -1,0 +1,126 @@
+//! The `/rosapi` services clients and viewers call to discover the graph.
+//!
+//! rosbridge deployments run a separate `rosapi` node; fleetlink answers from the router
+//! directly, so listings are exactly what can be subscribed to here. Service names match
+//! with or without the leading slash; replies use ROS 2 field names and, for time, the
+//! ROS 1 names as well so clients of either generation read them.
+
+use serde_json::{Value, json};
+
+use crate::names::TopicName;
+use crate::router::{ClientKind, Router};
+use crate::unix_nanos;
+
+/// What the session should answer for a `call_service`.
+pub enum Answer {
+    /// A rosapi service: these values, `result: true`.
+    Values(Value),
+    /// A rosapi service that failed: `result: false` with this text.
+    Failed(String),
+    /// Not a rosapi service.
+    NotRosapi,
+}
+
+/// Services this module answers, without the `/rosapi/` prefix.
+pub const SERVICES: &[&str] = &[
+    "topics",
+    "topics_and_raw_types",
+    "topic_type",
+    "topics_for_type",
+    "publishers",
+    "subscribers",
+    "get_time",
+    "get_ros_version",
+    "nodes",
+    "services",
+];
+
+pub fn answer(router: &Router, node_name: &str, service: &str, args: &Value) -> Answer {
+    let name = service.trim_start_matches('/');
+    let Some(call) = name.strip_prefix("rosapi/") else {
+        return Answer::NotRosapi;
+    };
+    let topics = router.topics();
+    let arg_topic = || -> Result<TopicName, String> {
+        let raw = args
+            .get("topic")
+            .and_then(Value::as_str)
+            .ok_or("missing string argument 'topic'")?;
+        TopicName::parse(raw).map_err(|e| e.to_string())
+    };
+    let values = match call {
+        "topics" => json!({
+            "topics": topics.iter().map(|t| t.meta.name.as_str()).collect::<Vec<_>>(),
+            "types": topics.iter().map(|t| t.meta.schema.type_name.as_str()).collect::<Vec<_>>(),
+        }),
+        "topics_and_raw_types" => json!({
+            "topics": topics.iter().map(|t| t.meta.name.as_str()).collect::<Vec<_>>(),
+            "types": topics.iter().map(|t| t.meta.schema.type_name.as_str()).collect::<Vec<_>>(),
+            "typedefs_full_text": topics.iter().map(|t| t.meta.schema.text.as_str()).collect::<Vec<_>>(),
+        }),
+        "topic_type" => match arg_topic() {
+            Ok(n) => {
+                json!({"type": topics.iter().find(|t| t.meta.name == n).map_or("", |t| t.meta.schema.type_name.as_str())})
+            }
+            Err(e) => return Answer::Failed(format!("{service}: {e}")),
+        },
+        "topics_for_type" => {
+            let Some(ty) = args.get("type").and_then(Value::as_str) else {
+                return Answer::Failed(format!("{service}: missing string argument 'type'"));
+            };
+            json!({"topics": topics.iter().filter(|t| crate::router::same_type(&t.meta.schema.type_name, ty)).map(|t| t.meta.name.as_str()).collect::<Vec<_>>()})
+        }
+        "publishers" | "subscribers" => match arg_topic() {
+            Ok(n) => {
+                let ids = topics
+                    .iter()
+                    .find(|t| t.meta.name == n)
+                    .map(|t| {
+                        if call == "publishers" {
+                            t.publishers.clone()
+                        } else {
+                            t.subscribers.clone()
+                        }
+                    })
+                    .unwrap_or_default();
+                let names: Vec<String> =
+                    ids.iter().map(|id| client_node_name(router, *id)).collect();
+                json!({call: names})
+            }
+            Err(e) => return Answer::Failed(format!("{service}: {e}")),
+        },
+        "get_time" => {
+            let ns = unix_nanos();
+            let (s, n) = (ns / 1_000_000_000, ns % 1_000_000_000);
+            json!({"time": {"sec": s, "nanosec": n, "secs": s, "nsecs": n}})
+        }
+        "get_ros_version" => json!({"version": 2, "distro": "fleetlink"}),
+        "nodes" => {
+            let mut nodes = vec![node_name.to_owned()];
+            nodes.extend(
+                router
+                    .clients()
+                    .iter()
+                    .map(|(info, _, _)| client_node_name(router, info.id)),
+            );
+            nodes.sort();
+            nodes.dedup();
+            json!({"nodes": nodes})
+        }
+        "services" => json!({
+            "services": SERVICES.iter().map(|s| format!("/rosapi/{s}")).collect::<Vec<_>>(),
+        }),
+        other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
+    };
+    Answer::Values(values)
+}
+
+/// How a client appears as a node in `nodes`, `publishers` and `subscribers`.
+pub fn client_node_name(router: &Router, id: crate::ClientId) -> String {
+    match router.client_info(id).map(|c| c.kind) {
+        Some(ClientKind::Agent { robot }) => format!("/{robot}"),
+        Some(ClientKind::Internal { role }) => format!("/fleetlink/{role}"),
+        Some(ClientKind::Rosbridge) => format!("/rosbridge_client_{}", id.0),
+        None => format!("/gone_{}", id.0),
+    }
+}

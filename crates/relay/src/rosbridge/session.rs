@@ -1,0 +1,475 @@
+//! One rosbridge v2 connection.
+//!
+//! Two halves: the reader (this task) parses operations and applies them to the router;
+//! the writer (a spawned task) sends the client's outbox plus direct replies (`status`,
+//! `service_response`). A bad operation gets a `status` error carrying the request's `id`
+//! and the connection stays open; only a transport failure (or a frame over the size
+//! limit, answered with close code 1009) ends the session.
+
+use std::collections::HashMap;
+use std::net::SocketAddr;
+use std::sync::Arc;
+use std::time::Instant;
+
+use bytes::Bytes;
+use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Request, outbound};
+use fleetlink_proto::{Encoding, Payload, Schema};
+use futures_util::{Sink, SinkExt, Stream, StreamExt};
+use serde_json::Value;
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+use tokio_util::sync::CancellationToken;
+
+use crate::message::FrameKind;
+use crate::names::{ClientId, TopicName};
+use crate::outbox::{Delivery, Outbox};
+use crate::queue::DropReason;
+use crate::rosbridge::rosapi::{self, Answer};
+use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
+use crate::unix_nanos;
+
+/// Settings shared by all rosbridge sessions of one server.
+#[derive(Debug, Clone)]
+pub struct SessionConfig {
+    /// How this server appears in `/rosapi/nodes`.
+    pub node_name: String,
+    /// Largest frame accepted from a client (also set on the WebSocket itself).
+    pub max_message_size: usize,
+    /// Messages the writer sends per socket flush.
+    pub batch: usize,
+}
+
+impl Default for SessionConfig {
+    fn default() -> Self {
+        SessionConfig {
+            node_name: "/fleetlink".into(),
+            max_message_size: 16 << 20,
+            batch: 256,
+        }
+    }
+}
+
+/// Replies the reader hands to the writer. Bounded: a client that floods bad requests
+/// without reading the answers is slowed down, nobody else is.
+const REPLY_QUEUE: usize = 256;
+
+/// Runs a session until the client leaves. `ws` is an accepted WebSocket.
+/// Ends when the client leaves or `shutdown` is cancelled.
+pub async fn serve<S>(
+    ws: S,
+    router: Arc<Router>,
+    addr: Option<SocketAddr>,
+    cfg: Arc<SessionConfig>,
+    shutdown: CancellationToken,
+) where
+    S: Stream<Item = Result<WsMessage, WsError>>
+        + Sink<WsMessage, Error = WsError>
+        + Unpin
+        + Send
+        + 'static,
+{
+    let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
+    let (sink, mut stream) = ws.split();
+    let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
+    let writer = tokio::spawn(write_loop(
+        sink,
+        outbox.clone(),
+        reply_rx,
+        router.clone(),
+        cfg.batch,
+    ));
+    let mut session = Session {
+        router: router.clone(),
+        client,
+        cfg,
+        published: HashMap::new(),
+        subs: HashMap::new(),
+        replies: reply_tx,
+    };
+    loop {
+        let frame = tokio::select! {
+            f = stream.next() => match f {
+                Some(f) => f,
+                None => break,
+            },
+            _ = shutdown.cancelled() => break,
+        };
+        let req = match frame {
+            Ok(WsMessage::Text(t)) => Request::from_json(t.as_bytes()),
+            Ok(WsMessage::Binary(b)) => Request::from_cbor(&b),
+            Ok(WsMessage::Close(_)) => break,
+            Ok(_) => continue,
+            Err(WsError::Capacity(e)) => {
+                let close = CloseFrame {
+                    code: CloseCode::Size,
+                    reason: format!("frame too large: {e}").into(),
+                };
+                let _ = session.replies.send(Reply::Close(close)).await;
+                break;
+            }
+            Err(_) => break,
+        };
+        match req {
+            Ok(req) => session.handle(req).await,
+            Err(e) => session.parse_error(e).await,
+        }
+    }
+    router.disconnect(client);
+    drop(session);
+    let _ = writer.await;
+}
+
+enum Reply {
+    Frame(WsMessage),
+    Close(CloseFrame),
+}
+
+struct Published {
+    topic: Arc<Topic>,
+    seq: u64,
+}
+
+struct Session {
+    router: Arc<Router>,
+    client: ClientId,
+    cfg: Arc<SessionConfig>,
+    published: HashMap<TopicName, Published>,
+    /// Subscriptions by the `topic` string the client used, with the `id` each came with.
+    subs: HashMap<String, Vec<(Option<Value>, SubscriptionId)>>,
+    replies: mpsc::Sender<Reply>,
+}
+
+impl Session {
+    async fn send(&self, m: WsMessage) {
+        let _ = self.replies.send(Reply::Frame(m)).await;
+    }
+
+    async fn status(&self, level: &str, msg: String, id: Option<&Value>) {
+        self.send(WsMessage::text(outbound::status(level, &msg, id)))
+            .await;
+    }
+
+    async fn parse_error(&self, e: ParseError) {
+        let msg = match &e.op {
+            Some(op) => format!("{op}: {}", e.message.trim_start_matches(&format!("{op}: "))),
+            None => e.message.clone(),
+        };
+        self.status("error", msg, e.id.as_ref()).await;
+    }
+
+    async fn handle(&mut self, req: Request) {
+        let id = req.id.clone();
+        let result = match req.op {
+            Op::Advertise {
+                topic,
+                type_name,
+                latch,
+                ..
+            } => self.advertise(&topic, &type_name, latch),
+            Op::Unadvertise { topic } => self.unadvertise(&topic),
+            Op::Publish { topic, msg } => self.publish(&topic, msg),
+            Op::Subscribe {
+                topic,
+                type_name,
+                throttle_rate,
+                queue_length,
+                fragment_size,
+                compression,
+                regex,
+            } => {
+                if compression == Compression::Png {
+                    self.status("warning", format!("subscribe {topic}: png compression is not supported; sending uncompressed"), id.as_ref()).await;
+                }
+                let opts = SubOptions {
+                    queue_length,
+                    throttle_ms: throttle_rate,
+                    delivery: Delivery {
+                        compression,
+                        fragment_size,
+                    },
+                };
+                self.subscribe(&topic, type_name.as_deref(), regex, opts, id.clone())
+            }
+            Op::Unsubscribe { topic } => {
+                self.unsubscribe(&topic, id.as_ref());
+                Ok(())
+            }
+            Op::CallService { service, args, .. } => {
+                self.call_service(&service, args, id.as_ref()).await;
+                Ok(())
+            }
+            Op::Auth { .. } => Ok(()),
+            Op::Unknown { op } => Err(format!("unknown operation '{op}'")),
+        };
+        if let Err(msg) = result {
+            self.status("error", msg, id.as_ref()).await;
+        }
+    }
+
+    fn advertise(&mut self, topic: &str, type_name: &str, latch: bool) -> Result<(), String> {
+        let name = TopicName::parse(topic).map_err(|e| format!("advertise: {e}"))?;
+        if type_name.trim().is_empty() {
+            return Err(format!("advertise {name}: field 'type' is empty"));
+        }
+        let t = self
+            .router
+            .advertise(self.client, &name, Schema::named(type_name), latch)
+            .map_err(|e| format!("advertise: {e}"))?;
+        self.published
+            .entry(name)
+            .or_insert(Published { topic: t, seq: 0 });
+        Ok(())
+    }
+
+    fn unadvertise(&mut self, topic: &str) -> Result<(), String> {
+        let name = TopicName::parse(topic).map_err(|e| format!("unadvertise: {e}"))?;
+        if self.published.remove(&name).is_none() {
+            return Err(format!(
+                "unadvertise {name}: this client has not advertised it"
+            ));
+        }
+        self.router.unadvertise(self.client, &name);
+        Ok(())
+    }
+
+    fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
+        let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
+        if !is_object(&msg) {
+            return Err(format!("publish {name}: field 'msg' must be an object"));
+        }
+        if !self.published.contains_key(&name) {
+            // rosbridge lets a client publish on a topic whose type is already known.
+            let Some(existing) = self
+                .router
+                .topic(&name)
+                .filter(|t| !t.meta().schema.type_name.is_empty())
+            else {
+                return Err(format!(
+                    "publish {name}: topic is not advertised; send 'advertise' with its type first"
+                ));
+            };
+            let schema = existing.meta().schema.clone();
+            let t = self
+                .router
+                .advertise(self.client, &name, schema, false)
+                .map_err(|e| format!("publish: {e}"))?;
+            self.published
+                .insert(name.clone(), Published { topic: t, seq: 0 });
+        }
+        let p = self.published.get_mut(&name).expect("inserted above");
+        p.seq += 1;
+        p.topic.publish(self.client, p.seq, unix_nanos(), msg);
+        Ok(())
+    }
+
+    fn subscribe(
+        &mut self,
+        topic: &str,
+        type_name: Option<&str>,
+        regex: bool,
+        opts: SubOptions,
+        id: Option<Value>,
+    ) -> Result<(), String> {
+        let target = if regex {
+            Target::Pattern(Router::compile_pattern(topic).map_err(|e| format!("subscribe: {e}"))?)
+        } else {
+            let name = TopicName::parse(topic).map_err(|e| format!("subscribe: {e}"))?;
+            if let (Some(want), Some(t)) = (
+                type_name.filter(|t| !t.is_empty()),
+                self.router.topic(&name),
+            ) {
+                let have = t.meta().schema.type_name.clone();
+                if !have.is_empty() && !same_type(&have, want) {
+                    return Err(format!(
+                        "subscribe {name}: requested type {want} but the topic carries {have}"
+                    ));
+                }
+            }
+            Target::Exact(name)
+        };
+        let entry = self.subs.entry(topic.to_owned()).or_default();
+        if let Some(pos) = entry.iter().position(|(i, _)| *i == id) {
+            // Same topic and id again: replace (options may have changed), never duplicate.
+            let (_, old) = entry.remove(pos);
+            self.router.unsubscribe(self.client, old);
+        }
+        let sid = self
+            .router
+            .subscribe(self.client, target, opts)
+            .map_err(|e| format!("subscribe: {e}"))?;
+        self.subs
+            .entry(topic.to_owned())
+            .or_default()
+            .push((id, sid));
+        Ok(())
+    }
+
+    fn unsubscribe(&mut self, topic: &str, id: Option<&Value>) {
+        let Some(list) = self.subs.get_mut(topic) else {
+            return;
+        };
+        let (gone, keep): (Vec<_>, Vec<_>) = list
+            .drain(..)
+            .partition(|(i, _)| id.is_none() || i.as_ref() == id);
+        *list = keep;
+        if list.is_empty() {
+            self.subs.remove(topic);
+        }
+        for (_, sid) in gone {
+            self.router.unsubscribe(self.client, sid);
+        }
+    }
+
+    async fn call_service(&self, service: &str, args: Payload, id: Option<&Value>) {
+        let args_json: Value = match args.encoding {
+            Encoding::Json => serde_json::from_slice(&args.bytes).unwrap_or(Value::Null),
+            _ => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
+                .ok()
+                .and_then(|j| serde_json::from_slice(&j).ok())
+                .unwrap_or(Value::Null),
+        };
+        let reply = match rosapi::answer(&self.router, &self.cfg.node_name, service, &args_json) {
+            Answer::Values(v) => outbound::service_response(service, id, v, true),
+            Answer::Failed(e) => outbound::service_response(service, id, Value::String(e), false),
+            Answer::NotRosapi => outbound::service_response(
+                service,
+                id,
+                Value::String(format!("service {service} does not exist")),
+                false,
+            ),
+        };
+        let frame = if args.encoding == Encoding::Cbor {
+            let mut buf = Vec::new();
+            match ciborium::into_writer(&reply, &mut buf) {
+                Ok(()) => WsMessage::Binary(Bytes::from(buf)),
+                Err(_) => WsMessage::text(reply.to_string()),
+            }
+        } else {
+            WsMessage::text(reply.to_string())
+        };
+        self.send(frame).await;
+    }
+}
+
+/// A message object is a JSON object or a CBOR map.
+fn is_object(p: &Payload) -> bool {
+    match p.encoding {
+        Encoding::Json => p.bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{'),
+        Encoding::Cbor => p.bytes.first().is_some_and(|b| b >> 5 == 5),
+        _ => true,
+    }
+}
+
+async fn write_loop<K>(
+    mut sink: K,
+    outbox: Arc<Outbox>,
+    mut replies: mpsc::Receiver<Reply>,
+    router: Arc<Router>,
+    batch: usize,
+) where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    let mut warned: HashMap<TopicName, ()> = HashMap::new();
+    loop {
+        let mut wrote = false;
+        while let Ok(r) = replies.try_recv() {
+            match r {
+                Reply::Frame(m) => {
+                    if sink.feed(m).await.is_err() {
+                        return;
+                    }
+                    wrote = true;
+                }
+                Reply::Close(c) => {
+                    let _ = sink.send(WsMessage::Close(Some(c))).await;
+                    return;
+                }
+            }
+        }
+        let now = Instant::now();
+        let taken = outbox.take(batch, 8 << 20, now);
+        for (slot, delivery, msg) in &taken.items {
+            let kind = match delivery.compression {
+                Compression::Cbor => FrameKind::RosbridgeCbor,
+                Compression::CborRaw => FrameKind::RosbridgeCborRaw,
+                Compression::None | Compression::Png => FrameKind::RosbridgeJson,
+            };
+            let mut frame = msg.rosbridge_frame(kind, router.transcoder());
+            if frame.is_err() && kind == FrameKind::RosbridgeCborRaw {
+                // No raw serialization for this message: the CBOR form is the closest.
+                frame = msg.rosbridge_frame(FrameKind::RosbridgeCbor, router.transcoder());
+            }
+            let frame = match frame {
+                Ok(f) => f,
+                Err(e) => {
+                    outbox.record_drop(*slot, DropReason::Encode);
+                    if warned.insert(msg.topic.name.clone(), ()).is_none() {
+                        let text = outbound::status("warning", &e.to_string(), None);
+                        if sink.feed(WsMessage::text(text)).await.is_err() {
+                            return;
+                        }
+                    }
+                    continue;
+                }
+            };
+            let fragment = delivery
+                .fragment_size
+                .map(|s| s as usize)
+                .filter(|s| *s > 0);
+            match (fragment, &frame) {
+                (Some(size), WsMessage::Text(t)) if t.len() > size => {
+                    let fid = format!("{}_{}", msg.topic.name, msg.seq);
+                    for piece in outbound::fragments(&fid, t.as_str(), size) {
+                        if sink.feed(WsMessage::text(piece)).await.is_err() {
+                            return;
+                        }
+                    }
+                }
+                _ => {
+                    if sink.feed(frame).await.is_err() {
+                        return;
+                    }
+                }
+            }
+            wrote = true;
+        }
+        if wrote && sink.flush().await.is_err() {
+            return;
+        }
+        if !taken.items.is_empty() {
+            continue;
+        }
+        if outbox.is_closed() {
+            let _ = sink.close().await;
+            return;
+        }
+        let wake = taken.wake_at.map(tokio::time::Instant::from_std);
+        tokio::select! {
+            r = replies.recv() => match r {
+                Some(Reply::Frame(m)) => {
+                    if sink.send(m).await.is_err() {
+                        return;
+                    }
+                }
+                Some(Reply::Close(c)) => {
+                    let _ = sink.send(WsMessage::Close(Some(c))).await;
+                    return;
+                }
+                None => {
+                    // The reader is gone: flush what is queued and stop.
+                    let _ = sink.close().await;
+                    return;
+                }
+            },
+            _ = outbox.ready() => {}
+            _ = async {
+                match wake {
+                    Some(w) => tokio::time::sleep_until(w).await,
+                    None => std::future::pending().await,
+                }
+            } => {}
+        }
+    }
+}

@@ -1,0 +1,566 @@
+//! The topic table and the fan-out.
+//!
+//! Control operations (advertise, subscribe, disconnect) take the router's one mutex;
+//! they are rare. Publishing does not: a publisher holds an `Arc<Topic>` from its
+//! advertise and fans out over the topic's subscriber list, which is an immutable
+//! snapshot swapped atomically whenever a subscription changes ([`ArcSwap`]). A message is
+//! one `Arc<Message>` pushed into each subscriber's queue — no copy, no encoding here.
+
+use std::collections::{HashMap, HashSet};
+use std::net::SocketAddr;
+use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+use std::time::{Instant, SystemTime};
+
+use arc_swap::ArcSwap;
+use fleetlink_proto::{Payload, Schema};
+use regex::Regex;
+
+use crate::message::{Message, TopicMeta};
+use crate::names::{ClientId, TopicId, TopicName};
+use crate::outbox::{Delivery, Outbox, SlotId};
+use crate::queue::OutboundQueue;
+use crate::stats::TopicStats;
+use crate::transcode::{GenericTranscoder, Transcoder};
+use crate::unix_nanos;
+
+/// Largest compiled regex accepted for a pattern subscription, in bytes of program.
+const REGEX_SIZE_LIMIT: usize = 256 * 1024;
+/// Longest pattern accepted.
+const MAX_PATTERN_LEN: usize = 1024;
+
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum RouteError {
+    #[error("topic {topic} is already advertised with type {existing}, not {requested}")]
+    TypeConflict {
+        topic: TopicName,
+        existing: String,
+        requested: String,
+    },
+    #[error("invalid subscription pattern {pattern:?}: {reason}")]
+    BadPattern { pattern: String, reason: String },
+    #[error("unknown client {0}")]
+    UnknownClient(ClientId),
+}
+
+/// What kind of participant a client is.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ClientKind {
+    /// A rosbridge v2 client (browser, roslibpy, viewer).
+    Rosbridge,
+    /// A robot's agent on a `fleetlink.v1` link.
+    Agent { robot: String },
+    /// Something inside this process (simulator, hub link of an agent).
+    Internal { role: String },
+}
+
+#[derive(Debug, Clone)]
+pub struct ClientInfo {
+    pub id: ClientId,
+    pub kind: ClientKind,
+    pub addr: Option<SocketAddr>,
+    pub connected_at: SystemTime,
+}
+
+/// A subscription's identity within its client.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
+pub struct SubscriptionId(pub u64);
+
+/// What a subscription asks for.
+#[derive(Debug, Clone)]
+pub enum Target {
+    Exact(TopicName),
+    Pattern(Regex),
+}
+
+/// Options that shape a subscription's queue and framing.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SubOptions {
+    pub queue_length: u32,
+    pub throttle_ms: u32,
+    pub delivery: Delivery,
+}
+
+#[derive(Clone)]
+struct SubscriberRef {
+    client: ClientId,
+    outbox: Arc<Outbox>,
+    slot: SlotId,
+}
+
+pub struct Topic {
+    meta: ArcSwap<TopicMeta>,
+    pub stats: Arc<TopicStats>,
+    subscribers: ArcSwap<Vec<SubscriberRef>>,
+    latched: Mutex<Option<Arc<Message>>>,
+    latch: std::sync::atomic::AtomicBool,
+    /// Encoding of the last message published (an `Encoding` as u8), so a link can
+    /// announce the topic before its next message.
+    last_encoding: std::sync::atomic::AtomicU8,
+}
+
+impl Topic {
+    /// Encoding of the most recent message, if any was published.
+    pub fn last_encoding(&self) -> Option<fleetlink_proto::Encoding> {
+        match self.last_encoding.load(Relaxed) {
+            u8::MAX => None,
+            v => fleetlink_proto::Encoding::from_u8(v),
+        }
+    }
+
+    pub fn meta(&self) -> Arc<TopicMeta> {
+        self.meta.load_full()
+    }
+
+    pub fn name(&self) -> TopicName {
+        self.meta.load().name.clone()
+    }
+
+    pub fn id(&self) -> TopicId {
+        self.meta.load().id
+    }
+
+    pub fn subscriber_count(&self) -> usize {
+        self.subscribers.load().len()
+    }
+
+    /// Fans `payload` out to every subscriber except its origin. The hot path: one
+    /// allocation for the message, one queue push per subscriber.
+    pub fn publish(
+        &self,
+        origin: ClientId,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Payload,
+    ) -> Arc<Message> {
+        let msg = Arc::new(Message::new(
+            self.meta.load_full(),
+            seq,
+            stamp_ns,
+            origin,
+            payload,
+        ));
+        self.deliver(&msg);
+        msg
+    }
+
+    /// Fans an existing message out (used when a message is re-published unchanged).
+    pub fn deliver(&self, msg: &Arc<Message>) {
+        let now = msg.received;
+        self.last_encoding
+            .store(msg.payload.encoding as u8, Relaxed);
+        self.stats.record_publish(msg.payload.len(), unix_nanos());
+        for s in self.subscribers.load().iter() {
+            if s.client != msg.origin {
+                s.outbox.push(s.slot, msg.clone(), now);
+            }
+        }
+        if self.latch.load(Relaxed) {
+            *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
+        }
+    }
+}
+
+struct ClientEntry {
+    info: ClientInfo,
+    outbox: Arc<Outbox>,
+    subs: HashMap<SubscriptionId, (Target, SubOptions)>,
+    /// Topics this client receives, with the subscriptions that want each one.
+    slots: HashMap<TopicName, (SlotId, Vec<SubscriptionId>)>,
+    advertised: HashSet<TopicName>,
+}
+
+#[derive(Default)]
+struct State {
+    topics: HashMap<TopicName, Arc<Topic>>,
+    publishers: HashMap<TopicName, Vec<ClientId>>,
+    clients: HashMap<ClientId, ClientEntry>,
+}
+
+/// The routing table. Shared as `Arc<Router>` by every connection task.
+pub struct Router {
+    state: Mutex<State>,
+    transcoder: Arc<dyn Transcoder>,
+    next_client: AtomicU64,
+    next_sub: AtomicU64,
+    next_topic: AtomicU32,
+    /// Queue length for subscriptions that do not ask for one.
+    pub default_queue: usize,
+    pub started: Instant,
+}
+
+/// A read-only view of one topic for listings.
+#[derive(Clone)]
+pub struct TopicSnapshot {
+    pub topic: Arc<Topic>,
+    pub meta: Arc<TopicMeta>,
+    pub publishers: Vec<ClientId>,
+    pub subscribers: Vec<ClientId>,
+    pub stats: Arc<TopicStats>,
+}
+
+impl Default for Router {
+    fn default() -> Self {
+        Router::new(Arc::new(GenericTranscoder))
+    }
+}
+
+impl Router {
+    pub fn new(transcoder: Arc<dyn Transcoder>) -> Router {
+        Router {
+            state: Mutex::new(State::default()),
+            transcoder,
+            next_client: AtomicU64::new(1),
+            next_sub: AtomicU64::new(1),
+            next_topic: AtomicU32::new(1),
+            default_queue: 100,
+            started: Instant::now(),
+        }
+    }
+
+    pub fn transcoder(&self) -> &dyn Transcoder {
+        &*self.transcoder
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Registers a participant; its outbox receives what it subscribes to.
+    pub fn connect(&self, kind: ClientKind, addr: Option<SocketAddr>) -> (ClientId, Arc<Outbox>) {
+        let id = ClientId(self.next_client.fetch_add(1, Relaxed));
+        let outbox = Outbox::new(id);
+        let info = ClientInfo {
+            id,
+            kind,
+            addr,
+            connected_at: SystemTime::now(),
+        };
+        let entry = ClientEntry {
+            info,
+            outbox: outbox.clone(),
+            subs: HashMap::new(),
+            slots: HashMap::new(),
+            advertised: HashSet::new(),
+        };
+        self.lock().clients.insert(id, entry);
+        (id, outbox)
+    }
+
+    /// Removes a participant with everything it advertised and subscribed.
+    pub fn disconnect(&self, id: ClientId) {
+        let mut st = self.lock();
+        let Some(entry) = st.clients.remove(&id) else {
+            return;
+        };
+        for (name, (slot, _)) in &entry.slots {
+            if let Some(t) = st.topics.get(name) {
+                detach(t, id);
+            }
+            entry.outbox.remove_slot(*slot);
+        }
+        for name in &entry.advertised {
+            if let Some(p) = st.publishers.get_mut(name) {
+                p.retain(|c| *c != id);
+            }
+        }
+        entry.outbox.close();
+        let names: Vec<TopicName> = entry
+            .advertised
+            .iter()
+            .chain(entry.slots.keys())
+            .cloned()
+            .collect();
+        for name in names {
+            gc_topic(&mut st, &name);
+        }
+    }
+
+    /// Declares `client` a publisher of `name`. A topic's type is fixed by its first
+    /// publisher; a later advertise may fill in the schema text.
+    pub fn advertise(
+        &self,
+        client: ClientId,
+        name: &TopicName,
+        schema: Schema,
+        latch: bool,
+    ) -> Result<Arc<Topic>, RouteError> {
+        let mut st = self.lock();
+        if !st.clients.contains_key(&client) {
+            return Err(RouteError::UnknownClient(client));
+        }
+        let others_publish = st
+            .publishers
+            .get(name)
+            .is_some_and(|p| p.iter().any(|c| *c != client));
+        let topic = match st.topics.get(name).cloned() {
+            Some(t) => {
+                let meta = t.meta();
+                let known = &meta.schema.type_name;
+                if others_publish && !known.is_empty() && !same_type(known, &schema.type_name) {
+                    return Err(RouteError::TypeConflict {
+                        topic: name.clone(),
+                        existing: known.clone(),
+                        requested: schema.type_name,
+                    });
+                }
+                if known.is_empty()
+                    || !same_type(known, &schema.type_name)
+                    || (meta.schema.text.is_empty() && !schema.text.is_empty())
+                {
+                    t.meta.store(Arc::new(TopicMeta {
+                        id: meta.id,
+                        name: name.clone(),
+                        schema,
+                    }));
+                }
+                t
+            }
+            None => self.create_topic(&mut st, name, schema),
+        };
+        if latch {
+            topic.latch.store(true, Relaxed);
+        }
+        let pubs = st.publishers.entry(name.clone()).or_default();
+        if !pubs.contains(&client) {
+            pubs.push(client);
+        }
+        if let Some(c) = st.clients.get_mut(&client) {
+            c.advertised.insert(name.clone());
+        }
+        Ok(topic)
+    }
+
+    pub fn unadvertise(&self, client: ClientId, name: &TopicName) {
+        let mut st = self.lock();
+        if let Some(c) = st.clients.get_mut(&client) {
+            c.advertised.remove(name);
+        }
+        if let Some(p) = st.publishers.get_mut(name) {
+            p.retain(|c| *c != client);
+        }
+        gc_topic(&mut st, name);
+    }
+
+    /// The topic if it exists (publishing to a topic someone else advertised).
+    pub fn topic(&self, name: &TopicName) -> Option<Arc<Topic>> {
+        self.lock().topics.get(name).cloned()
+    }
+
+    fn create_topic(&self, st: &mut State, name: &TopicName, schema: Schema) -> Arc<Topic> {
+        let id = TopicId(self.next_topic.fetch_add(1, Relaxed));
+        let topic = Arc::new(Topic {
+            meta: ArcSwap::from_pointee(TopicMeta {
+                id,
+                name: name.clone(),
+                schema,
+            }),
+            stats: Arc::new(TopicStats::default()),
+            subscribers: ArcSwap::from_pointee(Vec::new()),
+            latched: Mutex::new(None),
+            latch: Default::default(),
+            last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
+        });
+        st.topics.insert(name.clone(), topic.clone());
+        // Pattern subscriptions pick up new topics as they appear.
+        let mut matches = Vec::new();
+        for (cid, c) in &st.clients {
+            for (sid, (target, opts)) in &c.subs {
+                if let Target::Pattern(re) = target
+                    && re.is_match(name.as_str())
+                {
+                    matches.push((*cid, *sid, *opts));
+                }
+            }
+        }
+        for (cid, sid, opts) in matches {
+            self.attach(st, cid, sid, &topic, opts);
+        }
+        topic
+    }
+
+    /// Compiles a whole-name pattern with limits that keep a hostile pattern cheap: the
+    /// regex engine has no backtracking, and the compiled size is capped.
+    pub fn compile_pattern(pattern: &str) -> Result<Regex, RouteError> {
+        let bad = |reason: String| RouteError::BadPattern {
+            pattern: pattern.chars().take(100).collect(),
+            reason,
+        };
+        if pattern.len() > MAX_PATTERN_LEN {
+            return Err(bad(format!("longer than {MAX_PATTERN_LEN} bytes")));
+        }
+        regex::RegexBuilder::new(&format!("^(?:{pattern})$"))
+            .size_limit(REGEX_SIZE_LIMIT)
+            .dfa_size_limit(REGEX_SIZE_LIMIT)
+            .nest_limit(64)
+            .build()
+            .map_err(|e| bad(e.to_string()))
+    }
+
+    /// Subscribes `client` to a topic or a pattern. Subscribing to a topic nobody
+    /// publishes yet is allowed: messages flow once a publisher appears.
+    pub fn subscribe(
+        &self,
+        client: ClientId,
+        target: Target,
+        opts: SubOptions,
+    ) -> Result<SubscriptionId, RouteError> {
+        let sid = SubscriptionId(self.next_sub.fetch_add(1, Relaxed));
+        let mut st = self.lock();
+        let st = &mut *st;
+        let Some(c) = st.clients.get_mut(&client) else {
+            return Err(RouteError::UnknownClient(client));
+        };
+        c.subs.insert(sid, (target.clone(), opts));
+        let topics: Vec<Arc<Topic>> = match &target {
+            Target::Exact(name) => {
+                let t = match st.topics.get(name) {
+                    Some(t) => t.clone(),
+                    None => self.create_topic(st, name, Schema::default()),
+                };
+                vec![t]
+            }
+            Target::Pattern(re) => st
+                .topics
+                .iter()
+                .filter(|(n, _)| re.is_match(n.as_str()))
+                .map(|(_, t)| t.clone())
+                .collect(),
+        };
+        for t in topics {
+            self.attach(st, client, sid, &t, opts);
+        }
+        Ok(sid)
+    }
+
+    fn attach(
+        &self,
+        st: &mut State,
+        client: ClientId,
+        sid: SubscriptionId,
+        topic: &Arc<Topic>,
+        opts: SubOptions,
+    ) {
+        let Some(c) = st.clients.get_mut(&client) else {
+            return;
+        };
+        let name = topic.name();
+        if let Some((_, holders)) = c.slots.get_mut(&name) {
+            if !holders.contains(&sid) {
+                holders.push(sid);
+            }
+            return;
+        }
+        let queue: Box<dyn OutboundQueue> =
+            crate::queue::for_options(opts.queue_length, opts.throttle_ms, self.default_queue);
+        let slot = c.outbox.add_slot(queue, topic.stats.clone(), opts.delivery);
+        c.slots.insert(name, (slot, vec![sid]));
+        let r = SubscriberRef {
+            client,
+            outbox: c.outbox.clone(),
+            slot,
+        };
+        let mut list = Vec::clone(&topic.subscribers.load());
+        list.push(r);
+        topic.subscribers.store(Arc::new(list));
+        let latched = topic
+            .latched
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .clone();
+        if let Some(m) = latched
+            && m.origin != client
+        {
+            c.outbox.push(slot, m, Instant::now());
+        }
+    }
+
+    pub fn unsubscribe(&self, client: ClientId, sid: SubscriptionId) {
+        let mut st = self.lock();
+        let st = &mut *st;
+        let Some(c) = st.clients.get_mut(&client) else {
+            return;
+        };
+        c.subs.remove(&sid);
+        let mut emptied = Vec::new();
+        for (name, (slot, holders)) in c.slots.iter_mut() {
+            holders.retain(|h| *h != sid);
+            if holders.is_empty() {
+                emptied.push((name.clone(), *slot));
+            }
+        }
+        for (name, slot) in &emptied {
+            c.slots.remove(name);
+            c.outbox.remove_slot(*slot);
+        }
+        for (name, _) in emptied {
+            if let Some(t) = st.topics.get(&name) {
+                detach(t, client);
+            }
+            gc_topic(st, &name);
+        }
+    }
+
+    pub fn client_info(&self, id: ClientId) -> Option<ClientInfo> {
+        self.lock().clients.get(&id).map(|c| c.info.clone())
+    }
+
+    /// Every client with its outbox (for metrics and the API).
+    pub fn clients(&self) -> Vec<(ClientInfo, Arc<Outbox>, usize)> {
+        self.lock()
+            .clients
+            .values()
+            .map(|c| (c.info.clone(), c.outbox.clone(), c.slots.len()))
+            .collect()
+    }
+
+    /// Every topic, sorted by name.
+    pub fn topics(&self) -> Vec<TopicSnapshot> {
+        let st = self.lock();
+        let mut out: Vec<TopicSnapshot> = st
+            .topics
+            .iter()
+            .map(|(name, t)| TopicSnapshot {
+                topic: t.clone(),
+                meta: t.meta(),
+                publishers: st.publishers.get(name).cloned().unwrap_or_default(),
+                subscribers: t.subscribers.load().iter().map(|s| s.client).collect(),
+                stats: t.stats.clone(),
+            })
+            .collect();
+        out.sort_by(|a, b| a.meta.name.cmp(&b.meta.name));
+        out
+    }
+}
+
+/// ROS 1 and ROS 2 spell types `pkg/T` and `pkg/msg/T`; both name the same type.
+pub fn same_type(a: &str, b: &str) -> bool {
+    fn norm(s: &str) -> String {
+        s.replace("/msg/", "/")
+    }
+    a == b || norm(a) == norm(b)
+}
+
+fn detach(topic: &Topic, client: ClientId) {
+    let list: Vec<SubscriberRef> = topic
+        .subscribers
+        .load()
+        .iter()
+        .filter(|s| s.client != client)
+        .cloned()
+        .collect();
+    topic.subscribers.store(Arc::new(list));
+}
+
+/// Forgets a topic nobody publishes or subscribes to any more.
+fn gc_topic(st: &mut State, name: &TopicName) {
+    let has_pub = st.publishers.get(name).is_some_and(|p| !p.is_empty());
+    let has_sub = st
+        .topics
+        .get(name)
+        .is_some_and(|t| t.subscriber_count() > 0);
+    if !has_pub && !has_sub {
+        st.topics.remove(name);
+        st.publishers.remove(name);
+    }
+}
