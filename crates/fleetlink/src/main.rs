@@ -5,6 +5,8 @@
 
 mod cmd;
 
+use std::sync::Arc;
+
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
@@ -20,6 +22,14 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Run a hub: the relay robots connect to and operators use.
+    Hub(cmd::hub::Args),
+    /// Run an agent on a robot: connects out to a hub.
+    Agent(cmd::agent::Args),
+    /// Run a hub with three simulated robots, on one command.
+    Demo(cmd::demo::Args),
+    /// Load generators and measurements against a running hub.
+    Bench(cmd::bench::Args),
     /// Inspect ROS interface definitions and convert serialized messages.
     Msg(cmd::msg::Args),
     /// Reproduce the AFR paper's quality-of-information comparison (Figure 5).
@@ -29,7 +39,16 @@ enum Command {
 fn main() -> anyhow::Result<()> {
     let cli = Cli::parse();
     match cli.command {
+        Command::Hub(args) => cmd::hub::run(args),
+        Command::Agent(args) => cmd::agent::run(args),
+        Command::Demo(args) => cmd::demo::run(args),
+        Command::Bench(args) => cmd::bench::run(args),
         Command::Msg(args) => cmd::msg::run(args),
         Command::QoiSim(args) => cmd::qoi_sim::run(args),
     }
+}
+
+/// How messages are converted between encodings in this binary.
+pub fn transcoder() -> Arc<dyn fleetlink_relay::Transcoder> {
+    Arc::new(fleetlink_relay::GenericTranscoder)
 }

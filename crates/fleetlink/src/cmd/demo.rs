@@ -1,0 +1,8 @@
+//! `fleetlink demo`.
+
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn run(_args: Args) -> anyhow::Result<()> {
+    anyhow::bail!("`fleetlink demo` is not implemented yet")
+}
