@@ -34,7 +34,7 @@ use std::time::Duration;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
-use locate::{FieldPath, LocationTree, Segment};
+use locate::{LocationTree, Segment};
 pub use sim::{ImageSim, LaserScanSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of};
 
 /// The agent's configuration. See `docs/config.md` for every field.
