@@ -95,11 +95,11 @@ fn line_col<T>(s: &Spanned<T>) -> LineCol {
 }
 
 impl LocationTree {
-    /// Parses `text`; `None` when it is not valid YAML (the caller already has that error).
-    pub(crate) fn parse(text: &str) -> Option<Self> {
-        serde_saphyr::from_str::<Spanned<Node>>(text)
-            .ok()
-            .map(|root| Self { root })
+    /// Parses `text`. This accepts any YAML document, so an error here is a syntax error
+    /// (reported more precisely than by the typed parse, which may stop at a type mismatch
+    /// first).
+    pub(crate) fn parse(text: &str) -> Result<Self, serde_saphyr::Error> {
+        serde_saphyr::from_str::<Spanned<Node>>(text).map(|root| Self { root })
     }
 
     /// Position of the field at `path`: its key when `at_key` (for problems with the key

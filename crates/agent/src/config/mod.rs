@@ -273,25 +273,42 @@ impl ConfigError {
     }
 }
 
-fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError {
-    let message: String = serde_saphyr::UserMessageFormatter
+/// The parser's message without snippet or position (we print those ourselves), with
+/// control characters neutralised as the formatter's docs ask.
+fn yaml_message(err: &serde_saphyr::Error) -> String {
+    serde_saphyr::UserMessageFormatter
         .format_message(err.without_snippet())
         .chars()
         .map(|c| if c.is_control() { ' ' } else { c })
-        .collect();
+        .collect()
+}
+
+fn yaml_position(err: &serde_saphyr::Error, file: &str) -> SourcePos {
     let (line, column) = err
         .location()
         .map_or((1, 1), |l| (l.line().max(1), l.column().max(1)));
-    let at = SourcePos {
+    SourcePos {
         file: file.to_owned(),
         line,
         column,
+    }
+}
+
+fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError {
+    // The location tree accepts any YAML, so if it fails the text itself is broken, and
+    // its error is the syntax error proper.
+    let tree = match LocationTree::parse(text) {
+        Ok(tree) => tree,
+        Err(syntax) => {
+            return ConfigError::Syntax {
+                at: yaml_position(&syntax, file),
+                message: yaml_message(&syntax),
+            };
+        }
     };
-    // The location tree accepts any YAML, so if it fails the text itself is broken.
-    let Some(tree) = LocationTree::parse(text) else {
-        return ConfigError::Syntax { at, message };
-    };
-    let path = tree.path_at((line, column));
+    let message = yaml_message(err);
+    let at = yaml_position(err, file);
+    let path = tree.path_at((at.line, at.column));
     let message = match path.0.first() {
         Some(Segment::Key(k)) if k == "topics" && path.0.len() == 1 => {
             "reserved for per-topic QoS, not supported yet; remove it".to_owned()

@@ -242,7 +242,10 @@ fn syntax_errors_have_a_position() {
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }
-    assert!(e.to_string().starts_with("robot.yaml:2:"), "{e}");
+    assert_eq!(
+        e.to_string(),
+        "robot.yaml:2:6: invalid YAML: unclosed bracket '['"
+    );
     let e = err("name: a\nname: b\n");
     assert!(e.to_string().starts_with("robot.yaml:2:1: "), "{e}");
 }
@@ -276,7 +279,17 @@ fn load_reads_files_and_names_them() {
 fn example_files_parse() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let cfg = AgentConfig::load(&root.join("examples/agent.yaml")).expect("examples/agent.yaml");
-    assert!(cfg.sim.is_some());
+    assert_eq!(cfg.sim.map(|s| s.enabled_topics().len()), Some(5));
+
+    // The "Full example" block in the reference.
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("a yaml block in docs/config.md");
+    let cfg = AgentConfig::from_str(block, "docs/config.md").expect("docs example is valid");
+    assert_eq!(cfg.name, "robot7");
 }
 
 #[test]
