@@ -1,0 +1,335 @@
+//! Agent configuration: the YAML file `fleetlink agent --config robot.yaml` starts from.
+//!
+//! Every field is optional; [`AgentConfig::default`] is a working agent (hub on localhost,
+//! local rosbridge listener on 127.0.0.1:9090, no simulator). The reference with every field
+//! and default is `docs/config.md`; `examples/agent.yaml` is a commented example.
+//!
+//! Design: errors name the file, line, column and field, for all three kinds of mistakes:
+//!
+//! - YAML syntax (`name: [a`) — position from the parser (serde-saphyr), no field;
+//! - wrong type or unknown key (`deny_unknown_fields` everywhere) — position from the parser,
+//!   field path recovered by mapping the position back onto the document
+//!   ([`locate::LocationTree::path_at`]);
+//! - semantic checks on the typed value (`rate_hz: 0`, topic names, duplicates, `listen`
+//!   that is not an `IP:PORT`; [`validate`]) — field path from the check, position by
+//!   looking the path up in the document ([`locate::LocationTree::position_of`]).
+//!
+//! The typed structs stay span-free plain data; the location tree is a second parse of the
+//! same text that only happens when there is an error to report.
+//!
+//! The `topics:` key is reserved for per-topic QoS and rejected with "not supported yet"
+//! rather than accepted and ignored: a QoS setting that silently does nothing is worse than
+//! an error.
+
+mod locate;
+mod sim;
+mod validate;
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::net::SocketAddr;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use serde::{Deserialize, Deserializer};
+use serde_saphyr::MessageFormatter;
+
+use locate::{LocationTree, Segment};
+pub use sim::{ImageSim, LaserScanSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of};
+
+/// The agent's configuration. See `docs/config.md` for every field.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct AgentConfig {
+    /// Hub URL, `ws://` or `wss://`. Default `ws://127.0.0.1:8080`. CLI `--hub` overrides.
+    pub hub: String,
+    /// Robot name, `[A-Za-z0-9_]+`; its topics appear on the hub under `/<name>`.
+    /// Default `robot1`. CLI `--name` overrides.
+    pub name: String,
+    /// Credential presented to the hub. Default empty (no credential).
+    pub token: String,
+    /// Ping interval in milliseconds; the link is declared dead after two intervals of
+    /// silence. Default 1000.
+    pub heartbeat_ms: u64,
+    /// Reconnect backoff.
+    pub reconnect: ReconnectConfig,
+    /// Local rosbridge v2 listener; `None` (`local_rosbridge: null`) disables it.
+    pub local_rosbridge: Option<LocalRosbridgeConfig>,
+    /// Local topic → hub topic. Topics not listed go to `/<name><local topic>`.
+    pub remap: BTreeMap<String, String>,
+    /// Hub topics delivered to local subscribers.
+    pub subscribe: Vec<Subscription>,
+    /// Simulated robot; `None` (the default) runs no simulator.
+    pub sim: Option<SimConfig>,
+}
+
+impl Default for AgentConfig {
+    fn default() -> Self {
+        Self {
+            hub: "ws://127.0.0.1:8080".to_owned(),
+            name: "robot1".to_owned(),
+            token: String::new(),
+            heartbeat_ms: 1000,
+            reconnect: ReconnectConfig::default(),
+            local_rosbridge: Some(LocalRosbridgeConfig::default()),
+            remap: BTreeMap::new(),
+            subscribe: Vec::new(),
+            sim: None,
+        }
+    }
+}
+
+/// Exponential reconnect backoff with jitter, from `initial_ms` doubling up to `max_ms`.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ReconnectConfig {
+    /// First retry delay. Default 250.
+    pub initial_ms: u64,
+    /// Largest retry delay. Default 10000.
+    pub max_ms: u64,
+}
+
+impl Default for ReconnectConfig {
+    fn default() -> Self {
+        Self {
+            initial_ms: 250,
+            max_ms: 10_000,
+        }
+    }
+}
+
+impl ReconnectConfig {
+    pub fn initial(&self) -> Duration {
+        Duration::from_millis(self.initial_ms)
+    }
+
+    pub fn max(&self) -> Duration {
+        Duration::from_millis(self.max_ms)
+    }
+}
+
+/// The rosbridge v2 server local programs connect to.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct LocalRosbridgeConfig {
+    /// `false` disables the listener (same as `local_rosbridge: null`). Default `true`.
+    pub enabled: bool,
+    /// `IP:PORT` to listen on (an IP literal, not a host name). Default `127.0.0.1:9090`.
+    #[serde(deserialize_with = "socket_addr")]
+    pub listen: SocketAddr,
+}
+
+impl Default for LocalRosbridgeConfig {
+    fn default() -> Self {
+        Self {
+            enabled: true,
+            listen: SocketAddr::from(([127, 0, 0, 1], 9090)),
+        }
+    }
+}
+
+/// A hub topic delivered to local subscribers under a local name.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Subscription {
+    /// Topic name on the hub.
+    pub hub: String,
+    /// Topic name local programs subscribe to.
+    pub local: String,
+}
+
+impl AgentConfig {
+    /// Reads and checks a config file. Errors name the file, line, column and field.
+    pub fn load(path: &Path) -> Result<Self, ConfigError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ConfigError::Read {
+            path: path.to_owned(),
+            source,
+        })?;
+        Self::from_str(&text, &path.display().to_string())
+    }
+
+    /// Parses and checks config text; `file_name` is only used in error messages.
+    pub fn from_str(text: &str, file_name: &str) -> Result<Self, ConfigError> {
+        let config: Self =
+            serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
+        validate::validate(&config).map_err(|problem| {
+            let (line, column) = LocationTree::parse(text).map_or((1, 1), |tree| {
+                tree.position_of(&problem.path, problem.at_key)
+            });
+            ConfigError::Field {
+                at: SourcePos {
+                    file: file_name.to_owned(),
+                    line,
+                    column,
+                },
+                field: problem.path.to_string(),
+                message: problem.message,
+            }
+        })?;
+        Ok(config)
+    }
+
+    /// Runs the semantic checks on a config built or changed in code (for example after
+    /// command-line overrides). Errors carry the field but no position.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        validate::validate(self).map_err(|problem| ConfigError::Invalid {
+            field: problem.path.to_string(),
+            message: problem.message,
+        })
+    }
+
+    /// Ping interval.
+    pub fn heartbeat(&self) -> Duration {
+        Duration::from_millis(self.heartbeat_ms)
+    }
+
+    /// Silence after which the hub link is declared dead: two heartbeats.
+    pub fn link_timeout(&self) -> Duration {
+        self.heartbeat() * 2
+    }
+
+    /// Address of the local rosbridge listener, `None` when disabled.
+    pub fn local_rosbridge_listen(&self) -> Option<SocketAddr> {
+        self.local_rosbridge
+            .as_ref()
+            .filter(|l| l.enabled)
+            .map(|l| l.listen)
+    }
+
+    /// Hub topic for a local topic: the `remap` entry, else `/<name><local>`.
+    pub fn hub_topic(&self, local: &str) -> String {
+        match self.remap.get(local) {
+            Some(hub) => hub.clone(),
+            None => format!("/{}{}", self.name, local),
+        }
+    }
+}
+
+/// Checks a robot name (`[A-Za-z0-9_]+`), e.g. one given on the command line.
+pub fn check_robot_name(name: &str) -> Result<(), String> {
+    validate::check_robot_name(name)
+}
+
+/// Checks a fully qualified ROS topic name (`/a/b_c`).
+pub fn check_topic_name(topic: &str) -> Result<(), String> {
+    validate::check_topic(topic)
+}
+
+/// Where in which file: `robot.yaml:12:5`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SourcePos {
+    pub file: String,
+    /// 1-based.
+    pub line: u64,
+    /// 1-based, in characters.
+    pub column: u64,
+}
+
+impl fmt::Display for SourcePos {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}:{}", self.file, self.line, self.column)
+    }
+}
+
+/// Why a configuration was rejected.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    #[error("{}: cannot read config: {source}", path.display())]
+    Read {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    /// Not valid YAML; `message` is the parser's.
+    #[error("{at}: invalid YAML: {message}")]
+    Syntax { at: SourcePos, message: String },
+    /// A field has the wrong type, is unknown, or fails a check; `message` is the parser's
+    /// or the check's text.
+    #[error("{at}: {field}: {message}")]
+    Field {
+        at: SourcePos,
+        field: String,
+        message: String,
+    },
+    /// From [`AgentConfig::validate`] on a config that did not come from a file.
+    #[error("config field {field}: {message}")]
+    Invalid { field: String, message: String },
+}
+
+impl ConfigError {
+    /// The field path (`sim.point_cloud.rate_hz`), when a field is to blame.
+    pub fn field(&self) -> Option<&str> {
+        match self {
+            Self::Field { field, .. } | Self::Invalid { field, .. } => Some(field),
+            Self::Read { .. } | Self::Syntax { .. } => None,
+        }
+    }
+
+    /// Line and column, when the error came from a file's text.
+    pub fn position(&self) -> Option<&SourcePos> {
+        match self {
+            Self::Syntax { at, .. } | Self::Field { at, .. } => Some(at),
+            Self::Read { .. } | Self::Invalid { .. } => None,
+        }
+    }
+}
+
+/// The parser's message without snippet or position (we print those ourselves), with
+/// control characters neutralised as the formatter's docs ask.
+fn yaml_message(err: &serde_saphyr::Error) -> String {
+    serde_saphyr::UserMessageFormatter
+        .format_message(err.without_snippet())
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
+}
+
+fn yaml_position(err: &serde_saphyr::Error, file: &str) -> SourcePos {
+    let (line, column) = err
+        .location()
+        .map_or((1, 1), |l| (l.line().max(1), l.column().max(1)));
+    SourcePos {
+        file: file.to_owned(),
+        line,
+        column,
+    }
+}
+
+fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError {
+    // The location tree accepts any YAML, so if it fails the text itself is broken, and
+    // its error is the syntax error proper.
+    let tree = match LocationTree::parse(text) {
+        Ok(tree) => tree,
+        Err(syntax) => {
+            return ConfigError::Syntax {
+                at: yaml_position(&syntax, file),
+                message: yaml_message(&syntax),
+            };
+        }
+    };
+    let message = yaml_message(err);
+    let at = yaml_position(err, file);
+    let path = tree.path_at((at.line, at.column));
+    let message = match path.0.first() {
+        Some(Segment::Key(k)) if k == "topics" && path.0.len() == 1 => {
+            "reserved for per-topic QoS, not supported yet; remove it".to_owned()
+        }
+        _ => message,
+    };
+    ConfigError::Field {
+        at,
+        field: path.to_string(),
+        message,
+    }
+}
+
+fn socket_addr<'de, D: Deserializer<'de>>(deserializer: D) -> Result<SocketAddr, D::Error> {
+    let text = String::deserialize(deserializer)?;
+    text.parse().map_err(|e| {
+        serde::de::Error::custom(format!(
+            "expected IP:PORT like 127.0.0.1:9090, got {text:?} ({e})"
+        ))
+    })
+}
+
+#[cfg(test)]
+mod tests;

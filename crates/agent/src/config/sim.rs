@@ -1,0 +1,182 @@
+//! The `sim:` section: which simulated sensors run, on which topics, how fast.
+//!
+//! A sensor that is omitted (or `null`) does not run; a sensor given as `{}` runs with the
+//! defaults below. `sim: {}` (no sensor named at all) is shorthand for "all five sensors with
+//! their defaults", which is what [`SimConfig::default`] returns too; as soon as one sensor is
+//! named, only the named ones run.
+
+use std::time::Duration;
+
+use serde::Deserialize;
+
+/// Simulated robot: a seed and up to five sensors. See `docs/config.md`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(from = "SimConfigYaml")]
+pub struct SimConfig {
+    /// Seeds the sensor noise and the robot's start position on its path. Default 1.
+    pub seed: u64,
+    /// Prepended to every `frame_id` (`odom`, `base_link`, `laser`, `lidar`, `camera`).
+    /// Default `""`.
+    pub frame_prefix: String,
+    pub laser_scan: Option<LaserScanSim>,
+    pub odometry: Option<OdometrySim>,
+    pub pose: Option<PoseSim>,
+    pub point_cloud: Option<PointCloudSim>,
+    pub image: Option<ImageSim>,
+}
+
+impl Default for SimConfig {
+    /// All five sensors with their defaults, seed 1.
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            frame_prefix: String::new(),
+            laser_scan: Some(LaserScanSim::default()),
+            odometry: Some(OdometrySim::default()),
+            pose: Some(PoseSim::default()),
+            point_cloud: Some(PointCloudSim::default()),
+            image: Some(ImageSim::default()),
+        }
+    }
+}
+
+impl SimConfig {
+    /// `(yaml key, topic, rate_hz)` of every enabled sensor, in a fixed order.
+    pub fn enabled_topics(&self) -> Vec<(&'static str, &str, f64)> {
+        let mut out = Vec::new();
+        if let Some(s) = &self.laser_scan {
+            out.push(("laser_scan", s.topic.as_str(), s.rate_hz));
+        }
+        if let Some(s) = &self.odometry {
+            out.push(("odometry", s.topic.as_str(), s.rate_hz));
+        }
+        if let Some(s) = &self.pose {
+            out.push(("pose", s.topic.as_str(), s.rate_hz));
+        }
+        if let Some(s) = &self.point_cloud {
+            out.push(("point_cloud", s.topic.as_str(), s.rate_hz));
+        }
+        if let Some(s) = &self.image {
+            out.push(("image", s.topic.as_str(), s.rate_hz));
+        }
+        out
+    }
+}
+
+/// Publish period for a rate in Hz, rounded to whole nanoseconds. `rate_hz` must be > 0
+/// (validation guarantees it for loaded configs; non-positive rates give one hour).
+pub fn period_of(rate_hz: f64) -> Duration {
+    if rate_hz > 0.0 && rate_hz.is_finite() {
+        Duration::from_nanos((1e9 / rate_hz).round().max(1.0) as u64)
+    } else {
+        Duration::from_secs(3600)
+    }
+}
+
+macro_rules! sensor {
+    ($(#[$doc:meta])* $name:ident { topic: $topic:literal, rate_hz: $rate:literal $(, $(#[$fdoc:meta])* $field:ident: $ty:ty = $default:literal)* }) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, PartialEq, Deserialize)]
+        #[serde(default, deny_unknown_fields)]
+        pub struct $name {
+            #[doc = concat!("Local topic name. Default `", $topic, "`.")]
+            pub topic: String,
+            #[doc = concat!("Publish rate in Hz (> 0, fractions allowed). Default ", stringify!($rate), ".")]
+            pub rate_hz: f64,
+            $($(#[$fdoc])* pub $field: $ty,)*
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                Self { topic: $topic.to_owned(), rate_hz: $rate as f64, $($field: $default,)* }
+            }
+        }
+
+        impl $name {
+            /// Time between two messages.
+            pub fn period(&self) -> Duration {
+                period_of(self.rate_hz)
+            }
+        }
+    };
+}
+
+sensor!(
+    /// `sensor_msgs/msg/LaserScan`: a 360° planar scan of the room.
+    LaserScanSim { topic: "/scan", rate_hz: 10,
+        /// Number of beams. Default 720.
+        ranges: u32 = 720 }
+);
+sensor!(
+    /// `nav_msgs/msg/Odometry` in the `odom` frame.
+    OdometrySim { topic: "/odom", rate_hz: 20 }
+);
+sensor!(
+    /// `geometry_msgs/msg/PoseStamped` in the `odom` frame.
+    PoseSim { topic: "/pose", rate_hz: 10 }
+);
+sensor!(
+    /// `sensor_msgs/msg/PointCloud2` (x, y, z, intensity as float32) from a 3D lidar.
+    PointCloudSim { topic: "/points", rate_hz: 5,
+        /// Points per cloud. Default 10000.
+        points: u32 = 10_000 }
+);
+sensor!(
+    /// `sensor_msgs/msg/CompressedImage` with `format: jpeg` and synthetic bytes.
+    ImageSim { topic: "/camera/image/compressed", rate_hz: 10,
+        /// Size of `data` before base64. Default 50000.
+        bytes: u32 = 50_000 }
+);
+
+/// The YAML shape, before "no sensor named means all sensors" is applied.
+#[derive(Deserialize)]
+#[serde(default, deny_unknown_fields)]
+struct SimConfigYaml {
+    seed: u64,
+    frame_prefix: String,
+    laser_scan: Option<LaserScanSim>,
+    odometry: Option<OdometrySim>,
+    pose: Option<PoseSim>,
+    point_cloud: Option<PointCloudSim>,
+    image: Option<ImageSim>,
+}
+
+impl Default for SimConfigYaml {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            frame_prefix: String::new(),
+            laser_scan: None,
+            odometry: None,
+            pose: None,
+            point_cloud: None,
+            image: None,
+        }
+    }
+}
+
+impl From<SimConfigYaml> for SimConfig {
+    fn from(y: SimConfigYaml) -> Self {
+        let none_named = y.laser_scan.is_none()
+            && y.odometry.is_none()
+            && y.pose.is_none()
+            && y.point_cloud.is_none()
+            && y.image.is_none();
+        if none_named {
+            return Self {
+                seed: y.seed,
+                frame_prefix: y.frame_prefix,
+                ..Self::default()
+            };
+        }
+        Self {
+            seed: y.seed,
+            frame_prefix: y.frame_prefix,
+            laser_scan: y.laser_scan,
+            odometry: y.odometry,
+            pose: y.pose,
+            point_cloud: y.point_cloud,
+            image: y.image,
+        }
+    }
+}

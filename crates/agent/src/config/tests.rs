@@ -1,0 +1,306 @@
+//! Config parsing and error reporting: every error names file, line, column and field.
+
+use super::*;
+
+fn err(text: &str) -> ConfigError {
+    match AgentConfig::from_str(text, "robot.yaml") {
+        Ok(cfg) => panic!("expected an error for {text:?}, got {cfg:?}"),
+        Err(e) => e,
+    }
+}
+
+/// Asserts the error's full text, which is what a user sees.
+fn assert_err(text: &str, expected: &str) {
+    assert_eq!(err(text).to_string(), expected, "for {text:?}");
+}
+
+const FULL: &str = "\
+hub: wss://hub.example.com:443
+name: robot_7
+token: s3cret
+heartbeat_ms: 500
+reconnect: { initial_ms: 100, max_ms: 5000 }
+local_rosbridge: { listen: 0.0.0.0:9191 }
+remap:
+  /map: /fleet/map
+subscribe:
+  - { hub: /fleet/announcements, local: /announcements }
+sim:
+  seed: 42
+  frame_prefix: r7/
+  laser_scan:   { topic: /scan, rate_hz: 10, ranges: 360 }
+  point_cloud:  { rate_hz: 2.5 }
+";
+
+#[test]
+fn empty_file_is_the_default() {
+    assert_eq!(
+        AgentConfig::from_str("", "a.yaml").expect("empty is valid"),
+        AgentConfig::default()
+    );
+    assert_eq!(
+        AgentConfig::from_str("# only a comment\n", "a.yaml").expect("valid"),
+        AgentConfig::default()
+    );
+    AgentConfig::default()
+        .validate()
+        .expect("the default is valid");
+}
+
+#[test]
+fn full_example_parses() {
+    let cfg = AgentConfig::from_str(FULL, "robot.yaml").expect("valid");
+    assert_eq!(cfg.hub, "wss://hub.example.com:443");
+    assert_eq!(cfg.name, "robot_7");
+    assert_eq!(cfg.token, "s3cret");
+    assert_eq!(cfg.heartbeat(), Duration::from_millis(500));
+    assert_eq!(cfg.link_timeout(), Duration::from_secs(1));
+    assert_eq!(cfg.reconnect.initial(), Duration::from_millis(100));
+    assert_eq!(cfg.reconnect.max(), Duration::from_secs(5));
+    assert_eq!(
+        cfg.local_rosbridge_listen(),
+        Some("0.0.0.0:9191".parse().expect("addr"))
+    );
+    assert_eq!(cfg.hub_topic("/map"), "/fleet/map");
+    assert_eq!(cfg.hub_topic("/scan"), "/robot_7/scan");
+    assert_eq!(
+        cfg.subscribe,
+        vec![Subscription {
+            hub: "/fleet/announcements".into(),
+            local: "/announcements".into()
+        }]
+    );
+    let sim = cfg.sim.expect("sim configured");
+    assert_eq!((sim.seed, sim.frame_prefix.as_str()), (42, "r7/"));
+    let scan = sim.laser_scan.expect("scan enabled");
+    assert_eq!((scan.topic.as_str(), scan.ranges), ("/scan", 360));
+    assert_eq!(scan.period(), Duration::from_millis(100));
+    let cloud = sim.point_cloud.expect("cloud enabled");
+    assert_eq!((cloud.topic.as_str(), cloud.points), ("/points", 10_000));
+    assert_eq!(cloud.period(), Duration::from_millis(400));
+    assert!(sim.odometry.is_none() && sim.pose.is_none() && sim.image.is_none());
+}
+
+#[test]
+fn sim_without_sensors_means_all_sensors() {
+    let cfg = AgentConfig::from_str("sim: {}\n", "a.yaml").expect("valid");
+    assert_eq!(cfg.sim, Some(SimConfig::default()));
+    let cfg = AgentConfig::from_str("sim: { seed: 9 }\n", "a.yaml").expect("valid");
+    let sim = cfg.sim.expect("sim");
+    assert_eq!(sim.seed, 9);
+    assert_eq!(sim.enabled_topics().len(), 5);
+    let cfg = AgentConfig::from_str("sim: { pose: {} }\n", "a.yaml").expect("valid");
+    assert_eq!(
+        cfg.sim.expect("sim").enabled_topics(),
+        vec![("pose", "/pose", 10.0)]
+    );
+}
+
+#[test]
+fn local_rosbridge_can_be_disabled_two_ways() {
+    for text in [
+        "local_rosbridge: null\n",
+        "local_rosbridge: ~\n",
+        "local_rosbridge: { enabled: false }\n",
+    ] {
+        let cfg = AgentConfig::from_str(text, "a.yaml").expect("valid");
+        assert_eq!(cfg.local_rosbridge_listen(), None, "{text}");
+    }
+    let cfg = AgentConfig::from_str("local_rosbridge: {}\n", "a.yaml").expect("valid");
+    assert_eq!(
+        cfg.local_rosbridge_listen(),
+        Some("127.0.0.1:9090".parse().expect("addr"))
+    );
+}
+
+#[test]
+fn semantic_error_names_file_line_and_field() {
+    let text = "\
+name: r1
+sim:
+  seed: 3
+  point_cloud:
+    topic: /points
+    rate_hz: 0
+";
+    let e = err(text);
+    assert_eq!(
+        e.to_string(),
+        "robot.yaml:6:14: sim.point_cloud.rate_hz: must be > 0, got 0"
+    );
+    assert_eq!(e.field(), Some("sim.point_cloud.rate_hz"));
+    assert_eq!(e.position().map(|p| (p.line, p.column)), Some((6, 14)));
+}
+
+#[test]
+fn semantic_errors() {
+    assert_err(
+        "sim: { laser_scan: { topic: '' } }\n",
+        "robot.yaml:1:29: sim.laser_scan.topic: must not be empty",
+    );
+    assert_err(
+        "sim:\n  odometry: { topic: odom }\n",
+        "robot.yaml:2:22: sim.odometry.topic: must start with '/', got \"odom\"",
+    );
+    assert_err(
+        "sim:\n  odometry: {}\n  pose: { topic: /odom }\n",
+        "robot.yaml:3:18: sim.pose.topic: \"/odom\" is already used by sim.odometry; sim topics must be unique",
+    );
+    assert_err(
+        "local_rosbridge:\n  listen: localhost\n",
+        "robot.yaml:2:11: local_rosbridge.listen: expected IP:PORT like 127.0.0.1:9090, got \"localhost\" (invalid socket address syntax)",
+    );
+    assert_err(
+        "name: robot-1\n",
+        "robot.yaml:1:7: name: may only contain A-Z, a-z, 0-9 and _, got '-' in \"robot-1\"",
+    );
+    assert_err(
+        "hub: http://x\n",
+        "robot.yaml:1:6: hub: must be a ws:// or wss:// URL, got \"http://x\"",
+    );
+    assert_err(
+        "heartbeat_ms: 0\n",
+        "robot.yaml:1:15: heartbeat_ms: must be > 0, got 0",
+    );
+    assert_err(
+        "reconnect:\n  initial_ms: 500\n  max_ms: 100\n",
+        "robot.yaml:3:11: reconnect.max_ms: must be >= reconnect.initial_ms (500), got 100",
+    );
+    assert_err(
+        "remap:\n  /ok: /fine\n  map: /fleet/map\n",
+        "robot.yaml:3:3: remap.map: local topic must start with '/', got \"map\"",
+    );
+    assert_err(
+        "remap:\n  /map: fleet//map\n",
+        "robot.yaml:2:9: remap[\"/map\"]: must start with '/', got \"fleet//map\"",
+    );
+    assert_err(
+        "subscribe:\n  - { hub: /a, local: /b }\n  - hub: /c/\n    local: /d\n",
+        "robot.yaml:3:10: subscribe[1].hub: must be '/'-separated non-empty names, got \"/c/\"",
+    );
+    assert_err(
+        "sim: { image: { bytes: 3 } }\n",
+        "robot.yaml:1:24: sim.image.bytes: must be in 16..=50000000, got 3",
+    );
+}
+
+#[test]
+fn type_errors_name_the_field() {
+    let e = err("name: r1\nsim:\n  laser_scan:\n    rate_hz: fast\n");
+    assert_eq!(e.field(), Some("sim.laser_scan.rate_hz"), "{e}");
+    assert_eq!(
+        e.position().map(|p| (p.line, p.column)),
+        Some((4, 14)),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .starts_with("robot.yaml:4:14: sim.laser_scan.rate_hz: "),
+        "{e}"
+    );
+
+    let e = err("subscribe:\n  - { hub: /a, local: [1, 2] }\n");
+    assert_eq!(e.field(), Some("subscribe[0].local"), "{e}");
+
+    let e = err("heartbeat_ms: -5\n");
+    assert_eq!(e.field(), Some("heartbeat_ms"), "{e}");
+    assert_eq!(e.position().map(|p| p.line), Some(1));
+}
+
+#[test]
+fn unknown_fields_are_rejected_with_their_path() {
+    let e = err("name: r1\nsim:\n  laser_scan: { topic: /scan, beams: 10 }\n");
+    assert_eq!(e.field(), Some("sim.laser_scan.beams"), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("robot.yaml:3:31: sim.laser_scan.beams: unknown field `beams`"),
+        "{e}"
+    );
+
+    let e = err("heartbeat: 5\n");
+    assert_eq!(
+        e.to_string().split(": unknown").next(),
+        Some("robot.yaml:1:1: heartbeat"),
+        "{e}"
+    );
+}
+
+#[test]
+fn topics_key_is_reserved() {
+    assert_err(
+        "name: r1\ntopics:\n  /scan: { policy: latest }\n",
+        "robot.yaml:2:1: topics: reserved for per-topic QoS, not supported yet; remove it",
+    );
+}
+
+#[test]
+fn syntax_errors_have_a_position() {
+    let e = err("name: r1\nsim: [a\n");
+    match &e {
+        ConfigError::Syntax { at, .. } => {
+            assert_eq!((at.file.as_str(), at.line), ("robot.yaml", 2))
+        }
+        other => panic!("expected a syntax error, got {other:?}"),
+    }
+    assert_eq!(
+        e.to_string(),
+        "robot.yaml:2:6: invalid YAML: unclosed bracket '['"
+    );
+    let e = err("name: a\nname: b\n");
+    assert!(e.to_string().starts_with("robot.yaml:2:1: "), "{e}");
+}
+
+#[test]
+fn load_reads_files_and_names_them() {
+    let dir = std::env::temp_dir().join(format!("fleetlink-config-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("robot.yaml");
+    std::fs::write(&path, "sim:\n  pose: { rate_hz: 0 }\n").expect("write");
+    let e = AgentConfig::load(&path).expect_err("rate 0");
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}:2:20: sim.pose.rate_hz: must be > 0, got 0",
+            path.display()
+        )
+    );
+    let missing = dir.join("missing.yaml");
+    let e = AgentConfig::load(&missing).expect_err("missing");
+    assert!(matches!(e, ConfigError::Read { .. }), "{e:?}");
+    assert!(
+        e.to_string()
+            .starts_with(&format!("{}: cannot read config: ", missing.display())),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&dir).expect("cleanup");
+}
+
+#[test]
+fn example_files_parse() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let cfg = AgentConfig::load(&root.join("examples/agent.yaml")).expect("examples/agent.yaml");
+    assert_eq!(cfg.sim.map(|s| s.enabled_topics().len()), Some(5));
+
+    // The "Full example" block in the reference.
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("a yaml block in docs/config.md");
+    let cfg = AgentConfig::from_str(block, "docs/config.md").expect("docs example is valid");
+    assert_eq!(cfg.name, "robot7");
+}
+
+#[test]
+fn validate_reports_the_field_without_position() {
+    let cfg = AgentConfig {
+        name: "bad name".into(),
+        ..AgentConfig::default()
+    };
+    let e = cfg.validate().expect_err("bad name");
+    assert_eq!(
+        e.to_string(),
+        "config field name: may only contain A-Z, a-z, 0-9 and _, got ' ' in \"bad name\""
+    );
+}

@@ -1,0 +1,158 @@
+//! Semantic checks on a parsed [`AgentConfig`]: what serde's types cannot say (rates > 0,
+//! ROS topic name syntax, unique sim topics, `hub` is a WebSocket URL).
+//!
+//! Checks run on the typed value and report a [`FieldPath`]; the caller turns the path into
+//! a line and column with [`super::locate::LocationTree`]. The first problem in document
+//! order of the fields is reported.
+
+use std::collections::BTreeMap;
+
+use super::locate::FieldPath;
+use super::{AgentConfig, SimConfig};
+
+/// One thing wrong with a config, and where.
+#[derive(Debug)]
+pub(crate) struct Problem {
+    pub(crate) path: FieldPath,
+    /// Point at the mapping key rather than its value (the key itself is wrong).
+    pub(crate) at_key: bool,
+    pub(crate) message: String,
+}
+
+fn problem(path: FieldPath, message: impl Into<String>) -> Problem {
+    Problem {
+        path,
+        at_key: false,
+        message: message.into(),
+    }
+}
+
+pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
+    if !(cfg.hub.starts_with("ws://") || cfg.hub.starts_with("wss://")) {
+        return Err(problem(
+            "hub".into(),
+            format!("must be a ws:// or wss:// URL, got {:?}", cfg.hub),
+        ));
+    }
+    check_robot_name(&cfg.name).map_err(|m| problem("name".into(), m))?;
+    if cfg.heartbeat_ms == 0 {
+        return Err(problem("heartbeat_ms".into(), "must be > 0, got 0"));
+    }
+    if cfg.reconnect.initial_ms == 0 {
+        return Err(problem("reconnect.initial_ms".into(), "must be > 0, got 0"));
+    }
+    if cfg.reconnect.max_ms < cfg.reconnect.initial_ms {
+        return Err(problem(
+            "reconnect.max_ms".into(),
+            format!(
+                "must be >= reconnect.initial_ms ({}), got {}",
+                cfg.reconnect.initial_ms, cfg.reconnect.max_ms
+            ),
+        ));
+    }
+    let remap = FieldPath::from("remap");
+    for (local, hub) in &cfg.remap {
+        check_topic(local).map_err(|m| Problem {
+            path: remap.key(local.clone()),
+            at_key: true,
+            message: format!("local topic {m}"),
+        })?;
+        check_topic(hub).map_err(|m| problem(remap.key(local.clone()), m))?;
+    }
+    let subscribe = FieldPath::from("subscribe");
+    for (i, sub) in cfg.subscribe.iter().enumerate() {
+        check_topic(&sub.hub).map_err(|m| problem(subscribe.index(i).key("hub"), m))?;
+        check_topic(&sub.local).map_err(|m| problem(subscribe.index(i).key("local"), m))?;
+    }
+    if let Some(sim) = &cfg.sim {
+        validate_sim(sim)?;
+    }
+    Ok(())
+}
+
+fn validate_sim(sim: &SimConfig) -> Result<(), Problem> {
+    let mut seen: BTreeMap<&str, &str> = BTreeMap::new();
+    for (key, topic, rate_hz) in sim.enabled_topics() {
+        let at = FieldPath::from("sim").key(key);
+        check_topic(topic).map_err(|m| problem(at.key("topic"), m))?;
+        if let Some(first) = seen.insert(topic, key) {
+            return Err(problem(
+                at.key("topic"),
+                format!("{topic:?} is already used by sim.{first}; sim topics must be unique"),
+            ));
+        }
+        if !(rate_hz > 0.0 && rate_hz.is_finite()) {
+            return Err(problem(
+                at.key("rate_hz"),
+                format!("must be > 0, got {rate_hz}"),
+            ));
+        }
+        if rate_hz > 1000.0 {
+            return Err(problem(
+                at.key("rate_hz"),
+                format!("must be <= 1000, got {rate_hz}"),
+            ));
+        }
+    }
+    let counts = [
+        sim.laser_scan
+            .as_ref()
+            .map(|s| ("laser_scan", "ranges", s.ranges, 1, 100_000)),
+        sim.point_cloud
+            .as_ref()
+            .map(|s| ("point_cloud", "points", s.points, 1, 5_000_000)),
+        sim.image
+            .as_ref()
+            .map(|s| ("image", "bytes", s.bytes, 16, 50_000_000)),
+    ];
+    for (sensor, field, value, min, max) in counts.into_iter().flatten() {
+        if !(min..=max).contains(&value) {
+            return Err(problem(
+                FieldPath::from("sim").key(sensor).key(field),
+                format!("must be in {min}..={max}, got {value}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `[A-Za-z0-9_]+`: the robot name becomes the namespace `/<name>` on the hub.
+pub(crate) fn check_robot_name(name: &str) -> Result<(), String> {
+    if name.is_empty() {
+        return Err("must not be empty".into());
+    }
+    if let Some(c) = name
+        .chars()
+        .find(|c| !(c.is_ascii_alphanumeric() || *c == '_'))
+    {
+        return Err(format!(
+            "may only contain A-Z, a-z, 0-9 and _, got {c:?} in {name:?}"
+        ));
+    }
+    Ok(())
+}
+
+/// A fully qualified ROS topic name: `/` then `/`-separated tokens of `[A-Za-z0-9_]`,
+/// no empty token, no trailing `/`.
+pub(crate) fn check_topic(topic: &str) -> Result<(), String> {
+    if topic.is_empty() {
+        return Err("must not be empty".into());
+    }
+    let Some(rest) = topic.strip_prefix('/') else {
+        return Err(format!("must start with '/', got {topic:?}"));
+    };
+    if rest.is_empty() || rest.split('/').any(str::is_empty) {
+        return Err(format!(
+            "must be '/'-separated non-empty names, got {topic:?}"
+        ));
+    }
+    if let Some(c) = rest
+        .chars()
+        .find(|c| !(c.is_ascii_alphanumeric() || *c == '_' || *c == '/'))
+    {
+        return Err(format!(
+            "may only contain A-Z, a-z, 0-9, _ and /, got {c:?} in {topic:?}"
+        ));
+    }
+    Ok(())
+}

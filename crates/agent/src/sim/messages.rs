@@ -1,0 +1,399 @@
+//! The five message types in rosbridge JSON (ROS 2 field names; `uint8[]` as base64).
+//!
+//! Design: typed `Serialize` structs mirror the ROS 2 definitions field by field, so a
+//! wrong field name is a compile-time diff against the `.msg`, not a typo in a string.
+//! Large arrays (cloud points, image bytes, scan ranges) are written into buffers owned by
+//! [`Scratch`] and reused between messages; the only per-message allocation of size is the
+//! JSON output, which is handed out as `Bytes`.
+
+use base64::Engine;
+use base64::engine::general_purpose::STANDARD as BASE64;
+use serde::Serialize;
+
+use super::world::{self, Noise, RobotState, Surface};
+
+#[derive(Serialize)]
+pub(crate) struct Time {
+    sec: i32,
+    nanosec: u32,
+}
+
+impl Time {
+    pub(crate) fn from_ns(ns: u64) -> Self {
+        // ROS 2 Time is int32 seconds: saturate rather than wrap in 2038.
+        let sec = i32::try_from(ns / 1_000_000_000).unwrap_or(i32::MAX);
+        Self {
+            sec,
+            nanosec: (ns % 1_000_000_000) as u32,
+        }
+    }
+}
+
+#[derive(Serialize)]
+pub(crate) struct Header<'a> {
+    stamp: Time,
+    frame_id: &'a str,
+}
+
+impl<'a> Header<'a> {
+    pub(crate) fn new(stamp_ns: u64, frame_id: &'a str) -> Self {
+        Self {
+            stamp: Time::from_ns(stamp_ns),
+            frame_id,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Point {
+    x: f64,
+    y: f64,
+    z: f64,
+}
+
+#[derive(Serialize)]
+struct Quaternion {
+    x: f64,
+    y: f64,
+    z: f64,
+    w: f64,
+}
+
+#[derive(Serialize)]
+struct Pose {
+    position: Point,
+    orientation: Quaternion,
+}
+
+impl Pose {
+    fn planar(x: f64, y: f64, yaw: f64) -> Self {
+        let (s, c) = (yaw / 2.0).sin_cos();
+        Self {
+            position: Point { x, y, z: 0.0 },
+            orientation: Quaternion {
+                x: 0.0,
+                y: 0.0,
+                z: s,
+                w: c,
+            },
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Vector3 {
+    x: f64,
+    y: f64,
+    z: f64,
+}
+
+#[derive(Serialize)]
+struct Twist {
+    linear: Vector3,
+    angular: Vector3,
+}
+
+#[derive(Serialize)]
+struct PoseWithCovariance {
+    pose: Pose,
+    #[serde(serialize_with = "as_slice")]
+    covariance: [f64; 36],
+}
+
+#[derive(Serialize)]
+struct TwistWithCovariance {
+    twist: Twist,
+    #[serde(serialize_with = "as_slice")]
+    covariance: [f64; 36],
+}
+
+/// serde implements `Serialize` for arrays only up to 32 elements.
+fn as_slice<S: serde::Serializer>(m: &[f64; 36], s: S) -> Result<S::Ok, S::Error> {
+    m.as_slice().serialize(s)
+}
+
+/// `nav_msgs/msg/Odometry`.
+#[derive(Serialize)]
+struct Odometry<'a> {
+    header: Header<'a>,
+    child_frame_id: &'a str,
+    pose: PoseWithCovariance,
+    twist: TwistWithCovariance,
+}
+
+/// `geometry_msgs/msg/PoseStamped`.
+#[derive(Serialize)]
+struct PoseStamped<'a> {
+    header: Header<'a>,
+    pose: Pose,
+}
+
+/// `sensor_msgs/msg/LaserScan`.
+#[derive(Serialize)]
+struct LaserScan<'a> {
+    header: Header<'a>,
+    angle_min: f32,
+    angle_max: f32,
+    angle_increment: f32,
+    time_increment: f32,
+    scan_time: f32,
+    range_min: f32,
+    range_max: f32,
+    ranges: &'a [f32],
+    intensities: &'a [f32],
+}
+
+/// `sensor_msgs/msg/PointField`.
+#[derive(Serialize)]
+struct PointField {
+    name: &'static str,
+    offset: u32,
+    datatype: u8,
+    count: u32,
+}
+
+/// `sensor_msgs/msg/PointCloud2`.
+#[derive(Serialize)]
+struct PointCloud2<'a> {
+    header: Header<'a>,
+    height: u32,
+    width: u32,
+    fields: [PointField; 4],
+    is_bigendian: bool,
+    point_step: u32,
+    row_step: u32,
+    data: &'a str,
+    is_dense: bool,
+}
+
+/// `sensor_msgs/msg/CompressedImage`.
+#[derive(Serialize)]
+struct CompressedImage<'a> {
+    header: Header<'a>,
+    format: &'a str,
+    data: &'a str,
+}
+
+/// Reused buffers, so steady-state generation does not allocate per point or per beam.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    ranges: Vec<f32>,
+    binary: Vec<u8>,
+    base64: String,
+}
+
+fn to_json<T: Serialize>(msg: &T, capacity: usize) -> Vec<u8> {
+    let mut out = Vec::with_capacity(capacity);
+    // Serializing these structs into a Vec cannot fail: no maps with non-string keys,
+    // no I/O. Non-finite floats become `null`, which the generators avoid.
+    if let Err(e) = serde_json::to_writer(&mut out, msg) {
+        unreachable!("serializing a simulated message failed: {e}");
+    }
+    out
+}
+
+pub(crate) const SCAN_RANGE_MIN: f32 = 0.12;
+pub(crate) const SCAN_RANGE_MAX: f32 = 30.0;
+/// Laser mounted 0.15 m ahead of the robot's centre.
+const LASER_X: f64 = 0.15;
+
+pub(crate) fn laser_scan(
+    scratch: &mut Scratch,
+    state: &RobotState,
+    beams: u32,
+    scan_time: f32,
+    noise: &mut Noise,
+    header: Header<'_>,
+) -> Vec<u8> {
+    let n = beams.max(1);
+    let increment = std::f64::consts::TAU / f64::from(n);
+    let angle_min = -std::f64::consts::PI;
+    let (sy, cy) = state.yaw.sin_cos();
+    let (ox, oy) = (state.x + LASER_X * cy, state.y + LASER_X * sy);
+    scratch.ranges.clear();
+    scratch.ranges.extend((0..n).map(|i| {
+        let (dy, dx) = (state.yaw + angle_min + f64::from(i) * increment).sin_cos();
+        let r = world::range_2d(ox, oy, dx, dy) + noise.normal(0.01);
+        (r as f32).clamp(SCAN_RANGE_MIN, SCAN_RANGE_MAX)
+    }));
+    let msg = LaserScan {
+        header,
+        angle_min: angle_min as f32,
+        angle_max: (angle_min + f64::from(n - 1) * increment) as f32,
+        angle_increment: increment as f32,
+        time_increment: scan_time / n as f32,
+        scan_time,
+        range_min: SCAN_RANGE_MIN,
+        range_max: SCAN_RANGE_MAX,
+        ranges: &scratch.ranges,
+        intensities: &[],
+    };
+    to_json(&msg, 256 + 10 * n as usize)
+}
+
+/// Diagonal 6×6 covariance (row-major, x y z roll pitch yaw).
+fn diagonal(d: [f64; 6]) -> [f64; 36] {
+    let mut m = [0.0; 36];
+    for (i, v) in d.into_iter().enumerate() {
+        m[i * 7] = v;
+    }
+    m
+}
+
+pub(crate) fn odometry(state: &RobotState, header: Header<'_>, child_frame_id: &str) -> Vec<u8> {
+    let msg = Odometry {
+        header,
+        child_frame_id,
+        pose: PoseWithCovariance {
+            pose: Pose::planar(state.x, state.y, state.yaw),
+            covariance: diagonal([0.01, 0.01, 1e-6, 1e-6, 1e-6, 0.03]),
+        },
+        twist: TwistWithCovariance {
+            twist: Twist {
+                linear: Vector3 {
+                    x: state.speed,
+                    y: 0.0,
+                    z: 0.0,
+                },
+                angular: Vector3 {
+                    x: 0.0,
+                    y: 0.0,
+                    z: state.yaw_rate,
+                },
+            },
+            covariance: diagonal([0.005, 0.005, 1e-6, 1e-6, 1e-6, 0.01]),
+        },
+    };
+    to_json(&msg, 1024)
+}
+
+pub(crate) fn pose_stamped(state: &RobotState, header: Header<'_>) -> Vec<u8> {
+    to_json(
+        &PoseStamped {
+            header,
+            pose: Pose::planar(state.x, state.y, state.yaw),
+        },
+        256,
+    )
+}
+
+/// x, y, z, intensity: four float32, little-endian.
+pub(crate) const POINT_STEP: u32 = 16;
+/// `sensor_msgs/msg/PointField` FLOAT32.
+pub(crate) const FLOAT32: u8 = 7;
+/// 3D lidar: rings between ±15° elevation, mounted 0.4 m above the floor.
+const LIDAR_RINGS: u32 = 16;
+const LIDAR_HEIGHT: f64 = 0.4;
+const LIDAR_FOV: f64 = 30.0 * std::f64::consts::PI / 180.0;
+
+pub(crate) fn point_cloud(
+    scratch: &mut Scratch,
+    state: &RobotState,
+    points: u32,
+    noise: &mut Noise,
+    header: Header<'_>,
+) -> Vec<u8> {
+    let rings = LIDAR_RINGS.min(points.max(1));
+    let columns = points.div_ceil(rings).max(1);
+    let mut elevations = [(0.0, 1.0); LIDAR_RINGS as usize];
+    for (r, e) in elevations.iter_mut().enumerate().take(rings as usize) {
+        let angle = if rings == 1 {
+            0.0
+        } else {
+            -LIDAR_FOV / 2.0 + LIDAR_FOV * r as f64 / f64::from(rings - 1)
+        };
+        *e = angle.sin_cos();
+    }
+    let bin = &mut scratch.binary;
+    bin.clear();
+    bin.reserve(points as usize * POINT_STEP as usize);
+    let column_step = std::f64::consts::TAU / f64::from(columns);
+    'columns: for c in 0..columns {
+        let azimuth = f64::from(c) * column_step;
+        let (sa, ca) = azimuth.sin_cos();
+        let (dy, dx) = (state.yaw + azimuth).sin_cos();
+        for &(sin_el, cos_el) in &elevations[..rings as usize] {
+            if bin.len() >= points as usize * POINT_STEP as usize {
+                break 'columns;
+            }
+            let (range, surface) =
+                world::range_3d(state.x, state.y, LIDAR_HEIGHT, dx, dy, (sin_el, cos_el));
+            let range = range + noise.normal(0.01);
+            let reflectivity = match surface {
+                Surface::Wall => 100.0,
+                Surface::Pillar => 220.0,
+                Surface::Floor => 30.0,
+                Surface::Ceiling => 60.0,
+            };
+            let horizontal = range * cos_el;
+            for v in [
+                horizontal * ca,
+                horizontal * sa,
+                range * sin_el,
+                reflectivity / (1.0 + 0.05 * range),
+            ] {
+                bin.extend_from_slice(&(v as f32).to_le_bytes());
+            }
+        }
+    }
+    let width = points;
+    scratch.base64.clear();
+    BASE64.encode_string(&scratch.binary, &mut scratch.base64);
+    let field = |name, offset| PointField {
+        name,
+        offset,
+        datatype: FLOAT32,
+        count: 1,
+    };
+    let msg = PointCloud2 {
+        header,
+        height: 1,
+        width,
+        fields: [
+            field("x", 0),
+            field("y", 4),
+            field("z", 8),
+            field("intensity", 12),
+        ],
+        is_bigendian: false,
+        point_step: POINT_STEP,
+        row_step: width * POINT_STEP,
+        data: &scratch.base64,
+        is_dense: true,
+    };
+    to_json(&msg, scratch.base64.len() + 512)
+}
+
+/// JPEG start-of-image + JFIF APP0 marker; the rest is noise ending in end-of-image.
+const JPEG_HEAD: [u8; 20] = [
+    0xFF, 0xD8, 0xFF, 0xE0, 0x00, 0x10, b'J', b'F', b'I', b'F', 0x00, 0x01, 0x01, 0x00, 0x00, 0x01,
+    0x00, 0x01, 0x00, 0x00,
+];
+
+pub(crate) fn compressed_image(
+    scratch: &mut Scratch,
+    bytes: u32,
+    noise: &mut Noise,
+    header: Header<'_>,
+) -> Vec<u8> {
+    let len = bytes as usize;
+    let bin = &mut scratch.binary;
+    bin.clear();
+    bin.extend_from_slice(&JPEG_HEAD[..JPEG_HEAD.len().min(len)]);
+    while bin.len() + 8 <= len {
+        bin.extend_from_slice(&noise.next_u64().to_le_bytes());
+    }
+    let tail = noise.next_u64().to_le_bytes();
+    bin.extend_from_slice(&tail[..len - bin.len()]);
+    if len >= JPEG_HEAD.len() + 2 {
+        bin[len - 2..].copy_from_slice(&[0xFF, 0xD9]);
+    }
+    scratch.base64.clear();
+    BASE64.encode_string(&scratch.binary, &mut scratch.base64);
+    let msg = CompressedImage {
+        header,
+        format: "jpeg",
+        data: &scratch.base64,
+    };
+    to_json(&msg, scratch.base64.len() + 256)
+}
