@@ -10,7 +10,9 @@ use tokio::net::TcpListener;
 use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;
 
-use crate::uplink::{LinkState, Uplink, UplinkConfig, UplinkStats};
+use crate::config::{AgentConfig, SimConfig};
+use crate::uplink::{LinkState, NameMap, Uplink, UplinkConfig, UplinkStats};
+use fleetlink_relay::TopicName;
 
 /// Everything an agent needs to run (the CLI builds it from flags and the YAML file).
 #[derive(Debug, Clone)]
@@ -18,6 +20,39 @@ pub struct AgentOptions {
     pub uplink: UplinkConfig,
     /// Where local rosbridge clients connect; `None` disables the listener.
     pub local_listen: Option<SocketAddr>,
+    /// The simulated robot to run, if any.
+    pub sim: Option<SimConfig>,
+}
+
+impl AgentOptions {
+    /// Options from a loaded configuration file.
+    pub fn from_config(cfg: &AgentConfig) -> Result<AgentOptions, fleetlink_relay::NameError> {
+        let parse = TopicName::parse;
+        let remap = cfg
+            .remap
+            .iter()
+            .map(|(l, h)| Ok((parse(l)?, parse(h)?)))
+            .collect::<Result<_, _>>()?;
+        let subscribe = cfg
+            .subscribe
+            .iter()
+            .map(|s| Ok((parse(&s.hub)?, parse(&s.local)?)))
+            .collect::<Result<_, _>>()?;
+        Ok(AgentOptions {
+            uplink: UplinkConfig {
+                hub_url: cfg.hub.clone(),
+                robot: cfg.name.clone(),
+                token: cfg.token.clone(),
+                heartbeat: cfg.heartbeat(),
+                reconnect_initial: cfg.reconnect.initial(),
+                reconnect_max: cfg.reconnect.max(),
+                names: NameMap { remap, subscribe },
+                queue_length: 100,
+            },
+            local_listen: cfg.local_rosbridge_listen(),
+            sim: cfg.sim.clone(),
+        })
+    }
 }
 
 /// A bound agent, ready to run.
@@ -25,6 +60,8 @@ pub struct Agent {
     router: Arc<Router>,
     uplink: Uplink,
     local: Option<TcpListener>,
+    sim: Option<SimConfig>,
+    robot: String,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -50,11 +87,14 @@ impl Agent {
             None => None,
         };
         let router = Arc::new(Router::new(transcoder));
+        let robot = opts.uplink.robot.clone();
         let uplink = Uplink::new(opts.uplink, router.clone());
         Ok(Agent {
             router,
             uplink,
             local,
+            sim: opts.sim,
+            robot,
         })
     }
 
@@ -89,9 +129,17 @@ impl Agent {
                 shutdown.clone(),
             ))
         });
+        let sim = self.sim.map(|cfg| {
+            tokio::spawn(crate::sim::drive(
+                cfg,
+                self.robot,
+                self.router.clone(),
+                shutdown.clone(),
+            ))
+        });
         self.uplink.run(shutdown.clone()).await;
-        if let Some(l) = local {
-            let _ = l.await;
+        for t in [local, sim].into_iter().flatten() {
+            let _ = t.await;
         }
     }
 }

@@ -11,8 +11,11 @@
 //! falls behind gets the newest slot per topic, not a burst of stale ones; the skipped
 //! slots are counted ([`Sim::skipped`]).
 
+mod driver;
 mod messages;
 mod world;
+
+pub use driver::drive;
 
 use std::time::Duration;
 

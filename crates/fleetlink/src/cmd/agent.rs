@@ -1,8 +1,75 @@
-//! `fleetlink agent`.
+//! `fleetlink agent`: run the robot side.
+
+use std::net::SocketAddr;
+use std::path::PathBuf;
+
+use anyhow::Context;
+use fleetlink_agent::config::{AgentConfig, check_robot_name};
+use fleetlink_agent::{Agent, AgentOptions};
+use tokio_util::sync::CancellationToken;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Hub URL (overrides `hub:` in the config), e.g. ws://hub.example:8080
+    #[arg(long)]
+    pub hub: Option<String>,
+    /// Robot name (overrides `name:`); its topics appear on the hub under /NAME.
+    #[arg(long)]
+    pub name: Option<String>,
+    /// YAML configuration file (see docs/config.md). Without it, defaults apply.
+    #[arg(long)]
+    pub config: Option<PathBuf>,
+    /// Address of the local rosbridge listener (overrides `local_rosbridge.listen`).
+    #[arg(long)]
+    pub local_listen: Option<SocketAddr>,
+    /// Run without the local rosbridge listener.
+    #[arg(long, conflicts_with = "local_listen")]
+    pub no_local: bool,
+}
 
-pub fn run(_args: Args) -> anyhow::Result<()> {
-    anyhow::bail!("`fleetlink agent` is not implemented yet")
+/// Loads the file (if any) and applies the command-line overrides.
+pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
+    let mut cfg = match &args.config {
+        Some(path) => AgentConfig::load(path)?,
+        None => AgentConfig::default(),
+    };
+    if let Some(h) = &args.hub {
+        cfg.hub = h.clone();
+    }
+    if let Some(n) = &args.name {
+        check_robot_name(n).map_err(|e| anyhow::anyhow!("--name: {e}"))?;
+        cfg.name = n.clone();
+    }
+    if let Some(addr) = args.local_listen {
+        let l = cfg.local_rosbridge.get_or_insert_with(Default::default);
+        l.enabled = true;
+        l.listen = addr;
+    }
+    if args.no_local {
+        cfg.local_rosbridge = None;
+    }
+    Ok(cfg)
+}
+
+pub fn run(args: Args) -> anyhow::Result<()> {
+    super::init_logging("info");
+    let cfg = load(&args)?;
+    let opts = AgentOptions::from_config(&cfg).context("configuration")?;
+    let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
+    rt.block_on(async {
+        let agent = Agent::bind(opts, crate::transcoder()).await?;
+        println!("fleetlink agent {} → {}", cfg.name, cfg.hub);
+        if let Some(a) = agent.local_addr() {
+            println!("  local rosbridge: ws://{a}/");
+        }
+        let stop = CancellationToken::new();
+        let s = stop.clone();
+        tokio::spawn(async move {
+            super::shutdown_signal().await;
+            s.cancel();
+        });
+        agent.run(stop).await;
+        println!("fleetlink agent stopped");
+        Ok::<_, anyhow::Error>(())
+    })
 }
