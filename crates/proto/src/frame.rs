@@ -15,7 +15,7 @@
 
 use bytes::{BufMut, Bytes, BytesMut};
 
-use crate::error::DecodeError;
+use crate::error::{DecodeError, ErrorKind};
 use crate::payload::{Encoding, Schema};
 use crate::wire::{Reader, put_bytes, put_str, put_varint, varint_len};
 
@@ -302,12 +302,30 @@ impl Frame {
     /// Decodes the frame starting at `pos` in `buf`; returns it and where the next frame
     /// starts. Payload bytes are shared slices of `buf`.
     pub fn decode(buf: &Bytes, pos: usize) -> Result<(Frame, usize), DecodeError> {
+        if pos > buf.len() {
+            return Err(DecodeError::incomplete(
+                "frame.kind",
+                pos - buf.len() + 1,
+                0,
+            ));
+        }
         let mut head = Reader::sub(buf, pos, buf.len() - pos);
         let kind = head.u8("frame.kind")?;
         let len = head.len_prefix("frame.body_len")?;
         let start = head.position();
         let mut r = Reader::sub(buf, start, len);
-        let frame = decode_body(kind, &mut r)?;
+        // The body is complete (its length was checked above), so a field running past
+        // its end can never be fixed by more bytes: that is invalid, not incomplete.
+        let frame = decode_body(kind, &mut r).map_err(|e| match e.kind {
+            ErrorKind::Incomplete => DecodeError::invalid(
+                e.context,
+                format!(
+                    "field runs past the end of a {len}-byte body ({})",
+                    e.reason
+                ),
+            ),
+            ErrorKind::Invalid => e,
+        })?;
         Ok((frame, start + len))
     }
 }

@@ -102,9 +102,7 @@ fn typed_array_to_json(tag: u64, inner: ciborium::Value) -> Result<Value, Conver
     let ll = (t & 0x03) as u32;
     let width = if float { 2usize << ll } else { 1usize << ll };
     if tag == 64 || tag == 68 {
-        return Ok(Value::Array(
-            b.into_iter().map(Value::from).collect(),
-        ));
+        return Ok(Value::Array(b.into_iter().map(Value::from).collect()));
     }
     if b.len() % width != 0 {
         return Err(ConvertError::Cbor(format!(
