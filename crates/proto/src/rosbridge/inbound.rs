@@ -141,8 +141,7 @@ impl Request {
 
     /// Parses a CBOR binary frame.
     pub fn from_cbor(data: &[u8]) -> Result<Request, ParseError> {
-        let value: ciborium::Value = ciborium::from_reader(data)
-            .map_err(|e| ParseError::new(format!("invalid CBOR: {e}")))?;
+        let value = convert::parse_cbor(data).map_err(|e| ParseError::new(e.to_string()))?;
         let ciborium::Value::Map(entries) = value else {
             return Err(ParseError::new("invalid operation: expected a CBOR map"));
         };
@@ -237,14 +236,15 @@ fn parse_envelope(
                 topic: fields.topic("topic")?,
                 msg: body
                     .clone()
-                    .ok_or_else(|| "missing field 'msg'".to_string())?,
+                    .ok_or_else(|| "publish: missing field 'msg'".to_string())?,
             },
             "subscribe" => {
                 let compression = match fields.opt_str("compression")? {
                     None => Compression::None,
                     Some(s) => Compression::parse(&s).ok_or_else(|| {
                         format!(
-                            "unknown compression '{}' (use none, cbor or cbor-raw)",
+                            "subscribe: field 'compression' has unknown value '{}' \
+                             (use none, cbor or cbor-raw)",
                             preview(&s)
                         )
                     })?,
