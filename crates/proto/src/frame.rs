@@ -71,6 +71,29 @@ impl Level {
     }
 }
 
+/// `STATUS` codes. The numbers borrow HTTP's meanings so they read at a glance in logs;
+/// receivers treat a code they do not know by its level alone.
+pub mod status_code {
+    /// Nothing more specific to say (informational text).
+    pub const NONE: u32 = 0;
+    /// A frame could not be decoded; the rest of that WebSocket message was dropped.
+    pub const MALFORMED: u32 = 400;
+    /// `HELLO` credentials were refused; the hub closes the connection.
+    pub const UNAUTHORIZED: u32 = 401;
+    /// The ACL forbids this topic for this peer (advertise, subscribe or publish).
+    pub const FORBIDDEN: u32 = 403;
+    /// `MESSAGE`, `CHUNK` or `UNADVERTISE` named an alias that is not bound.
+    pub const UNKNOWN_ALIAS: u32 = 404;
+    /// A chunked message broke the chunk rules (out of order, wrong seq) and was dropped.
+    pub const CHUNK_ORDER: u32 = 409;
+    /// A chunked message exceeded the receiver's size or buffer limits and was dropped.
+    pub const TOO_LARGE: u32 = 413;
+    /// The peer sends faster than the receiver's limits allow; messages are being dropped.
+    pub const RATE_LIMITED: u32 = 429;
+    /// The receiver failed for its own reasons.
+    pub const INTERNAL: u32 = 500;
+}
+
 /// `ADVERTISE` flag: the publisher wants late subscribers to get its last message.
 pub const ADVERTISE_LATCHED: u8 = 0x01;
 /// `SUBSCRIBE` flag: `pattern` is a regular expression matched against whole topic names.

@@ -166,3 +166,20 @@ proptest! {
         prop_assert_eq!(back, v);
     }
 }
+
+/// The worked example of `docs/protocol.md` §1.9, byte for byte.
+#[test]
+fn protocol_md_worked_example() {
+    let hex = "07 18 03 ac 02 15 cd 85 3d fe 9c 97 17 7b 22 64 61 74 61 22 3a 22 68 69 22 7d";
+    let bytes: Vec<u8> = hex
+        .split(' ')
+        .map(|b| u8::from_str_radix(b, 16).expect("hex byte"))
+        .collect();
+    let frame = Frame::Message {
+        alias: 3,
+        seq: 300,
+        stamp_ns: 1_700_000_000_123_456_789,
+        payload: Bytes::from_static(br#"{"data":"hi"}"#),
+    };
+    assert_eq!(frame.to_bytes(), Bytes::from(bytes));
+}
