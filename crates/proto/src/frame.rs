@@ -15,7 +15,7 @@
 
 use bytes::{BufMut, Bytes, BytesMut};
 
-use crate::error::DecodeError;
+use crate::error::{DecodeError, ErrorKind};
 use crate::payload::{Encoding, Schema};
 use crate::wire::{Reader, put_bytes, put_str, put_varint, varint_len};
 
@@ -69,6 +69,29 @@ impl Level {
             Level::Error => "error",
         }
     }
+}
+
+/// `STATUS` codes. The numbers borrow HTTP's meanings so they read at a glance in logs;
+/// receivers treat a code they do not know by its level alone.
+pub mod status_code {
+    /// Nothing more specific to say (informational text).
+    pub const NONE: u32 = 0;
+    /// A frame could not be decoded; the rest of that WebSocket message was dropped.
+    pub const MALFORMED: u32 = 400;
+    /// `HELLO` credentials were refused; the hub closes the connection.
+    pub const UNAUTHORIZED: u32 = 401;
+    /// The ACL forbids this topic for this peer (advertise, subscribe or publish).
+    pub const FORBIDDEN: u32 = 403;
+    /// `MESSAGE`, `CHUNK` or `UNADVERTISE` named an alias that is not bound.
+    pub const UNKNOWN_ALIAS: u32 = 404;
+    /// A chunked message broke the chunk rules (out of order, wrong seq) and was dropped.
+    pub const CHUNK_ORDER: u32 = 409;
+    /// A chunked message exceeded the receiver's size or buffer limits and was dropped.
+    pub const TOO_LARGE: u32 = 413;
+    /// The peer sends faster than the receiver's limits allow; messages are being dropped.
+    pub const RATE_LIMITED: u32 = 429;
+    /// The receiver failed for its own reasons.
+    pub const INTERNAL: u32 = 500;
 }
 
 /// `ADVERTISE` flag: the publisher wants late subscribers to get its last message.
@@ -302,12 +325,30 @@ impl Frame {
     /// Decodes the frame starting at `pos` in `buf`; returns it and where the next frame
     /// starts. Payload bytes are shared slices of `buf`.
     pub fn decode(buf: &Bytes, pos: usize) -> Result<(Frame, usize), DecodeError> {
+        if pos > buf.len() {
+            return Err(DecodeError::incomplete(
+                "frame.kind",
+                pos - buf.len() + 1,
+                0,
+            ));
+        }
         let mut head = Reader::sub(buf, pos, buf.len() - pos);
         let kind = head.u8("frame.kind")?;
         let len = head.len_prefix("frame.body_len")?;
         let start = head.position();
         let mut r = Reader::sub(buf, start, len);
-        let frame = decode_body(kind, &mut r)?;
+        // The body is complete (its length was checked above), so a field running past
+        // its end can never be fixed by more bytes: that is invalid, not incomplete.
+        let frame = decode_body(kind, &mut r).map_err(|e| match e.kind {
+            ErrorKind::Incomplete => DecodeError::invalid(
+                e.context,
+                format!(
+                    "field runs past the end of a {len}-byte body ({})",
+                    e.reason
+                ),
+            ),
+            ErrorKind::Invalid => e,
+        })?;
         Ok((frame, start + len))
     }
 }

@@ -10,6 +10,19 @@ use base64::Engine;
 use base64::engine::general_purpose::STANDARD as BASE64;
 use serde_json::{Map, Number, Value};
 
+/// Deepest nesting of arrays, maps and tags accepted in a CBOR value: 127 levels, the
+/// most serde_json accepts in JSON, so what is accepted in one encoding converts to the
+/// other and parses there too. It also keeps a hostile value far from exhausting a
+/// thread's stack (ciborium's own default is 256 levels, and each level costs its
+/// recursive decoder one to two kilobytes of stack in a debug build).
+pub const MAX_DEPTH: usize = 127;
+
+/// Parses one CBOR value, refusing nesting deeper than [`MAX_DEPTH`].
+pub fn parse_cbor(bytes: &[u8]) -> Result<ciborium::Value, ConvertError> {
+    ciborium::de::from_reader_with_recursion_limit(bytes, MAX_DEPTH)
+        .map_err(|e| ConvertError::Cbor(e.to_string()))
+}
+
 /// Why a conversion failed.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ConvertError {
@@ -31,8 +44,7 @@ pub fn json_to_cbor(json: &[u8]) -> Result<Vec<u8>, ConvertError> {
 
 /// CBOR bytes of a message object → JSON text of the same object.
 pub fn cbor_to_json(cbor: &[u8]) -> Result<Vec<u8>, ConvertError> {
-    let v: ciborium::Value =
-        ciborium::from_reader(cbor).map_err(|e| ConvertError::Cbor(e.to_string()))?;
+    let v = parse_cbor(cbor)?;
     let j = cbor_value_to_json(v)?;
     Ok(serde_json::to_vec(&j).expect("a JSON value serializes"))
 }

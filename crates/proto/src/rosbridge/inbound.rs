@@ -141,8 +141,7 @@ impl Request {
 
     /// Parses a CBOR binary frame.
     pub fn from_cbor(data: &[u8]) -> Result<Request, ParseError> {
-        let value: ciborium::Value = ciborium::from_reader(data)
-            .map_err(|e| ParseError::new(format!("invalid CBOR: {e}")))?;
+        let value = convert::parse_cbor(data).map_err(|e| ParseError::new(e.to_string()))?;
         let ciborium::Value::Map(entries) = value else {
             return Err(ParseError::new("invalid operation: expected a CBOR map"));
         };
@@ -237,13 +236,17 @@ fn parse_envelope(
                 topic: fields.topic("topic")?,
                 msg: body
                     .clone()
-                    .ok_or_else(|| "missing field 'msg'".to_string())?,
+                    .ok_or_else(|| "publish: missing field 'msg'".to_string())?,
             },
             "subscribe" => {
                 let compression = match fields.opt_str("compression")? {
                     None => Compression::None,
                     Some(s) => Compression::parse(&s).ok_or_else(|| {
-                        format!("unknown compression '{s}' (use none, cbor or cbor-raw)")
+                        format!(
+                            "subscribe: field 'compression' has unknown value '{}' \
+                             (use none, cbor or cbor-raw)",
+                            preview(&s)
+                        )
                     })?,
                 };
                 let regex = fields.opt_bool("regex")?.unwrap_or(false);
@@ -309,8 +312,9 @@ impl Fields<'_> {
         if s.is_empty() || s.len() > 1024 || s.chars().any(|c| c.is_whitespace() || c.is_control())
         {
             return Err(format!(
-                "{}: field '{key}' is not a valid topic name: {s:?}",
-                self.op
+                "{}: field '{key}' is not a valid topic name: {:?}",
+                self.op,
+                preview(&s)
             ));
         }
         Ok(s)
@@ -367,6 +371,16 @@ impl Fields<'_> {
                 json_kind(other)
             )),
         }
+    }
+}
+
+/// At most the first 64 characters of a client-supplied string, for error messages: the
+/// message is echoed back in a `status` reply, so it must not grow with the input.
+fn preview(s: &str) -> String {
+    const MAX_CHARS: usize = 64;
+    match s.char_indices().nth(MAX_CHARS) {
+        None => s.to_owned(),
+        Some((cut, _)) => format!("{}... ({} bytes)", &s[..cut], s.len()),
     }
 }
 

@@ -1,0 +1,185 @@
+//! Property tests: encoding then decoding gives back the same value, for every frame kind,
+//! for buffers packed with many frames, for chunked payloads and for JSON↔CBOR.
+
+use std::collections::HashMap;
+
+use bytes::{Bytes, BytesMut};
+use fleetlink_proto::frame::{self, Frame, chunk_frames, encode_chunk, encode_message};
+use fleetlink_proto::reassembly::Reassembler;
+use fleetlink_proto::rosbridge::convert;
+use proptest::prelude::*;
+use serde_json::Value;
+
+use crate::util;
+
+/// Encodes `f` alone, decodes it, and checks the value and the end position.
+fn assert_round_trip(f: &Frame) -> Result<(), TestCaseError> {
+    let bytes = f.to_bytes();
+    let (back, next) = Frame::decode(&bytes, 0).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    prop_assert_eq!(&back, f);
+    prop_assert_eq!(next, bytes.len());
+    Ok(())
+}
+
+proptest! {
+    #[test]
+    fn hello(f in util::hello()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn welcome(f in util::welcome()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn advertise(f in util::advertise()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn unadvertise(f in util::unadvertise()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn subscribe(f in util::subscribe()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn unsubscribe(f in util::unsubscribe()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn message(f in util::message()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn chunk(f in util::chunk()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn ping(f in util::ping()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn pong(f in util::pong()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn ack(f in util::ack()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn status(f in util::status()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn unknown_kind(f in util::unknown()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn many_frames_in_one_buffer_decode_in_order(
+        sent in prop::collection::vec(util::any_frame(), 0..40),
+    ) {
+        let mut buf = BytesMut::new();
+        for f in &sent {
+            f.encode(&mut buf);
+        }
+        let buf = buf.freeze();
+        let got: Vec<Frame> = frame::frames(&buf)
+            .collect::<Result<_, _>>()
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(got, sent);
+    }
+
+    #[test]
+    fn encode_message_matches_encoding_the_frame(
+        alias in any::<u32>(),
+        seq in any::<u64>(),
+        stamp_ns in any::<u64>(),
+        payload in util::payload(300),
+    ) {
+        let mut direct = BytesMut::from(&b"prefix"[..]);
+        encode_message(&mut direct, alias, seq, stamp_ns, &payload);
+        let mut via_frame = BytesMut::from(&b"prefix"[..]);
+        Frame::Message { alias, seq, stamp_ns, payload }.encode(&mut via_frame);
+        prop_assert_eq!(direct, via_frame);
+    }
+
+    #[test]
+    fn encode_chunk_matches_encoding_the_frame(f in util::chunk()) {
+        let Frame::Chunk { alias, seq, stamp_ns, total_len, offset, data } = &f else {
+            unreachable!("util::chunk makes chunks");
+        };
+        let mut direct = BytesMut::new();
+        encode_chunk(&mut direct, *alias, *seq, *stamp_ns, *total_len, *offset, data);
+        prop_assert_eq!(direct.freeze(), f.to_bytes());
+    }
+
+    /// Several topics' payloads are cut into chunks, the chunk streams are interleaved in
+    /// an arbitrary order (each stream staying in order, as on the wire), sent through the
+    /// codec, and reassembled.
+    #[test]
+    fn chunked_payloads_reassemble_when_topics_interleave(
+        payloads in prop::collection::vec(util::payload(3000), 1..5),
+        chunk_size in 1usize..700,
+        schedule in prop::collection::vec(any::<u8>(), 0..64),
+    ) {
+        let mut streams: Vec<Vec<Frame>> = payloads
+            .iter()
+            .enumerate()
+            .map(|(i, p)| chunk_frames(i as u32, 100 + i as u64, 7, p, chunk_size).collect())
+            .collect();
+        for s in &mut streams {
+            s.reverse(); // pop() from the back yields them in order
+        }
+        let mut wire = BytesMut::new();
+        let mut picks = schedule.iter().copied().cycle();
+        loop {
+            let live: Vec<usize> = (0..streams.len()).filter(|i| !streams[*i].is_empty()).collect();
+            if live.is_empty() {
+                break;
+            }
+            let pick = live[usize::from(picks.next().unwrap_or(0)) % live.len()];
+            streams[pick].pop().expect("live stream").encode(&mut wire);
+        }
+        let wire = wire.freeze();
+
+        let mut r = Reassembler::new(4096, 4 * 4096);
+        let mut done: HashMap<u32, Bytes> = HashMap::new();
+        for f in frame::frames(&wire) {
+            let f = f.map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let Frame::Chunk { alias, seq, stamp_ns, total_len, offset, data } = f else {
+                return Err(TestCaseError::fail("only chunks were sent"));
+            };
+            if let Some(m) = r
+                .push(alias, seq, stamp_ns, total_len, offset, &data)
+                .map_err(|e| TestCaseError::fail(e.to_string()))?
+            {
+                prop_assert_eq!(m.seq, 100 + u64::from(m.alias));
+                prop_assert_eq!(m.stamp_ns, 7);
+                prop_assert!(done.insert(m.alias, m.payload).is_none());
+            }
+        }
+        for (i, p) in payloads.iter().enumerate() {
+            // An empty payload has no chunks (it goes as one MESSAGE).
+            if p.is_empty() {
+                prop_assert!(!done.contains_key(&(i as u32)));
+            } else {
+                prop_assert_eq!(done.get(&(i as u32)), Some(p));
+            }
+        }
+        prop_assert_eq!(r.buffered(), 0);
+        prop_assert_eq!(r.abandoned, 0);
+    }
+
+    #[test]
+    fn json_survives_a_trip_through_cbor(v in util::json_value()) {
+        let json = serde_json::to_vec(&v).expect("a value serializes");
+        let cbor = convert::json_to_cbor(&json).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let back = convert::cbor_to_json(&cbor).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let back: Value = serde_json::from_slice(&back).expect("convert writes valid JSON");
+        prop_assert_eq!(back, v);
+    }
+}
+
+/// The worked example of `docs/protocol.md` §1.9, byte for byte.
+#[test]
+fn protocol_md_worked_example() {
+    let hex = "07 18 03 ac 02 15 cd 85 3d fe 9c 97 17 7b 22 64 61 74 61 22 3a 22 68 69 22 7d";
+    let bytes: Vec<u8> = hex
+        .split(' ')
+        .map(|b| u8::from_str_radix(b, 16).expect("hex byte"))
+        .collect();
+    let frame = Frame::Message {
+        alias: 3,
+        seq: 300,
+        stamp_ns: 1_700_000_000_123_456_789,
+        payload: Bytes::from_static(br#"{"data":"hi"}"#),
+    };
+    assert_eq!(frame.to_bytes(), Bytes::from(bytes));
+}

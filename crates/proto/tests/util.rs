@@ -1,0 +1,315 @@
+//! Shared test helpers: proptest strategies for frames and JSON values, and small byte
+//! builders for hand-made (usually hostile) inputs.
+
+use bytes::{Bytes, BytesMut};
+use fleetlink_proto::frame::{Frame, Level};
+use fleetlink_proto::wire::{put_bytes, put_str, put_varint};
+use fleetlink_proto::{Encoding, Schema};
+use proptest::prelude::*;
+use serde_json::Value;
+
+pub fn hello() -> impl Strategy<Value = Frame> {
+    (any::<u32>(), any::<String>(), any::<String>(), any::<u32>()).prop_map(
+        |(version, robot, token, heartbeat_ms)| Frame::Hello {
+            version,
+            robot,
+            token,
+            heartbeat_ms,
+        },
+    )
+}
+
+pub fn welcome() -> impl Strategy<Value = Frame> {
+    (any::<String>(), any::<String>(), any::<u64>(), any::<u32>()).prop_map(
+        |(session, namespace, hub_time_ns, heartbeat_ms)| Frame::Welcome {
+            session,
+            namespace,
+            hub_time_ns,
+            heartbeat_ms,
+        },
+    )
+}
+
+pub fn encoding() -> impl Strategy<Value = Encoding> {
+    prop::sample::select(Encoding::ALL.to_vec())
+}
+
+pub fn advertise() -> impl Strategy<Value = Frame> {
+    (
+        any::<u32>(),
+        any::<String>(),
+        any::<String>(),
+        any::<String>(),
+        any::<String>(),
+        encoding(),
+        any::<u8>(),
+    )
+        .prop_map(
+            |(alias, topic, type_name, schema_encoding, text, encoding, flags)| Frame::Advertise {
+                alias,
+                topic,
+                schema: Schema {
+                    type_name,
+                    encoding: schema_encoding,
+                    text,
+                },
+                encoding,
+                flags,
+            },
+        )
+}
+
+pub fn unadvertise() -> impl Strategy<Value = Frame> {
+    any::<u32>().prop_map(|alias| Frame::Unadvertise { alias })
+}
+
+pub fn subscribe() -> impl Strategy<Value = Frame> {
+    (
+        any::<u32>(),
+        any::<String>(),
+        any::<u8>(),
+        any::<u32>(),
+        any::<u32>(),
+    )
+        .prop_map(
+            |(id, pattern, flags, throttle_ms, queue_length)| Frame::Subscribe {
+                id,
+                pattern,
+                flags,
+                throttle_ms,
+                queue_length,
+            },
+        )
+}
+
+pub fn unsubscribe() -> impl Strategy<Value = Frame> {
+    any::<u32>().prop_map(|id| Frame::Unsubscribe { id })
+}
+
+pub fn payload(max: usize) -> impl Strategy<Value = Bytes> {
+    prop::collection::vec(any::<u8>(), 0..max).prop_map(Bytes::from)
+}
+
+pub fn message() -> impl Strategy<Value = Frame> {
+    (any::<u32>(), any::<u64>(), any::<u64>(), payload(300)).prop_map(
+        |(alias, seq, stamp_ns, payload)| Frame::Message {
+            alias,
+            seq,
+            stamp_ns,
+            payload,
+        },
+    )
+}
+
+/// A `CHUNK` whose fields are consistent: `offset + data.len() <= total_len`.
+pub fn chunk() -> impl Strategy<Value = Frame> {
+    (
+        any::<u32>(),
+        any::<u64>(),
+        any::<u64>(),
+        payload(300),
+        0..u64::MAX / 2,
+        0..u64::MAX / 2,
+    )
+        .prop_map(|(alias, seq, stamp_ns, data, offset, spare)| Frame::Chunk {
+            alias,
+            seq,
+            stamp_ns,
+            total_len: offset + data.len() as u64 + spare,
+            offset,
+            data,
+        })
+}
+
+pub fn ping() -> impl Strategy<Value = Frame> {
+    (any::<u64>(), any::<u64>()).prop_map(|(id, sent_ns)| Frame::Ping { id, sent_ns })
+}
+
+pub fn pong() -> impl Strategy<Value = Frame> {
+    (any::<u64>(), any::<u64>(), any::<u64>()).prop_map(|(id, echo_ns, responder_ns)| Frame::Pong {
+        id,
+        echo_ns,
+        responder_ns,
+    })
+}
+
+pub fn ack() -> impl Strategy<Value = Frame> {
+    any::<u32>().prop_map(|frames| Frame::Ack { frames })
+}
+
+pub fn status() -> impl Strategy<Value = Frame> {
+    (
+        prop::sample::select(vec![Level::Info, Level::Warning, Level::Error]),
+        any::<u32>(),
+        any::<u32>(),
+        any::<String>(),
+    )
+        .prop_map(|(level, code, alias, text)| Frame::Status {
+            level,
+            code,
+            alias,
+            text,
+        })
+}
+
+/// A frame of a kind this decoder does not know: encoded with an empty body.
+pub fn unknown() -> impl Strategy<Value = Frame> {
+    prop_oneof![Just(0u8), 0x0du8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+}
+
+pub fn any_frame() -> impl Strategy<Value = Frame> {
+    prop_oneof![
+        hello(),
+        welcome(),
+        advertise(),
+        unadvertise(),
+        subscribe(),
+        unsubscribe(),
+        message(),
+        chunk(),
+        ping(),
+        pong(),
+        ack(),
+        status(),
+        unknown(),
+    ]
+}
+
+/// One hand-written frame of every known kind, for tests that walk every byte.
+pub fn one_of_each_kind() -> Vec<Frame> {
+    vec![
+        Frame::Hello {
+            version: 1,
+            robot: "robot-7".into(),
+            token: "secret".into(),
+            heartbeat_ms: 1000,
+        },
+        Frame::Welcome {
+            session: "s-1".into(),
+            namespace: "/fleet/robot-7".into(),
+            hub_time_ns: 1_700_000_000_000_000_000,
+            heartbeat_ms: 1000,
+        },
+        Frame::Advertise {
+            alias: 300,
+            topic: "/scan".into(),
+            schema: Schema {
+                type_name: "sensor_msgs/msg/LaserScan".into(),
+                encoding: "ros2msg".into(),
+                text: "float32 angle_min\nfloat32 angle_max\n".into(),
+            },
+            encoding: Encoding::Cdr,
+            flags: 1,
+        },
+        Frame::Unadvertise { alias: 300 },
+        Frame::Subscribe {
+            id: 4,
+            pattern: "/cam/.*".into(),
+            flags: 1,
+            throttle_ms: 100,
+            queue_length: 10,
+        },
+        Frame::Unsubscribe { id: 4 },
+        Frame::Message {
+            alias: 300,
+            seq: 70_000,
+            stamp_ns: 5,
+            // Long enough that body_len needs a two-byte varint.
+            payload: Bytes::from(vec![0xab; 200]),
+        },
+        Frame::Chunk {
+            alias: 2,
+            seq: 9,
+            stamp_ns: 5,
+            total_len: 1000,
+            offset: 500,
+            data: Bytes::from(vec![7; 150]),
+        },
+        Frame::Ping { id: 1, sent_ns: 2 },
+        Frame::Pong {
+            id: 1,
+            echo_ns: 2,
+            responder_ns: 3,
+        },
+        Frame::Ack { frames: 129 },
+        Frame::Status {
+            level: Level::Warning,
+            code: 403,
+            alias: 300,
+            text: "not allowed".into(),
+        },
+    ]
+}
+
+/// A frame with a hand-made body: `kind | body_len | body`.
+pub fn raw_frame(kind: u8, body: &[u8]) -> Bytes {
+    let mut b = BytesMut::new();
+    b.extend_from_slice(&[kind]);
+    put_varint(&mut b, body.len() as u64);
+    b.extend_from_slice(body);
+    b.freeze()
+}
+
+/// Builds a body field by field.
+#[derive(Default)]
+pub struct Body(pub BytesMut);
+
+impl Body {
+    pub fn varint(mut self, v: u64) -> Self {
+        put_varint(&mut self.0, v);
+        self
+    }
+    pub fn str(mut self, s: &str) -> Self {
+        put_str(&mut self.0, s);
+        self
+    }
+    pub fn bytes(mut self, b: &[u8]) -> Self {
+        put_bytes(&mut self.0, b);
+        self
+    }
+    pub fn raw(mut self, b: &[u8]) -> Self {
+        self.0.extend_from_slice(b);
+        self
+    }
+    pub fn u64_le(self, v: u64) -> Self {
+        self.raw(&v.to_le_bytes())
+    }
+}
+
+/// Any JSON value, nested a few levels. Floats are finite (JSON has no NaN or infinity).
+pub fn json_value() -> impl Strategy<Value = Value> {
+    let leaf = prop_oneof![
+        Just(Value::Null),
+        any::<bool>().prop_map(Value::Bool),
+        any::<i64>().prop_map(Value::from),
+        any::<u64>().prop_map(Value::from),
+        any::<f64>()
+            .prop_filter("JSON numbers are finite", |f| f.is_finite())
+            .prop_map(Value::from),
+        any::<String>().prop_map(Value::String),
+    ];
+    leaf.prop_recursive(4, 64, 8, |inner| {
+        prop_oneof![
+            prop::collection::vec(inner.clone(), 0..8).prop_map(Value::Array),
+            prop::collection::btree_map(any::<String>(), inner, 0..8)
+                .prop_map(|m| Value::Object(m.into_iter().collect())),
+        ]
+    })
+}
+
+/// JSON text to CBOR bytes, for building CBOR requests from readable JSON.
+pub fn cbor_of(json: &str) -> Vec<u8> {
+    fleetlink_proto::rosbridge::convert::json_to_cbor(json.as_bytes()).expect("test JSON is valid")
+}
+
+/// Runs `f` on a thread with a deliberately small stack (512 KiB, a quarter of a tokio
+/// worker's), so a recursion guard that only just holds still shows up: an overflow
+/// aborts the whole test binary.
+pub fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new()
+        .stack_size(512 * 1024)
+        .spawn(f)
+        .expect("spawn test thread")
+        .join()
+        .expect("no panic or stack overflow on a small stack")
+}
