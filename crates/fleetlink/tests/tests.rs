@@ -4,5 +4,7 @@
 mod util;
 
 mod e2e {
+    mod isolation;
+    mod link;
     mod relay;
 }

@@ -128,6 +128,7 @@ pub async fn start_agent_with(uplink: UplinkConfig, local: bool) -> TestAgent {
     let opts = AgentOptions {
         uplink,
         local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
+        sim: None,
     };
     let agent = Agent::bind(opts, Arc::new(GenericTranscoder))
         .await
@@ -303,4 +304,74 @@ impl LocalPublisher {
             payload,
         );
     }
+}
+
+/// A TCP proxy between a client and a server that a test can "blackhole": traffic stops
+/// flowing in both directions while both sockets stay open, as when a Wi-Fi link drops
+/// and TCP has not noticed.
+pub struct Blackhole {
+    pub addr: SocketAddr,
+    cut: Arc<std::sync::atomic::AtomicBool>,
+    task: tokio::task::JoinHandle<()>,
+}
+
+impl Blackhole {
+    pub async fn start(target: SocketAddr) -> Blackhole {
+        let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
+            .await
+            .expect("proxy binds");
+        let addr = listener.local_addr().unwrap();
+        let cut = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let c = cut.clone();
+        let task = tokio::spawn(async move {
+            while let Ok((inbound, _)) = listener.accept().await {
+                let Ok(outbound) = TcpStream::connect(target).await else {
+                    continue;
+                };
+                let (ri, wi) = inbound.into_split();
+                let (ro, wo) = outbound.into_split();
+                tokio::spawn(pump(ri, wo, c.clone()));
+                tokio::spawn(pump(ro, wi, c.clone()));
+            }
+        });
+        Blackhole { addr, cut, task }
+    }
+
+    /// Stops forwarding; bytes read afterwards are discarded, sockets stay open.
+    pub fn cut(&self) {
+        self.cut.store(true, std::sync::atomic::Ordering::SeqCst);
+    }
+}
+
+impl Drop for Blackhole {
+    fn drop(&mut self) {
+        self.task.abort();
+    }
+}
+
+async fn pump(
+    mut from: tokio::net::tcp::OwnedReadHalf,
+    mut to: tokio::net::tcp::OwnedWriteHalf,
+    cut: Arc<std::sync::atomic::AtomicBool>,
+) {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut buf = vec![0u8; 64 * 1024];
+    loop {
+        let n = match from.read(&mut buf).await {
+            Ok(0) | Err(_) => return,
+            Ok(n) => n,
+        };
+        if cut.load(std::sync::atomic::Ordering::SeqCst) {
+            // Keep reading so the sender's TCP sees nothing wrong; forward nothing.
+            continue;
+        }
+        if to.write_all(&buf[..n]).await.is_err() {
+            return;
+        }
+    }
+}
+
+/// Publishes on the hub's router directly, as an in-process participant.
+pub fn hub_publisher(hub: &TestHub, name: &str, type_name: &str) -> LocalPublisher {
+    LocalPublisher::new(&hub.state.router, name, type_name)
 }
