@@ -13,10 +13,18 @@
 //!
 //! Pacing: a delay-based controller turns the passive samples into a sending rate that
 //! keeps the link's queue short ([`LinkEstimator::pacing_rate`]): slow start (×1.25 per
-//! round trip) until the first sign of queueing, then +1 frame per round trip; when the
-//! smallest round trip of a 50 ms slot exceeds the base round trip by more than
-//! max(20 ms, base/4), the rate drops to 0.9 × the delivered rate (once per round trip).
-//! The agent sends at `min(capacity share, pacing rate)`.
+//! round trip) until the first sign of queueing, then +2 % per round trip (growth is
+//! withheld for a 50 ms slot whose smallest round trip shows queueing); when one
+//! acknowledged frame's round trip, less its own serialization, exceeds the base round
+//! trip by more than max(10 ms, base/8), the rate drops at once to the delivered rate
+//! (last 100 ms) times
+//! `1 − queue delay / base round trip`, kept within 0.5..0.9, which drains the standing
+//! queue in about one round trip (at most once per round trip).
+//! While no probe has been answered for max(3 × base round trip, 250 ms) the link is
+//! *stalled* (a blackout) and the pacing rate is zero, so the robot stops stuffing a dead
+//! link; the first answer resumes the previous rate, and round trips of frames sent
+//! before that are not taken as queueing. The agent sends at `min(capacity share,
+//! pacing rate)`.
 //!
 //! Design choice: acknowledgements are aggregated into fixed 50 ms slots (a ring sized by
 //! W), so memory and cost per frame stay constant however many frames are acknowledged.
@@ -39,8 +47,8 @@ pub struct LinkConfig {
     pub initial_rate: f64,
     /// Pacing never goes below this, bytes/s.
     pub min_rate: f64,
-    /// Typical frame size for the additive increase, bytes.
-    pub frame_size: usize,
+    /// Pacing never goes above this, bytes/s.
+    pub max_rate: f64,
 }
 
 impl Default for LinkConfig {
@@ -49,10 +57,10 @@ impl Default for LinkConfig {
             probe_interval: Nanos::from_millis(200),
             probe_size: 64,
             window: Nanos::from_secs(2),
-            base_rtt_horizon: Nanos::from_secs(10),
+            base_rtt_horizon: Nanos::from_secs(30),
             initial_rate: 125_000.0,
             min_rate: 16_000.0,
-            frame_size: 4096,
+            max_rate: 1.25e9,
         }
     }
 }
@@ -65,6 +73,11 @@ pub struct Probe {
 }
 
 const SLOT: Nanos = Nanos::from_millis(50);
+
+/// Queueing delay above which the pacer backs off: max(10 ms, base round trip / 8).
+fn queue_target(base: Nanos) -> Nanos {
+    Nanos::from_millis(10).max(Nanos(base.0 / 8))
+}
 
 #[derive(Debug, Clone, Copy, Default)]
 struct Slot {
@@ -105,6 +118,10 @@ pub struct LinkEstimator {
     pacer: Pacer,
     now: Nanos,
     started: Option<Nanos>,
+    /// Send time of the oldest probe with no answer (echo or ack) heard since.
+    unanswered_since: Option<Nanos>,
+    /// Frames sent before this instant crossed a stall; their round trips are not used.
+    stall_ended: Nanos,
 }
 
 impl LinkEstimator {
@@ -125,6 +142,8 @@ impl LinkEstimator {
             rtt_mins: VecDeque::with_capacity((config.base_rtt_horizon.0 / SLOT.0 + 2) as usize),
             now: Nanos::ZERO,
             started: None,
+            unanswered_since: None,
+            stall_ended: Nanos::ZERO,
             config,
         }
     }
@@ -146,6 +165,7 @@ impl LinkEstimator {
             self.outstanding.pop_front(); // never echoed: lost
         }
         self.outstanding.push_back((id, now));
+        self.unanswered_since.get_or_insert(now);
         Some(Probe {
             id,
             size: self.config.probe_size,
@@ -177,16 +197,40 @@ impl LinkEstimator {
             rtt,
             offset,
         });
-        self.record(self.config.probe_size as u64, Some(rtt), now);
+        let rtt = self.heard(sent, now).then_some(rtt);
+        self.record(self.config.probe_size as u64, rtt, now);
     }
 
     /// A data frame of `bytes`, sent at `sent_at`, was acknowledged at `now`.
     pub fn handle_ack(&mut self, bytes: usize, sent_at: Nanos, now: Nanos) {
         self.advance(now);
-        self.record(bytes as u64, Some(now.saturating_sub(sent_at)), now);
+        let rtt = self
+            .heard(sent_at, now)
+            .then(|| now.saturating_sub(sent_at));
+        self.record(bytes as u64, rtt, now);
+    }
+
+    /// Something sent at `sent` was answered at `now`: ends a stall. True if its round
+    /// trip is meaningful (it was not sent before a stall ended).
+    fn heard(&mut self, sent: Nanos, now: Nanos) -> bool {
+        if self.is_stalled() {
+            self.stall_ended = now;
+        }
+        self.unanswered_since = None;
+        sent >= self.stall_ended
+    }
+
+    /// No probe answered for max(3 × base round trip, 250 ms): the link is down.
+    pub fn is_stalled(&self) -> bool {
+        let limit = Nanos::from_millis(250).max(Nanos(self.base_rtt().map_or(0, |r| r.0 * 3)));
+        self.unanswered_since
+            .is_some_and(|t| self.now.saturating_sub(t) > limit)
     }
 
     fn record(&mut self, bytes: u64, rtt: Option<Nanos>, now: Nanos) {
+        if let Some(rtt) = rtt {
+            self.on_rtt_sample(bytes, rtt, now);
+        }
         let n = now.0 / SLOT.0;
         if self.slots.back().is_none_or(|s| s.n != n) {
             if self.slots.len() == self.slots.capacity() {
@@ -256,27 +300,34 @@ impl LinkEstimator {
             return;
         };
         let Some(slot_min) = slot.rtt_min else { return };
-        let delivered = self.recent_rate(4);
-        let target = Nanos::from_millis(20).max(Nanos(base.0 / 4));
-        let queued = slot_min.saturating_sub(base) > target;
-        let p = &mut self.pacer;
-        let now = self.now;
-        if queued {
-            if now >= p.hold_until {
-                p.rate = (delivered * 0.9).max(self.config.min_rate);
-                p.slow_start = false;
-                p.hold_until = now + base + SLOT;
-            }
-        } else {
+        // Decreases happen per sample (`on_rtt_sample`); a slot with queueing only
+        // withholds the increase.
+        if slot_min.saturating_sub(base) <= queue_target(base) {
+            let p = &mut self.pacer;
+            // Growth per slot, so that one round trip compounds to ×1.25 or ×1.02.
             let per_rtt = SLOT.as_secs_f64() / base.as_secs_f64().max(SLOT.as_secs_f64());
-            let grown = if p.slow_start {
-                p.rate * 1.25f64.powf(per_rtt)
-            } else {
-                p.rate + self.config.frame_size as f64 / base.as_secs_f64().max(1e-3) * per_rtt
-            };
-            // Never run far ahead of what is actually being delivered (app-limited links).
-            let cap = (2.0 * delivered).max(self.config.initial_rate);
-            p.rate = grown.min(cap.max(p.rate)).max(self.config.min_rate);
+            let gain: f64 = if p.slow_start { 1.25 } else { 1.02 };
+            p.rate =
+                (p.rate * gain.powf(per_rtt)).clamp(self.config.min_rate, self.config.max_rate);
+        }
+    }
+
+    /// Reacts to one round-trip sample of a `bytes` frame at once: a slot boundary would
+    /// add up to 50 ms to the one round trip the signal already lags.
+    fn on_rtt_sample(&mut self, bytes: u64, rtt: Nanos, now: Nanos) {
+        let Some(base) = self.base_rtt() else { return };
+        let delivered = self.recent_rate(2).max(self.config.min_rate);
+        // The frame's own serialization is not queueing.
+        let own = Nanos::from_secs_f64(bytes as f64 / delivered);
+        let queue_delay = rtt.saturating_sub(base).saturating_sub(own);
+        let p = &mut self.pacer;
+        if queue_delay > queue_target(base) && now >= p.hold_until {
+            // Drain the standing queue within about one round trip.
+            let cut =
+                (1.0 - queue_delay.as_secs_f64() / base.as_secs_f64().max(1e-3)).clamp(0.5, 0.9);
+            p.rate = (delivered * cut).max(self.config.min_rate);
+            p.slow_start = false;
+            p.hold_until = now + base;
         }
     }
 
@@ -343,9 +394,14 @@ impl LinkEstimator {
             .map(|o| Nanos((local.0 as i128 + o as i128).max(0) as u64))
     }
 
-    /// Sending rate (bytes/s) that keeps the link's queue short (see the module docs).
+    /// Sending rate (bytes/s) that keeps the link's queue short, zero while the link is
+    /// stalled (see the module docs).
     pub fn pacing_rate(&self) -> f64 {
-        self.pacer.rate
+        if self.is_stalled() {
+            0.0
+        } else {
+            self.pacer.rate
+        }
     }
 }
 
