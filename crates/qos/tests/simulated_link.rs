@@ -153,7 +153,7 @@ impl Sim {
         }
         // Publishers.
         for p in &mut self.publishers {
-            if now.0 % p.every.0 != 0 {
+            if !now.0.is_multiple_of(p.every.0) {
                 continue;
             }
             let msg = p.held.take().unwrap_or_else(|| {
