@@ -1,0 +1,395 @@
+//! Per-topic QoS configuration: [`TopicQos`], the partial form [`TopicQosSpec`] read from
+//! agent YAML and hub subscription options, defaults by ROS message type, and validation.
+//!
+//! Design choice: a configuration is checked once, when it is loaded
+//! ([`TopicQos::validate`]), and every error names the offending field, so the queues and
+//! the scheduler can trust their inputs and never fail on the message path.
+
+use serde::Deserialize;
+
+use crate::error::QosError;
+
+/// What a bounded per-topic queue does when it is full (see `docs/qos.md`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Policy {
+    /// No drop: when full, the item is handed back to the source (backpressure).
+    Fifo,
+    /// Keep only the newest message (queue length is 1).
+    Latest,
+    /// When full, evict the oldest queued message.
+    #[default]
+    DropOldest,
+    /// When full, refuse the incoming message.
+    DropNewest,
+    /// When full, evict a uniformly chosen queued message (seeded, reproducible).
+    Random,
+    /// AFR buffering (adaptive frame rate): thin the queue evenly, halve the accepted rate.
+    Afr,
+}
+
+impl Policy {
+    /// Stable lower-case name, as written in configuration and used as a metrics label.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Policy::Fifo => "fifo",
+            Policy::Latest => "latest",
+            Policy::DropOldest => "drop_oldest",
+            Policy::DropNewest => "drop_newest",
+            Policy::Random => "random",
+            Policy::Afr => "afr",
+        }
+    }
+}
+
+/// Complete, validated QoS settings of one topic.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TopicQos {
+    /// Scheduling weight, > 0; larger is served sooner.
+    #[serde(default = "default_priority")]
+    pub priority: f32,
+    /// At most this many messages per second enter the queue; `None` means unlimited.
+    #[serde(default)]
+    pub rate_limit_hz: Option<f64>,
+    #[serde(default)]
+    pub policy: Policy,
+    /// Queue length L, >= 1.
+    #[serde(default = "default_queue")]
+    pub queue: usize,
+    /// Never drop: served first from one FIFO shared by all no-drop topics; requires
+    /// `policy: fifo` and no rate limit.
+    #[serde(default)]
+    pub no_drop: bool,
+}
+
+fn default_priority() -> f32 {
+    DEFAULT_PRIORITY
+}
+
+fn default_queue() -> usize {
+    DEFAULT_QUEUE
+}
+
+const DEFAULT_PRIORITY: f32 = 5.0;
+const DEFAULT_QUEUE: usize = 16;
+
+impl Default for TopicQos {
+    fn default() -> Self {
+        TopicQos {
+            priority: DEFAULT_PRIORITY,
+            rate_limit_hz: None,
+            policy: Policy::DropOldest,
+            queue: DEFAULT_QUEUE,
+            no_drop: false,
+        }
+    }
+}
+
+impl TopicQos {
+    fn new(priority: f32, policy: Policy, queue: usize) -> Self {
+        TopicQos {
+            priority,
+            rate_limit_hz: None,
+            policy,
+            queue,
+            no_drop: false,
+        }
+    }
+
+    fn no_drop(priority: f32, queue: usize) -> Self {
+        TopicQos {
+            no_drop: true,
+            ..TopicQos::new(priority, Policy::Fifo, queue)
+        }
+    }
+
+    /// Defaults for a ROS message type, given as `pkg/Type` or `pkg/msg/Type`.
+    /// The table is documented in `docs/qos.md`; unknown types get [`TopicQos::default`].
+    pub fn default_for_type(ros_type: &str) -> TopicQos {
+        let name = normalize_type(ros_type);
+        match name.as_str() {
+            // Motion commands: only the newest command matters, and it matters now.
+            "geometry_msgs/Twist" | "geometry_msgs/TwistStamped" => {
+                TopicQos::new(10.0, Policy::Latest, 1)
+            }
+            "ackermann_msgs/AckermannDriveStamped" | "ackermann_msgs/AckermannDrive" => {
+                TopicQos::new(10.0, Policy::Latest, 1)
+            }
+            // Where the robot is: small, frequent, newest wins.
+            "nav_msgs/Odometry"
+            | "geometry_msgs/PoseStamped"
+            | "geometry_msgs/PoseWithCovarianceStamped"
+            | "sensor_msgs/NavSatFix" => TopicQos::new(8.0, Policy::Latest, 1),
+            "tf2_msgs/TFMessage" | "tf/tfMessage" => TopicQos::new(8.0, Policy::DropOldest, 64),
+            // Maps are sent rarely and must arrive whole.
+            "nav_msgs/OccupancyGrid" | "map_msgs/OccupancyGridUpdate" | "nav_msgs/MapMetaData" => {
+                TopicQos::no_drop(5.0, 4)
+            }
+            "nav_msgs/Path" | "sensor_msgs/BatteryState" | "diagnostic_msgs/DiagnosticArray" => {
+                TopicQos::new(3.0, Policy::Latest, 1)
+            }
+            "sensor_msgs/Imu" => TopicQos::new(4.0, Policy::DropOldest, 32),
+            "sensor_msgs/LaserScan" => TopicQos::new(3.0, Policy::Afr, 16),
+            // Bulk sensor data: lowest priority; AFR keeps evenly spaced frames through
+            // outages, which is what mapping and tracking need.
+            "sensor_msgs/Image" | "sensor_msgs/CompressedImage" => {
+                TopicQos::new(2.0, Policy::Afr, 8)
+            }
+            "sensor_msgs/PointCloud2" | "sensor_msgs/PointCloud" => {
+                TopicQos::new(1.0, Policy::Afr, 8)
+            }
+            "rosgraph_msgs/Log" | "rcl_interfaces/Log" => {
+                TopicQos::new(2.0, Policy::DropOldest, 100)
+            }
+            _ => TopicQos::default(),
+        }
+    }
+
+    /// [`TopicQos::default_for_type`] refined by well-known topic names: emergency stops
+    /// (`e_stop`, `estop`, `emergency_stop`) get the highest priority, `/tf_static` and
+    /// `/map` are no-drop.
+    pub fn default_for_topic(topic: &str, ros_type: &str) -> TopicQos {
+        let last = topic
+            .rsplit('/')
+            .next()
+            .unwrap_or(topic)
+            .to_ascii_lowercase();
+        match last.as_str() {
+            "e_stop" | "estop" | "emergency_stop" => TopicQos::new(100.0, Policy::Latest, 1),
+            "tf_static" => TopicQos::no_drop(8.0, 16),
+            "map" => TopicQos::no_drop(5.0, 4),
+            _ => TopicQos::default_for_type(ros_type),
+        }
+    }
+
+    /// Checks every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), QosError> {
+        if !(self.priority.is_finite() && self.priority > 0.0) {
+            return Err(QosError::invalid(
+                "priority",
+                format!("must be a finite number > 0, got {}", self.priority),
+            ));
+        }
+        if let Some(hz) = self.rate_limit_hz
+            && !(hz.is_finite() && hz > 0.0)
+        {
+            return Err(QosError::invalid(
+                "rate_limit_hz",
+                format!("must be a finite number > 0, got {hz}"),
+            ));
+        }
+        if self.queue == 0 {
+            return Err(QosError::invalid("queue", "must be at least 1".to_string()));
+        }
+        if self.policy == Policy::Latest && self.queue != 1 {
+            return Err(QosError::invalid(
+                "queue",
+                format!(
+                    "policy `latest` keeps exactly one message, got queue {}",
+                    self.queue
+                ),
+            ));
+        }
+        if self.no_drop && self.policy != Policy::Fifo {
+            return Err(QosError::invalid(
+                "policy",
+                format!(
+                    "no_drop topics must use `fifo`, got `{}`",
+                    self.policy.as_str()
+                ),
+            ));
+        }
+        if self.no_drop && self.rate_limit_hz.is_some() {
+            return Err(QosError::invalid(
+                "rate_limit_hz",
+                "a no_drop topic cannot be rate limited (rate limiting drops)".to_string(),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// `pkg/msg/Type` (ROS 2) and `pkg/Type` (ROS 1) name the same thing here.
+fn normalize_type(ros_type: &str) -> String {
+    let t = ros_type.trim();
+    match t.split('/').collect::<Vec<_>>().as_slice() {
+        [pkg, "msg", name] => format!("{pkg}/{name}"),
+        _ => t.to_string(),
+    }
+}
+
+/// Topic QoS as written by an operator: every field optional, missing ones taken from the
+/// defaults of the topic's type ([`TopicQosSpec::resolve`]).
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TopicQosSpec {
+    pub priority: Option<f32>,
+    pub rate_limit_hz: Option<f64>,
+    pub policy: Option<Policy>,
+    pub queue: Option<usize>,
+    pub no_drop: Option<bool>,
+}
+
+impl TopicQosSpec {
+    /// Fills the gaps from `base` (usually [`TopicQos::default_for_topic`]) and validates.
+    ///
+    /// Two fields follow from others when left out: `no_drop: true` implies `policy: fifo`,
+    /// and `policy: latest` implies `queue: 1`; switching a no-drop default to a dropping
+    /// policy clears `no_drop`.
+    pub fn resolve(&self, base: &TopicQos) -> Result<TopicQos, QosError> {
+        let mut qos = base.clone();
+        if let Some(p) = self.priority {
+            qos.priority = p;
+        }
+        if self.rate_limit_hz.is_some() {
+            qos.rate_limit_hz = self.rate_limit_hz;
+        }
+        if let Some(policy) = self.policy {
+            qos.policy = policy;
+            if policy != Policy::Fifo && self.no_drop.is_none() {
+                qos.no_drop = false;
+            }
+            if self.queue.is_none() {
+                qos.queue = match policy {
+                    Policy::Latest => 1,
+                    _ if base.policy == Policy::Latest => DEFAULT_QUEUE,
+                    _ => base.queue,
+                };
+            }
+        }
+        if let Some(q) = self.queue {
+            qos.queue = q;
+        }
+        if let Some(nd) = self.no_drop {
+            qos.no_drop = nd;
+            if nd && self.policy.is_none() {
+                qos.policy = Policy::Fifo;
+                if self.queue.is_none() && base.policy == Policy::Latest {
+                    qos.queue = DEFAULT_QUEUE;
+                }
+            }
+        }
+        qos.validate()?;
+        Ok(qos)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_by_type_are_valid_and_match_the_documented_table() {
+        for t in [
+            "geometry_msgs/Twist",
+            "geometry_msgs/msg/Twist",
+            "sensor_msgs/msg/PointCloud2",
+            "nav_msgs/OccupancyGrid",
+            "sensor_msgs/Image",
+            "unknown_pkg/Thing",
+        ] {
+            TopicQos::default_for_type(t).validate().unwrap();
+        }
+        let twist = TopicQos::default_for_type("geometry_msgs/msg/Twist");
+        assert_eq!((twist.policy, twist.priority), (Policy::Latest, 10.0));
+        let cloud = TopicQos::default_for_type("sensor_msgs/PointCloud2");
+        assert!(cloud.priority < twist.priority);
+        assert!(TopicQos::default_for_type("nav_msgs/msg/OccupancyGrid").no_drop);
+        let estop = TopicQos::default_for_topic("/robot1/e_stop", "std_msgs/Bool");
+        assert!(estop.priority > twist.priority);
+    }
+
+    #[test]
+    fn validation_names_the_bad_field() {
+        let field = |q: TopicQos| q.validate().unwrap_err().field();
+        assert_eq!(
+            field(TopicQos {
+                priority: 0.0,
+                ..TopicQos::default()
+            }),
+            Some("priority")
+        );
+        assert_eq!(
+            field(TopicQos {
+                priority: f32::NAN,
+                ..TopicQos::default()
+            }),
+            Some("priority")
+        );
+        assert_eq!(
+            field(TopicQos {
+                queue: 0,
+                ..TopicQos::default()
+            }),
+            Some("queue")
+        );
+        assert_eq!(
+            field(TopicQos {
+                rate_limit_hz: Some(-1.0),
+                ..TopicQos::default()
+            }),
+            Some("rate_limit_hz")
+        );
+        assert_eq!(
+            field(TopicQos {
+                no_drop: true,
+                ..TopicQos::default()
+            }),
+            Some("policy")
+        );
+        assert_eq!(
+            field(TopicQos {
+                policy: Policy::Latest,
+                queue: 4,
+                ..TopicQos::default()
+            }),
+            Some("queue")
+        );
+    }
+
+    #[test]
+    fn yaml_field_names_and_policy_names_deserialize() {
+        let q: TopicQos = serde_yaml_ng::from_str(
+            "priority: 2.5\nrate_limit_hz: 10\npolicy: afr\nqueue: 8\nno_drop: false\n",
+        )
+        .unwrap();
+        assert_eq!(q.policy, Policy::Afr);
+        assert_eq!(q.rate_limit_hz, Some(10.0));
+        for name in [
+            "fifo",
+            "latest",
+            "drop_oldest",
+            "drop_newest",
+            "random",
+            "afr",
+        ] {
+            let p: Policy = serde_yaml_ng::from_str(name).unwrap();
+            assert_eq!(p.as_str(), name);
+        }
+        assert!(serde_yaml_ng::from_str::<TopicQos>("priorty: 1").is_err());
+    }
+
+    #[test]
+    fn spec_fills_missing_fields_from_the_type_defaults() {
+        let base = TopicQos::default_for_type("geometry_msgs/Twist");
+        let spec: TopicQosSpec = serde_yaml_ng::from_str("priority: 20").unwrap();
+        let q = spec.resolve(&base).unwrap();
+        assert_eq!((q.priority, q.policy, q.queue), (20.0, Policy::Latest, 1));
+
+        let spec: TopicQosSpec = serde_yaml_ng::from_str("policy: afr").unwrap();
+        assert_eq!(spec.resolve(&base).unwrap().queue, DEFAULT_QUEUE);
+
+        let spec: TopicQosSpec = serde_yaml_ng::from_str("no_drop: true").unwrap();
+        let q = spec.resolve(&base).unwrap();
+        assert_eq!((q.policy, q.no_drop), (Policy::Fifo, true));
+
+        let map = TopicQos::default_for_type("nav_msgs/OccupancyGrid");
+        let spec: TopicQosSpec = serde_yaml_ng::from_str("policy: latest").unwrap();
+        let q = spec.resolve(&map).unwrap();
+        assert_eq!((q.no_drop, q.queue), (false, 1));
+
+        let spec: TopicQosSpec = serde_yaml_ng::from_str("priority: -3").unwrap();
+        assert_eq!(spec.resolve(&base).unwrap_err().field(), Some("priority"));
+    }
+}

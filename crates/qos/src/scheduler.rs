@@ -1,0 +1,369 @@
+//! The uplink scheduler (Robofleet, Algorithms 1–2): decides which queued message goes on
+//! the link next, and when sending must pause.
+//!
+//! Order of service: messages of `no_drop` topics wait in one FIFO shared by all of them,
+//! always served first, in arrival order. Every other topic has its own bounded
+//! [`TopicQueue`] (rate limit + drop policy); among topics with something queued, the one
+//! with the largest `priority × (now − last time it got a message through)` goes next —
+//! *descending*, as the paper intends (the published client sorts ascending and so serves
+//! the least-waited topic first; `scheduler_serves_longest_weighted_wait_first` guards
+//! against that). Sending pauses while `max_in_flight` frames (nT) are unacknowledged, and
+//! while the byte budget (the robot's capacity share) is spent.
+//!
+//! Design choice: the weighted wait `p·(now − s)` of two topics can swap order as time
+//! passes, so no single heap orders all topics. But topics of *equal* priority never swap:
+//! the one that was served longest ago wins. Topics are therefore grouped by priority,
+//! each group a min-heap on `s`; picking scans one head per group. The cost is
+//! O(distinct priorities + log topics) per message, without allocation — a fleet uses a
+//! handful of priority levels, however many topics it has.
+
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap, VecDeque};
+use std::sync::Arc;
+
+use crate::config::TopicQos;
+use crate::error::QosError;
+use crate::queue::{DropReason, Push, TopicQueue};
+use crate::time::Nanos;
+
+/// Caller-chosen identifier of a topic on one link.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct TopicId(pub u32);
+
+/// Size of an item on the wire, in bytes, for the byte budget.
+pub trait WireLen {
+    fn wire_len(&self) -> usize;
+}
+
+impl WireLen for [u8] {
+    fn wire_len(&self) -> usize {
+        self.len()
+    }
+}
+
+impl WireLen for Vec<u8> {
+    fn wire_len(&self) -> usize {
+        self.len()
+    }
+}
+
+impl<T: WireLen + ?Sized> WireLen for Arc<T> {
+    fn wire_len(&self) -> usize {
+        (**self).wire_len()
+    }
+}
+
+impl<T: WireLen + ?Sized> WireLen for Box<T> {
+    fn wire_len(&self) -> usize {
+        (**self).wire_len()
+    }
+}
+
+impl<T: WireLen + ?Sized> WireLen for &T {
+    fn wire_len(&self) -> usize {
+        (**self).wire_len()
+    }
+}
+
+/// Outcome of [`Scheduler::offer`]; the same cases as a queue push.
+pub type Offer<T> = Push<T>;
+
+#[derive(Debug, Clone)]
+pub struct SchedulerConfig {
+    /// nT: frames sent but not yet acknowledged at which sending pauses.
+    pub max_in_flight: usize,
+    /// Depth of the byte budget's bucket, as seconds of the budget rate: how much may
+    /// leave back-to-back after an idle spell.
+    pub budget_burst_secs: f64,
+}
+
+impl Default for SchedulerConfig {
+    fn default() -> Self {
+        SchedulerConfig {
+            max_in_flight: 32,
+            budget_burst_secs: 0.02,
+        }
+    }
+}
+
+#[derive(Debug)]
+enum Lane<T> {
+    /// Items live in the shared no-drop FIFO; this counts this topic's share of it.
+    NoDrop {
+        queued: usize,
+        capacity: usize,
+    },
+    Queue(TopicQueue<T>),
+}
+
+#[derive(Debug)]
+struct Topic<T> {
+    id: TopicId,
+    lane: Lane<T>,
+    group: usize,
+    last_sent: Option<Nanos>,
+    /// In its group's heap (has something queued).
+    ready: bool,
+}
+
+#[derive(Debug)]
+struct Group {
+    priority: f32,
+    /// (last time served, topic index), earliest first.
+    ready: BinaryHeap<Reverse<(Nanos, u32)>>,
+}
+
+/// Byte budget: a token bucket refilled at the capacity share.
+#[derive(Debug, Clone)]
+struct Budget {
+    bytes_per_sec: f64,
+    burst: f64,
+    tokens: f64,
+    at: Nanos,
+}
+
+impl Budget {
+    fn refill(&mut self, now: Nanos) {
+        let dt = now.saturating_sub(self.at).as_secs_f64();
+        self.tokens = (self.tokens + dt * self.bytes_per_sec).min(self.burst);
+        self.at = self.at.max(now);
+    }
+}
+
+/// Robofleet-style scheduler over items of type `T` (see the module docs).
+#[derive(Debug)]
+pub struct Scheduler<T> {
+    config: SchedulerConfig,
+    topics: Vec<Topic<T>>,
+    index: HashMap<TopicId, u32>,
+    groups: Vec<Group>,
+    no_drop: VecDeque<(u32, T)>,
+    in_flight: usize,
+    budget: Option<Budget>,
+}
+
+impl<T: WireLen> Scheduler<T> {
+    pub fn new(config: SchedulerConfig) -> Self {
+        Scheduler {
+            config,
+            topics: Vec::new(),
+            index: HashMap::new(),
+            groups: Vec::new(),
+            no_drop: VecDeque::new(),
+            in_flight: 0,
+            budget: None,
+        }
+    }
+
+    /// Registers a topic; `qos` is validated here.
+    pub fn add_topic(&mut self, id: TopicId, qos: TopicQos) -> Result<(), QosError> {
+        qos.validate()?;
+        if self.index.contains_key(&id) {
+            return Err(QosError::DuplicateTopic(id));
+        }
+        let group = match self.groups.iter().position(|g| g.priority == qos.priority) {
+            Some(g) => g,
+            None => {
+                // Keep groups in descending priority, so equal scores favour the higher.
+                let at = self.groups.partition_point(|g| g.priority > qos.priority);
+                self.groups.insert(
+                    at,
+                    Group {
+                        priority: qos.priority,
+                        ready: BinaryHeap::new(),
+                    },
+                );
+                for t in &mut self.topics {
+                    if t.group >= at {
+                        t.group += 1;
+                    }
+                }
+                at
+            }
+        };
+        let lane = if qos.no_drop {
+            self.no_drop.reserve(qos.queue);
+            Lane::NoDrop {
+                queued: 0,
+                capacity: qos.queue,
+            }
+        } else {
+            self.groups[group].ready.reserve(1);
+            Lane::Queue(TopicQueue::with_seed(&qos, u64::from(id.0)))
+        };
+        let index = self.topics.len() as u32;
+        self.topics.push(Topic {
+            id,
+            lane,
+            group,
+            last_sent: None,
+            ready: false,
+        });
+        self.index.insert(id, index);
+        Ok(())
+    }
+
+    /// Offers a message of `topic` arriving at `now`. Drops (by rate limit or policy) and
+    /// backpressure (`fifo` and no-drop topics whose queue is full) are reported, with the
+    /// item, in the result.
+    pub fn offer(&mut self, topic: TopicId, item: T, now: Nanos) -> Offer<T> {
+        let Some(&index) = self.index.get(&topic) else {
+            return Push::Dropped {
+                item,
+                reason: DropReason::UnknownTopic,
+            };
+        };
+        let t = &mut self.topics[index as usize];
+        match &mut t.lane {
+            Lane::NoDrop { queued, capacity } => {
+                if *queued >= *capacity {
+                    return Push::Backpressure(item);
+                }
+                *queued += 1;
+                self.no_drop.push_back((index, item));
+                Push::Queued
+            }
+            Lane::Queue(queue) => {
+                let outcome = queue.push(item, now);
+                if !t.ready && !queue.is_empty() {
+                    t.ready = true;
+                    let since = t.last_sent.unwrap_or(now);
+                    self.groups[t.group].ready.push(Reverse((since, index)));
+                }
+                outcome
+            }
+        }
+    }
+
+    /// The next message to put on the link, if sending is allowed at `now`. The caller
+    /// sends it as one frame and later reports its acknowledgement with [`Self::on_acked`].
+    pub fn poll_next(&mut self, now: Nanos) -> Option<(TopicId, T)> {
+        if self.in_flight >= self.config.max_in_flight {
+            return None;
+        }
+        if let Some(b) = &mut self.budget {
+            b.refill(now);
+            if b.tokens <= 0.0 {
+                return None;
+            }
+        }
+        let (index, item) = match self.no_drop.pop_front() {
+            Some((index, item)) => {
+                if let Lane::NoDrop { queued, .. } = &mut self.topics[index as usize].lane {
+                    *queued -= 1;
+                }
+                (index, item)
+            }
+            None => self.pick_weighted(now)?,
+        };
+        let topic = &mut self.topics[index as usize];
+        topic.last_sent = Some(now);
+        self.in_flight += 1;
+        if let Some(b) = &mut self.budget {
+            b.tokens -= item.wire_len() as f64;
+        }
+        Some((topic.id, item))
+    }
+
+    /// Pops from the topic with the largest `priority × wait`.
+    fn pick_weighted(&mut self, now: Nanos) -> Option<(u32, T)> {
+        let mut best: Option<(f64, usize)> = None;
+        for (g, group) in self.groups.iter().enumerate() {
+            if let Some(Reverse((since, _))) = group.ready.peek() {
+                let score = f64::from(group.priority) * now.saturating_sub(*since).0 as f64;
+                if best.is_none_or(|(s, _)| score > s) {
+                    best = Some((score, g));
+                }
+            }
+        }
+        let (_, g) = best?;
+        let Reverse((_, index)) = self.groups[g].ready.pop()?;
+        let topic = &mut self.topics[index as usize];
+        let Lane::Queue(queue) = &mut topic.lane else {
+            return None;
+        };
+        let item = queue.pop(now)?;
+        if queue.is_empty() {
+            topic.ready = false;
+        } else {
+            self.groups[g].ready.push(Reverse((now, index)));
+        }
+        Some((index, item))
+    }
+
+    /// `n` frames were acknowledged by the peer (pong or explicit ack).
+    pub fn on_acked(&mut self, n_frames: usize, _now: Nanos) {
+        self.in_flight = self.in_flight.saturating_sub(n_frames);
+    }
+
+    /// The link was re-established: nothing is in flight any more. (Frames lost with the
+    /// old connection are the session layer's business.)
+    pub fn on_link_reset(&mut self) {
+        self.in_flight = 0;
+    }
+
+    /// Caps the sending rate at `bytes_per_sec` (the capacity share); `None` lifts the cap.
+    pub fn set_rate_budget(&mut self, bytes_per_sec: Option<f64>, now: Nanos) {
+        self.budget = match (bytes_per_sec, self.budget.take()) {
+            (Some(rate), previous) if rate.is_finite() && rate > 0.0 => {
+                let burst = (rate * self.config.budget_burst_secs).max(1.0);
+                let mut b = previous.unwrap_or(Budget {
+                    bytes_per_sec: rate,
+                    burst,
+                    tokens: burst,
+                    at: now,
+                });
+                b.refill(now);
+                b.bytes_per_sec = rate;
+                b.burst = burst;
+                b.tokens = b.tokens.min(burst);
+                Some(b)
+            }
+            (Some(_), _) => Some(Budget {
+                bytes_per_sec: 0.0,
+                burst: 0.0,
+                tokens: 0.0,
+                at: now,
+            }),
+            (None, _) => None,
+        };
+    }
+
+    /// The time at which [`Self::poll_next`] may succeed again when only the byte budget
+    /// holds it back; `None` if sending is not budget-limited (nothing queued, a free
+    /// window, or waiting on acknowledgements).
+    pub fn poll_timeout(&self, now: Nanos) -> Option<Nanos> {
+        let b = self.budget.as_ref()?;
+        if !self.has_queued()
+            || self.in_flight >= self.config.max_in_flight
+            || b.bytes_per_sec <= 0.0
+        {
+            return None;
+        }
+        let tokens = b.tokens + now.saturating_sub(b.at).as_secs_f64() * b.bytes_per_sec;
+        if tokens > 0.0 {
+            return None;
+        }
+        Some(now + Nanos::from_secs_f64(-tokens / b.bytes_per_sec) + Nanos(1))
+    }
+
+    pub fn has_queued(&self) -> bool {
+        !self.no_drop.is_empty() || self.groups.iter().any(|g| !g.ready.is_empty())
+    }
+
+    /// Frames sent and not yet acknowledged.
+    pub fn in_flight(&self) -> usize {
+        self.in_flight
+    }
+
+    /// Messages of `topic` waiting to be sent.
+    pub fn queued(&self, topic: TopicId) -> usize {
+        let Some(&i) = self.index.get(&topic) else {
+            return 0;
+        };
+        match &self.topics[i as usize].lane {
+            Lane::NoDrop { queued, .. } => *queued,
+            Lane::Queue(q) => q.len(),
+        }
+    }
+}
