@@ -184,9 +184,15 @@ impl Uplink {
                 .await
                 .map_err(|_| format!("connecting to {} timed out", self.cfg.hub_url))?
                 .map_err(|e| format!("cannot connect to {}: {e}", self.cfg.hub_url))?;
-        let agreed = response.headers().get("Sec-WebSocket-Protocol").and_then(|v| v.to_str().ok());
+        let agreed = response
+            .headers()
+            .get("Sec-WebSocket-Protocol")
+            .and_then(|v| v.to_str().ok());
         if agreed != Some(SUBPROTOCOL) {
-            return Err(format!("{} does not speak {SUBPROTOCOL} (is it a fleetlink hub?)", self.cfg.hub_url));
+            return Err(format!(
+                "{} does not speak {SUBPROTOCOL} (is it a fleetlink hub?)",
+                self.cfg.hub_url
+            ));
         }
         if let tokio_tungstenite::MaybeTlsStream::Plain(s) = ws.get_ref() {
             let _ = s.set_nodelay(true);

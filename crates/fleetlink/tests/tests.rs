@@ -4,7 +4,9 @@
 mod util;
 
 mod e2e {
+    mod cli;
     mod isolation;
     mod link;
     mod relay;
+    mod rosbridge;
 }

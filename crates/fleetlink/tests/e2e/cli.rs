@@ -1,0 +1,132 @@
+//! The binary as a user runs it: the demo fleet comes up and stops cleanly on SIGTERM;
+//! a bad agent configuration is reported with file, line and field.
+
+use std::io::{BufRead, BufReader};
+use std::process::{Command, Stdio};
+use std::time::Duration;
+
+use serde_json::Value;
+use tokio::io::{AsyncReadExt, AsyncWriteExt};
+
+use crate::util::*;
+
+const BIN: &str = env!("CARGO_BIN_EXE_fleetlink");
+
+/// `GET path` over plain HTTP/1.0; returns the body.
+async fn http_get(addr: &str, path: &str) -> String {
+    let mut s = tokio::net::TcpStream::connect(addr).await.expect("connect");
+    s.write_all(format!("GET {path} HTTP/1.0\r\nHost: {addr}\r\n\r\n").as_bytes())
+        .await
+        .unwrap();
+    let mut out = String::new();
+    s.read_to_string(&mut out).await.unwrap();
+    out.split_once("\r\n\r\n")
+        .map(|(_, b)| b.to_owned())
+        .unwrap_or_default()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn demo_fleet_comes_up_and_stops_on_sigterm() {
+    let dir = temp_dir("demo");
+    let mut child = Command::new(BIN)
+        .args(["demo", "--listen", "127.0.0.1:0", "--data-dir"])
+        .arg(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("demo starts");
+    let stdout = child.stdout.take().unwrap();
+    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+            let _ = tx.send(line);
+        }
+    });
+    let addr = within("the demo to print its URL", async {
+        loop {
+            let line = rx
+                .recv()
+                .await
+                .expect("demo printed its URL before exiting");
+            if let Some(rest) = line.trim().strip_prefix("open http://") {
+                return rest
+                    .trim_end_matches(|c| c != '/')
+                    .trim_end_matches('/')
+                    .split('/')
+                    .next()
+                    .unwrap()
+                    .to_owned();
+            }
+        }
+    })
+    .await;
+
+    // Three robots online, each with its simulated topics flowing.
+    within("three robots with data", async {
+        loop {
+            let robots: Value = serde_json::from_str(&http_get(&addr, "/api/v1/robots").await)
+                .unwrap_or(Value::Null);
+            let topics: Value = serde_json::from_str(&http_get(&addr, "/api/v1/topics").await)
+                .unwrap_or(Value::Null);
+            let online = robots["robots"]
+                .as_array()
+                .map_or(0, |r| r.iter().filter(|r| r["online"] == true).count());
+            let flowing = topics["topics"].as_array().map_or(0, |t| {
+                t.iter()
+                    .filter(|t| {
+                        t["name"].as_str().is_some_and(|n| n.ends_with("/scan"))
+                            && t["messages"].as_u64() > Some(0)
+                    })
+                    .count()
+            });
+            if online == 3 && flowing == 3 {
+                return;
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+    })
+    .await;
+    let page = http_get(&addr, "/").await;
+    assert!(page.contains("fleetlink hub"));
+    let metrics = http_get(&addr, "/metrics").await;
+    assert!(
+        metrics.contains("fleetlink_topic_messages_total{topic=\"/robot1/scan\"}"),
+        "{metrics}"
+    );
+
+    let status = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let exit = within("the demo to stop", async {
+        loop {
+            if let Some(s) = child.try_wait().unwrap() {
+                return s;
+            }
+            tokio::time::sleep(Duration::from_millis(20)).await;
+        }
+    })
+    .await;
+    assert!(exit.success(), "demo exited with {exit}");
+}
+
+#[test]
+fn agent_config_error_names_file_line_and_field() {
+    let dir = temp_dir("badcfg");
+    let path = dir.join("robot.yaml");
+    std::fs::write(
+        &path,
+        "name: robot1\nsim:\n  point_cloud:\n    rate_hz: 0\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--config"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("robot.yaml:4:"), "{err}");
+    assert!(err.contains("sim.point_cloud.rate_hz"), "{err}");
+}

@@ -1,0 +1,243 @@
+//! rosbridge v2 features as a client sees them on the hub: regex subscriptions across
+//! robots, CBOR compression, throttling, fragmentation, rosapi name spellings, and the
+//! per-topic remap of robot names.
+
+use std::time::Duration;
+
+use fleetlink_relay::queue::DropReason;
+use serde_json::{Value, json};
+
+use crate::util::*;
+
+/// Publishes with `publish` until `pred` accepts a frame from `client`.
+async fn pump_until(
+    client: &mut Rosbridge,
+    mut publish: impl FnMut(u32),
+    mut pred: impl FnMut(&Value) -> bool,
+) -> Value {
+    within("an expected frame", async {
+        for i in 0..4000 {
+            publish(i);
+            if let Ok(Some(v)) =
+                tokio::time::timeout(Duration::from_millis(25), client.try_recv()).await
+                && pred(&v)
+            {
+                return v;
+            }
+        }
+        panic!("expected frame never came");
+    })
+    .await
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn regex_subscription_collects_matching_topics_of_every_robot() {
+    let hub = start_hub().await;
+    let a = start_agent(&hub, "alpha").await;
+    let b = start_agent(&hub, "beta").await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/[a-z]+/scan", "regex": true, "id": "all-scans"}))
+        .await;
+    let mut pa = LocalPublisher::new(&a.router, "/scan", "sensor_msgs/msg/LaserScan");
+    let mut pb = LocalPublisher::new(&b.router, "/scan", "sensor_msgs/msg/LaserScan");
+    let mut other = LocalPublisher::new(&a.router, "/odom", "nav_msgs/msg/Odometry");
+    let mut seen = std::collections::BTreeSet::new();
+    within("scans of both robots", async {
+        for i in 0..4000u32 {
+            pa.publish_json(&json!({"i": i}));
+            pb.publish_json(&json!({"i": i}));
+            other.publish_json(&json!({"i": i}));
+            if let Ok(Some(v)) =
+                tokio::time::timeout(Duration::from_millis(25), op.try_recv()).await
+                && v["op"] == "publish"
+            {
+                let t = v["topic"].as_str().unwrap().to_owned();
+                assert!(t.ends_with("/scan"), "pattern matched {t}");
+                seen.insert(t);
+                if seen.len() == 2 {
+                    return;
+                }
+            }
+        }
+        panic!("saw only {seen:?}");
+    })
+    .await;
+    assert_eq!(
+        seen.into_iter().collect::<Vec<_>>(),
+        ["/alpha/scan", "/beta/scan"]
+    );
+    a.shutdown().await;
+    b.shutdown().await;
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn cbor_compression_delivers_binary_frames() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/c", "compression": "cbor"}))
+        .await;
+    let mut p = hub_publisher(&hub, "/c", "std_msgs/msg/String");
+    // Wait for a binary frame specifically.
+    let got = within("a CBOR frame", async {
+        for i in 0..4000u32 {
+            p.publish_json(&json!({"data": "hello", "n": i}));
+            if let Ok(Some(Ok(m))) = tokio::time::timeout(
+                Duration::from_millis(25),
+                futures_util::StreamExt::next(op.raw()),
+            )
+            .await
+            {
+                match m {
+                    tokio_tungstenite::tungstenite::Message::Binary(b) => return b,
+                    tokio_tungstenite::tungstenite::Message::Text(t) => {
+                        panic!("expected binary, got text {t}")
+                    }
+                    _ => {}
+                }
+            }
+        }
+        panic!("no frame");
+    })
+    .await;
+    let v: ciborium::Value = ciborium::from_reader(&got[..]).unwrap();
+    let m = v.as_map().unwrap();
+    assert_eq!(
+        m[0],
+        (
+            ciborium::Value::Text("op".into()),
+            ciborium::Value::Text("publish".into())
+        )
+    );
+    assert_eq!(m[1].1, ciborium::Value::Text("/c".into()));
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn throttle_rate_thins_a_burst_and_counts_rate_limit_drops() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/t", "throttle_rate": 60000}))
+        .await;
+    let mut p = hub_publisher(&hub, "/t", "std_msgs/msg/String");
+    pump_until(
+        &mut op,
+        |i| p.publish_json(&json!({"n": i})),
+        |v| v["op"] == "publish",
+    )
+    .await;
+    // Within the next minute nothing else may be sent however much is published.
+    for i in 0..500 {
+        p.publish_json(&json!({"n": 10_000 + i}));
+    }
+    let extra = tokio::time::timeout(Duration::from_millis(300), op.try_recv()).await;
+    assert!(extra.is_err(), "throttled subscription sent {extra:?}");
+    let topic = hub
+        .state
+        .router
+        .topic(&fleetlink_relay::TopicName::parse("/t").unwrap())
+        .unwrap();
+    assert!(topic.stats.drops(DropReason::RateLimit) >= 499);
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn fragment_size_splits_large_messages_into_fragments() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/f", "fragment_size": 100}))
+        .await;
+    let mut p = hub_publisher(&hub, "/f", "std_msgs/msg/String");
+    let text = "ü".repeat(300);
+    let first = pump_until(
+        &mut op,
+        |_| p.publish_json(&json!({"data": text})),
+        |v| v["op"] == "fragment",
+    )
+    .await;
+    let total = first["total"].as_u64().unwrap() as usize;
+    assert!(total > 1);
+    let mut parts = vec![String::new(); total];
+    parts[first["num"].as_u64().unwrap() as usize] = first["data"].as_str().unwrap().to_owned();
+    let id = first["id"].clone();
+    let mut got = 1;
+    while got < total {
+        let v = op.recv_op("fragment").await;
+        if v["id"] == id {
+            parts[v["num"].as_u64().unwrap() as usize] = v["data"].as_str().unwrap().to_owned();
+            got += 1;
+        }
+    }
+    let whole: Value = serde_json::from_str(&parts.concat()).unwrap();
+    assert_eq!(whole["op"], "publish");
+    assert_eq!(whole["msg"]["data"], text);
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rosapi_answers_either_spelling_and_echoes_names_and_ids() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    for (service, id) in [
+        ("rosapi/topics", json!(17)),
+        ("/rosapi/topics", json!("x")),
+        ("/rosapi/get_ros_version", json!("v")),
+    ] {
+        op.send(json!({"op": "call_service", "service": service, "id": id}))
+            .await;
+        let v = op.recv_op("service_response").await;
+        assert_eq!(v["service"], service);
+        assert_eq!(v["id"], id);
+        assert_eq!(v["result"], true);
+    }
+    let v = op.call("/rosapi/no_such", json!({}), "n").await;
+    assert_eq!(v["result"], false);
+    let v = op.call("/other/service", json!({}), "o").await;
+    assert_eq!(v["result"], false);
+    assert!(v["values"].as_str().unwrap().contains("does not exist"));
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn remapped_topic_appears_under_its_configured_hub_name() {
+    let hub = start_hub().await;
+    let mut cfg = uplink_config(&hub.ws_url(), "robot9");
+    cfg.names.remap.push((
+        fleetlink_relay::TopicName::parse("/map").unwrap(),
+        fleetlink_relay::TopicName::parse("/fleet/map").unwrap(),
+    ));
+    let agent = start_agent_with(cfg, false).await;
+    agent.wait_connected().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/fleet/map"}))
+        .await;
+    let mut m = LocalPublisher::new(&agent.router, "/map", "nav_msgs/msg/OccupancyGrid");
+    let mut s = LocalPublisher::new(&agent.router, "/scan", "sensor_msgs/msg/LaserScan");
+    let v = pump_until(
+        &mut op,
+        |i| m.publish_json(&json!({"i": i})),
+        |v| v["op"] == "publish",
+    )
+    .await;
+    assert_eq!(v["topic"], "/fleet/map");
+    s.publish_json(&json!({}));
+    let t = within("both names listed", async {
+        loop {
+            let t = op.call("/rosapi/topics", json!({}), "t").await;
+            let names = t["values"]["topics"].clone();
+            if names
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|n| n == "/robot9/scan")
+            {
+                return names;
+            }
+        }
+    })
+    .await;
+    assert!(t.as_array().unwrap().iter().any(|n| n == "/fleet/map"));
+    assert!(!t.as_array().unwrap().iter().any(|n| n == "/robot9/map"));
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
