@@ -7,11 +7,9 @@ pub mod hub;
 pub mod msg;
 pub mod qoi_sim;
 
-use std::future::Future;
-
 /// Completes on Ctrl-C or SIGTERM.
-pub fn shutdown_signal() -> impl Future<Output = ()> + Send + 'static {
-    async {
+pub async fn shutdown_signal() {
+    {
         let ctrl_c = async {
             let _ = tokio::signal::ctrl_c().await;
         };
