@@ -358,7 +358,14 @@ async fn pump(
     let mut buf = vec![0u8; 64 * 1024];
     loop {
         let n = match from.read(&mut buf).await {
-            Ok(0) | Err(_) => return,
+            Ok(0) | Err(_) => {
+                if cut.load(std::sync::atomic::Ordering::SeqCst) {
+                    // A dead link carries no FIN either: hold the other side open.
+                    let _keep = to;
+                    std::future::pending::<()>().await;
+                }
+                return;
+            }
             Ok(n) => n,
         };
         if cut.load(std::sync::atomic::Ordering::SeqCst) {
