@@ -47,7 +47,12 @@ impl AgentOptions {
                 reconnect_initial: cfg.reconnect.initial(),
                 reconnect_max: cfg.reconnect.max(),
                 names: NameMap { remap, subscribe },
-                queue_length: 100,
+                topic_qos: cfg
+                    .topics
+                    .iter()
+                    .map(|(n, spec)| Ok((parse(n)?, spec.clone())))
+                    .collect::<Result<_, _>>()?,
+                max_in_flight: 32,
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),

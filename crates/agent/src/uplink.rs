@@ -16,8 +16,10 @@ use std::time::Duration;
 
 use fleetlink_proto::frame::{Frame, SUBSCRIBE_REGEX, VERSION};
 use fleetlink_proto::{Encoding, SUBPROTOCOL};
+use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
 use fleetlink_relay::link::{Control, LinkEvent, LinkIn, LinkNamer, write_link};
 use fleetlink_relay::message::TopicMeta;
+use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicName};
 use futures_util::{SinkExt, StreamExt};
@@ -72,8 +74,11 @@ pub struct UplinkConfig {
     pub reconnect_initial: Duration,
     pub reconnect_max: Duration,
     pub names: NameMap,
-    /// Per-topic queue length for messages waiting to go up.
-    pub queue_length: u32,
+    /// Per-topic QoS of what goes up (priority, rate limit, drop policy, queue length);
+    /// topics not listed get the defaults for their type.
+    pub topic_qos: Vec<(TopicName, TopicQosSpec)>,
+    /// Messages sent but not yet acknowledged by the hub at which sending pauses (nT).
+    pub max_in_flight: usize,
 }
 
 /// The link's state, observable by tests and the CLI.
@@ -104,17 +109,30 @@ impl Uplink {
     /// Attaches the uplink to the local router: from now on every local topic is queued
     /// for the hub.
     pub fn new(cfg: UplinkConfig, router: Arc<Router>) -> Uplink {
-        let (client, outbox) = router.connect(
+        let specs = cfg.topic_qos.clone();
+        let qos_for: QosFor = Arc::new(move |meta: &TopicMeta| {
+            let base = TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name);
+            match specs.iter().find(|(n, _)| *n == meta.name) {
+                Some((_, spec)) => spec.resolve(&base).unwrap_or_else(|e| {
+                    tracing::warn!("topic {}: {e}; using the defaults for its type", meta.name);
+                    base
+                }),
+                None => base,
+            }
+        });
+        let sched = SchedulerConfig {
+            max_in_flight: cfg.max_in_flight,
+            ..SchedulerConfig::default()
+        };
+        let (client, outbox) = router.connect_with(
             ClientKind::Internal {
                 role: "uplink".into(),
             },
             None,
+            |id| Outbox::scheduled(id, sched, qos_for),
         );
         let all = Router::compile_pattern(".*").expect("a constant pattern compiles");
-        let opts = SubOptions {
-            queue_length: cfg.queue_length,
-            ..Default::default()
-        };
+        let opts = SubOptions::default();
         router
             .subscribe(client, Target::Pattern(all), opts)
             .expect("the uplink client was just connected");
@@ -389,6 +407,10 @@ impl Uplink {
             }
             LinkEvent::Status { level, text, .. } => {
                 tracing::warn!(level = level.as_str(), "hub: {text}");
+            }
+            LinkEvent::Ack { messages } => {
+                self.outbox
+                    .on_acked(messages as usize, std::time::Instant::now());
             }
             _ => {}
         }

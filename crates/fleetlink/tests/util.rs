@@ -120,7 +120,8 @@ pub fn uplink_config(hub: &str, robot: &str) -> UplinkConfig {
         reconnect_initial: Duration::from_millis(50),
         reconnect_max: Duration::from_millis(400),
         names: NameMap::default(),
-        queue_length: 1000,
+        topic_qos: Vec::new(),
+        max_in_flight: 32,
     }
 }
 

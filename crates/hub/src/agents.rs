@@ -245,6 +245,10 @@ where
                 if let Err(e) = st.on_binary(&mut link, &b).await {
                     st.status(Level::Error, 1, e).await;
                 }
+                // Acknowledge what arrived so the agent's scheduler may send more.
+                if let Some(ack) = link.take_ack() {
+                    let _ = st.ctrl.send(Control::Frame(ack)).await;
+                }
             }
             WsMessage::Text(_) => {
                 st.status(
@@ -432,7 +436,10 @@ impl AgentSession {
             LinkEvent::Status { level, text, .. } => {
                 tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
             }
-            LinkEvent::Hello { .. } | LinkEvent::Welcome { .. } | LinkEvent::None => {}
+            LinkEvent::Hello { .. }
+            | LinkEvent::Welcome { .. }
+            | LinkEvent::Ack { .. }
+            | LinkEvent::None => {}
         }
     }
 }

@@ -302,12 +302,12 @@ pub fn cbor_of(json: &str) -> Vec<u8> {
     fleetlink_proto::rosbridge::convert::json_to_cbor(json.as_bytes()).expect("test JSON is valid")
 }
 
-/// Runs `f` on a thread with a deliberately small stack (512 KiB, a quarter of a tokio
+/// Runs `f` on a thread with a deliberately small stack (1 MiB, half of a tokio
 /// worker's), so a recursion guard that only just holds still shows up: an overflow
 /// aborts the whole test binary.
 pub fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
     std::thread::Builder::new()
-        .stack_size(512 * 1024)
+        .stack_size(1024 * 1024)
         .spawn(f)
         .expect("spawn test thread")
         .join()

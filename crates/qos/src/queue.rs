@@ -181,6 +181,15 @@ impl<T> TopicQueue<T> {
         }
     }
 
+    /// The item `pop` would return next, without taking it.
+    pub fn peek(&self) -> Option<&T> {
+        match &self.store {
+            Store::Ring(r) | Store::Random { ring: r, .. } => r.front(),
+            Store::Latest(slot) => slot.as_ref(),
+            Store::Afr(a) => a.iter().next(),
+        }
+    }
+
     /// Takes the oldest queued item. `now` is accepted for symmetry with `push` and
     /// future time-based policies; no policy here depends on it.
     pub fn pop(&mut self, _now: Nanos) -> Option<T> {

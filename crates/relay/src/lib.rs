@@ -35,7 +35,7 @@ pub mod transcode;
 pub use message::Message;
 pub use names::{ClientId, NameError, TopicId, TopicName};
 pub use outbox::Outbox;
-pub use queue::{DropOldest, DropReason, OutboundQueue};
+pub use queue::{DropReason, OutboundQueue, QosQueue};
 pub use router::{ClientInfo, ClientKind, Router, Topic};
 pub use transcode::{GenericTranscoder, TranscodeError, Transcoder};
 

@@ -77,6 +77,10 @@ pub enum LinkEvent {
         code: u32,
         text: String,
     },
+    /// The peer received this many whole messages since its previous `ACK`.
+    Ack {
+        messages: u32,
+    },
     Hello {
         version: u32,
         robot: String,
@@ -105,7 +109,7 @@ pub enum LinkError {
 pub struct LinkIn {
     aliases: HashMap<u32, InTopic>,
     reassembly: Reassembler,
-    /// Data frames received since the last `ACK` we sent.
+    /// Whole messages received since the last `ACK` we sent.
     pub unacked: u32,
 }
 
@@ -175,7 +179,6 @@ impl LinkIn {
                 offset,
                 data,
             } => {
-                self.unacked += 1;
                 let encoding = self
                     .aliases
                     .get(&alias)
@@ -185,12 +188,15 @@ impl LinkIn {
                     .reassembly
                     .push(alias, seq, stamp_ns, total_len, offset, &data)?
                 {
-                    Some(done) => LinkEvent::Message {
-                        alias,
-                        seq: done.seq,
-                        stamp_ns: done.stamp_ns,
-                        payload: Payload::new(encoding, done.payload),
-                    },
+                    Some(done) => {
+                        self.unacked += 1;
+                        LinkEvent::Message {
+                            alias,
+                            seq: done.seq,
+                            stamp_ns: done.stamp_ns,
+                            payload: Payload::new(encoding, done.payload),
+                        }
+                    }
                     None => LinkEvent::None,
                 }
             }
@@ -243,7 +249,8 @@ impl LinkIn {
                 hub_time_ns,
                 heartbeat_ms,
             },
-            Frame::Ack { .. } | Frame::Unknown { .. } => LinkEvent::None,
+            Frame::Ack { frames } => LinkEvent::Ack { messages: frames },
+            Frame::Unknown { .. } => LinkEvent::None,
         })
     }
 }
@@ -488,6 +495,14 @@ where
 }
 
 /// Parses every frame of one received WebSocket message.
+impl LinkIn {
+    /// An `ACK` for what arrived since the last one, if anything did.
+    pub fn take_ack(&mut self) -> Option<Frame> {
+        let n = std::mem::take(&mut self.unacked);
+        (n > 0).then_some(Frame::Ack { frames: n })
+    }
+}
+
 pub fn decode_all(data: &Bytes) -> Result<Vec<Frame>, fleetlink_proto::DecodeError> {
     fleetlink_proto::frame::frames(data).collect()
 }

@@ -8,7 +8,7 @@
 //! The state is behind a `std::sync::Mutex`: every critical section is a few pointer
 //! moves, never an `.await`, and an async mutex would cost more than it saves.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -16,10 +16,16 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::rosbridge::Compression;
 use tokio::sync::Notify;
 
-use crate::message::Message;
+use fleetlink_qos::{Nanos, Push, Scheduler, SchedulerConfig, TopicId as QosTopic, TopicQos};
+
+use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
-use crate::queue::{DropReason, OutboundQueue};
+use crate::queue::{DropReason, OutboundQueue, QosQueue};
 use crate::stats::TopicStats;
+
+/// Chooses the QoS of each topic a scheduled outbox carries (the agent's per-topic
+/// configuration, or defaults by type).
+pub type QosFor = Arc<dyn Fn(&TopicMeta) -> TopicQos + Send + Sync>;
 
 /// A slot's key; never reused within one outbox, so a stale reference cannot reach a new
 /// subscription.
@@ -34,17 +40,33 @@ pub struct Delivery {
 }
 
 struct Slot {
-    queue: Box<dyn OutboundQueue>,
+    /// The slot's own queue; `None` in a scheduled outbox, whose scheduler holds them.
+    queue: Option<Box<dyn OutboundQueue>>,
+    topic: u32,
     stats: Arc<TopicStats>,
     delivery: Delivery,
     in_ready: bool,
 }
 
-#[derive(Default)]
+/// How the writer is served.
+enum Service {
+    /// Hub subscribers: every slot has its own queue, served round-robin so a busy topic
+    /// cannot starve a quiet one.
+    RoundRobin { ready: VecDeque<SlotId> },
+    /// The agent uplink: the Robofleet scheduler picks what goes next (no-drop first, then
+    /// priority × time waited), paused while too many messages are unacknowledged.
+    Scheduled {
+        sched: Box<Scheduler<Arc<Message>>>,
+        origin: Instant,
+        qos_for: QosFor,
+        by_topic: HashMap<u32, SlotId>,
+        known: HashSet<u32>,
+    },
+}
+
 struct State {
     slots: HashMap<SlotId, Slot>,
-    /// Slots with queued messages, in service order.
-    ready: VecDeque<SlotId>,
+    service: Service,
     next_slot: u64,
     queued: usize,
 }
@@ -69,9 +91,38 @@ pub struct Batch {
 
 impl Outbox {
     pub fn new(client: ClientId) -> Arc<Outbox> {
+        Self::with_service(
+            client,
+            Service::RoundRobin {
+                ready: VecDeque::new(),
+            },
+        )
+    }
+
+    /// An outbox served by the Robofleet scheduler, for a link whose peer acknowledges
+    /// messages ([`Outbox::on_acked`]).
+    pub fn scheduled(client: ClientId, config: SchedulerConfig, qos_for: QosFor) -> Arc<Outbox> {
+        Self::with_service(
+            client,
+            Service::Scheduled {
+                sched: Box::new(Scheduler::new(config)),
+                origin: Instant::now(),
+                qos_for,
+                by_topic: HashMap::new(),
+                known: HashSet::new(),
+            },
+        )
+    }
+
+    fn with_service(client: ClientId, service: Service) -> Arc<Outbox> {
         Arc::new(Outbox {
             client,
-            state: Mutex::new(State::default()),
+            state: Mutex::new(State {
+                slots: HashMap::new(),
+                service,
+                next_slot: 0,
+                queued: 0,
+            }),
             notify: Notify::new(),
             closed: AtomicBool::new(false),
             dropped: AtomicU64::new(0),
@@ -84,19 +135,47 @@ impl Outbox {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
     }
 
+    /// Adds a subscription's slot. `qos` shapes its queue; a scheduled outbox asks its
+    /// own `qos_for` instead, so the agent's per-topic configuration wins.
     pub fn add_slot(
         &self,
-        queue: Box<dyn OutboundQueue>,
+        topic: &TopicMeta,
+        qos: &TopicQos,
         stats: Arc<TopicStats>,
         delivery: Delivery,
     ) -> SlotId {
         let mut st = self.lock();
+        let st = &mut *st;
         st.next_slot += 1;
         let id = SlotId(st.next_slot);
+        let tid = topic.id.0;
+        let queue = match &mut st.service {
+            Service::RoundRobin { .. } => {
+                Some(Box::new(QosQueue::new(qos)) as Box<dyn OutboundQueue>)
+            }
+            Service::Scheduled {
+                sched,
+                qos_for,
+                by_topic,
+                known,
+                ..
+            } => {
+                if known.insert(tid) {
+                    let q = qos_for(topic);
+                    if let Err(e) = sched.add_topic(QosTopic(tid), q) {
+                        tracing::warn!("topic {}: invalid QoS ({e}); using defaults", topic.name);
+                        let _ = sched.add_topic(QosTopic(tid), TopicQos::default());
+                    }
+                }
+                by_topic.insert(tid, id);
+                None
+            }
+        };
         st.slots.insert(
             id,
             Slot {
                 queue,
+                topic: tid,
                 stats,
                 delivery,
                 in_ready: false,
@@ -107,10 +186,22 @@ impl Outbox {
 
     pub fn remove_slot(&self, id: SlotId) {
         let mut st = self.lock();
+        let st = &mut *st;
         if let Some(slot) = st.slots.remove(&id) {
-            st.queued -= slot.queue.len();
+            match &mut st.service {
+                Service::RoundRobin { ready } => {
+                    st.queued -= slot.queue.as_ref().map_or(0, |q| q.len());
+                    ready.retain(|s| *s != id);
+                }
+                Service::Scheduled { by_topic, .. } => {
+                    // The scheduler keeps the topic's lane; whatever is still queued is
+                    // discarded when taken (see `take`).
+                    if by_topic.get(&slot.topic) == Some(&id) {
+                        by_topic.remove(&slot.topic);
+                    }
+                }
+            }
         }
-        st.ready.retain(|s| *s != id);
     }
 
     /// Queues `msg` for the subscription in `slot`. Never blocks.
@@ -120,22 +211,67 @@ impl Outbox {
         let Some(s) = st.slots.get_mut(&slot) else {
             return;
         };
-        let before = s.queue.len();
-        let dropped = s.queue.push(msg, now);
-        let after = s.queue.len();
-        if let Some((_, reason)) = dropped {
+        s.stats.deliveries.fetch_add(1, Relaxed);
+        let (dropped, wake) = match &mut st.service {
+            Service::RoundRobin { ready } => {
+                let q = s.queue.as_mut().expect("round-robin slots own a queue");
+                let before = q.len();
+                let dropped = q.push(msg, now);
+                let after = q.len();
+                st.queued = st.queued + after - before;
+                let wake = !s.in_ready && after > 0;
+                if wake {
+                    s.in_ready = true;
+                    ready.push_back(slot);
+                }
+                (dropped.map(|(_, r)| r), wake)
+            }
+            Service::Scheduled { sched, origin, .. } => {
+                let t = Nanos::since(*origin, now);
+                match sched.offer(QosTopic(s.topic), msg, t) {
+                    Push::Queued => {
+                        st.queued += 1;
+                        (None, true)
+                    }
+                    Push::Dropped { reason, .. } => (Some(DropReason::from_qos(reason)), true),
+                    Push::Backpressure(_) => (Some(DropReason::Backpressure), false),
+                }
+            }
+        };
+        if let Some(reason) = dropped {
             s.stats.record_drop(reason);
             self.dropped.fetch_add(1, Relaxed);
         }
-        s.stats.deliveries.fetch_add(1, Relaxed);
-        let wake = !s.in_ready && after > 0;
-        if wake {
-            s.in_ready = true;
-            st.ready.push_back(slot);
-        }
-        st.queued = st.queued + after - before;
         if wake {
             self.notify.notify_one();
+        }
+    }
+
+    /// The peer acknowledged `messages` messages: a scheduled outbox may send more.
+    pub fn on_acked(&self, messages: usize, now: Instant) {
+        let mut st = self.lock();
+        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
+            let t = Nanos::since(*origin, now);
+            sched.on_acked(messages, t);
+            drop(st);
+            self.notify.notify_one();
+        }
+    }
+
+    /// A new connection: nothing is in flight any more.
+    pub fn on_link_reset(&self) {
+        let mut st = self.lock();
+        if let Service::Scheduled { sched, .. } = &mut st.service {
+            sched.on_link_reset();
+        }
+    }
+
+    /// Caps a scheduled outbox's sending rate (bytes per second; `None` = no cap).
+    pub fn set_rate_budget(&self, bytes_per_sec: Option<f64>, now: Instant) {
+        let mut st = self.lock();
+        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
+            let t = Nanos::since(*origin, now);
+            sched.set_rate_budget(bytes_per_sec, t);
         }
     }
 
@@ -147,41 +283,66 @@ impl Outbox {
         }
     }
 
-    /// Takes up to `max_items` / about `max_bytes` of messages, one per ready slot per round.
+    /// Takes up to `max_items` / about `max_bytes` of messages: one per ready slot per
+    /// round (round-robin), or in the scheduler's order.
     pub fn take(&self, max_items: usize, max_bytes: usize, now: Instant) -> Batch {
         let mut st = self.lock();
         let st = &mut *st;
         let mut items = Vec::new();
         let mut bytes = 0usize;
-        let mut waiting: Vec<SlotId> = Vec::new();
         let mut wake_at: Option<Instant> = None;
-        while items.len() < max_items && bytes < max_bytes {
-            let Some(id) = st.ready.pop_front() else {
-                break;
-            };
-            let Some(s) = st.slots.get_mut(&id) else {
-                continue;
-            };
-            match s.queue.pop(now) {
-                Some(m) => {
-                    bytes += m.wire_len();
-                    items.push((id, s.delivery, m));
-                    st.queued -= 1;
-                    if s.queue.is_empty() {
-                        s.in_ready = false;
-                    } else {
-                        st.ready.push_back(id);
+        match &mut st.service {
+            Service::RoundRobin { ready } => {
+                while items.len() < max_items && bytes < max_bytes {
+                    let Some(id) = ready.pop_front() else { break };
+                    let Some(s) = st.slots.get_mut(&id) else {
+                        continue;
+                    };
+                    let q = s.queue.as_mut().expect("round-robin slots own a queue");
+                    match q.pop(now) {
+                        Some(m) => {
+                            bytes += m.wire_len();
+                            items.push((id, s.delivery, m));
+                            st.queued -= 1;
+                            if q.is_empty() {
+                                s.in_ready = false;
+                            } else {
+                                ready.push_back(id);
+                            }
+                        }
+                        None => s.in_ready = false,
                     }
                 }
-                None if s.queue.is_empty() => s.in_ready = false,
-                None => {
-                    let at = s.queue.ready_at(now);
-                    wake_at = Some(wake_at.map_or(at, |w| w.min(at)));
-                    waiting.push(id);
+            }
+            Service::Scheduled {
+                sched,
+                origin,
+                by_topic,
+                ..
+            } => {
+                let t = Nanos::since(*origin, now);
+                while items.len() < max_items && bytes < max_bytes {
+                    let Some((tid, m)) = sched.poll_next(t) else {
+                        break;
+                    };
+                    st.queued = st.queued.saturating_sub(1);
+                    let Some(slot) = by_topic.get(&tid.0) else {
+                        // Unsubscribed while queued: it was in flight by the scheduler's
+                        // count, so acknowledge it locally.
+                        sched.on_acked(1, t);
+                        continue;
+                    };
+                    let delivery = st.slots.get(slot).map(|s| s.delivery).unwrap_or_default();
+                    bytes += m.wire_len();
+                    items.push((*slot, delivery, m));
+                }
+                if items.is_empty()
+                    && let Some(at) = sched.poll_timeout(t)
+                {
+                    wake_at = Some(*origin + std::time::Duration::from_nanos(at.0));
                 }
             }
         }
-        st.ready.extend(waiting);
         self.sent.fetch_add(items.len() as u64, Relaxed);
         Batch { items, wake_at }
     }
@@ -196,8 +357,8 @@ impl Outbox {
         let st = self.lock();
         st.slots
             .values()
-            .filter_map(|s| s.queue.oldest())
-            .map(|m| now.saturating_duration_since(m.received))
+            .filter_map(|s| s.queue.as_ref().and_then(|q| q.oldest()))
+            .map(|at| now.saturating_duration_since(at))
             .max()
             .unwrap_or_default()
     }

@@ -1,45 +1,68 @@
 //! The per-subscription outbound queue.
 //!
-//! Every subscription owns one bounded queue; what it keeps when full is its policy. This
-//! trait is the seam where the QoS engine (`crates/qos`) plugs its policies in; the
-//! relay's default is [`DropOldest`], which is what rosbridge's `queue_length` means.
-//! Pushing never blocks: a subscriber that cannot keep up loses its own messages and
-//! nobody else notices.
+//! Every subscription owns one bounded queue whose drop policy comes from the QoS engine
+//! (`crates/qos`: `fifo`, `latest`, `drop_oldest`, `drop_newest`, `random`, `afr`, with an
+//! optional rate limit). rosbridge's own options map onto it: `queue_length` is
+//! `drop_oldest(queue_length)` and `throttle_rate` is a rate limit. Pushing never blocks: a
+//! subscriber that cannot keep up loses its own messages and nobody else notices — even a
+//! `fifo` (no-drop) subscriber on the hub, whose refused message is counted as
+//! `backpressure` rather than stalling the publisher and every other subscriber.
 
-use std::collections::VecDeque;
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Instant;
+
+use fleetlink_qos::{Nanos, Policy, Push, TopicQos, TopicQueue, WireLen};
 
 use crate::message::Message;
 
 /// Why a message did not reach a subscriber. Stable label values for metrics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum DropReason {
-    /// The subscriber's queue was full and the policy evicted a message.
-    QueueFull,
-    /// The subscription's `throttle_rate` or rate limit skipped it.
+    /// Over the subscription's rate limit (`throttle_rate`, `rate_limit_hz`).
     RateLimit,
+    /// The queue's drop policy evicted it (queue full, `latest`, `afr`, ...).
+    Policy,
+    /// A no-drop queue was full; the relay never stalls other clients for it.
+    Backpressure,
     /// It could not be converted to the encoding the subscriber asked for.
     Encode,
 }
 
 impl DropReason {
-    pub const ALL: [DropReason; 3] = [
-        DropReason::QueueFull,
+    pub const ALL: [DropReason; 4] = [
         DropReason::RateLimit,
+        DropReason::Policy,
+        DropReason::Backpressure,
         DropReason::Encode,
     ];
 
     pub fn as_str(self) -> &'static str {
         match self {
-            DropReason::QueueFull => "queue_full",
             DropReason::RateLimit => "rate_limit",
+            DropReason::Policy => "policy",
+            DropReason::Backpressure => "backpressure",
             DropReason::Encode => "encode_error",
         }
     }
 
     pub fn index(self) -> usize {
         self as usize
+    }
+
+    pub fn from_qos(r: fleetlink_qos::DropReason) -> DropReason {
+        match r {
+            fleetlink_qos::DropReason::RateLimit => DropReason::RateLimit,
+            fleetlink_qos::DropReason::Backpressure => DropReason::Backpressure,
+            fleetlink_qos::DropReason::Policy | fleetlink_qos::DropReason::UnknownTopic => {
+                DropReason::Policy
+            }
+        }
+    }
+}
+
+impl WireLen for Message {
+    fn wire_len(&self) -> usize {
+        self.payload.len()
     }
 }
 
@@ -52,124 +75,65 @@ pub trait OutboundQueue: Send {
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
-    /// The message that has waited longest (for lag reporting).
-    fn oldest(&self) -> Option<&Arc<Message>>;
-    /// When a non-empty queue that refused to pop will next allow it (throttling).
-    fn ready_at(&self, now: Instant) -> Instant {
-        now
-    }
+    /// When the oldest queued message arrived (for lag reporting).
+    fn oldest(&self) -> Option<Instant>;
 }
 
-/// Bounded FIFO that evicts the oldest message when full.
-pub struct DropOldest {
-    items: VecDeque<Arc<Message>>,
-    capacity: usize,
+/// A QoS-engine queue behind the relay's queue seam.
+pub struct QosQueue {
+    queue: TopicQueue<Arc<Message>>,
+    origin: Instant,
 }
 
-impl DropOldest {
-    pub fn new(capacity: usize) -> Self {
-        let capacity = capacity.max(1);
-        DropOldest {
-            items: VecDeque::with_capacity(capacity.min(64)),
-            capacity,
+impl QosQueue {
+    pub fn new(qos: &TopicQos) -> QosQueue {
+        QosQueue {
+            queue: TopicQueue::new(qos),
+            origin: Instant::now(),
         }
     }
-}
 
-impl OutboundQueue for DropOldest {
-    fn push(&mut self, msg: Arc<Message>, _now: Instant) -> Option<(Arc<Message>, DropReason)> {
-        let dropped = if self.items.len() >= self.capacity {
-            self.items.pop_front().map(|m| (m, DropReason::QueueFull))
-        } else {
-            None
-        };
-        self.items.push_back(msg);
-        dropped
-    }
-
-    fn pop(&mut self, _now: Instant) -> Option<Arc<Message>> {
-        self.items.pop_front()
-    }
-
-    fn len(&self) -> usize {
-        self.items.len()
-    }
-
-    fn oldest(&self) -> Option<&Arc<Message>> {
-        self.items.front()
+    fn nanos(&self, now: Instant) -> Nanos {
+        Nanos::since(self.origin, now)
     }
 }
 
-/// rosbridge `throttle_rate`: at most one message per `period`. With no queue
-/// (`queue_length` 0) only the newest waiting message is kept.
-pub struct Throttled<Q> {
-    inner: Q,
-    period: Duration,
-    last_sent: Option<Instant>,
-}
-
-impl<Q: OutboundQueue> Throttled<Q> {
-    pub fn new(inner: Q, period: Duration) -> Self {
-        Throttled {
-            inner,
-            period,
-            last_sent: None,
-        }
-    }
-}
-
-impl<Q: OutboundQueue> OutboundQueue for Throttled<Q> {
+impl OutboundQueue for QosQueue {
     fn push(&mut self, msg: Arc<Message>, now: Instant) -> Option<(Arc<Message>, DropReason)> {
-        self.inner
-            .push(msg, now)
-            .map(|(m, _)| (m, DropReason::RateLimit))
+        let t = self.nanos(now);
+        match self.queue.push(msg, t) {
+            Push::Queued => None,
+            Push::Dropped { item, reason } => Some((item, DropReason::from_qos(reason))),
+            Push::Backpressure(item) => Some((item, DropReason::Backpressure)),
+        }
     }
 
     fn pop(&mut self, now: Instant) -> Option<Arc<Message>> {
-        if let Some(last) = self.last_sent
-            && now < last + self.period
-        {
-            return None;
-        }
-        let m = self.inner.pop(now)?;
-        self.last_sent = Some(now);
-        Some(m)
+        let t = self.nanos(now);
+        self.queue.pop(t)
     }
 
     fn len(&self) -> usize {
-        self.inner.len()
+        self.queue.len()
     }
 
-    fn oldest(&self) -> Option<&Arc<Message>> {
-        self.inner.oldest()
-    }
-
-    fn ready_at(&self, now: Instant) -> Instant {
-        self.last_sent.map_or(now, |l| (l + self.period).max(now))
+    fn oldest(&self) -> Option<Instant> {
+        self.queue.peek().map(|m| m.received)
     }
 }
 
-/// The queue a subscription gets from its rosbridge-style options.
-pub fn for_options(
-    queue_length: u32,
-    throttle_ms: u32,
-    default_capacity: usize,
-) -> Box<dyn OutboundQueue> {
-    let cap = if queue_length > 0 {
-        queue_length as usize
-    } else {
-        default_capacity
-    };
-    if throttle_ms == 0 {
-        return Box::new(DropOldest::new(cap));
+/// The QoS of a subscription from rosbridge-style options: `queue_length` (0 = the
+/// server's default) and `throttle_rate` in milliseconds (0 = none).
+pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: usize) -> TopicQos {
+    TopicQos {
+        priority: 1.0,
+        rate_limit_hz: (throttle_ms > 0).then(|| 1000.0 / f64::from(throttle_ms)),
+        policy: Policy::DropOldest,
+        queue: if queue_length > 0 {
+            queue_length as usize
+        } else {
+            default_capacity.max(1)
+        },
+        no_drop: false,
     }
-    let cap = if queue_length > 0 {
-        queue_length as usize
-    } else {
-        1
-    };
-    Box::new(Throttled::new(
-        DropOldest::new(cap),
-        Duration::from_millis(u64::from(throttle_ms)),
-    ))
 }

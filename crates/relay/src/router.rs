@@ -19,7 +19,6 @@ use regex::Regex;
 use crate::message::{Message, TopicMeta};
 use crate::names::{ClientId, TopicId, TopicName};
 use crate::outbox::{Delivery, Outbox, SlotId};
-use crate::queue::OutboundQueue;
 use crate::stats::TopicStats;
 use crate::transcode::{GenericTranscoder, Transcoder};
 use crate::unix_nanos;
@@ -74,10 +73,14 @@ pub enum Target {
 }
 
 /// Options that shape a subscription's queue and framing.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct SubOptions {
+    /// rosbridge `queue_length` (0 = the router's default).
     pub queue_length: u32,
+    /// rosbridge `throttle_rate` in milliseconds (0 = none).
     pub throttle_ms: u32,
+    /// Full QoS for the subscription's queue; overrides the two fields above.
+    pub qos: Option<fleetlink_qos::TopicQos>,
     pub delivery: Delivery,
 }
 
@@ -228,8 +231,18 @@ impl Router {
 
     /// Registers a participant; its outbox receives what it subscribes to.
     pub fn connect(&self, kind: ClientKind, addr: Option<SocketAddr>) -> (ClientId, Arc<Outbox>) {
+        self.connect_with(kind, addr, Outbox::new)
+    }
+
+    /// Registers a participant whose outbox is built by `make` (e.g. a scheduled one).
+    pub fn connect_with(
+        &self,
+        kind: ClientKind,
+        addr: Option<SocketAddr>,
+        make: impl FnOnce(ClientId) -> Arc<Outbox>,
+    ) -> (ClientId, Arc<Outbox>) {
         let id = ClientId(self.next_client.fetch_add(1, Relaxed));
-        let outbox = Outbox::new(id);
+        let outbox = make(id);
         let info = ClientInfo {
             id,
             kind,
@@ -369,12 +382,12 @@ impl Router {
                 if let Target::Pattern(re) = target
                     && re.is_match(name.as_str())
                 {
-                    matches.push((*cid, *sid, *opts));
+                    matches.push((*cid, *sid, opts.clone()));
                 }
             }
         }
         for (cid, sid, opts) in matches {
-            self.attach(st, cid, sid, &topic, opts);
+            self.attach(st, cid, sid, &topic, &opts);
         }
         topic
     }
@@ -411,7 +424,7 @@ impl Router {
         let Some(c) = st.clients.get_mut(&client) else {
             return Err(RouteError::UnknownClient(client));
         };
-        c.subs.insert(sid, (target.clone(), opts));
+        c.subs.insert(sid, (target.clone(), opts.clone()));
         let topics: Vec<Arc<Topic>> = match &target {
             Target::Exact(name) => {
                 let t = match st.topics.get(name) {
@@ -428,7 +441,7 @@ impl Router {
                 .collect(),
         };
         for t in topics {
-            self.attach(st, client, sid, &t, opts);
+            self.attach(st, client, sid, &t, &opts);
         }
         Ok(sid)
     }
@@ -439,7 +452,7 @@ impl Router {
         client: ClientId,
         sid: SubscriptionId,
         topic: &Arc<Topic>,
-        opts: SubOptions,
+        opts: &SubOptions,
     ) {
         let Some(c) = st.clients.get_mut(&client) else {
             return;
@@ -451,9 +464,12 @@ impl Router {
             }
             return;
         }
-        let queue: Box<dyn OutboundQueue> =
-            crate::queue::for_options(opts.queue_length, opts.throttle_ms, self.default_queue);
-        let slot = c.outbox.add_slot(queue, topic.stats.clone(), opts.delivery);
+        let qos = opts.qos.clone().unwrap_or_else(|| {
+            crate::queue::qos_for_options(opts.queue_length, opts.throttle_ms, self.default_queue)
+        });
+        let slot = c
+            .outbox
+            .add_slot(&topic.meta(), &qos, topic.stats.clone(), opts.delivery);
         c.slots.insert(name, (slot, vec![sid]));
         let r = SubscriberRef {
             client,

@@ -17,9 +17,9 @@
 //! The typed structs stay span-free plain data; the location tree is a second parse of the
 //! same text that only happens when there is an error to report.
 //!
-//! The `topics:` key is reserved for per-topic QoS and rejected with "not supported yet"
-//! rather than accepted and ignored: a QoS setting that silently does nothing is worse than
-//! an error.
+//! The `topics:` key holds per-topic QoS for the uplink (`priority`, `rate_limit_hz`,
+//! `policy`, `queue`, `no_drop`; reference in docs/qos.md), checked here like every other
+//! field.
 
 mod locate;
 mod sim;
@@ -34,7 +34,7 @@ use std::time::Duration;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
-use locate::{LocationTree, Segment};
+use locate::LocationTree;
 pub use sim::{ImageSim, LaserScanSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of};
 
 /// The agent's configuration. See `docs/config.md` for every field.
@@ -61,6 +61,9 @@ pub struct AgentConfig {
     pub subscribe: Vec<Subscription>,
     /// Simulated robot; `None` (the default) runs no simulator.
     pub sim: Option<SimConfig>,
+    /// Per-topic QoS of the uplink, by local topic name (see docs/qos.md); topics not
+    /// listed get the defaults for their type.
+    pub topics: BTreeMap<String, fleetlink_qos::TopicQosSpec>,
 }
 
 impl Default for AgentConfig {
@@ -75,6 +78,7 @@ impl Default for AgentConfig {
             remap: BTreeMap::new(),
             subscribe: Vec::new(),
             sim: None,
+            topics: BTreeMap::new(),
         }
     }
 }
@@ -309,12 +313,6 @@ fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError
     let message = yaml_message(err);
     let at = yaml_position(err, file);
     let path = tree.path_at((at.line, at.column));
-    let message = match path.0.first() {
-        Some(Segment::Key(k)) if k == "topics" && path.0.len() == 1 => {
-            "reserved for per-topic QoS, not supported yet; remove it".to_owned()
-        }
-        _ => message,
-    };
     ConfigError::Field {
         at,
         field: path.to_string(),

@@ -226,11 +226,22 @@ fn unknown_fields_are_rejected_with_their_path() {
 }
 
 #[test]
-fn topics_key_is_reserved() {
-    assert_err(
-        "name: r1\ntopics:\n  /scan: { policy: latest }\n",
-        "robot.yaml:2:1: topics: reserved for per-topic QoS, not supported yet; remove it",
-    );
+fn topics_key_takes_per_topic_qos() {
+    let cfg = AgentConfig::from_str(
+        "name: r1\ntopics:\n  /scan: { policy: latest, priority: 5 }\n",
+        "robot.yaml",
+    )
+    .expect("valid");
+    let spec = &cfg.topics["/scan"];
+    assert_eq!(spec.priority, Some(5.0));
+}
+
+#[test]
+fn bad_topic_qos_names_the_field() {
+    let e = err("name: r1\ntopics:\n  /scan:\n    priority: -1\n");
+    let text = e.to_string();
+    assert!(text.starts_with("robot.yaml:4:"), "{text}");
+    assert!(text.contains("topics[\"/scan\"].priority"), "{text}");
 }
 
 #[test]

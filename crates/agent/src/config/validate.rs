@@ -67,6 +67,22 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(sim) = &cfg.sim {
         validate_sim(sim)?;
     }
+    let topics = FieldPath::from("topics");
+    for (name, spec) in &cfg.topics {
+        check_topic(name).map_err(|m| Problem {
+            path: topics.key(name.clone()),
+            at_key: true,
+            message: format!("topic {m}"),
+        })?;
+        let base = fleetlink_qos::TopicQos::default_for_topic(name, "");
+        if let Err(e) = spec.resolve(&base) {
+            let path = match e.field() {
+                Some(f) => topics.key(name.clone()).key(f),
+                None => topics.key(name.clone()),
+            };
+            return Err(problem(path, e.to_string()));
+        }
+    }
     Ok(())
 }
 

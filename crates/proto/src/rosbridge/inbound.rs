@@ -67,6 +67,9 @@ pub enum Op {
         /// fleetlink extension: `topic` is a regular expression matched against whole
         /// topic names (field `"regex": true`).
         regex: bool,
+        /// fleetlink extension: the subscription's QoS (`priority`, `rate_limit_hz`,
+        /// `policy`, `queue`, `no_drop`), an object checked by the server.
+        qos: Option<Value>,
     },
     Unsubscribe {
         topic: String,
@@ -262,6 +265,16 @@ fn parse_envelope(
                     fragment_size: fields.opt_u32("fragment_size")?,
                     compression,
                     regex,
+                    qos: match obj.get("qos") {
+                        None | Some(Value::Null) => None,
+                        Some(v @ Value::Object(_)) => Some(v.clone()),
+                        Some(other) => {
+                            return Err(format!(
+                                "subscribe: field 'qos' must be an object, got {}",
+                                json_kind(other)
+                            ));
+                        }
+                    },
                 }
             }
             "unsubscribe" => Op::Unsubscribe {

@@ -178,19 +178,27 @@ impl Session {
                 fragment_size,
                 compression,
                 regex,
+                qos,
             } => {
                 if compression == Compression::Png {
                     self.status("warning", format!("subscribe {topic}: png compression is not supported; sending uncompressed"), id.as_ref()).await;
                 }
-                let opts = SubOptions {
-                    queue_length,
-                    throttle_ms: throttle_rate,
-                    delivery: Delivery {
-                        compression,
-                        fragment_size,
-                    },
-                };
-                self.subscribe(&topic, type_name.as_deref(), regex, opts, id.clone())
+                match subscription_qos(qos, queue_length, throttle_rate, self.router.default_queue)
+                {
+                    Ok(qos) => {
+                        let opts = SubOptions {
+                            queue_length,
+                            throttle_ms: throttle_rate,
+                            qos,
+                            delivery: Delivery {
+                                compression,
+                                fragment_size,
+                            },
+                        };
+                        self.subscribe(&topic, type_name.as_deref(), regex, opts, id.clone())
+                    }
+                    Err(e) => Err(format!("subscribe {topic}: {e}")),
+                }
             }
             Op::Unsubscribe { topic } => {
                 self.unsubscribe(&topic, id.as_ref());
@@ -351,6 +359,23 @@ impl Session {
         };
         self.send(frame).await;
     }
+}
+
+/// The QoS of a rosbridge subscription: the fleetlink `qos` extension resolved over what
+/// `queue_length` and `throttle_rate` say.
+fn subscription_qos(
+    qos: Option<Value>,
+    queue_length: u32,
+    throttle_ms: u32,
+    default_queue: usize,
+) -> Result<Option<fleetlink_qos::TopicQos>, String> {
+    let Some(v) = qos else { return Ok(None) };
+    let spec: fleetlink_qos::TopicQosSpec =
+        serde_json::from_value(v).map_err(|e| format!("field 'qos': {e}"))?;
+    let base = crate::queue::qos_for_options(queue_length, throttle_ms, default_queue);
+    spec.resolve(&base)
+        .map(Some)
+        .map_err(|e| format!("field 'qos': {e}"))
 }
 
 /// A message object is a JSON object or a CBOR map.
