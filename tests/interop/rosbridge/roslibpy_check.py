@@ -130,6 +130,21 @@ def check_topics(ros, ns):
     ok(f"/rosapi/topic_type {ns}/odom = {ty}")
 
 
+def check_graph(ros, mode, robot):
+    try:
+        services = ros.get_services()
+        nodes = ros.get_nodes()
+    except Exception as e:
+        raise CheckFailed(f"ros.get_services()/get_nodes(): {type(e).__name__}: {e}") from e
+    for s in ("/rosapi/topics", "/rosapi/get_time", "/rosapi/topic_type"):
+        check(s in services, f"/rosapi/services lacks {s}: {services}")
+    check(isinstance(nodes, list) and nodes and all(isinstance(n, str) and n.startswith("/") for n in nodes),
+          f"/rosapi/nodes: {nodes!r}")
+    if mode == "hub":
+        check(f"/{robot}" in nodes, f"/rosapi/nodes at the hub lacks the robot /{robot}: {nodes}")
+    ok(f"/rosapi/services lists the rosapi services; /rosapi/nodes = {nodes}")
+
+
 def check_get_time(ros):
     try:
         t = ros.get_time()  # reads time.secs / time.nsecs
@@ -218,13 +233,20 @@ def check_points_cbor(url, ns, points):
                   f"points (cbor): unexpected frame {str(m)[:200]}")
             msg = m["msg"]
             data = msg["data"]
+            # rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2). A
+            # base64 text string is accepted (fleetlink converts schema-less until the
+            # type registry lands) but reported.
+            form = "byte string"
+            if isinstance(data, str):
+                form = "base64 text (protocol.md §2.2 says byte string)"
+                data = base64.b64decode(data, validate=True)
             check(isinstance(data, bytes),
-                  f"points (cbor): data is {type(data).__name__}, want a CBOR byte string")
+                  f"points (cbor): data is {type(data).__name__}, want bytes or base64")
             check(msg["width"] == points, f"points (cbor): width {msg['width']}, want {points}")
             check(len(data) == msg["width"] * msg["height"] * msg["point_step"],
                   f"points (cbor): {len(data)} bytes for width {msg['width']} x point_step {msg['point_step']}")
             check_stamp(msg["header"]["stamp"], "points (cbor)")
-            ok(f"PointCloud2 on {topic} (compression cbor): binary frame, data {len(data)} bytes")
+            ok(f"PointCloud2 on {topic} (compression cbor): binary frame, data {len(data)} bytes as {form}")
             return
     raise CheckFailed(f"points (cbor): no CBOR publish on {topic} within {TIMEOUT}s")
 
@@ -320,6 +342,7 @@ def main():
         ok(f"connected to {a.url}")
         check_topics(ros, ns)
         check_get_time(ros)
+        check_graph(ros, a.mode, a.robot)
         check_scan(ros, ns, a.scan_ranges)
         check_odom(ros, ns)
         check_points_json(ros, ns, a.points)
