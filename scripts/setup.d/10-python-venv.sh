@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Python virtualenv at the repo root (.venv) with the Python peers the interop suites
+# drive (roslibpy, ...). Idempotent: does nothing when the pinned requirements are
+# already installed.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+req=tests/interop/rosbridge/requirements.txt
+stamp=.venv/.fleetlink-requirements
+if [ ! -x .venv/bin/python ]; then
+    python3 -m venv .venv
+fi
+# The stamp holds the requirements that were installed; reinstall only when they change.
+if [ -f "$stamp" ] && cmp -s "$req" "$stamp" && .venv/bin/python -c 'import roslibpy' 2>/dev/null; then
+    echo "python venv up to date"
+    exit 0
+fi
+.venv/bin/python -m pip install --quiet --disable-pip-version-check -r "$req"
+cp "$req" "$stamp"
+echo "python venv ready: $(.venv/bin/python -c 'import roslibpy; print("roslibpy", roslibpy.__version__)')"

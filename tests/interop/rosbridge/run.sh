@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# rosbridge interop suite: real roslibpy (PyPI) and roslib (npm, under Node) clients
+# against a fleetlink hub and an agent's local rosbridge listener.
+#
+# Starts a hub and one agent (robot1, simulated laser/odometry/point cloud, local
+# listener), waits until robot1 is online with its topics, then runs
+#   roslibpy_check.py and roslib_check.mjs  x  (hub URL, agent's local URL)
+# and exits non-zero if any of them failed. Every process started here is stopped on
+# exit (trap), also on failure. Bounded: each step has a timeout, the whole suite
+# stays under 5 minutes.
+#
+# Env: FLEETLINK_BIN (default: target/release/fleetlink), PYTHON (default: .venv/bin/python).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+python="${PYTHON:-$root/.venv/bin/python}"
+robot=robot1
+scan_ranges=720
+points=2000
+started=$SECONDS
+
+[ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
+[ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
+[ -d "$here/node_modules/roslib" ] || { echo "FAIL: roslib missing; run scripts/setup.d/20-node-packages.sh" >&2; exit 1; }
+
+tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-rosbridge.XXXXXX")"
+pids=()
+cleanup() {
+    local rc=$?
+    for pid in "${pids[@]}"; do
+        kill -TERM "$pid" 2>/dev/null || true
+    done
+    for pid in "${pids[@]}"; do
+        # Bounded wait for a graceful stop, then force.
+        for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+        kill -KILL "$pid" 2>/dev/null || true
+        wait "$pid" 2>/dev/null || true
+    done
+    if [ "$rc" -ne 0 ]; then
+        for f in hub agent; do
+            [ -f "$tmp/$f.log" ] && { echo "--- last lines of $f log"; tail -n 30 "$tmp/$f.log"; } >&2
+        done
+    fi
+    rm -rf "$tmp"
+    exit "$rc"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+# Waits (bounded) until a line matching $2 appears in log $1; prints the first capture.
+wait_for_line() {
+    local log=$1 pattern=$2 what=$3 pid=$4
+    for _ in $(seq 200); do # 200 x 0.05 s = 10 s
+        local m
+        m="$(sed -nE "s#${pattern}#\\1#p" "$log" | head -n1)"
+        if [ -n "$m" ]; then echo "$m"; return 0; fi
+        kill -0 "$pid" 2>/dev/null || { echo "FAIL: $what: process exited" >&2; return 1; }
+        sleep 0.05
+    done
+    echo "FAIL: $what: no line matching '$pattern' within 10 s" >&2
+    return 1
+}
+
+# --- hub (log files exist before the background start, so the reader never races them)
+: >"$tmp/hub.log"; : >"$tmp/agent.log"
+"$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
+pids+=($!)
+hub_addr="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on ([0-9.:]+)$' "hub start" "${pids[0]}")"
+hub_url="ws://$hub_addr/"
+echo "hub: $hub_url"
+
+# --- agent
+cat >"$tmp/agent.yaml" <<EOF
+hub: $hub_url
+name: $robot
+local_rosbridge: { listen: 127.0.0.1:0 }
+sim:
+  laser_scan:  { rate_hz: 10, ranges: $scan_ranges }
+  odometry:    { rate_hz: 20 }
+  point_cloud: { rate_hz: 2, points: $points }
+EOF
+"$bin" agent --name "$robot" --config "$tmp/agent.yaml" --local-listen 127.0.0.1:0 >"$tmp/agent.log" 2>&1 &
+pids+=($!)
+local_addr="$(wait_for_line "$tmp/agent.log" '^  local rosbridge: ws://([0-9.:]+)/$' "agent start" "${pids[1]}")"
+local_url="ws://$local_addr/"
+echo "agent $robot local rosbridge: $local_url"
+
+# --- ready: hub healthy, robot1 online with its sim topics (bounded: 15 s)
+"$python" - "$hub_addr" "$robot" <<'EOF'
+import json, sys, time, urllib.request
+addr, robot = sys.argv[1], sys.argv[2]
+want = {f"/{robot}/scan", f"/{robot}/odom", f"/{robot}/points"}
+deadline, last = time.monotonic() + 15, None
+while time.monotonic() < deadline:
+    try:
+        with urllib.request.urlopen(f"http://{addr}/healthz", timeout=2) as r:
+            assert r.status == 200, r.status
+        with urllib.request.urlopen(f"http://{addr}/api/v1/robots", timeout=2) as r:
+            robots = json.load(r)["robots"]
+        me = [x for x in robots if x["name"] == robot]
+        last = me
+        if me and me[0]["online"] and want <= set(me[0]["topics"]):
+            print(f"ready: /healthz ok, {robot} online with {sorted(me[0]['topics'])}")
+            sys.exit(0)
+    except Exception as e:  # not up yet
+        last = repr(e)
+    time.sleep(0.1)
+print(f"FAIL: {robot} not online with {sorted(want)} within 15 s; last: {last}", file=sys.stderr)
+sys.exit(1)
+EOF
+
+# --- the clients: each run is bounded (timeout), failures are collected, not fatal
+failed=()
+run_check() {
+    local name=$1; shift
+    echo "== $name"
+    if ! timeout --kill-after=5 90 "$@"; then failed+=("$name"); fi
+}
+common=(--robot "$robot" --scan-ranges "$scan_ranges" --points "$points")
+run_check "roslibpy hub" "$python" "$here/roslibpy_check.py" --url "$hub_url" --mode hub --peer-url "$local_url" "${common[@]}"
+run_check "roslibpy local" "$python" "$here/roslibpy_check.py" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
+run_check "roslib hub" node "$here/roslib_check.mjs" --url "$hub_url" --mode hub --peer-url "$local_url" "${common[@]}"
+run_check "roslib local" node "$here/roslib_check.mjs" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
+
+# Both servers must have survived everything the clients did.
+for pid in "${pids[@]}"; do
+    kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
+done
+
+echo "rosbridge interop: ${#failed[@]} failure(s) in 4 client runs, $((SECONDS - started)) s"
+if [ ${#failed[@]} -ne 0 ]; then
+    echo "FAIL: ${failed[*]}" >&2
+    exit 1
+fi
+echo "PASS: rosbridge interop (roslibpy + roslib, hub + local listener)"
