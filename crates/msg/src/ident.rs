@@ -191,11 +191,28 @@ fn own_text(registry: &Registry, spec: &MsgSpec, dialect: Dialect) -> String {
 /// REP-2016 type hash (`RIHS01_<sha256>`) of a message type, computed from the same
 /// type description JSON rosidl hashes (field names, type ids, capacities, nested type
 /// names; no default values; referenced types sorted by name).
+///
+/// `char` fields hash as `uint8`, because rosidl converts `.msg` `char` to IDL `uint8`
+/// before hashing. (rosbags hashes them as IDL `char`; see [`type_hash_char_as_idl_char`].)
 pub fn type_hash(registry: &Registry, type_name: &str) -> Result<String, RegistryError> {
+    hash_with(registry, type_name, 3)
+}
+
+/// The type hash with `char` fields counted as IDL `char` (type id 13), which is what
+/// rosbags computes. Only for cross-checking the rest of the algorithm against rosbags.
+#[doc(hidden)]
+pub fn type_hash_char_as_idl_char(
+    registry: &Registry,
+    type_name: &str,
+) -> Result<String, RegistryError> {
+    hash_with(registry, type_name, 13)
+}
+
+fn hash_with(registry: &Registry, type_name: &str, char_id: u32) -> Result<String, RegistryError> {
     let main = registry.message(type_name, Dialect::Ros2)?;
     registry.layout(&main.name.to_string(), Dialect::Ros2)?;
     let mut refs: BTreeMap<String, String> = BTreeMap::new();
-    let top = describe(registry, &main, &mut refs)?;
+    let top = describe(registry, &main, &mut refs, char_id)?;
     let mut json = String::from("{\"type_description\": ");
     json.push_str(&top);
     json.push_str(", \"referenced_type_descriptions\": [");
@@ -208,6 +225,7 @@ fn describe(
     registry: &Registry,
     spec: &MsgSpec,
     refs: &mut BTreeMap<String, String>,
+    char_id: u32,
 ) -> Result<String, RegistryError> {
     let mut fields = Vec::new();
     for f in &spec.fields {
@@ -221,6 +239,7 @@ fn describe(
                     };
                     (1, Some(format!("builtin_interfaces/{n}")))
                 }
+                Primitive::Char => (char_id, None),
                 _ => (primitive_type_id(*p, f.ty.string_bound), None),
             },
             Element::Named { package, name } => {
@@ -234,7 +253,7 @@ fn describe(
             let dep = registry.message(&n, Dialect::Ros2)?;
             nested_name = dep.name.to_string();
             if !refs.contains_key(&nested_name) {
-                let d = describe(registry, &dep, refs)?;
+                let d = describe(registry, &dep, refs, char_id)?;
                 refs.insert(nested_name.clone(), d);
             }
         }
