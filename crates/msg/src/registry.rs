@@ -262,7 +262,7 @@ impl Registry {
                         name: t.to_owned(),
                         reason: "expected `MSG: pkg/Type` after a separator line",
                     })?;
-                current = TypeName::parse(dep.trim())?.with_kind(InterfaceKind::Msg);
+                current = TypeName::parse(dep.trim())?;
                 pending_header = false;
                 continue;
             }
@@ -300,10 +300,8 @@ impl Registry {
     ) -> Result<TypeName, RegistryError> {
         let name = TypeName::parse(type_name)?;
         let t = self.read();
-        if let Some(key) = t.find(dialect, &name) {
-            if let Some(s) = t.spec(dialect, &key) {
-                return Ok(s.name.clone());
-            }
+        if let Some(s) = t.find(dialect, &name).and_then(|key| t.spec(dialect, &key)) {
+            return Ok(s.name.clone());
         }
         if let Some(d) = t
             .interfaces
