@@ -29,6 +29,10 @@ pub enum RegistryError {
     Parse(#[from] ParseError),
     #[error("invalid type name {name:?}: {reason}")]
     BadName { name: String, reason: &'static str },
+    #[error(
+        "unknown type {name}: not bundled, not in a --msg-path package, not received at run time"
+    )]
+    NotFound { name: String },
     #[error("unknown type {name} (referenced from {from})")]
     UnknownType { name: String, from: String },
     #[error("recursive definition: {chain}")]
