@@ -190,6 +190,11 @@ fn to_array<T: Loose>(elem: &Elem, node: &T) -> Result<Array, CodecError> {
             describe(&view)
         )));
     };
+    if let Elem::Scalar(s) = elem
+        && let Some(typed) = numeric_array(*s, items)
+    {
+        return typed;
+    }
     let mut values = Vec::with_capacity(items.len());
     for (i, item) in items.iter().enumerate() {
         values.push(to_elem(elem, item).map_err(|e| in_index(e, i))?);
@@ -197,6 +202,63 @@ fn to_array<T: Loose>(elem: &Elem, node: &T) -> Result<Array, CodecError> {
     Ok(match elem {
         Elem::Scalar(s) => pack(*s, values),
         Elem::Msg(_) => Array::Values(values),
+    })
+}
+
+/// Fast path for arrays of numbers: converts straight into the typed vector.
+/// `None` for element types that need the general path.
+fn numeric_array<T: Loose>(s: Scalar, items: &[T]) -> Option<Result<Array, CodecError>> {
+    fn floats<T: Loose, F>(items: &[T], conv: impl Fn(f64) -> F) -> Result<Vec<F>, CodecError> {
+        let mut out = Vec::with_capacity(items.len());
+        for (i, item) in items.iter().enumerate() {
+            let f = match item.view() {
+                View::Float(f) => f,
+                View::Int(n) => n as f64,
+                View::Null => f64::NAN,
+                // The general path words the error (and accepts "NaN"-style strings).
+                _ => match to_elem(&Elem::Scalar(Scalar::F64), item) {
+                    Ok(Value::F64(f)) => f,
+                    Ok(_) => f64::NAN,
+                    Err(e) => return Err(in_index(e, i)),
+                },
+            };
+            out.push(conv(f));
+        }
+        Ok(out)
+    }
+    fn ints<T: Loose, I: TryFrom<i128>>(items: &[T], s: Scalar) -> Result<Vec<I>, CodecError> {
+        let mut out = Vec::with_capacity(items.len());
+        for (i, item) in items.iter().enumerate() {
+            let direct = match item.view() {
+                View::Int(n) => I::try_from(n).ok(),
+                _ => None,
+            };
+            let x = match direct {
+                Some(x) => x,
+                // The general path accepts integral floats and bools and words errors.
+                None => {
+                    let v = to_elem(&Elem::Scalar(s), item).map_err(|e| in_index(e, i))?;
+                    crate::binary::as_int(&v)
+                        .and_then(|n| I::try_from(n).ok())
+                        .ok_or_else(|| in_index(mismatch("integer out of range"), i))?
+                }
+            };
+            out.push(x);
+        }
+        Ok(out)
+    }
+    Some(match s {
+        Scalar::F32 => floats(items, |f| f as f32).map(Array::F32),
+        Scalar::F64 => floats(items, |f| f).map(Array::F64),
+        Scalar::I8 => ints(items, s).map(Array::I8),
+        Scalar::U8 => ints(items, s).map(Array::U8),
+        Scalar::I16 => ints(items, s).map(Array::I16),
+        Scalar::U16 => ints(items, s).map(Array::U16),
+        Scalar::I32 => ints(items, s).map(Array::I32),
+        Scalar::U32 => ints(items, s).map(Array::U32),
+        Scalar::I64 => ints(items, s).map(Array::I64),
+        Scalar::U64 => ints(items, s).map(Array::U64),
+        _ => return None,
     })
 }
 
