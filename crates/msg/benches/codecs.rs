@@ -47,7 +47,7 @@ fn scan_cdr(reg: &Registry) -> Vec<u8> {
         Dialect::Ros2,
         &json!({
             "header": {"stamp": {"sec": 10, "nanosec": 20}, "frame_id": "laser"},
-            "angle_min": -3.14, "angle_max": 3.14, "angle_increment": 0.00872,
+            "angle_min": -std::f32::consts::PI, "angle_max": std::f32::consts::PI, "angle_increment": 0.00872,
             "time_increment": 0.0001, "scan_time": 0.1, "range_min": 0.1, "range_max": 30.0,
             "ranges": ranges, "intensities": ranges
         }),
