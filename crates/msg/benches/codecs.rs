@@ -39,7 +39,8 @@ fn cloud_cdr(reg: &Registry) -> Vec<u8> {
     encode(reg, "sensor_msgs/PointCloud2", Wire::Cdr, &v).expect("encodes")
 }
 
-fn scan_cdr(reg: &Registry) -> Vec<u8> {
+/// A 720-beam scan; `with_intensities` adds the optional 720 intensities.
+fn scan_cdr(reg: &Registry, with_intensities: bool) -> Vec<u8> {
     let ranges: Vec<f32> = (0..720).map(|i| 0.5 + (i as f32) * 0.013).collect();
     let v = from_json(
         reg,
@@ -49,7 +50,7 @@ fn scan_cdr(reg: &Registry) -> Vec<u8> {
             "header": {"stamp": {"sec": 10, "nanosec": 20}, "frame_id": "laser"},
             "angle_min": -std::f32::consts::PI, "angle_max": std::f32::consts::PI, "angle_increment": 0.00872,
             "time_increment": 0.0001, "scan_time": 0.1, "range_min": 0.1, "range_max": 30.0,
-            "ranges": ranges, "intensities": ranges
+            "intensities": if with_intensities { ranges.clone() } else { Vec::new() }, "ranges": ranges
         }),
     )
     .expect("scan JSON");
@@ -93,42 +94,52 @@ fn point_cloud(c: &mut Criterion) {
 
 fn laser_scan(c: &mut Criterion) {
     let reg = Registry::bundled();
-    let cdr = scan_cdr(&reg);
-    let mut g = c.benchmark_group("laserscan_720");
-    g.bench_function("cdr_json_cdr_round_trip", |b| {
-        b.iter(|| {
-            let json =
+    for (group, with_intensities) in [
+        ("laserscan_720", false),
+        ("laserscan_720_with_intensities", true),
+    ] {
+        let cdr = scan_cdr(&reg, with_intensities);
+        let json =
+            fleetlink_msg::cdr_to_json_bytes(&reg, "sensor_msgs/LaserScan", &cdr).expect("json");
+        let mut g = c.benchmark_group(group);
+        g.bench_function("cdr_json_cdr_round_trip", |b| {
+            b.iter(|| {
+                let json = fleetlink_msg::cdr_to_json_bytes(
+                    &reg,
+                    "sensor_msgs/LaserScan",
+                    black_box(&cdr),
+                )
+                .expect("json");
+                let v = fleetlink_msg::from_json_bytes(
+                    &reg,
+                    "sensor_msgs/LaserScan",
+                    Dialect::Ros2,
+                    &json,
+                )
+                .expect("parses");
+                encode(&reg, "sensor_msgs/LaserScan", Wire::Cdr, &v).expect("encodes")
+            })
+        });
+        g.bench_function("cdr_to_json", |b| {
+            b.iter(|| {
                 fleetlink_msg::cdr_to_json_bytes(&reg, "sensor_msgs/LaserScan", black_box(&cdr))
-                    .expect("json");
-            let v =
-                fleetlink_msg::from_json_bytes(&reg, "sensor_msgs/LaserScan", Dialect::Ros2, &json)
-                    .expect("parses");
-            encode(&reg, "sensor_msgs/LaserScan", Wire::Cdr, &v).expect("encodes")
-        })
-    });
-    g.bench_function("cdr_to_json", |b| {
-        b.iter(|| {
-            fleetlink_msg::cdr_to_json_bytes(&reg, "sensor_msgs/LaserScan", black_box(&cdr))
-                .expect("json")
-        })
-    });
-    let json = fleetlink_msg::cdr_to_json_bytes(&reg, "sensor_msgs/LaserScan", &cdr).expect("json");
-    g.bench_function("json_to_cdr", |b| {
-        b.iter(|| {
-            let v = fleetlink_msg::from_json_bytes(
-                &reg,
-                "sensor_msgs/LaserScan",
-                Dialect::Ros2,
-                black_box(&json),
-            )
-            .expect("parses");
-            encode(&reg, "sensor_msgs/LaserScan", Wire::Cdr, &v).expect("encodes")
-        })
-    });
-    g.bench_function("json_parse_only", |b| {
-        b.iter(|| serde_json::from_slice::<serde_json::Value>(black_box(&json)).expect("parses"))
-    });
-    g.finish();
+                    .expect("json")
+            })
+        });
+        g.bench_function("json_to_cdr", |b| {
+            b.iter(|| {
+                let v = fleetlink_msg::from_json_bytes(
+                    &reg,
+                    "sensor_msgs/LaserScan",
+                    Dialect::Ros2,
+                    black_box(&json),
+                )
+                .expect("parses");
+                encode(&reg, "sensor_msgs/LaserScan", Wire::Cdr, &v).expect("encodes")
+            })
+        });
+        g.finish();
+    }
 }
 
 criterion_group! {

@@ -75,8 +75,8 @@ pub enum CodecError {
     Mismatch { path: String, reason: String },
     #[error(transparent)]
     Registry(#[from] RegistryError),
-    #[error("invalid JSON text: {0}")]
-    Json(#[from] serde_json::Error),
+    #[error("invalid JSON text at byte {offset}: {reason}")]
+    JsonSyntax { offset: usize, reason: String },
     #[error("invalid CBOR: {0}")]
     Cbor(String),
 }

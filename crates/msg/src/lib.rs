@@ -38,6 +38,7 @@ pub mod cbor;
 pub mod error;
 pub mod ident;
 pub mod json;
+mod json_text;
 mod layout;
 mod loose;
 pub mod name;
@@ -109,8 +110,11 @@ pub fn from_json_bytes(
     dialect: Dialect,
     text: &[u8],
 ) -> Result<Value, CodecError> {
-    let json: serde_json::Value = serde_json::from_slice(text)?;
-    from_json(registry, type_name, dialect, &json)
+    let layout = registry.layout(type_name, dialect)?;
+    let doc = json_text::parse(text)?;
+    loose::to_struct(&layout, &doc)
+        .map(Value::Struct)
+        .map_err(|e| binary::in_field(e, &layout.name.short()))
 }
 
 /// The message as compact rosbridge JSON text.

@@ -26,6 +26,10 @@ pub(crate) enum View<'a, T> {
     /// An RFC 8746 typed array: tag and little/big-endian payload.
     Typed(u64, &'a [u8]),
     Array(&'a [T]),
+    /// A compact array of numbers (`null` already turned into NaN).
+    Floats(&'a [f64]),
+    /// A compact array of integers.
+    Ints(&'a [i64]),
     Map,
     Other(&'static str),
 }
@@ -108,7 +112,7 @@ fn describe<T>(v: &View<'_, T>) -> &'static str {
         View::Str(_) => "a string",
         View::Bytes(_) => "a byte string",
         View::Typed(..) => "a typed array",
-        View::Array(_) => "an array",
+        View::Array(_) | View::Floats(_) | View::Ints(_) => "an array",
         View::Map => "an object",
         View::Other(what) => what,
     }
@@ -184,6 +188,21 @@ fn to_array<T: Loose>(elem: &Elem, node: &T) -> Result<Array, CodecError> {
             _ => {}
         }
     }
+    match (&view, elem) {
+        (View::Floats(fs), Elem::Scalar(s)) => {
+            return compact_array(*s, fs.iter().map(|f| Value::F64(*f)));
+        }
+        (View::Ints(is), Elem::Scalar(s)) => {
+            return compact_array(*s, is.iter().map(|i| Value::I64(*i)));
+        }
+        (View::Floats(_) | View::Ints(_), Elem::Msg(m)) => {
+            return Err(mismatch(format!(
+                "expected an array of {} objects, got numbers",
+                m.name
+            )));
+        }
+        _ => {}
+    }
     let View::Array(items) = view else {
         return Err(mismatch(format!(
             "expected an array, got {}",
@@ -202,6 +221,65 @@ fn to_array<T: Loose>(elem: &Elem, node: &T) -> Result<Array, CodecError> {
     Ok(match elem {
         Elem::Scalar(s) => pack(*s, values),
         Elem::Msg(_) => Array::Values(values),
+    })
+}
+
+/// Converts a compact number array into the field's element type.
+fn compact_array(
+    s: Scalar,
+    items: impl ExactSizeIterator<Item = Value>,
+) -> Result<Array, CodecError> {
+    let as_f64 = |v: Value| match v {
+        Value::F64(f) => f,
+        Value::I64(n) => n as f64,
+        _ => f64::NAN,
+    };
+    let as_int = |v: Value, i: usize| -> Result<i128, CodecError> {
+        match v {
+            Value::I64(n) => Ok(n.into()),
+            Value::F64(f) if f.fract() == 0.0 && f.abs() < 1e38 => Ok(f as i128),
+            _ => Err(in_index(
+                mismatch("expected an integer, got a fraction or null"),
+                i,
+            )),
+        }
+    };
+    macro_rules! ints {
+        ($variant:ident, $t:ty) => {{
+            let mut out: Vec<$t> = Vec::with_capacity(items.len());
+            for (i, v) in items.enumerate() {
+                let n = as_int(v, i)?;
+                out.push(
+                    <$t>::try_from(n)
+                        .map_err(|_| in_index(mismatch(format!("{n} is out of range")), i))?,
+                );
+            }
+            Array::$variant(out)
+        }};
+    }
+    Ok(match s {
+        Scalar::F32 => Array::F32(items.map(|v| as_f64(v) as f32).collect()),
+        Scalar::F64 => Array::F64(items.map(as_f64).collect()),
+        Scalar::I8 => ints!(I8, i8),
+        Scalar::U8 => ints!(U8, u8),
+        Scalar::I16 => ints!(I16, i16),
+        Scalar::U16 => ints!(U16, u16),
+        Scalar::I32 => ints!(I32, i32),
+        Scalar::U32 => ints!(U32, u32),
+        Scalar::I64 => ints!(I64, i64),
+        Scalar::U64 => ints!(U64, u64),
+        Scalar::Bool => {
+            let mut out = Vec::with_capacity(items.len());
+            for (i, v) in items.enumerate() {
+                out.push(match v {
+                    Value::I64(0) => false,
+                    Value::I64(1) => true,
+                    _ => return Err(in_index(mismatch("expected a bool"), i)),
+                });
+            }
+            Array::Bool(out)
+        }
+        _ => return Err(mismatch(format!("expected an array of {s:?}, got numbers"))),
     })
 }
 
