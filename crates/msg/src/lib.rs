@@ -17,7 +17,8 @@
 //! - [`value`]: dynamic message values ([`Value`]).
 //! - `binary`: CDR and ROS 1 reader/writer ([`Wire`]).
 //! - `loose`: rosbridge JSON/CBOR input rules, shared by both formats.
-//! - [`json`], [`cbor`]: rosbridge JSON and CBOR output.
+//! - [`json`], [`cbor`]: rosbridge JSON and CBOR output; `json_text`: the JSON text
+//!   parser of the JSON → message hot path.
 //! - [`view`]: zero-copy access to header and large arrays of CDR messages ([`CdrView`]).
 //! - [`ident`]: ROS 1 md5sums, concatenated full texts, REP-2016 type hashes.
 //! - [`error`]: error types.

@@ -207,7 +207,10 @@ fn parse_line(line: &str, dialect: Dialect) -> Result<Option<Item>, LineError> {
     if !(tail.is_empty() || tail.starts_with(char::is_whitespace) || tail.starts_with('#')) {
         return Err((
             col(line, after_name),
-            format!("unexpected `{}` after the name", &tail[..1]),
+            format!(
+                "unexpected `{}` after the name",
+                tail.chars().next().unwrap_or(' ')
+            ),
         ));
     }
     let default_text = strip_comment(tail_trim).trim();

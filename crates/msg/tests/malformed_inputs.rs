@@ -202,3 +202,32 @@ proptest! {
         let _ = from_cbor(&reg, &ty, Dialect::Ros2, &bytes);
     }
 }
+
+proptest! {
+    #[test]
+    fn arbitrary_definition_text_never_panics_the_parser(text in "(\\PC|[ \\t\\n#=<>\\[\\]/\"'-])*", kind in 0usize..3) {
+        let reg = Registry::empty();
+        let name = ["fuzz_msgs/msg/T", "fuzz_msgs/srv/T", "fuzz_msgs/action/T"][kind];
+        if reg.add_definition(name, &text, Dialect::Ros2).is_ok() {
+            let _ = reg.layout("fuzz_msgs/T", Dialect::Ros2);
+            let _ = fleetlink_msg::md5sum(&reg, name);
+        }
+        let _ = reg.add_full_text("fuzz_msgs/U", &text, Dialect::Ros1);
+    }
+
+    #[test]
+    fn arbitrary_json_text_never_panics(text in "(\\PC|[\\[\\]{}\",:0-9.eE+-])*") {
+        let reg = registry();
+        let _ = fleetlink_msg::from_json_bytes(&reg, "sensor_msgs/LaserScan", Dialect::Ros2, text.as_bytes());
+        let _ = fleetlink_msg::from_json_bytes(&reg, "test_msgs/Nested", Dialect::Ros1, text.as_bytes());
+    }
+}
+
+#[test]
+fn non_ascii_after_a_field_name_is_a_parse_error_not_a_panic() {
+    let reg = Registry::empty();
+    let e = reg
+        .add_definition("demo_msgs/U", "int32 aé\n", Dialect::Ros2)
+        .expect_err("bad name");
+    assert!(e.to_string().contains(":1:8:"), "{e}");
+}
