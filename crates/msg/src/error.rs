@@ -25,7 +25,7 @@ pub struct ParseError {
 /// A definition could not be registered or resolved.
 #[derive(Debug, thiserror::Error)]
 pub enum RegistryError {
-    #[error("invalid definition: {0}")]
+    #[error(transparent)]
     Parse(#[from] ParseError),
     #[error("invalid type name {name:?}: {reason}")]
     BadName { name: String, reason: &'static str },

@@ -507,7 +507,12 @@ fn collect_packages(
                     cause,
                 })?;
                 let name = TypeName::new(pkg, kind, stem)?;
-                out.push(parse_definition(&name, &text, Dialect::Ros2)?);
+                // Name the file in parse errors: that is what the user has to open.
+                let def = parse_definition(&name, &text, Dialect::Ros2).map_err(|mut e| {
+                    e.source_name = file.display().to_string();
+                    e
+                })?;
+                out.push(def);
             }
         }
         return Ok(());
