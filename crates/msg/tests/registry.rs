@@ -250,3 +250,17 @@ fn service_md5sum_combines_request_and_response_and_actions_have_none() {
     );
     assert!(md5sum(&reg, "example_interfaces/action/Fibonacci").is_err());
 }
+
+#[test]
+fn registry_can_be_shared_across_threads() {
+    fn shareable<T: Send + Sync + Clone + 'static>(_: &T) {}
+    let reg = Registry::bundled();
+    shareable(&reg);
+    let r2 = reg.clone();
+    let handle = std::thread::spawn(move || {
+        r2.add_definition("thread_msgs/T", "int8 x\n", Dialect::Ros2)
+            .is_ok()
+    });
+    assert!(handle.join().unwrap_or(false));
+    assert!(reg.contains("thread_msgs/T"), "clones share one table");
+}
