@@ -14,7 +14,6 @@ use sha2::Sha256;
 
 use crate::error::RegistryError;
 use crate::layout::named_key;
-use crate::name::TypeName;
 use crate::registry::Registry;
 use crate::spec::{
     ArrayKind, Definition, Dialect, Element, FieldSpec, MsgSpec, Primitive, array_suffix,
@@ -306,9 +305,4 @@ fn primitive_type_id(p: Primitive, bound: Option<u32>) -> u32 {
         Primitive::WString => 18,
         Primitive::Time | Primitive::Duration => 1,
     }
-}
-
-/// `pkg/msg/T` in the ROS 2 form of a registered name (helper for callers).
-pub fn ros2_name(registry: &Registry, type_name: &str) -> Result<TypeName, RegistryError> {
-    registry.resolve_name(type_name, Dialect::Ros2)
 }

@@ -351,12 +351,6 @@ pub(crate) fn default_field(f: &FieldLayout) -> Value {
     }
 }
 
-impl From<Array> for Value {
-    fn from(a: Array) -> Self {
-        Value::Array(a)
-    }
-}
-
 /// The zero value of one element.
 pub(crate) fn zero(elem: &Elem) -> Value {
     match elem {

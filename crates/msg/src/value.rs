@@ -71,6 +71,12 @@ impl Array {
     }
 }
 
+impl From<Array> for Value {
+    fn from(a: Array) -> Self {
+        Value::Array(a)
+    }
+}
+
 /// A message: named fields in definition order.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Struct {
