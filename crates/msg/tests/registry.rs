@@ -212,7 +212,9 @@ fn full_text_has_the_separator_and_dependency_lines_peers_expect() {
         "{text}"
     );
     assert!(text.contains("uint32 seq"), "ROS 1 header: {text}");
-    let text = full_text(&reg, "geometry_msgs/PoseStamped", Dialect::Ros2).expect("text");
+    let text = reg
+        .full_text("geometry_msgs/PoseStamped", Dialect::Ros2)
+        .expect("text");
     assert!(text.contains("MSG: builtin_interfaces/msg/Time"), "{text}");
     assert!(!text.contains("seq"), "{text}");
 }
