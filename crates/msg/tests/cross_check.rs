@@ -1,6 +1,7 @@
 //! Cross-checks against vectors the real peers produced (see tests/interop/msg).
 //!
-//! `cdr.jsonl`: values and the CDR bytes rosbags serialized; `rihs01.json`: rosbags'
+//! `cdr.jsonl`: values and the CDR bytes rosbags serialized (little-endian, and
+//! big-endian for one value per type); `rihs01.json`: rosbags'
 //! REP-2016 hashes; `ros1.jsonl` / `ros1_types.json`: bytes, md5sums and full texts of
 //! Debian's rospy message classes.
 
@@ -68,6 +69,33 @@ fn cdr_bytes_are_identical_to_rosbags_and_decode_to_the_same_values() {
         }
     }
     assert_none(&failures, "CDR");
+}
+
+#[test]
+fn big_endian_cdr_from_rosbags_decodes_to_the_same_values() {
+    let reg = registry();
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for v in vectors("cdr.jsonl")
+        .iter()
+        .filter(|v| v.get("cdr_be").is_some())
+    {
+        let ty = v["type"].as_str().expect("type");
+        let value = from_json(&reg, ty, Dialect::Ros2, &v["json"]).expect("vector JSON fits");
+        match decode(
+            &reg,
+            ty,
+            Wire::Cdr,
+            &hex(v["cdr_be"].as_str().expect("hex")),
+        ) {
+            Ok(back) if back.same_as(&value) => {}
+            Ok(_) => failures.push(format!("{ty}: big-endian decode differs")),
+            Err(e) => failures.push(format!("{ty}: {e}")),
+        }
+        checked += 1;
+    }
+    assert!(checked > 150, "only {checked} big-endian vectors");
+    assert_none(&failures, "big-endian CDR");
 }
 
 #[test]

@@ -213,8 +213,11 @@ def cdr_vectors(out):
                 back = store.deserialize_cdr(data, rb)
                 if bytes(store.serialize_cdr(back, rb)) != data:
                     raise SystemExit(f"rosbags does not round-trip {name}")
-                fh.write(json.dumps({"type": name, "mode": mode, "json": js, "cdr": data.hex()},
-                                    ensure_ascii=False, sort_keys=True) + "\n")
+                vector = {"type": name, "mode": mode, "json": js, "cdr": data.hex()}
+                if mode == "rand1":
+                    # Big-endian CDR of the same value, for the reader's byte-order path.
+                    vector["cdr_be"] = bytes(store.serialize_cdr(msg, rb, little_endian=False)).hex()
+                fh.write(json.dumps(vector, ensure_ascii=False, sort_keys=True) + "\n")
     with open(os.path.join(out, "rihs01.json"), "w") as fh:
         json.dump({n: store.hash_rihs01(n) for n in sorted(set(names)) if "/msg/" in n}, fh, indent=1, sort_keys=True)
         fh.write("\n")
