@@ -1,0 +1,451 @@
+//! A small JSON text parser for the hot path JSON text → message value.
+//!
+//! Design choice: rosbridge clients send large numeric arrays (laser ranges, costmaps)
+//! and building a `serde_json::Value` for them costs more than converting them. This
+//! parser builds a light borrowed tree (strings without escapes are not copied, objects
+//! are small vectors) and parses numbers with the standard library's correctly rounded
+//! parser; the tree then goes through the same `loose` rules as any other input. Nesting
+//! is limited so hostile input cannot exhaust the stack.
+
+use std::borrow::Cow;
+
+use crate::error::CodecError;
+use crate::loose::{Loose, View};
+
+/// Deepest nesting accepted (serde_json uses the same limit).
+const MAX_DEPTH: usize = 128;
+
+/// One parsed JSON node, borrowing from the input where possible.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Node<'a> {
+    Null,
+    Bool(bool),
+    Int(i128),
+    Float(f64),
+    Str(Cow<'a, str>),
+    Array(Vec<Node<'a>>),
+    /// An array of numbers with at least one fraction, exponent or `null` (NaN).
+    Floats(Vec<f64>),
+    /// An array of integers that all fit `i64`.
+    Ints(Vec<i64>),
+    Object(Vec<(Cow<'a, str>, Node<'a>)>),
+}
+
+impl Loose for Node<'_> {
+    fn view(&self) -> View<'_, Self> {
+        match self {
+            Node::Null => View::Null,
+            Node::Bool(b) => View::Bool(*b),
+            Node::Int(i) => View::Int(*i),
+            Node::Float(f) => View::Float(*f),
+            Node::Str(s) => View::Str(s),
+            Node::Array(a) => View::Array(a),
+            Node::Floats(f) => View::Floats(f),
+            Node::Ints(i) => View::Ints(i),
+            Node::Object(_) => View::Map,
+        }
+    }
+    fn field(&self, name: &str) -> Option<&Self> {
+        match self {
+            Node::Object(fields) => fields.iter().find(|(k, _)| k == name).map(|(_, v)| v),
+            _ => None,
+        }
+    }
+}
+
+/// Parses one JSON document (surrounding whitespace allowed).
+pub(crate) fn parse(text: &[u8]) -> Result<Node<'_>, CodecError> {
+    let text =
+        std::str::from_utf8(text).map_err(|e| syntax(e.valid_up_to(), "JSON text is not UTF-8"))?;
+    let mut p = Parser {
+        s: text,
+        b: text.as_bytes(),
+        pos: 0,
+    };
+    let node = p.value(0)?;
+    p.ws();
+    if p.pos != p.b.len() {
+        return Err(syntax(p.pos, "trailing characters after the JSON value"));
+    }
+    Ok(node)
+}
+
+fn syntax(offset: usize, reason: &str) -> CodecError {
+    CodecError::JsonSyntax {
+        offset,
+        reason: reason.to_owned(),
+    }
+}
+
+struct Parser<'a> {
+    s: &'a str,
+    b: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> Parser<'a> {
+    fn ws(&mut self) {
+        while let Some(b' ' | b'\n' | b'\r' | b'\t') = self.b.get(self.pos) {
+            self.pos += 1;
+        }
+    }
+
+    fn eat(&mut self, lit: &str) -> bool {
+        if self.s[self.pos..].starts_with(lit) {
+            self.pos += lit.len();
+            true
+        } else {
+            false
+        }
+    }
+
+    fn value(&mut self, depth: usize) -> Result<Node<'a>, CodecError> {
+        if depth > MAX_DEPTH {
+            return Err(syntax(self.pos, "JSON nested too deeply"));
+        }
+        self.ws();
+        match self.b.get(self.pos) {
+            None => Err(CodecError::Incomplete {
+                path: String::new(),
+                offset: self.pos,
+                needed: 1,
+                available: 0,
+            }),
+            Some(b'{') => self.object(depth),
+            Some(b'[') => self.array(depth),
+            Some(b'"') => self.string().map(Node::Str),
+            Some(b'-' | b'0'..=b'9') => self.number(),
+            Some(_) if self.eat("null") => Ok(Node::Null),
+            Some(_) if self.eat("true") => Ok(Node::Bool(true)),
+            Some(_) if self.eat("false") => Ok(Node::Bool(false)),
+            // Python's json module writes these for non-finite floats.
+            Some(_) if self.eat("NaN") => Ok(Node::Float(f64::NAN)),
+            Some(_) if self.eat("Infinity") => Ok(Node::Float(f64::INFINITY)),
+            Some(_) => Err(syntax(self.pos, "expected a JSON value")),
+        }
+    }
+
+    fn array(&mut self, depth: usize) -> Result<Node<'a>, CodecError> {
+        self.pos += 1;
+        let mut items = Vec::new();
+        self.ws();
+        if self.eat("]") {
+            return Ok(Node::Array(items));
+        }
+        let start = self.pos;
+        if let Some(numbers) = self.numbers()? {
+            return Ok(numbers);
+        }
+        self.pos = start;
+        loop {
+            items.push(self.value(depth + 1)?);
+            self.ws();
+            if self.eat(",") {
+                continue;
+            }
+            if self.eat("]") {
+                return Ok(Node::Array(items));
+            }
+            return Err(self.end_or(", or ] in an array"));
+        }
+    }
+
+    /// Parses the rest of an array as plain numbers (and `null` as NaN) into a compact
+    /// vector; `None` (position unspecified) if an element is anything else.
+    fn numbers(&mut self) -> Result<Option<Node<'a>>, CodecError> {
+        // Integers beyond this are not exact as f64, so they stay on the general path.
+        const EXACT: i64 = 1 << 53;
+        let mut ints: Vec<i64> = Vec::new();
+        let mut floats: Option<Vec<f64>> = None;
+        loop {
+            self.ws();
+            let float = if self.eat("null") {
+                f64::NAN
+            } else {
+                let start = self.pos;
+                let mut is_float = false;
+                while let Some(&c) = self.b.get(self.pos) {
+                    match c {
+                        b'0'..=b'9' | b'-' | b'+' => {}
+                        b'.' | b'e' | b'E' => is_float = true,
+                        _ => break,
+                    }
+                    self.pos += 1;
+                }
+                let text = &self.s[start..self.pos];
+                if text.is_empty() {
+                    return Ok(None);
+                }
+                if is_float {
+                    match text.parse::<f64>() {
+                        Ok(f) => f,
+                        Err(_) => return Ok(None),
+                    }
+                } else {
+                    let Ok(i) = text.parse::<i64>() else {
+                        return Ok(None);
+                    };
+                    match &mut floats {
+                        None => {
+                            ints.push(i);
+                            self.ws();
+                            if self.eat(",") {
+                                continue;
+                            }
+                            if self.eat("]") {
+                                return Ok(Some(Node::Ints(ints)));
+                            }
+                            return Ok(None);
+                        }
+                        Some(_) if i.abs() > EXACT => return Ok(None),
+                        Some(_) => i as f64,
+                    }
+                }
+            };
+            let fs = match &mut floats {
+                Some(fs) => fs,
+                None => {
+                    if ints.iter().any(|i| i.abs() > EXACT) {
+                        return Ok(None);
+                    }
+                    floats.insert(ints.iter().map(|i| *i as f64).collect())
+                }
+            };
+            fs.push(float);
+            self.ws();
+            if self.eat(",") {
+                continue;
+            }
+            if self.eat("]") {
+                return Ok(floats.map(Node::Floats));
+            }
+            return Ok(None);
+        }
+    }
+
+    fn object(&mut self, depth: usize) -> Result<Node<'a>, CodecError> {
+        self.pos += 1;
+        let mut fields = Vec::new();
+        self.ws();
+        if self.eat("}") {
+            return Ok(Node::Object(fields));
+        }
+        loop {
+            self.ws();
+            if self.b.get(self.pos) != Some(&b'"') {
+                return Err(self.end_or("a string key in an object"));
+            }
+            let key = self.string()?;
+            self.ws();
+            if !self.eat(":") {
+                return Err(self.end_or(": after an object key"));
+            }
+            let v = self.value(depth + 1)?;
+            fields.push((key, v));
+            self.ws();
+            if self.eat(",") {
+                continue;
+            }
+            if self.eat("}") {
+                return Ok(Node::Object(fields));
+            }
+            return Err(self.end_or(", or } in an object"));
+        }
+    }
+
+    fn end_or(&self, expected: &str) -> CodecError {
+        if self.pos >= self.b.len() {
+            CodecError::Incomplete {
+                path: String::new(),
+                offset: self.pos,
+                needed: 1,
+                available: 0,
+            }
+        } else {
+            syntax(self.pos, &format!("expected {expected}"))
+        }
+    }
+
+    fn number(&mut self) -> Result<Node<'a>, CodecError> {
+        let start = self.pos;
+        if self.eat("-Infinity") {
+            return Ok(Node::Float(f64::NEG_INFINITY));
+        }
+        let mut float = false;
+        while let Some(&c) = self.b.get(self.pos) {
+            match c {
+                b'0'..=b'9' | b'-' | b'+' => {}
+                b'.' | b'e' | b'E' => float = true,
+                _ => break,
+            }
+            self.pos += 1;
+        }
+        let text = &self.s[start..self.pos];
+        if !float && let Ok(i) = text.parse::<i128>() {
+            return Ok(Node::Int(i));
+        }
+        text.parse::<f64>()
+            .map(Node::Float)
+            .map_err(|_| syntax(start, "invalid number"))
+    }
+
+    fn string(&mut self) -> Result<Cow<'a, str>, CodecError> {
+        let start = self.pos + 1;
+        let mut i = start;
+        // Fast path: no escapes, borrow the slice.
+        while let Some(&c) = self.b.get(i) {
+            match c {
+                b'"' => {
+                    self.pos = i + 1;
+                    return Ok(Cow::Borrowed(&self.s[start..i]));
+                }
+                b'\\' => break,
+                0x00..=0x1f => return Err(syntax(i, "control character in a string")),
+                _ => i += 1,
+            }
+        }
+        let mut out = String::from(&self.s[start..i.min(self.b.len())]);
+        loop {
+            let Some(&c) = self.b.get(i) else {
+                return Err(CodecError::Incomplete {
+                    path: String::new(),
+                    offset: i,
+                    needed: 1,
+                    available: 0,
+                });
+            };
+            match c {
+                b'"' => {
+                    self.pos = i + 1;
+                    return Ok(Cow::Owned(out));
+                }
+                b'\\' => {
+                    let esc = *self
+                        .b
+                        .get(i + 1)
+                        .ok_or_else(|| syntax(i, "unterminated escape"))?;
+                    i += 2;
+                    match esc {
+                        b'"' => out.push('"'),
+                        b'\\' => out.push('\\'),
+                        b'/' => out.push('/'),
+                        b'b' => out.push('\u{8}'),
+                        b'f' => out.push('\u{c}'),
+                        b'n' => out.push('\n'),
+                        b'r' => out.push('\r'),
+                        b't' => out.push('\t'),
+                        b'u' => {
+                            let hi = self.hex4(i)?;
+                            i += 4;
+                            let code = if (0xD800..0xDC00).contains(&hi) {
+                                if self.b.get(i..i + 2) != Some(b"\\u") {
+                                    return Err(syntax(i, "lone high surrogate"));
+                                }
+                                let lo = self.hex4(i + 2)?;
+                                i += 6;
+                                if !(0xDC00..0xE000).contains(&lo) {
+                                    return Err(syntax(i, "invalid low surrogate"));
+                                }
+                                0x10000 + ((hi - 0xD800) << 10) + (lo - 0xDC00)
+                            } else {
+                                hi
+                            };
+                            out.push(
+                                char::from_u32(code)
+                                    .ok_or_else(|| syntax(i, "invalid \\u escape"))?,
+                            );
+                        }
+                        _ => return Err(syntax(i - 1, "invalid escape")),
+                    }
+                }
+                0x00..=0x1f => return Err(syntax(i, "control character in a string")),
+                _ => {
+                    // Copy one UTF-8 character (the input is valid UTF-8).
+                    let ch = self.s[i..]
+                        .chars()
+                        .next()
+                        .ok_or_else(|| syntax(i, "bad UTF-8"))?;
+                    out.push(ch);
+                    i += ch.len_utf8();
+                }
+            }
+        }
+    }
+
+    fn hex4(&self, at: usize) -> Result<u32, CodecError> {
+        let h = self
+            .s
+            .get(at..at + 4)
+            .ok_or_else(|| syntax(at, "short \\u escape"))?;
+        u32::from_str_radix(h, 16).map_err(|_| syntax(at, "invalid \\u escape"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    impl Node<'_> {
+        /// NaN != NaN; swap NaN for a marker so test comparisons work.
+        fn clone_nan_free(self) -> Self {
+            match self {
+                Node::Floats(v) => Node::Floats(
+                    v.into_iter()
+                        .map(|f| if f.is_nan() { -0.123 } else { f })
+                        .collect(),
+                ),
+                other => other,
+            }
+        }
+    }
+
+    #[test]
+    fn parses_what_serde_json_parses() {
+        let text = br#" {"a": [1, -2, 3.5e2, null, true, false], "s": "x\"\u00e9\ud83d\ude80", "o": {}, "e": []} "#;
+        let ours = parse(text).expect("parses");
+        let theirs: serde_json::Value = serde_json::from_slice(text).expect("parses");
+        assert_eq!(
+            ours.field("s")
+                .map(|n| n.view())
+                .and_then(|v| match v {
+                    View::Str(s) => Some(s.to_owned()),
+                    _ => None,
+                })
+                .as_deref(),
+            theirs["s"].as_str()
+        );
+        let Some(Node::Array(a)) = ours.field("a") else {
+            panic!("mixed array")
+        };
+        assert_eq!(a[2], Node::Float(350.0));
+        assert_eq!(a[1], Node::Int(-2));
+        assert_eq!(
+            parse(b"[1, 2.5, null]").expect("floats").clone_nan_free(),
+            Node::Floats(vec![1.0, 2.5, f64::NAN]).clone_nan_free()
+        );
+        assert_eq!(parse(b"[1, -2]").expect("ints"), Node::Ints(vec![1, -2]));
+        let big = parse(b"[9007199254740993, 0.5]").expect("parses");
+        assert!(
+            matches!(big, Node::Array(_)),
+            "inexact integers keep the general form"
+        );
+    }
+
+    #[test]
+    fn rejects_bad_json_and_deep_nesting() {
+        for bad in [
+            &b"{"[..],
+            b"[1,]",
+            b"{\"a\" 1}",
+            b"\"\\x\"",
+            b"01x",
+            b"[1] 2",
+            b"\"\\ud800\"",
+        ] {
+            assert!(parse(bad).is_err(), "{}", String::from_utf8_lossy(bad));
+        }
+        let deep = "[".repeat(100_000);
+        assert!(parse(deep.as_bytes()).is_err());
+        assert!(parse(b"[1, 2").expect_err("short").is_incomplete());
+    }
+}
