@@ -50,5 +50,5 @@ fn main() -> anyhow::Result<()> {
 
 /// How messages are converted between encodings in this binary.
 pub fn transcoder() -> Arc<dyn fleetlink_relay::Transcoder> {
-    Arc::new(fleetlink_relay::GenericTranscoder)
+    Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled())
 }

@@ -12,7 +12,6 @@ use std::time::Duration;
 use fleetlink_agent::uplink::{LinkState, NameMap, UplinkConfig};
 use fleetlink_agent::{Agent, AgentOptions};
 use fleetlink_hub::{Hub, HubConfig};
-use fleetlink_relay::GenericTranscoder;
 use futures_util::{SinkExt, StreamExt};
 use serde_json::{Value, json};
 use tokio::net::TcpStream;
@@ -61,9 +60,12 @@ pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Durati
         heartbeat,
         ..HubConfig::default()
     };
-    let hub = Hub::bind(cfg, Arc::new(GenericTranscoder))
-        .await
-        .expect("hub binds");
+    let hub = Hub::bind(
+        cfg,
+        Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled()),
+    )
+    .await
+    .expect("hub binds");
     let addr = hub.local_addr();
     let state = hub.state();
     let stop = CancellationToken::new();
@@ -131,9 +133,12 @@ pub async fn start_agent_with(uplink: UplinkConfig, local: bool) -> TestAgent {
         local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
         sim: None,
     };
-    let agent = Agent::bind(opts, Arc::new(GenericTranscoder))
-        .await
-        .expect("agent binds");
+    let agent = Agent::bind(
+        opts,
+        Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled()),
+    )
+    .await
+    .expect("agent binds");
     let router = agent.router();
     let local = agent.local_addr();
     let state = agent.link_state();

@@ -94,14 +94,15 @@ impl Message {
         cell.get_or_init(|| match kind {
             FrameKind::RosbridgeJson => {
                 let body = tc.convert(&self.topic.schema, &self.payload, Encoding::Json)?;
-                let text = Utf8Bytes::try_from(outbound::publish_json(topic, &body)).map_err(|e| {
-                    TranscodeError::Invalid {
-                        type_name: self.topic.schema.type_name.clone(),
-                        from: self.payload.encoding,
-                        to: Encoding::Json,
-                        cause: format!("JSON is not UTF-8: {e}"),
-                    }
-                })?;
+                let text =
+                    Utf8Bytes::try_from(outbound::publish_json(topic, &body)).map_err(|e| {
+                        TranscodeError::Invalid {
+                            type_name: self.topic.schema.type_name.clone(),
+                            from: self.payload.encoding,
+                            to: Encoding::Json,
+                            cause: format!("JSON is not UTF-8: {e}"),
+                        }
+                    })?;
                 Ok(WsMessage::Text(text))
             }
             FrameKind::RosbridgeCbor => {
@@ -109,15 +110,18 @@ impl Message {
                 Ok(WsMessage::Binary(outbound::publish_cbor(topic, &body)))
             }
             FrameKind::RosbridgeCborRaw => {
-                if !self.payload.encoding.is_raw() {
-                    return Err(TranscodeError::Unsupported {
-                        type_name: self.topic.schema.type_name.clone(),
-                        from: self.payload.encoding,
-                        to: Encoding::Cdr,
-                        reason: "cbor-raw needs the raw ROS serialization, and this message arrived as a message object".into(),
-                    });
-                }
-                Ok(WsMessage::Binary(outbound::publish_cbor_raw(topic, self.stamp_ns, &self.payload.bytes)))
+                // The raw ROS serialization: as it arrived, or CDR made from the message
+                // object when the type is known.
+                let raw = if self.payload.encoding.is_raw() {
+                    self.payload.bytes.clone()
+                } else {
+                    tc.convert(&self.topic.schema, &self.payload, Encoding::Cdr)?
+                };
+                Ok(WsMessage::Binary(outbound::publish_cbor_raw(
+                    topic,
+                    self.stamp_ns,
+                    &raw,
+                )))
             }
         })
         .clone()

@@ -298,6 +298,16 @@ impl Router {
         schema: Schema,
         latch: bool,
     ) -> Result<Arc<Topic>, RouteError> {
+        // Definitions travel with topics: learn what the publisher sent, or fill in what
+        // the registry knows so listings and viewers get the full text.
+        let schema = if schema.text.is_empty() {
+            self.transcoder
+                .schema_for(&schema.type_name)
+                .unwrap_or(schema)
+        } else {
+            self.transcoder.learn(&schema);
+            schema
+        };
         let mut st = self.lock();
         if !st.clients.contains_key(&client) {
             return Err(RouteError::UnknownClient(client));

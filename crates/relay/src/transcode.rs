@@ -37,6 +37,123 @@ pub trait Transcoder: Send + Sync + 'static {
         payload: &Payload,
         to: Encoding,
     ) -> Result<Bytes, TranscodeError>;
+
+    /// A topic was advertised with this schema: remember its definition so messages of a
+    /// type nobody compiled in can be converted.
+    fn learn(&self, _schema: &Schema) {}
+
+    /// The full definition of a known type, to send along with a topic.
+    fn schema_for(&self, _type_name: &str) -> Option<Schema> {
+        None
+    }
+}
+
+/// Type-aware conversion through the message registry (`crates/msg`): CDR and ROS 1 to
+/// and from rosbridge JSON and CBOR (typed arrays, byte strings), following the rosbridge
+/// conventions. Types the registry does not know fall back to [`GenericTranscoder`].
+#[derive(Clone)]
+pub struct RegistryTranscoder {
+    registry: fleetlink_msg::Registry,
+}
+
+impl RegistryTranscoder {
+    pub fn new(registry: fleetlink_msg::Registry) -> RegistryTranscoder {
+        RegistryTranscoder { registry }
+    }
+
+    pub fn bundled() -> RegistryTranscoder {
+        Self::new(fleetlink_msg::Registry::bundled())
+    }
+
+    pub fn registry(&self) -> &fleetlink_msg::Registry {
+        &self.registry
+    }
+}
+
+fn dialect_of(schema: &Schema, payload: Encoding) -> fleetlink_msg::Dialect {
+    if payload == Encoding::Ros1 || schema.encoding == "ros1msg" {
+        fleetlink_msg::Dialect::Ros1
+    } else {
+        fleetlink_msg::Dialect::Ros2
+    }
+}
+
+impl Transcoder for RegistryTranscoder {
+    fn convert(
+        &self,
+        schema: &Schema,
+        payload: &Payload,
+        to: Encoding,
+    ) -> Result<Bytes, TranscodeError> {
+        use fleetlink_msg::{
+            Wire, decode, encode, from_cbor, from_json_bytes, to_cbor_bytes, to_json_bytes,
+        };
+        let from = payload.encoding;
+        if from == to {
+            return Ok(payload.bytes.clone());
+        }
+        let ty = schema.type_name.as_str();
+        if !self.registry.contains(ty) {
+            return GenericTranscoder.convert(schema, payload, to);
+        }
+        let reg = &self.registry;
+        let dialect = dialect_of(schema, from);
+        let invalid = |e: fleetlink_msg::CodecError| TranscodeError::Invalid {
+            type_name: ty.to_owned(),
+            from,
+            to,
+            cause: e.to_string(),
+        };
+        let value = match from {
+            Encoding::Json => from_json_bytes(reg, ty, dialect, &payload.bytes),
+            Encoding::Cbor => from_cbor(reg, ty, dialect, &payload.bytes),
+            Encoding::Cdr => decode(reg, ty, Wire::Cdr, &payload.bytes),
+            Encoding::Ros1 => decode(reg, ty, Wire::Ros1, &payload.bytes),
+        }
+        .map_err(invalid)?;
+        let out = match to {
+            Encoding::Json => to_json_bytes(&value),
+            Encoding::Cbor => to_cbor_bytes(&value),
+            Encoding::Cdr => encode(reg, ty, Wire::Cdr, &value).map_err(invalid)?,
+            Encoding::Ros1 => encode(reg, ty, Wire::Ros1, &value).map_err(invalid)?,
+        };
+        Ok(Bytes::from(out))
+    }
+
+    fn learn(&self, schema: &Schema) {
+        if schema.text.is_empty()
+            || schema.type_name.is_empty()
+            || self.registry.contains(&schema.type_name)
+        {
+            return;
+        }
+        let dialect = if schema.encoding == "ros1msg" {
+            fleetlink_msg::Dialect::Ros1
+        } else {
+            fleetlink_msg::Dialect::Ros2
+        };
+        if let Err(e) = self
+            .registry
+            .add_full_text(&schema.type_name, &schema.text, dialect)
+        {
+            tracing::warn!(
+                "cannot use the definition sent for {}: {e}",
+                schema.type_name
+            );
+        }
+    }
+
+    fn schema_for(&self, type_name: &str) -> Option<Schema> {
+        let text = self
+            .registry
+            .full_text(type_name, fleetlink_msg::Dialect::Ros2)
+            .ok()?;
+        Some(Schema {
+            type_name: type_name.to_owned(),
+            encoding: "ros2msg".into(),
+            text,
+        })
+    }
 }
 
 /// Schema-less JSON ↔ CBOR conversion (see [`fleetlink_proto::rosbridge::convert`]).

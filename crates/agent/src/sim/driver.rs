@@ -5,7 +5,7 @@
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use fleetlink_proto::{Payload, Schema};
+use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::{ClientKind, Router, TopicName};
 use tokio_util::sync::CancellationToken;
 
@@ -50,7 +50,15 @@ pub async fn drive(
         for m in due.drain(..) {
             if let Some(Some((topic, seq))) = topics.get_mut(m.topic_index) {
                 *seq += 1;
-                topic.publish(client, *seq, m.stamp_ns, Payload::json(m.json));
+                // A ROS 2 robot publishes CDR; do the same when the type is known, so the
+                // hub converts once per subscriber encoding and `cbor-raw` has raw bytes.
+                let json = Payload::json(m.json);
+                let payload = router
+                    .transcoder()
+                    .convert(&topic.meta().schema, &json, Encoding::Cdr)
+                    .map(|b| Payload::new(Encoding::Cdr, b))
+                    .unwrap_or(json);
+                topic.publish(client, *seq, m.stamp_ns, payload);
             }
         }
     }
