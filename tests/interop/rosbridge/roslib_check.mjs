@@ -203,12 +203,8 @@ async function checkPoints(ros, compression) {
   if (compression === "cbor" && data instanceof Uint8Array) {
     form = "bytes";
   } else if (compression === "cbor") {
-    // rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2); a base64
-    // string is accepted (fleetlink converts schema-less until the type registry
-    // lands) but reported.
-    check(typeof data === "string", `points (cbor): data is ${Object.prototype.toString.call(data)}, want bytes or base64`);
-    form = "base64 text (protocol.md §2.2 says byte string)";
-    data = Buffer.from(data, "base64");
+    // rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2).
+    throw new Error(`points (cbor): data is ${Object.prototype.toString.call(data)}, want a Uint8Array from a CBOR byte string`);
   } else {
     check(typeof data === "string", `points (json): data is ${typeof data}, want base64 string`);
     data = Buffer.from(data, "base64");

@@ -128,6 +128,14 @@ def check_topics(ros, ns):
         raise CheckFailed(f"ros.get_topic_type(): {type(e).__name__}: {e}") from e
     check(ty == "nav_msgs/msg/Odometry", f"/rosapi/topic_type {ns}/odom = {ty!r}")
     ok(f"/rosapi/topic_type {ns}/odom = {ty}")
+    # Definitions travel with topics: the full text is listed for viewers that decode
+    # custom types (rosbag2/MCAP concatenated form).
+    res = call(ros, "/rosapi/topics_and_raw_types", stype="rosapi/TopicsAndRawTypes")
+    defs = dict(zip(res["topics"], res["typedefs_full_text"]))
+    scan = defs.get(f"{ns}/scan", "")
+    check("float32[] ranges" in scan and "MSG: std_msgs/msg/Header" in scan,
+          f"/rosapi/topics_and_raw_types: definition of {ns}/scan is {scan[:200]!r}")
+    ok(f"/rosapi/topics_and_raw_types: {ns}/scan carries its full definition ({len(scan)} chars)")
 
 
 def check_graph(ros, mode, robot):
@@ -233,15 +241,10 @@ def check_points_cbor(url, ns, points):
                   f"points (cbor): unexpected frame {str(m)[:200]}")
             msg = m["msg"]
             data = msg["data"]
-            # rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2). A
-            # base64 text string is accepted (fleetlink converts schema-less until the
-            # type registry lands) but reported.
+            # rosbridge sends uint8[] as a CBOR byte string (docs/protocol.md §2.2).
             form = "byte string"
-            if isinstance(data, str):
-                form = "base64 text (protocol.md §2.2 says byte string)"
-                data = base64.b64decode(data, validate=True)
             check(isinstance(data, bytes),
-                  f"points (cbor): data is {type(data).__name__}, want bytes or base64")
+                  f"points (cbor): data is {type(data).__name__}, want a CBOR byte string")
             check(msg["width"] == points, f"points (cbor): width {msg['width']}, want {points}")
             check(len(data) == msg["width"] * msg["height"] * msg["point_step"],
                   f"points (cbor): {len(data)} bytes for width {msg['width']} x point_step {msg['point_step']}")
