@@ -7,6 +7,7 @@ mod e2e {
     mod cli;
     mod isolation;
     mod link;
+    mod priority;
     mod relay;
     mod rosbridge;
 }

@@ -1,0 +1,79 @@
+//! QoS on the uplink: a small high-priority message overtakes a 2 MB point cloud that
+//! the agent is already sending.
+
+use serde_json::json;
+
+use crate::util::*;
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn priority_topic_overtakes_a_2mb_point_cloud() {
+    let hub = start_hub().await;
+    let mut cfg = uplink_config(&hub.ws_url(), "robot_p");
+    let spec = |p: f32| fleetlink_qos::TopicQosSpec {
+        priority: Some(p),
+        ..Default::default()
+    };
+    cfg.topic_qos = vec![
+        (
+            fleetlink_relay::TopicName::parse("/points").unwrap(),
+            spec(1.0),
+        ),
+        (
+            fleetlink_relay::TopicName::parse("/pose").unwrap(),
+            spec(100.0),
+        ),
+    ];
+    let agent = start_agent_with(cfg, false).await;
+    agent.wait_connected().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/robot_p/points"}))
+        .await;
+    op.send(json!({"op": "subscribe", "topic": "/robot_p/pose"}))
+        .await;
+    // Blob types the registry does not know travel as they are (no conversion cost).
+    let mut cloud = LocalPublisher::new(&agent.router, "/points", "test_msgs/msg/Blob");
+    let mut pose = LocalPublisher::new(&agent.router, "/pose", "test_msgs/msg/Pose");
+    let blob = "p".repeat(2 << 20);
+
+    // Warm up until both subscriptions deliver, so the measured round starts clean.
+    let mut saw = (false, false);
+    within("both topics flowing", async {
+        while saw != (true, true) {
+            cloud.publish_json(&json!({"round": -1, "data": "small"}));
+            pose.publish_json(&json!({"round": -1}));
+            while let Ok(Some(v)) =
+                tokio::time::timeout(std::time::Duration::from_millis(50), op.try_recv()).await
+            {
+                match v["topic"].as_str() {
+                    Some("/robot_p/points") => saw.0 = true,
+                    Some("/robot_p/pose") => saw.1 = true,
+                    _ => {}
+                }
+            }
+        }
+    })
+    .await;
+
+    for round in 0..3 {
+        // The cloud is queued first, the pose right behind it.
+        cloud.publish_json(&json!({"round": round, "data": blob}));
+        pose.publish_json(&json!({"round": round}));
+        let mut order = Vec::new();
+        within("the round's two messages", async {
+            while order.len() < 2 {
+                let v = op.recv_op("publish").await;
+                if v["msg"]["round"] == round {
+                    order.push(v["topic"].as_str().unwrap().to_owned());
+                }
+            }
+        })
+        .await;
+        assert_eq!(
+            order,
+            ["/robot_p/pose", "/robot_p/points"],
+            "round {round}: the pose must overtake the cloud"
+        );
+    }
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
