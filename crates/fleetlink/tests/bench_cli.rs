@@ -39,12 +39,20 @@ async fn bench_relay_json_summary_counts_every_delivery() {
     let sent = s["sent"].as_u64().expect("sent");
     let delivered = s["delivered"].as_u64().expect("delivered");
     assert!(sent > 0, "something was sent in the window: {s}");
-    assert_eq!(delivered, 2 * sent, "each subscriber got every message: {s}");
+    assert_eq!(
+        delivered,
+        2 * sent,
+        "each subscriber got every message: {s}"
+    );
     assert_eq!(s["drops"], 0, "{s}");
     assert!(s["delivered_per_s"].as_f64().expect("delivered_per_s") > 0.0);
     assert!(s["mb_per_s"].as_f64().expect("mb_per_s") > 0.0);
     let lat = &s["latency_us"];
-    let q = |k: &str| lat[k].as_f64().unwrap_or_else(|| panic!("latency_us.{k}: {s}"));
+    let q = |k: &str| {
+        lat[k]
+            .as_f64()
+            .unwrap_or_else(|| panic!("latency_us.{k}: {s}"))
+    };
     assert!(q("p50") > 0.0, "{s}");
     assert!(q("p50") <= q("p99") && q("p99") <= q("p999") && q("p999") <= q("max"));
 

@@ -42,7 +42,12 @@ fn fanout(c: &mut Criterion) {
         let name = TopicName::parse("/bench/cmd_vel").expect("valid name");
         let (publisher, _) = router.connect(internal("publisher"), None);
         let topic = router
-            .advertise(publisher, &name, Schema::named("geometry_msgs/msg/Twist"), false)
+            .advertise(
+                publisher,
+                &name,
+                Schema::named("geometry_msgs/msg/Twist"),
+                false,
+            )
             .expect("advertise");
         let outboxes: Vec<Arc<Outbox>> = (0..subscribers)
             .map(|i| {
@@ -78,7 +83,13 @@ fn message(payload: &Bytes) -> Message {
         name: TopicName::parse("/bench/topic").expect("valid name"),
         schema: Schema::named("geometry_msgs/msg/Twist"),
     });
-    Message::new(meta, 42, 1_700_000_000_000_000_000, ClientId(1), Payload::json(payload.clone()))
+    Message::new(
+        meta,
+        42,
+        1_700_000_000_000_000_000,
+        ClientId(1),
+        Payload::json(payload.clone()),
+    )
 }
 
 fn link_frames(c: &mut Criterion) {
@@ -101,7 +112,10 @@ fn rosbridge_frame(c: &mut Criterion) {
     let tc = GenericTranscoder;
     let payload = json_64();
     let mut g = c.benchmark_group("rosbridge_frame");
-    for (label, kind) in [("json", FrameKind::RosbridgeJson), ("cbor", FrameKind::RosbridgeCbor)] {
+    for (label, kind) in [
+        ("json", FrameKind::RosbridgeJson),
+        ("cbor", FrameKind::RosbridgeCbor),
+    ] {
         g.bench_function(format!("{label}/1_subscriber"), |b| {
             b.iter_batched(
                 || message(&payload),

@@ -1,6 +1,13 @@
 //! A bench publisher: one `fleetlink.v1` connection sending `MESSAGE`s (or `CHUNK`s for
-//! payloads over the chunk size) on its one topic, as fast as the link takes them or at a
-//! fixed rate.
+//! payloads over the chunk size) on its one topic, at a fixed rate or as fast as the
+//! subscribers take them.
+//!
+//! "As fast as possible" is closed-loop: a publisher keeps at most `window` messages in
+//! flight (sent, but not yet received by its slowest subscriber, which it can see because
+//! both run in this process). Open-loop flooding would only measure how fast the hub
+//! drops: the hub never blocks a publisher for a slow subscriber, it evicts from that
+//! subscriber's queue. With `window` no larger than the subscribers' queue length the hub
+//! never has to drop, so `max` measures the highest lossless delivery rate.
 //!
 //! Frames are packed into WebSocket messages of about 64 KiB, as the hub's own link
 //! writer does, and every frame of one write carries the same `stamp_ns`: they leave
@@ -17,13 +24,14 @@ use fleetlink_relay::link::{LinkEvent, LinkIn};
 use fleetlink_relay::unix_nanos;
 use futures_util::stream::{SplitSink, SplitStream};
 use futures_util::{SinkExt, StreamExt};
-use tokio::sync::{mpsc, oneshot};
+use tokio::sync::{Notify, mpsc, oneshot};
 use tokio::time::MissedTickBehavior;
 use tokio_tungstenite::tungstenite::Message as WsMessage;
 use tokio_util::sync::CancellationToken;
 
 use super::conn::{Conn, Ws, pong, put_ping};
 use super::relay::{Rate, Window};
+use super::subscriber::Shared;
 
 /// Small frames are packed into one WebSocket message up to about this size.
 const PACK: usize = 64 * 1024;
@@ -43,6 +51,29 @@ pub struct Plan {
     pub size: usize,
     pub rate: Rate,
     pub window: Window,
+    pub flow: Flow,
+}
+
+/// What a publisher needs to know about its subscribers' progress (used at `Rate::Max`).
+pub struct Flow {
+    /// This publisher's index into `Shared::seen` and `wake`.
+    pub index: usize,
+    pub subscribers: Vec<Arc<Shared>>,
+    /// Signalled by subscribers when they received messages of publisher `i`.
+    pub wake: Arc<[Notify]>,
+    /// Most messages in flight.
+    pub in_flight: u64,
+}
+
+impl Flow {
+    /// Sequence number up to which every subscriber has received (exclusive).
+    fn acked(&self) -> u64 {
+        self.subscribers
+            .iter()
+            .map(|s| s.seen[self.index].load(Relaxed))
+            .min()
+            .unwrap_or(0)
+    }
 }
 
 /// Sends from now until the window ends, reports what it sent in the window on `done`,
@@ -121,7 +152,10 @@ impl Writer {
                 self.ping();
             }
             let due = match plan.rate {
-                Rate::Max => per_write,
+                Rate::Max => {
+                    let flying = seq.saturating_sub(plan.flow.acked());
+                    plan.flow.in_flight.saturating_sub(flying).min(per_write)
+                }
                 Rate::Hz(hz) => {
                     let target = ((now - start_ns) as f64 * 1e-9 * hz) as u64 + 1;
                     target.saturating_sub(seq).min(per_write)
@@ -133,8 +167,13 @@ impl Writer {
                     self.sink.feed(WsMessage::Binary(out)).await.ok()?;
                 }
                 self.sink.flush().await.ok()?;
+                let wake = &plan.flow.wake[plan.flow.index];
                 tokio::select! {
-                    _ = tick.tick() => {}
+                    _ = tick.tick(), if plan.rate != Rate::Max => {}
+                    // Woken when a subscriber made progress; the timeout re-checks the
+                    // clock should every subscriber have gone quiet.
+                    _ = wake.notified(), if plan.rate == Rate::Max => {}
+                    _ = tokio::time::sleep(Duration::from_millis(10)), if plan.rate == Rate::Max => {}
                     c = self.ctrl.recv() => {
                         if let Some(b) = c {
                             self.sink.feed(WsMessage::Binary(b)).await.ok()?;

@@ -20,12 +20,12 @@ use std::time::Duration;
 
 use anyhow::{Context, bail};
 use fleetlink_relay::unix_nanos;
-use tokio::sync::oneshot;
+use tokio::sync::{Notify, oneshot};
 use tokio::task::JoinSet;
 use tokio_util::sync::CancellationToken;
 
 use super::conn::{self, hub_url};
-use super::publisher::{self, Plan, Sent};
+use super::publisher::{self, Flow, Plan, Sent};
 use super::report::{self, Progress, Summary};
 use super::subscriber::{self, Shared};
 
@@ -56,8 +56,12 @@ pub struct Args {
     #[arg(long, default_value_t = 10.0)]
     pub drain: f64,
     /// Queue length the subscribers ask the hub for (0: the hub's default).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 1024)]
     pub queue_length: u32,
+    /// At `--rate max`: most messages a publisher keeps in flight (sent, not yet received
+    /// by every subscriber). Default: the queue length, capped at 8 MiB of payload.
+    #[arg(long)]
+    pub window: Option<u64>,
     /// Print the final summary as one JSON object on stdout.
     #[arg(long)]
     pub json: bool,
@@ -136,6 +140,19 @@ fn check(args: &Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// `--window`, or its default: the queue length (so the hub never has to drop), at most
+/// 8 MiB of payload, at least 2 messages.
+fn in_flight(args: &Args) -> u64 {
+    args.window.unwrap_or_else(|| {
+        let queue = if args.queue_length == 0 {
+            100
+        } else {
+            u64::from(args.queue_length)
+        };
+        queue.min((8 << 20) / args.size.max(1) as u64).max(2)
+    })
+}
+
 fn secs_ns(s: f64) -> u64 {
     (s * 1e9) as u64
 }
@@ -154,7 +171,8 @@ pub async fn relay(args: &Args) -> anyhow::Result<Summary> {
         async move {
             let who = format!("bench_sub_{i}");
             let mut c = conn::connect(&url, &who).await?;
-            c.send_and_sync(&[subscriber::subscribe(queue)], &who).await?;
+            c.send_and_sync(&[subscriber::subscribe(queue)], &who)
+                .await?;
             Ok(c)
         }
     })
@@ -179,9 +197,10 @@ pub async fn relay(args: &Args) -> anyhow::Result<Summary> {
     let shared: Vec<Arc<Shared>> = (0..args.subscribers)
         .map(|_| Arc::new(Shared::new(args.publishers)))
         .collect();
+    let wake: Arc<[Notify]> = (0..args.publishers).map(|_| Notify::new()).collect();
     let mut sub_tasks = JoinSet::new();
     for (i, c) in subs.into_iter().enumerate() {
-        let task = subscriber::run(c, window, shared[i].clone(), stop.clone());
+        let task = subscriber::run(c, window, shared[i].clone(), wake.clone(), stop.clone());
         sub_tasks.spawn(async move { (i, task.await) });
     }
     let sent_total: Vec<Arc<AtomicU64>> = (0..args.publishers)
@@ -196,6 +215,12 @@ pub async fn relay(args: &Args) -> anyhow::Result<Summary> {
             size: args.size,
             rate: args.rate,
             window,
+            flow: Flow {
+                index: i,
+                subscribers: shared.clone(),
+                wake: wake.clone(),
+                in_flight: in_flight(args),
+            },
         };
         pub_tasks.spawn(publisher::run(
             c,

@@ -161,7 +161,9 @@ impl Progress {
             } else {
                 "drain"
             };
-            let p99 = self.p99_us().map_or("-".to_owned(), |v| format!("{v:.0} us"));
+            let p99 = self
+                .p99_us()
+                .map_or("-".to_owned(), |v| format!("{v:.0} us"));
             eprintln!(
                 "[{:>5.1} s {phase:<7}] sent {:>9.0}/s  delivered {:>9.0} msg/s  {:>8.1} MB/s  p99 {p99}  gaps {}",
                 (now - self.started_ns) as f64 * 1e-9,

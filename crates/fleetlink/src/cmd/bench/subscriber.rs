@@ -18,7 +18,7 @@ use fleetlink_relay::unix_nanos;
 use futures_util::stream::SplitSink;
 use futures_util::{SinkExt, StreamExt};
 use hdrhistogram::Histogram;
-use tokio::sync::mpsc;
+use tokio::sync::{Notify, mpsc};
 use tokio_tungstenite::tungstenite::Message as WsMessage;
 use tokio_util::sync::CancellationToken;
 
@@ -54,7 +54,8 @@ pub struct Shared {
     pub gaps: AtomicU64,
     /// Latency of messages stamped inside the window.
     pub latency: Mutex<Histogram<u64>>,
-    /// Per publisher: highest sequence number received plus one (0: none yet).
+    /// Per publisher: highest sequence number received plus one (0: none yet). Updated
+    /// once per WebSocket message; publishers read it for flow control.
     pub seen: Box<[AtomicU64]>,
 }
 
@@ -86,6 +87,7 @@ pub async fn run(
     conn: Conn,
     window: Window,
     shared: Arc<Shared>,
+    wake: Arc<[Notify]>,
     stop: CancellationToken,
 ) -> Vec<u64> {
     let Conn {
@@ -98,6 +100,8 @@ pub async fn run(
     let writer = tokio::spawn(write_replies(sink, reply_rx, keepalive));
     let mut topics: HashMap<u32, usize> = HashMap::new();
     let mut rx = vec![TopicRx::default(); shared.seen.len()];
+    // Publishers with messages in the current WebSocket message.
+    let mut touched: Vec<usize> = Vec::new();
     loop {
         let m = tokio::select! {
             biased;
@@ -133,6 +137,9 @@ pub async fn run(
                         continue;
                     };
                     let t = &mut rx[p];
+                    if touched.last() != Some(&p) && !touched.contains(&p) {
+                        touched.push(p);
+                    }
                     n += 1;
                     bytes += payload.bytes.len() as u64;
                     match t.last_seq {
@@ -143,7 +150,6 @@ pub async fn run(
                         }
                         None => t.last_seq = Some(seq),
                     }
-                    shared.seen[p].fetch_max(seq + 1, Relaxed);
                     if window.contains(stamp_ns) {
                         t.in_window += 1;
                         latency.saturating_record(now.saturating_sub(stamp_ns));
@@ -167,6 +173,12 @@ pub async fn run(
         }
         drop(latency);
         link.unacked = 0;
+        for p in touched.drain(..) {
+            if let Some(last) = rx[p].last_seq {
+                shared.seen[p].store(last + 1, Relaxed);
+            }
+            wake[p].notify_one();
+        }
         shared.delivered.fetch_add(n, Relaxed);
         shared.bytes.fetch_add(bytes, Relaxed);
         if gaps > 0 {
