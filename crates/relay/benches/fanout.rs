@@ -26,7 +26,7 @@ use fleetlink_relay::{
 
 /// A 64-byte rosbridge-JSON `geometry_msgs/Twist`-like object.
 fn json_64() -> Bytes {
-    let body = br#"{"linear":{"x":0.5,"y":0.0,"z":0.0},"angular":{"z":0.25},"k":1}"#;
+    let body = br#"{"linear":{"x":0.5,"y":0.0,"z":0.0},"angular":{"z":0.25},"k":12}"#;
     assert_eq!(body.len(), 64);
     Bytes::from_static(body)
 }

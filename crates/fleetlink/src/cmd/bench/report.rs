@@ -103,8 +103,11 @@ pub fn summarize(
 impl Summary {
     pub fn text(&self) -> String {
         let rate = match &self.rate {
-            serde_json::Value::String(s) => s.clone(),
-            v => format!("{v} Hz"),
+            serde_json::Value::Number(n) => match n.as_f64() {
+                Some(hz) if hz.fract() == 0.0 => format!("{hz:.0} Hz"),
+                _ => format!("{n} Hz"),
+            },
+            v => v.as_str().unwrap_or("?").to_owned(),
         };
         let l = &self.latency_us;
         format!(
