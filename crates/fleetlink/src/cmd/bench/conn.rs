@@ -201,3 +201,24 @@ pub fn advertise(i: usize) -> Frame {
         flags: 0,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bench_topic_names_round_trip_and_others_are_ignored() {
+        for i in [0, 7, 99] {
+            assert_eq!(publisher_of(&topic_of(i)), Some(i));
+        }
+        assert_eq!(publisher_of("/bench_pub_x/data"), None);
+        assert_eq!(publisher_of("/robot1/scan"), None);
+        assert_eq!(publisher_of("/bench_pub_1/data/extra"), None);
+    }
+
+    #[test]
+    fn hub_url_accepts_a_bare_address() {
+        assert_eq!(hub_url("127.0.0.1:8080"), "ws://127.0.0.1:8080");
+        assert_eq!(hub_url("wss://hub.example/"), "wss://hub.example/");
+    }
+}

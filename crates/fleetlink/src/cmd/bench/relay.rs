@@ -305,3 +305,31 @@ async fn drain(sent: &[Sent], shared: &[Arc<Shared>], limit: Duration) -> bool {
         tokio::time::sleep(Duration::from_millis(10)).await;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rate_parses_max_and_positive_numbers_only() {
+        assert_eq!("max".parse::<Rate>(), Ok(Rate::Max));
+        assert_eq!("MAX".parse::<Rate>(), Ok(Rate::Max));
+        assert_eq!("10000".parse::<Rate>(), Ok(Rate::Hz(10000.0)));
+        assert_eq!("0.5".parse::<Rate>(), Ok(Rate::Hz(0.5)));
+        for bad in ["0", "-1", "inf", "NaN", "fast", ""] {
+            assert!(bad.parse::<Rate>().is_err(), "{bad:?} accepted");
+        }
+    }
+
+    #[test]
+    fn window_is_half_open() {
+        let w = Window {
+            start_ns: 10,
+            end_ns: 20,
+        };
+        assert!(!w.contains(9));
+        assert!(w.contains(10));
+        assert!(w.contains(19));
+        assert!(!w.contains(20));
+    }
+}

@@ -209,3 +209,50 @@ struct Totals {
     bytes: u64,
     gaps: u64,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args() -> Args {
+        Args {
+            hub: "127.0.0.1:1".into(),
+            publishers: 2,
+            subscribers: 2,
+            size: 100,
+            rate: Rate::Max,
+            duration: 2.0,
+            warmup: 1.0,
+            drain: 1.0,
+            queue_length: 1024,
+            window: None,
+            json: true,
+            threads: None,
+        }
+    }
+
+    #[test]
+    fn drops_are_window_messages_a_subscriber_missed() {
+        let sent = [
+            Sent {
+                messages: 10,
+                first_seq: 5,
+                last_seq: 14,
+            },
+            Sent::default(),
+        ];
+        // Subscriber 0 got all 10, subscriber 1 missed 3; nothing from the idle publisher.
+        let received = [vec![10, 0], vec![7, 0]];
+        let shared: Vec<Arc<Shared>> = (0..2).map(|_| Arc::new(Shared::new(2))).collect();
+        shared[0].latency().record(1_500).expect("in range");
+        let s = summarize(&args(), &sent, &received, &shared);
+        assert_eq!(s.sent, 10);
+        assert_eq!(s.delivered, 17);
+        assert_eq!(s.drops, 3);
+        assert_eq!(s.delivered_per_s, 9.0); // 17 / 2 s, rounded
+        assert_eq!(s.latency_us.p50, 1.5);
+        let json = serde_json::to_value(&s).expect("serializes");
+        assert_eq!(json["rate"], "max");
+        assert!(json["latency_us"]["p999"].is_number());
+    }
+}
