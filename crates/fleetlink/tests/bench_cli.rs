@@ -1,0 +1,135 @@
+//! `fleetlink bench relay` against an in-process hub: the binary runs as a user would run
+//! it and its `--json` summary is checked for what the bench promises (every message
+//! stamped in the window reaches every subscriber, nothing is lost at a modest rate,
+//! latency percentiles are filled in). No assertion depends on how fast the machine is.
+//!
+//! Its own test binary with its own small hub starter, so it only needs the hub crate.
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+use std::time::Duration;
+
+use fleetlink_hub::{Hub, HubConfig};
+use fleetlink_relay::GenericTranscoder;
+use serde_json::Value;
+use tokio_util::sync::CancellationToken;
+
+/// Upper bound for anything a test waits for.
+const WAIT: Duration = Duration::from_secs(60);
+
+struct TestHub {
+    addr: SocketAddr,
+    stop: CancellationToken,
+    task: tokio::task::JoinHandle<()>,
+    data_dir: std::path::PathBuf,
+}
+
+async fn start_hub() -> TestHub {
+    let data_dir = std::env::temp_dir().join(format!(
+        "fleetlink-bench-cli-{}-{}",
+        std::process::id(),
+        fleetlink_relay::unix_nanos()
+    ));
+    std::fs::create_dir_all(&data_dir).expect("temp dir");
+    let cfg = HubConfig {
+        listen: "127.0.0.1:0".parse().expect("address"),
+        data_dir: data_dir.clone(),
+        ..HubConfig::default()
+    };
+    let hub = Hub::bind(cfg, Arc::new(GenericTranscoder))
+        .await
+        .expect("hub binds");
+    let addr = hub.local_addr();
+    let stop = CancellationToken::new();
+    let s = stop.clone();
+    let task = tokio::spawn(async move {
+        hub.run(async move { s.cancelled().await })
+            .await
+            .expect("hub runs");
+    });
+    TestHub {
+        addr,
+        stop,
+        task,
+        data_dir,
+    }
+}
+
+impl TestHub {
+    async fn shutdown(self) {
+        self.stop.cancel();
+        let _ = tokio::time::timeout(WAIT, self.task).await;
+        let _ = std::fs::remove_dir_all(&self.data_dir);
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bench_relay_json_summary_counts_every_delivery() {
+    let hub = start_hub().await;
+    let url = format!("ws://{}", hub.addr);
+    let out = tokio::time::timeout(
+        WAIT,
+        tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
+            .args(["bench", "relay", "--hub", &url])
+            .args(["--publishers", "1", "--subscribers", "2", "--size", "64"])
+            .args(["--rate", "1000", "--duration", "1", "--warmup", "0.2"])
+            // A queue that holds the whole run: a stalled test machine may delay messages
+            // but must not make the hub drop them.
+            .args(["--queue-length", "100000", "--json"])
+            .kill_on_drop(true)
+            .output(),
+    )
+    .await
+    .expect("fleetlink bench relay finishes")
+    .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "bench failed: {stderr}");
+    let stdout = String::from_utf8(out.stdout).expect("UTF-8 output");
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines.len(), 1, "one JSON object on stdout, got {stdout:?}");
+    let s: Value = serde_json::from_str(lines[0]).expect("valid JSON");
+
+    assert_eq!(s["publishers"], 1);
+    assert_eq!(s["subscribers"], 2);
+    assert_eq!(s["size"], 64);
+    assert_eq!(s["rate"], 1000.0);
+    assert_eq!(s["duration_s"], 1.0);
+    let sent = s["sent"].as_u64().expect("sent");
+    let delivered = s["delivered"].as_u64().expect("delivered");
+    assert!(sent > 0, "something was sent in the window: {s}");
+    assert_eq!(
+        delivered,
+        2 * sent,
+        "each subscriber got every message: {s}"
+    );
+    assert_eq!(s["drops"], 0, "{s}");
+    assert!(s["delivered_per_s"].as_f64().expect("delivered_per_s") > 0.0);
+    assert!(s["mb_per_s"].as_f64().expect("mb_per_s") > 0.0);
+    let lat = &s["latency_us"];
+    let q = |k: &str| {
+        lat[k]
+            .as_f64()
+            .unwrap_or_else(|| panic!("latency_us.{k}: {s}"))
+    };
+    assert!(q("p50") > 0.0, "{s}");
+    assert!(q("p50") <= q("p99") && q("p99") <= q("p999") && q("p999") <= q("max"));
+
+    hub.shutdown().await;
+}
+
+#[tokio::test]
+async fn bench_relay_reports_an_unreachable_hub() {
+    // A port that was just free: bind on port 0, note the address, close it.
+    let addr = std::net::TcpListener::bind("127.0.0.1:0")
+        .and_then(|l| l.local_addr())
+        .expect("bind port 0");
+    let url = format!("ws://{addr}");
+    let out = tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
+        .args(["bench", "relay", "--hub", &url, "--duration", "1"])
+        .output()
+        .await
+        .expect("the binary runs");
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("cannot connect"), "{stderr}");
+}
