@@ -293,7 +293,11 @@ impl<T: WireLen> Scheduler<T> {
         let mut best_g = usize::MAX;
         for (g, (p, head)) in self.group_priority.iter().zip(&self.group_head).enumerate() {
             // A head in the future (clock skew between callers) counts as no wait.
-            let score = if *head == f64::INFINITY { f64::NEG_INFINITY } else { p * (now_f - head).max(0.0) };
+            let score = if *head == f64::INFINITY {
+                f64::NEG_INFINITY
+            } else {
+                p * (now_f - head).max(0.0)
+            };
             if score > best {
                 best = score;
                 best_g = g;

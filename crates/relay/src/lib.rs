@@ -39,6 +39,17 @@ pub use queue::{DropReason, OutboundQueue, QosQueue};
 pub use router::{ClientInfo, ClientKind, Router, Topic};
 pub use transcode::{GenericTranscoder, TranscodeError, Transcoder};
 
+/// The Unix time of an `Instant`, from one reading of both clocks taken at first use:
+/// cheaper than reading the system clock for every message, and monotonic.
+pub fn instant_to_unix_nanos(at: std::time::Instant) -> u64 {
+    static BASE: std::sync::OnceLock<(std::time::Instant, u64)> = std::sync::OnceLock::new();
+    let (i0, u0) = *BASE.get_or_init(|| (std::time::Instant::now(), unix_nanos()));
+    match at.checked_duration_since(i0) {
+        Some(d) => u0 + d.as_nanos() as u64,
+        None => u0.saturating_sub(i0.duration_since(at).as_nanos() as u64),
+    }
+}
+
 /// Nanoseconds since the Unix epoch, the unit of message stamps.
 pub fn unix_nanos() -> u64 {
     std::time::SystemTime::now()

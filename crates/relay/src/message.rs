@@ -138,7 +138,7 @@ impl Message {
                 if p.len() <= DEFAULT_CHUNK_SIZE {
                     let mut b = BytesMut::with_capacity(p.len() + 24);
                     frame::encode_message(&mut b, alias, self.seq, self.stamp_ns, p);
-                    Arc::from(vec![b.freeze()])
+                    Arc::from([b.freeze()])
                 } else {
                     let total = p.len() as u64;
                     p.chunks(DEFAULT_CHUNK_SIZE)

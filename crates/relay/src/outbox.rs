@@ -27,6 +27,9 @@ use crate::stats::TopicStats;
 /// configuration, or defaults by type).
 pub type QosFor = Arc<dyn Fn(&TopicMeta) -> TopicQos + Send + Sync>;
 
+/// Internal ids (never chosen by a peer) need no DoS-resistant hashing.
+type IdHash = rustc_hash::FxBuildHasher;
+
 /// A slot's key; never reused within one outbox, so a stale reference cannot reach a new
 /// subscription.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
@@ -59,13 +62,13 @@ enum Service {
         sched: Box<Scheduler<Arc<Message>>>,
         origin: Instant,
         qos_for: QosFor,
-        by_topic: HashMap<u32, SlotId>,
+        by_topic: HashMap<u32, SlotId, IdHash>,
         known: HashSet<u32>,
     },
 }
 
 struct State {
-    slots: HashMap<SlotId, Slot>,
+    slots: HashMap<SlotId, Slot, IdHash>,
     service: Service,
     next_slot: u64,
     queued: usize,
@@ -108,7 +111,7 @@ impl Outbox {
                 sched: Box::new(Scheduler::new(config)),
                 origin: Instant::now(),
                 qos_for,
-                by_topic: HashMap::new(),
+                by_topic: HashMap::default(),
                 known: HashSet::new(),
             },
         )
@@ -118,7 +121,7 @@ impl Outbox {
         Arc::new(Outbox {
             client,
             state: Mutex::new(State {
-                slots: HashMap::new(),
+                slots: HashMap::default(),
                 service,
                 next_slot: 0,
                 queued: 0,
@@ -211,7 +214,6 @@ impl Outbox {
         let Some(s) = st.slots.get_mut(&slot) else {
             return;
         };
-        s.stats.deliveries.fetch_add(1, Relaxed);
         let (dropped, wake) = match &mut st.service {
             Service::RoundRobin { ready } => {
                 let q = s.queue.as_mut().expect("round-robin slots own a queue");
@@ -288,7 +290,7 @@ impl Outbox {
     pub fn take(&self, max_items: usize, max_bytes: usize, now: Instant) -> Batch {
         let mut st = self.lock();
         let st = &mut *st;
-        let mut items = Vec::new();
+        let mut items = Vec::with_capacity(max_items.min(st.queued));
         let mut bytes = 0usize;
         let mut wake_at: Option<Instant> = None;
         match &mut st.service {

@@ -21,7 +21,6 @@ use crate::names::{ClientId, TopicId, TopicName};
 use crate::outbox::{Delivery, Outbox, SlotId};
 use crate::stats::TopicStats;
 use crate::transcode::{GenericTranscoder, Transcoder};
-use crate::unix_nanos;
 
 /// Largest compiled regex accepted for a pattern subscription, in bytes of program.
 const REGEX_SIZE_LIMIT: usize = 256 * 1024;
@@ -152,12 +151,17 @@ impl Topic {
         let now = msg.received;
         self.last_encoding
             .store(msg.payload.encoding as u8, Relaxed);
-        self.stats.record_publish(msg.payload.len(), unix_nanos());
+        self.stats
+            .record_publish(msg.payload.len(), crate::instant_to_unix_nanos(now));
+        let mut pushed = 0u64;
         for s in self.subscribers.load().iter() {
             if s.client != msg.origin {
                 s.outbox.push(s.slot, msg.clone(), now);
+                pushed += 1;
             }
         }
+        // One shared counter update per message, not one per subscriber.
+        self.stats.deliveries.fetch_add(pushed, Relaxed);
         if self.latch.load(Relaxed) {
             *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
         }

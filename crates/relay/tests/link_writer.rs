@@ -1,0 +1,141 @@
+//! The link writer over an in-memory sink: a small message on another topic overtakes a
+//! large message whose chunks are already being sent, and pieces of one message keep
+//! their order. The sink is a one-slot channel, so the test decides exactly when the
+//! writer may send its next WebSocket message.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use bytes::Bytes;
+use fleetlink_proto::frame::{self, Frame};
+use fleetlink_proto::{Payload, Schema};
+use fleetlink_relay::link::{Control, write_link};
+use fleetlink_relay::router::{SubOptions, Target};
+use fleetlink_relay::{ClientKind, Router, TopicName};
+use futures_util::{SinkExt, StreamExt};
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+
+/// Every frame in the next WebSocket message the writer sends.
+async fn next_frames(rx: &mut futures_channel::mpsc::Receiver<WsMessage>) -> Vec<Frame> {
+    let m = tokio::time::timeout(Duration::from_secs(10), rx.next())
+        .await
+        .expect("writer sends")
+        .expect("open");
+    let WsMessage::Binary(b) = m else {
+        panic!("binary frames only, got {m:?}")
+    };
+    frame::frames(&b)
+        .collect::<Result<_, _>>()
+        .expect("valid frames")
+}
+
+#[tokio::test]
+async fn small_message_overtakes_a_large_one_mid_transfer() {
+    let router = Arc::new(Router::default());
+    let (link, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "link".into(),
+        },
+        None,
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let big = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/cloud").unwrap(),
+            Schema::named("t/Blob"),
+            false,
+        )
+        .unwrap();
+    let small = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/pose").unwrap(),
+            Schema::named("t/Pose"),
+            false,
+        )
+        .unwrap();
+
+    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(0);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+    ));
+
+    // 2 MiB: 32 chunks of 64 KiB.
+    let payload = Bytes::from(vec![7u8; 2 << 20]);
+    big.publish(publisher, 1, 0, Payload::json(payload.clone()));
+
+    // The writer announces the topic and sends the first chunk, then waits on the sink.
+    let mut first = next_frames(&mut rx).await;
+    first.extend(next_frames(&mut rx).await);
+    let chunks_before = first
+        .iter()
+        .filter(|f| matches!(f, Frame::Chunk { .. }))
+        .count();
+    assert!(
+        chunks_before >= 1 && chunks_before < 32,
+        "{chunks_before} chunks before the pose was published"
+    );
+
+    small.publish(publisher, 1, 0, Payload::json(&b"{\"x\":1}"[..]));
+
+    // Read until the pose shows up; count the cloud's chunks on the way.
+    let mut chunks = chunks_before;
+    let mut offsets = Vec::new();
+    loop {
+        let frames = next_frames(&mut rx).await;
+        let mut pose_seen = false;
+        for f in frames {
+            match f {
+                Frame::Chunk { offset, .. } => {
+                    chunks += 1;
+                    offsets.push(offset);
+                }
+                Frame::Message { payload, .. } => {
+                    assert_eq!(&payload[..], b"{\"x\":1}");
+                    pose_seen = true;
+                }
+                _ => {}
+            }
+        }
+        if pose_seen {
+            break;
+        }
+    }
+    assert!(
+        chunks < 32,
+        "the pose waited for the whole cloud ({chunks} chunks sent first)"
+    );
+    // The rest of the cloud follows, in order.
+    while chunks < 32 {
+        for f in next_frames(&mut rx).await {
+            if let Frame::Chunk {
+                offset, total_len, ..
+            } = f
+            {
+                assert_eq!(total_len, payload.len() as u64);
+                offsets.push(offset);
+                chunks += 1;
+            }
+        }
+    }
+    assert!(
+        offsets.windows(2).all(|w| w[0] < w[1]),
+        "chunks out of order: {offsets:?}"
+    );
+    writer.abort();
+}
