@@ -350,7 +350,7 @@ mod tests {
 
     #[test]
     fn yaml_field_names_and_policy_names_deserialize() {
-        let q: TopicQos = serde_yaml_ng::from_str(
+        let q: TopicQos = serde_saphyr::from_str(
             "priority: 2.5\nrate_limit_hz: 10\npolicy: afr\nqueue: 8\nno_drop: false\n",
         )
         .unwrap();
@@ -364,32 +364,32 @@ mod tests {
             "random",
             "afr",
         ] {
-            let p: Policy = serde_yaml_ng::from_str(name).unwrap();
+            let p: Policy = serde_saphyr::from_str(name).unwrap();
             assert_eq!(p.as_str(), name);
         }
-        assert!(serde_yaml_ng::from_str::<TopicQos>("priorty: 1").is_err());
+        assert!(serde_saphyr::from_str::<TopicQos>("priorty: 1").is_err());
     }
 
     #[test]
     fn spec_fills_missing_fields_from_the_type_defaults() {
         let base = TopicQos::default_for_type("geometry_msgs/Twist");
-        let spec: TopicQosSpec = serde_yaml_ng::from_str("priority: 20").unwrap();
+        let spec: TopicQosSpec = serde_saphyr::from_str("priority: 20").unwrap();
         let q = spec.resolve(&base).unwrap();
         assert_eq!((q.priority, q.policy, q.queue), (20.0, Policy::Latest, 1));
 
-        let spec: TopicQosSpec = serde_yaml_ng::from_str("policy: afr").unwrap();
+        let spec: TopicQosSpec = serde_saphyr::from_str("policy: afr").unwrap();
         assert_eq!(spec.resolve(&base).unwrap().queue, DEFAULT_QUEUE);
 
-        let spec: TopicQosSpec = serde_yaml_ng::from_str("no_drop: true").unwrap();
+        let spec: TopicQosSpec = serde_saphyr::from_str("no_drop: true").unwrap();
         let q = spec.resolve(&base).unwrap();
         assert_eq!((q.policy, q.no_drop), (Policy::Fifo, true));
 
         let map = TopicQos::default_for_type("nav_msgs/OccupancyGrid");
-        let spec: TopicQosSpec = serde_yaml_ng::from_str("policy: latest").unwrap();
+        let spec: TopicQosSpec = serde_saphyr::from_str("policy: latest").unwrap();
         let q = spec.resolve(&map).unwrap();
         assert_eq!((q.no_drop, q.queue), (false, 1));
 
-        let spec: TopicQosSpec = serde_yaml_ng::from_str("priority: -3").unwrap();
+        let spec: TopicQosSpec = serde_saphyr::from_str("priority: -3").unwrap();
         assert_eq!(spec.resolve(&base).unwrap_err().field(), Some("priority"));
     }
 }
