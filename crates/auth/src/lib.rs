@@ -18,6 +18,8 @@
 //! - [`ratelimit`]: sans-IO login throttling per user name and per client address.
 //! - [`jwt`]: OIDC/JWT bearer validation against a cached JWKS.
 //! - [`audit`]: audit records, the non-blocking batching writer and queries.
+//! - [`security`]: [`Security`], the facade that keeps store, rules and audit in step for
+//!   every administrative change.
 //! - [`tls`]: rustls server config with file reload, client config, client-cert names.
 
 pub mod acl;
@@ -26,6 +28,7 @@ pub mod authn;
 pub mod identity;
 pub mod jwt;
 pub mod ratelimit;
+pub mod security;
 pub mod store;
 pub mod tls;
 pub mod token;
@@ -35,6 +38,7 @@ pub use authn::{AuthError, AuthPolicy, Authenticator, Credential};
 pub use identity::{
     ConnInfo, GroupName, Identity, IdentityKind, RobotName, TrustedProxies, UserName,
 };
+pub use security::{AdminError, Security};
 pub use store::{Store, StoreError};
 pub use token::{Token, TokenKind};
 

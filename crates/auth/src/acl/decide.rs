@@ -47,6 +47,16 @@ impl Default for AclDefaults {
     }
 }
 
+impl AclDefaults {
+    /// `fleetlink demo`: the defaults plus read access for anonymous (loopback) clients.
+    pub fn demo() -> AclDefaults {
+        AclDefaults {
+            anonymous_read: true,
+            ..AclDefaults::default()
+        }
+    }
+}
+
 /// Why a decision came out the way it did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Reason {

@@ -98,6 +98,16 @@ impl Default for AuthPolicy {
     }
 }
 
+impl AuthPolicy {
+    /// `fleetlink demo`: anonymous read-only access for loopback clients.
+    pub fn demo() -> AuthPolicy {
+        AuthPolicy {
+            allow_anonymous_read: true,
+            ..AuthPolicy::default()
+        }
+    }
+}
+
 /// Why authentication failed. Match on it for the audit log; send
 /// [`AuthError::public_message`] to the client.
 #[derive(Debug, thiserror::Error)]
