@@ -181,9 +181,10 @@ mod tests {
 
     #[test]
     fn table_stays_bounded() {
-        let mut cfg = RateLimitConfig::default();
-        cfg.capacity = 100;
-        let mut l = LoginLimiter::new(cfg);
+        let mut l = LoginLimiter::new(RateLimitConfig {
+            capacity: 100,
+            ..RateLimitConfig::default()
+        });
         for i in 0..10_000u32 {
             let addr = IpAddr::from(i.to_be_bytes());
             l.record_failure(&format!("u{i}"), addr, UnixTime(i64::from(i)));

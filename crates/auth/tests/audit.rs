@@ -143,3 +143,14 @@ fn authentication_failures_are_audited_with_client_address() {
             .all(|r| !r.record.allowed && r.record.detail.is_some())
     );
 }
+
+#[test]
+fn prune_audit_drops_only_older_records() {
+    let store = Store::open_in_memory().unwrap();
+    let log = AuditLog::start(store.clone(), 1024).unwrap();
+    fill(&log);
+    assert_eq!(store.prune_audit(T0.plus_secs(10)).unwrap(), 10);
+    let rest = store.query_audit(&AuditQuery::default()).unwrap().records;
+    assert_eq!(rest.len(), 20);
+    assert!(rest.iter().all(|r| r.record.at >= T0.plus_secs(10)));
+}

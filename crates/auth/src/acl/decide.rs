@@ -148,12 +148,11 @@ impl Authorizer {
     /// An uncached decision, for one-off checks (REST handlers, `explain`).
     pub fn decide(&self, identity: &Identity, name: &str, op: Operation) -> Decision {
         let set = self.rules.load();
-        let applicable: Vec<&StoredRule> = set
+        let applicable = set
             .rules
             .iter()
-            .filter(|r| r.rule.subject.matches(identity))
-            .collect();
-        evaluate(&self.defaults, identity, applicable.into_iter(), name, op)
+            .filter(|r| r.rule.subject.matches(identity));
+        evaluate(&self.defaults, identity, applicable, name, op)
     }
 
     /// A per-connection decision cache for `identity`.

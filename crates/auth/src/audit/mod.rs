@@ -241,3 +241,48 @@ fn writer(store: Store, rx: Receiver<Msg>, counters: Arc<Counters>) {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(i: i64) -> AuditRecord {
+        AuditRecord {
+            at: UnixTime(i),
+            principal: "robot:r1".to_owned(),
+            client_ip: IpAddr::from([192, 0, 2, 1]),
+            action: AuditAction::Publish,
+            name: "/r1/cmd_vel".to_owned(),
+            size: Some(64),
+            allowed: true,
+            detail: None,
+        }
+    }
+
+    #[test]
+    fn full_channel_drops_and_counts_instead_of_blocking() {
+        let store = Store::open_in_memory().unwrap();
+        let log = AuditLog::start(store.clone(), 1).unwrap();
+        let accepted = {
+            let _stalled = store.lock_for_test();
+            // The writer can hold at most one record while stalled, the channel one more.
+            (0..10).filter(|i| log.record(record(*i))).count() as u64
+        };
+        assert!(accepted <= 2, "accepted {accepted}");
+        assert_eq!(log.overflowed(), 10 - accepted);
+        log.flush();
+        assert_eq!(log.written(), accepted);
+    }
+
+    #[test]
+    fn writer_batches_everything_queued() {
+        let store = Store::open_in_memory().unwrap();
+        let log = AuditLog::start(store.clone(), 4096).unwrap();
+        for i in 0..2000 {
+            assert!(log.record(record(i)));
+        }
+        log.flush();
+        assert_eq!(log.written(), 2000);
+        assert_eq!(log.failed(), 0);
+    }
+}

@@ -85,6 +85,11 @@ impl Store {
         })
     }
 
+    /// Deletes records older than `before` (retention); returns how many.
+    pub fn prune_audit(&self, before: UnixTime) -> Result<usize, StoreError> {
+        self.with(|c| Ok(c.execute("DELETE FROM audit_log WHERE at < ?1", [before.0])?))
+    }
+
     /// Audit records matching `q`, newest first.
     pub fn query_audit(&self, q: &AuditQuery) -> Result<AuditPage, StoreError> {
         let limit = match q.limit {

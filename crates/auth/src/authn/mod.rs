@@ -47,6 +47,17 @@ pub enum Credential {
     None,
 }
 
+impl Credential {
+    /// The credential in an HTTP `Authorization` header value: `Bearer <token>` (scheme
+    /// case-insensitive). `None` for other schemes or an empty token.
+    pub fn from_authorization_header(value: &str) -> Option<Credential> {
+        let (scheme, token) = value.trim().split_once(' ')?;
+        let token = token.trim();
+        (scheme.eq_ignore_ascii_case("bearer") && !token.is_empty())
+            .then(|| Credential::Bearer(token.to_owned()))
+    }
+}
+
 impl std::fmt::Debug for Credential {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
@@ -432,5 +443,23 @@ impl Authenticator {
             return Err(AuthError::UnknownToken);
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn authorization_header_accepts_bearer_only() {
+        assert_eq!(
+            Credential::from_authorization_header("bearer flk_robot_x"),
+            Some(Credential::Bearer("flk_robot_x".to_owned()))
+        );
+        assert_eq!(
+            Credential::from_authorization_header("Basic dXNlcjpwdw=="),
+            None
+        );
+        assert_eq!(Credential::from_authorization_header("Bearer   "), None);
     }
 }

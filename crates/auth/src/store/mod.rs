@@ -125,6 +125,12 @@ impl Store {
         let mut conn = self.conn.lock().unwrap_or_else(|p| p.into_inner());
         f(&mut conn)
     }
+
+    /// Holds the connection, stalling every writer: lets tests fill the audit channel.
+    #[cfg(test)]
+    pub(crate) fn lock_for_test(&self) -> std::sync::MutexGuard<'_, Connection> {
+        self.conn.lock().unwrap_or_else(|p| p.into_inner())
+    }
 }
 
 fn corrupt(what: &'static str) -> impl FnOnce(serde_json::Error) -> StoreError {
