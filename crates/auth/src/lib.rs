@@ -34,11 +34,12 @@ pub mod tls;
 pub mod token;
 
 pub use acl::{Access, AclDefaults, Authorizer, Decision, Operation, Rule, RuleId, Subject};
-pub use authn::{AuthError, AuthPolicy, Authenticator, Credential};
+pub use audit::{AuditLog, AuditRecord};
+pub use authn::{AuthError, AuthPolicy, Authenticator, Credential, Session};
 pub use identity::{
     ConnInfo, GroupName, Identity, IdentityKind, RobotName, TrustedProxies, UserName,
 };
-pub use security::{AdminError, Security};
+pub use security::{Security, SecurityError};
 pub use store::{Store, StoreError};
 pub use token::{Token, TokenKind};
 

@@ -17,9 +17,11 @@ use crate::identity::{ConnInfo, GroupName, Identity, RobotName, UserName};
 use crate::store::{Store, StoreError, TokenId};
 use crate::token::Token;
 
-/// A failed administrative change.
+/// Start-up or an administrative change failed.
 #[derive(Debug, thiserror::Error)]
-pub enum AdminError {
+pub enum SecurityError {
+    #[error("cannot start the audit writer thread: {0}")]
+    AuditWriter(std::io::Error),
     #[error(transparent)]
     Store(#[from] StoreError),
     #[error(transparent)]
@@ -45,14 +47,11 @@ impl Security {
         store: Store,
         policy: AuthPolicy,
         defaults: AclDefaults,
-    ) -> Result<Security, StoreError> {
+    ) -> Result<Security, SecurityError> {
         let revision = store.rules_revision()?;
         let authz = Arc::new(Authorizer::new(store.list_rules()?, defaults));
         let audit =
-            AuditLog::start(store.clone(), AUDIT_CAPACITY).map_err(|e| StoreError::Corrupt {
-                what: "audit writer thread",
-                reason: e.to_string(),
-            })?;
+            AuditLog::start(store.clone(), AUDIT_CAPACITY).map_err(SecurityError::AuditWriter)?;
         Ok(Security {
             authn: Arc::new(Authenticator::new(store.clone(), policy)),
             store,
@@ -174,7 +173,7 @@ impl Security {
         actor: &Identity,
         rule: Rule,
         now: UnixTime,
-    ) -> Result<RuleId, AdminError> {
+    ) -> Result<RuleId, SecurityError> {
         let id = self.store.add_rule(&rule, now)?;
         self.reload()?;
         let detail = serde_json::to_string(&rule).unwrap_or_default();
@@ -193,7 +192,7 @@ impl Security {
         actor: &Identity,
         id: RuleId,
         now: UnixTime,
-    ) -> Result<bool, AdminError> {
+    ) -> Result<bool, SecurityError> {
         let removed = self.store.remove_rule(id)?;
         if removed {
             self.reload()?;
@@ -214,7 +213,7 @@ impl Security {
         actor: &Identity,
         yaml: &str,
         now: UnixTime,
-    ) -> Result<usize, AdminError> {
+    ) -> Result<usize, SecurityError> {
         let rules = import_yaml(yaml)?;
         self.replace_rules(actor, rules, now)
     }
@@ -224,7 +223,7 @@ impl Security {
         actor: &Identity,
         rules: Vec<Rule>,
         now: UnixTime,
-    ) -> Result<usize, AdminError> {
+    ) -> Result<usize, SecurityError> {
         let stored = self.store.replace_rules(&rules, now)?;
         self.reload()?;
         self.audit_change(
@@ -243,7 +242,7 @@ impl Security {
         robot: &RobotName,
         expires_at: Option<UnixTime>,
         now: UnixTime,
-    ) -> Result<Token, AdminError> {
+    ) -> Result<Token, SecurityError> {
         let token = self.store.add_robot_token(robot, expires_at, now)?;
         self.audit_change(
             actor,
@@ -262,7 +261,7 @@ impl Security {
         groups: &[GroupName],
         expires_at: Option<UnixTime>,
         now: UnixTime,
-    ) -> Result<Token, AdminError> {
+    ) -> Result<Token, SecurityError> {
         let token = self
             .store
             .mint_operator_token(user, groups, expires_at, now)?;
@@ -281,7 +280,7 @@ impl Security {
         actor: &Identity,
         id: TokenId,
         now: UnixTime,
-    ) -> Result<bool, AdminError> {
+    ) -> Result<bool, SecurityError> {
         let revoked = self.store.revoke_token(id, now)?;
         if revoked {
             self.audit_change(
@@ -302,7 +301,7 @@ impl Security {
         password: &str,
         groups: &[GroupName],
         now: UnixTime,
-    ) -> Result<(), AdminError> {
+    ) -> Result<(), SecurityError> {
         self.store.add_user(user, password, groups, now)?;
         self.audit_change(
             actor,
@@ -319,7 +318,7 @@ impl Security {
         actor: &Identity,
         user: &UserName,
         now: UnixTime,
-    ) -> Result<bool, AdminError> {
+    ) -> Result<bool, SecurityError> {
         let removed = self.store.remove_user(user, now)?;
         if removed {
             self.audit_change(

@@ -155,5 +155,11 @@ fn robot_authenticates_by_client_certificate_name_without_token() {
     };
     let id = sec.authenticate(cred("r1"), conn.clone(), T0).unwrap();
     assert_eq!(id.robot(), Some(&robot("r1")));
-    assert!(sec.authenticate(cred("r2"), conn, T0).is_err());
+    assert!(sec.authenticate(cred("r2"), conn.clone(), T0).is_err());
+    // HELLO's empty token string means "no token", not a malformed one.
+    let empty = Credential::Agent {
+        robot: "r1".into(),
+        token: Some(String::new()),
+    };
+    assert!(sec.authenticate(empty, conn, T0).is_ok());
 }

@@ -16,7 +16,7 @@ use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
 
 use serde::{Deserialize, Serialize};
 
-pub use query::{AuditCursor, AuditPage, AuditQuery, StoredAudit};
+pub use query::{AuditCursor, AuditPage, AuditQuery, MAX_PAGE, StoredAudit};
 
 use crate::UnixTime;
 use crate::identity::Identity;

@@ -284,7 +284,8 @@ impl Authenticator {
             Credential::Agent { robot, token } => {
                 check_len("robot name", &robot, 256)?;
                 let claimed = RobotName::new(&robot)?;
-                if let Some(token) = token {
+                // HELLO carries an empty string for "no token".
+                if let Some(token) = token.filter(|t| !t.is_empty()) {
                     check_len("token", &token, MAX_TOKEN_LEN)?;
                     let record = self.token_record(&token, now)?;
                     if record.kind != TokenKind::Robot {
