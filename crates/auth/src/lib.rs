@@ -69,3 +69,20 @@ impl From<std::time::SystemTime> for UnixTime {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    fn shared<T: Send + Sync>() {}
+    fn owned<T: Send>() {}
+
+    #[test]
+    fn handles_can_cross_tasks() {
+        shared::<crate::Security>();
+        shared::<crate::Authorizer>();
+        shared::<crate::Authenticator>();
+        shared::<crate::AuditLog>();
+        shared::<crate::tls::ReloadingServerConfig>();
+        owned::<crate::Access>();
+        owned::<crate::Identity>();
+    }
+}

@@ -2,7 +2,8 @@
 //!
 //! Design choice: tokens carry 256 random bits, so storing their SHA-256 is enough (no
 //! salt or slow hash needed — there is nothing to brute-force) and lets a lookup be an
-//! indexed equality match on the hash. The plain token exists only in the value returned
+//! indexed equality match on the hash (its timing can reveal at most how much of a
+//! guessed *hash* matched, which does not help find a token that produces it). The plain token exists only in the value returned
 //! to whoever minted it. The `flk_<kind>_` prefix makes leaked tokens recognisable by
 //! secret scanners and lets the authenticator reject a robot token offered as a session.
 

@@ -100,13 +100,13 @@ fn raw_token(r: &Row<'_>) -> rusqlite::Result<RawToken> {
     ))
 }
 
-fn token_info(raw: RawToken) -> Result<TokenInfo, StoreError> {
+fn token_info(raw: RawToken) -> Result<(TokenKind, TokenInfo), StoreError> {
     let (id, kind, subject, groups, created, expires, revoked, used) = raw;
     let kind = TokenKind::parse(&kind).ok_or_else(|| StoreError::Corrupt {
         what: "token kind",
         reason: format!("unknown kind {kind:?}"),
     })?;
-    Ok(TokenInfo {
+    let info = TokenInfo {
         id: TokenId(id),
         kind: kind.as_str(),
         subject,
@@ -115,7 +115,8 @@ fn token_info(raw: RawToken) -> Result<TokenInfo, StoreError> {
         expires_at: opt_time(expires),
         revoked_at: opt_time(revoked),
         last_used_at: opt_time(used),
-    })
+    };
+    Ok((kind, info))
 }
 
 impl Store {
@@ -197,10 +198,10 @@ impl Store {
             .optional()?)
         })?;
         let Some(raw) = raw else { return Ok(None) };
-        let info = token_info(raw)?;
+        let (kind, info) = token_info(raw)?;
         Ok(Some(TokenRecord {
             id: info.id,
-            kind: TokenKind::parse(info.kind).unwrap_or(TokenKind::Session),
+            kind,
             subject: info.subject,
             groups: info.groups,
             expires_at: info.expires_at,
@@ -269,7 +270,9 @@ impl Store {
             let rows = stmt.query_map([kind.map(TokenKind::as_str)], raw_token)?;
             Ok(rows.collect::<rusqlite::Result<Vec<_>>>()?)
         })?;
-        raws.into_iter().map(token_info).collect()
+        raws.into_iter()
+            .map(|raw| token_info(raw).map(|(_, info)| info))
+            .collect()
     }
 
     /// Login sessions that are neither revoked nor expired at `now`.
