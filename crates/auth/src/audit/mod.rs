@@ -1,0 +1,288 @@
+//! The audit log: who did what to which robot, from where, when, and whether it was
+//! allowed; plus every authentication failure and every rule or credential change.
+//!
+//! Design choice: recording never blocks the caller. [`AuditLog::record`] is a `try_send`
+//! on a bounded channel to one writer thread that inserts in batches (one transaction per
+//! batch, up to [`BATCH_MAX`] records). When the channel is full the record is dropped and
+//! counted ([`AuditLog::overflowed`]) — the relay must not slow down because the disk
+//! did; the counter is exported as a metric so a gap in the log is visible.
+
+mod query;
+
+use std::net::IpAddr;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
+
+use serde::{Deserialize, Serialize};
+
+pub use query::{AuditCursor, AuditPage, AuditQuery, MAX_PAGE, StoredAudit};
+
+use crate::UnixTime;
+use crate::identity::Identity;
+use crate::store::Store;
+
+/// Records written per transaction at most.
+pub const BATCH_MAX: usize = 512;
+
+/// What was done.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AuditAction {
+    /// Publishing to a robot's input topic.
+    Publish,
+    CallService,
+    SendActionGoal,
+    CancelActionGoal,
+    AuthFailure,
+    Login,
+    Logout,
+    RuleChange,
+    CredentialChange,
+}
+
+impl AuditAction {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AuditAction::Publish => "publish",
+            AuditAction::CallService => "call_service",
+            AuditAction::SendActionGoal => "send_action_goal",
+            AuditAction::CancelActionGoal => "cancel_action_goal",
+            AuditAction::AuthFailure => "auth_failure",
+            AuditAction::Login => "login",
+            AuditAction::Logout => "logout",
+            AuditAction::RuleChange => "rule_change",
+            AuditAction::CredentialChange => "credential_change",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<AuditAction> {
+        use AuditAction::*;
+        [
+            Publish,
+            CallService,
+            SendActionGoal,
+            CancelActionGoal,
+            AuthFailure,
+            Login,
+            Logout,
+            RuleChange,
+            CredentialChange,
+        ]
+        .into_iter()
+        .find(|a| a.as_str() == s)
+    }
+}
+
+/// One audit entry.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct AuditRecord {
+    pub at: UnixTime,
+    /// `robot:r1`, `user:alice`, `anonymous`, or for failed authentications what was
+    /// claimed (`claimed-user:bob`, `claimed-robot:r9`, `unknown`).
+    pub principal: String,
+    pub client_ip: IpAddr,
+    pub action: AuditAction,
+    /// Topic/service/action name, or what was changed (`rule #4`, `token #9`).
+    pub name: String,
+    /// Payload size in bytes, where there is a payload.
+    pub size: Option<u64>,
+    pub allowed: bool,
+    /// Free text: the denial reason, the error, the rule as JSON.
+    pub detail: Option<String>,
+}
+
+impl AuditRecord {
+    /// An operation by an authenticated identity.
+    pub fn operation(
+        identity: &Identity,
+        action: AuditAction,
+        name: &str,
+        size: Option<u64>,
+        allowed: bool,
+        now: UnixTime,
+    ) -> AuditRecord {
+        AuditRecord {
+            at: now,
+            principal: identity.principal(),
+            client_ip: identity.client_ip,
+            action,
+            name: name.to_owned(),
+            size,
+            allowed,
+            detail: None,
+        }
+    }
+
+    /// A failed authentication. `claimed` is what the client said it was, if anything.
+    pub fn auth_failure(
+        client_ip: IpAddr,
+        claimed: Option<&str>,
+        error: &crate::AuthError,
+        now: UnixTime,
+    ) -> AuditRecord {
+        AuditRecord {
+            at: now,
+            principal: claimed
+                .map_or_else(|| "unknown".to_owned(), |c| c.chars().take(128).collect()),
+            client_ip,
+            action: AuditAction::AuthFailure,
+            name: String::new(),
+            size: None,
+            allowed: false,
+            detail: Some(error.to_string()),
+        }
+    }
+
+    pub fn with_detail(mut self, detail: impl Into<String>) -> AuditRecord {
+        self.detail = Some(detail.into());
+        self
+    }
+}
+
+enum Msg {
+    Record(AuditRecord),
+    Flush(SyncSender<()>),
+}
+
+#[derive(Default)]
+struct Counters {
+    overflowed: AtomicU64,
+    written: AtomicU64,
+    failed: AtomicU64,
+}
+
+/// The sending side of the audit log. Cheap to clone; the writer thread ends when the
+/// last clone is dropped, after writing what was queued.
+#[derive(Clone)]
+pub struct AuditLog {
+    // Overflow policy: a full channel drops the new record and counts it.
+    tx: SyncSender<Msg>,
+    counters: Arc<Counters>,
+}
+
+impl AuditLog {
+    /// Starts the writer thread on `store` with a channel of `capacity` records.
+    pub fn start(store: Store, capacity: usize) -> std::io::Result<AuditLog> {
+        let (tx, rx) = sync_channel(capacity.max(1));
+        let counters = Arc::new(Counters::default());
+        let c = Arc::clone(&counters);
+        std::thread::Builder::new()
+            .name("fleetlink-audit".to_owned())
+            .spawn(move || writer(store, rx, c))?;
+        Ok(AuditLog { tx, counters })
+    }
+
+    /// Queues a record without blocking; `false` if it was dropped (channel full or
+    /// writer gone).
+    pub fn record(&self, record: AuditRecord) -> bool {
+        match self.tx.try_send(Msg::Record(record)) {
+            Ok(()) => true,
+            Err(TrySendError::Full(_) | TrySendError::Disconnected(_)) => {
+                self.counters.overflowed.fetch_add(1, Ordering::Relaxed);
+                false
+            }
+        }
+    }
+
+    /// Blocks until everything queued before this call is written. For tests and
+    /// shutdown only — never on an async worker thread.
+    pub fn flush(&self) {
+        let (done_tx, done_rx) = sync_channel(1);
+        if self.tx.send(Msg::Flush(done_tx)).is_ok() {
+            let _ = done_rx.recv();
+        }
+    }
+
+    /// Records dropped because the channel was full.
+    pub fn overflowed(&self) -> u64 {
+        self.counters.overflowed.load(Ordering::Relaxed)
+    }
+
+    pub fn written(&self) -> u64 {
+        self.counters.written.load(Ordering::Relaxed)
+    }
+
+    /// Records lost to database errors (each failed batch is logged with its cause).
+    pub fn failed(&self) -> u64 {
+        self.counters.failed.load(Ordering::Relaxed)
+    }
+}
+
+fn writer(store: Store, rx: Receiver<Msg>, counters: Arc<Counters>) {
+    let mut batch = Vec::with_capacity(BATCH_MAX);
+    let mut flushes = Vec::new();
+    while let Ok(first) = rx.recv() {
+        let mut next = Some(first);
+        while let Some(msg) = next {
+            match msg {
+                Msg::Record(r) => batch.push(r),
+                Msg::Flush(done) => flushes.push(done),
+            }
+            next = if batch.len() < BATCH_MAX {
+                rx.try_recv().ok()
+            } else {
+                None
+            };
+        }
+        if !batch.is_empty() {
+            let n = batch.len() as u64;
+            match store.insert_audit_batch(&batch) {
+                Ok(()) => counters.written.fetch_add(n, Ordering::Relaxed),
+                Err(e) => {
+                    tracing::error!("audit log: cannot write {n} records: {e}");
+                    counters.failed.fetch_add(n, Ordering::Relaxed)
+                }
+            };
+            batch.clear();
+        }
+        for done in flushes.drain(..) {
+            let _ = done.send(());
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(i: i64) -> AuditRecord {
+        AuditRecord {
+            at: UnixTime(i),
+            principal: "robot:r1".to_owned(),
+            client_ip: IpAddr::from([192, 0, 2, 1]),
+            action: AuditAction::Publish,
+            name: "/r1/cmd_vel".to_owned(),
+            size: Some(64),
+            allowed: true,
+            detail: None,
+        }
+    }
+
+    #[test]
+    fn full_channel_drops_and_counts_instead_of_blocking() {
+        let store = Store::open_in_memory().unwrap();
+        let log = AuditLog::start(store.clone(), 1).unwrap();
+        let accepted = {
+            let _stalled = store.lock_for_test();
+            // The writer can hold at most one record while stalled, the channel one more.
+            (0..10).filter(|i| log.record(record(*i))).count() as u64
+        };
+        assert!(accepted <= 2, "accepted {accepted}");
+        assert_eq!(log.overflowed(), 10 - accepted);
+        log.flush();
+        assert_eq!(log.written(), accepted);
+    }
+
+    #[test]
+    fn writer_batches_everything_queued() {
+        let store = Store::open_in_memory().unwrap();
+        let log = AuditLog::start(store.clone(), 4096).unwrap();
+        for i in 0..2000 {
+            assert!(log.record(record(i)));
+        }
+        log.flush();
+        assert_eq!(log.written(), 2000);
+        assert_eq!(log.failed(), 0);
+    }
+}

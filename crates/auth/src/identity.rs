@@ -1,0 +1,331 @@
+//! Who is on the other end of a connection: names, [`Identity`] and where it came from.
+//!
+//! Design choice: names are validated newtypes. A robot name is one ROS name segment
+//! (`[A-Za-z][A-Za-z0-9_]*`), so a robot's own namespace `/<name>/` can be checked with a
+//! plain prefix test and no robot name can smuggle a `/` into another robot's namespace.
+//! The client address is resolved here, once, from the socket peer and — only when that
+//! peer is a configured trusted proxy — the `X-Forwarded-For` header.
+
+use std::fmt;
+use std::net::IpAddr;
+use std::sync::Arc;
+
+use ipnet::IpNet;
+
+/// A name that failed validation, with the reason.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("invalid {what} {name:?}: {reason}")]
+pub struct NameError {
+    pub what: &'static str,
+    pub name: String,
+    pub reason: &'static str,
+}
+
+const MAX_NAME_LEN: usize = 128;
+
+fn check_segment(what: &'static str, raw: &str) -> Result<(), NameError> {
+    let err = |reason| NameError {
+        what,
+        name: raw.chars().take(MAX_NAME_LEN).collect(),
+        reason,
+    };
+    if raw.is_empty() {
+        return Err(err("empty"));
+    }
+    if raw.len() > MAX_NAME_LEN {
+        return Err(err("longer than 128 bytes"));
+    }
+    let mut chars = raw.chars();
+    if !chars.next().is_some_and(|c| c.is_ascii_alphabetic()) {
+        return Err(err("must start with an ASCII letter"));
+    }
+    if !chars.all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(err("only ASCII letters, digits and '_' are allowed"));
+    }
+    Ok(())
+}
+
+fn check_principal(what: &'static str, raw: &str) -> Result<(), NameError> {
+    let err = |reason| NameError {
+        what,
+        name: raw.chars().take(MAX_NAME_LEN).collect(),
+        reason,
+    };
+    if raw.is_empty() {
+        return Err(err("empty"));
+    }
+    if raw.len() > 256 {
+        return Err(err("longer than 256 bytes"));
+    }
+    if raw.chars().any(|c| c.is_control() || c.is_whitespace()) {
+        return Err(err("contains whitespace or control characters"));
+    }
+    Ok(())
+}
+
+macro_rules! name_type {
+    ($(#[$doc:meta])* $ty:ident, $what:literal, $check:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub struct $ty(Arc<str>);
+
+        impl $ty {
+            pub fn new(raw: &str) -> Result<$ty, NameError> {
+                $check($what, raw)?;
+                Ok($ty(raw.into()))
+            }
+
+            pub fn as_str(&self) -> &str {
+                &self.0
+            }
+        }
+
+        impl fmt::Display for $ty {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str(&self.0)
+            }
+        }
+
+        impl fmt::Debug for $ty {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                fmt::Debug::fmt(&*self.0, f)
+            }
+        }
+
+        impl std::str::FromStr for $ty {
+            type Err = NameError;
+            fn from_str(s: &str) -> Result<$ty, NameError> {
+                $ty::new(s)
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $ty {
+            fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<$ty, D::Error> {
+                let s = <std::borrow::Cow<'de, str>>::deserialize(d)?;
+                $ty::new(&s).map_err(serde::de::Error::custom)
+            }
+        }
+
+        impl serde::Serialize for $ty {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.serialize_str(&self.0)
+            }
+        }
+    };
+}
+
+name_type!(
+    /// A robot's name, which is also its namespace: robot `r1` owns `/r1/...`.
+    RobotName,
+    "robot name",
+    check_segment
+);
+name_type!(
+    /// A user (person or tool) name: a login name or an OIDC subject/e-mail.
+    UserName,
+    "user name",
+    check_principal
+);
+name_type!(
+    /// A group of users, from the user table, an operator token or a JWT claim.
+    GroupName,
+    "group name",
+    check_principal
+);
+
+impl RobotName {
+    /// `/<robot>`: the robot's own namespace.
+    pub fn namespace(&self) -> String {
+        format!("/{}", self.0)
+    }
+
+    /// Whether `name` is the namespace itself or lies inside it (`/r1` or `/r1/...`).
+    pub fn owns(&self, name: &str) -> bool {
+        name.strip_prefix('/')
+            .and_then(|rest| rest.strip_prefix(&*self.0))
+            .is_some_and(|rest| rest.is_empty() || rest.starts_with('/'))
+    }
+}
+
+/// Where a connection comes from, as the transport saw it.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct ConnInfo {
+    /// The TCP peer address.
+    pub peer_ip: IpAddr,
+    /// The `X-Forwarded-For` header as received (untrusted until resolved).
+    pub forwarded_for: Option<String>,
+    /// The robot name from a verified TLS client certificate, if any
+    /// (see [`crate::tls::client_cert_name`]).
+    pub tls_client_name: Option<RobotName>,
+}
+
+impl ConnInfo {
+    pub fn new(peer_ip: IpAddr) -> ConnInfo {
+        ConnInfo {
+            peer_ip,
+            forwarded_for: None,
+            tls_client_name: None,
+        }
+    }
+
+    pub fn with_forwarded_for(mut self, header: impl Into<String>) -> ConnInfo {
+        self.forwarded_for = Some(header.into());
+        self
+    }
+
+    pub fn with_tls_client_name(mut self, name: RobotName) -> ConnInfo {
+        self.tls_client_name = Some(name);
+        self
+    }
+}
+
+/// Proxies whose `X-Forwarded-For` header is believed.
+///
+/// The header is a list `client, proxy1, proxy2` that every hop appends to, so anyone can
+/// put anything at its start. We walk it from the right, skipping hops that are themselves
+/// trusted proxies, and take the first untrusted address: the client as seen by our own
+/// outermost proxy. With no trusted proxies the header is ignored entirely.
+#[derive(Debug, Clone, Default)]
+pub struct TrustedProxies {
+    nets: Vec<IpNet>,
+}
+
+impl TrustedProxies {
+    pub fn new(nets: Vec<IpNet>) -> TrustedProxies {
+        TrustedProxies { nets }
+    }
+
+    pub fn none() -> TrustedProxies {
+        TrustedProxies::default()
+    }
+
+    fn trusts(&self, ip: IpAddr) -> bool {
+        self.nets.iter().any(|n| n.contains(&ip))
+    }
+
+    /// The address to attribute a request to.
+    pub fn client_ip(&self, conn: &ConnInfo) -> IpAddr {
+        if !self.trusts(conn.peer_ip) {
+            return conn.peer_ip;
+        }
+        let Some(header) = conn.forwarded_for.as_deref() else {
+            return conn.peer_ip;
+        };
+        let mut client = conn.peer_ip;
+        for hop in header.rsplit(',') {
+            match hop.trim().parse::<IpAddr>() {
+                Ok(ip) => {
+                    client = ip;
+                    if !self.trusts(ip) {
+                        break;
+                    }
+                }
+                // A garbled entry ends the trustworthy part; what we have so far stands.
+                Err(_) => break,
+            }
+        }
+        client
+    }
+}
+
+/// What kind of principal an identity is.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum IdentityKind {
+    Robot {
+        name: RobotName,
+    },
+    User {
+        name: UserName,
+        groups: Vec<GroupName>,
+    },
+    /// No credential; only possible when anonymous read access is enabled.
+    Anonymous,
+}
+
+/// An authenticated principal together with where it connected from.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Identity {
+    pub kind: IdentityKind,
+    pub source: ConnInfo,
+    /// The client address after applying [`TrustedProxies`]; ACL CIDR rules and the audit
+    /// log use this one.
+    pub client_ip: IpAddr,
+}
+
+impl Identity {
+    /// A short principal label for logs and audit: `robot:r1`, `user:alice`, `anonymous`.
+    pub fn principal(&self) -> String {
+        match &self.kind {
+            IdentityKind::Robot { name } => format!("robot:{name}"),
+            IdentityKind::User { name, .. } => format!("user:{name}"),
+            IdentityKind::Anonymous => "anonymous".to_owned(),
+        }
+    }
+
+    pub fn robot(&self) -> Option<&RobotName> {
+        match &self.kind {
+            IdentityKind::Robot { name } => Some(name),
+            _ => None,
+        }
+    }
+
+    pub fn in_group(&self, group: &GroupName) -> bool {
+        matches!(&self.kind, IdentityKind::User { groups, .. } if groups.contains(group))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn conn(peer: &str, xff: Option<&str>) -> ConnInfo {
+        let mut c = ConnInfo::new(peer.parse().unwrap());
+        c.forwarded_for = xff.map(str::to_owned);
+        c
+    }
+
+    #[test]
+    fn robot_names_are_single_ros_segments() {
+        assert!(RobotName::new("r1").is_ok());
+        assert!(RobotName::new("robot_7").is_ok());
+        for bad in ["", "1r", "r/1", "r1/../r2", "r 1", "_r", "ä"] {
+            assert!(RobotName::new(bad).is_err(), "{bad:?} accepted");
+        }
+    }
+
+    #[test]
+    fn robot_owns_only_its_namespace() {
+        let r = RobotName::new("r1").unwrap();
+        assert!(r.owns("/r1"));
+        assert!(r.owns("/r1/cmd_vel"));
+        assert!(!r.owns("/r10/cmd_vel"));
+        assert!(!r.owns("/r2/r1/x"));
+        assert!(!r.owns("r1/x"));
+    }
+
+    #[test]
+    fn forwarded_for_ignored_from_untrusted_peer() {
+        let proxies = TrustedProxies::new(vec!["10.0.0.1/32".parse().unwrap()]);
+        let c = conn("203.0.113.9", Some("127.0.0.1"));
+        assert_eq!(
+            proxies.client_ip(&c),
+            "203.0.113.9".parse::<IpAddr>().unwrap()
+        );
+    }
+
+    #[test]
+    fn forwarded_for_walks_from_the_right_through_trusted_hops() {
+        let proxies = TrustedProxies::new(vec!["10.0.0.0/24".parse().unwrap()]);
+        // The client forged "127.0.0.1" at the start; the real client is 198.51.100.7.
+        let c = conn("10.0.0.1", Some("127.0.0.1, 198.51.100.7, 10.0.0.2"));
+        assert_eq!(
+            proxies.client_ip(&c),
+            "198.51.100.7".parse::<IpAddr>().unwrap()
+        );
+        let garbled = conn("10.0.0.1", Some("nonsense"));
+        assert_eq!(
+            proxies.client_ip(&garbled),
+            "10.0.0.1".parse::<IpAddr>().unwrap()
+        );
+    }
+}

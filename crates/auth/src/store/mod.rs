@@ -1,0 +1,141 @@
+//! Durable security state in SQLite: rules, credentials, sessions and the audit log.
+//!
+//! Design choice: these tables live in the hub's own database file (all prefixed `auth_`
+//! or `audit_`, created with `IF NOT EXISTS`), behind one connection in a std `Mutex`.
+//! Every statement is short and synchronous; callers on an async runtime run store calls
+//! on the blocking pool. Rule edits bump a revision counter in the same transaction, so a
+//! hub can notice edits made by another process (`fleetlink admin` on the same file) by
+//! polling [`Store::rules_revision`].
+
+mod credentials;
+mod rules;
+
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+use rusqlite::Connection;
+
+pub use credentials::{TokenId, TokenInfo, TokenRecord, UserInfo, UserRecord};
+
+/// A storage failure, with its cause.
+#[derive(Debug, thiserror::Error)]
+pub enum StoreError {
+    #[error("cannot open database {path}: {source}")]
+    Open {
+        path: PathBuf,
+        source: rusqlite::Error,
+    },
+    #[error("database error: {0}")]
+    Sql(#[from] rusqlite::Error),
+    #[error("stored {what} is unreadable: {reason}")]
+    Corrupt { what: &'static str, reason: String },
+    #[error("cannot generate a token: {0}")]
+    Random(#[from] getrandom::Error),
+    #[error("cannot hash password: {0}")]
+    PasswordHash(String),
+    #[error("user {0} already exists")]
+    UserExists(String),
+    #[error("no such user {0}")]
+    NoSuchUser(String),
+}
+
+const SCHEMA: &str = "
+    PRAGMA journal_mode = WAL;
+    PRAGMA synchronous = NORMAL;
+    CREATE TABLE IF NOT EXISTS auth_meta (
+        key TEXT PRIMARY KEY,
+        value INTEGER NOT NULL
+    );
+    INSERT OR IGNORE INTO auth_meta (key, value) VALUES ('rules_revision', 0);
+    CREATE TABLE IF NOT EXISTS auth_rules (
+        id INTEGER PRIMARY KEY AUTOINCREMENT,
+        rule_json TEXT NOT NULL,
+        created_at INTEGER NOT NULL
+    );
+    CREATE TABLE IF NOT EXISTS auth_tokens (
+        id INTEGER PRIMARY KEY AUTOINCREMENT,
+        hash BLOB NOT NULL UNIQUE,
+        kind TEXT NOT NULL,
+        subject TEXT NOT NULL,
+        groups_json TEXT NOT NULL DEFAULT '[]',
+        created_at INTEGER NOT NULL,
+        expires_at INTEGER,
+        revoked_at INTEGER,
+        last_used_at INTEGER
+    );
+    CREATE INDEX IF NOT EXISTS auth_tokens_subject ON auth_tokens (kind, subject);
+    CREATE TABLE IF NOT EXISTS auth_users (
+        name TEXT PRIMARY KEY,
+        password_hash TEXT NOT NULL,
+        groups_json TEXT NOT NULL DEFAULT '[]',
+        created_at INTEGER NOT NULL
+    );
+    CREATE TABLE IF NOT EXISTS audit_log (
+        id INTEGER PRIMARY KEY AUTOINCREMENT,
+        at INTEGER NOT NULL,
+        principal TEXT NOT NULL,
+        client_ip TEXT NOT NULL,
+        action TEXT NOT NULL,
+        name TEXT NOT NULL,
+        size INTEGER,
+        allowed INTEGER NOT NULL,
+        detail TEXT
+    );
+    CREATE INDEX IF NOT EXISTS audit_log_at ON audit_log (at);
+    CREATE INDEX IF NOT EXISTS audit_log_principal ON audit_log (principal, id);
+";
+
+/// Handle to the security tables. Cheap to clone.
+#[derive(Clone)]
+pub struct Store {
+    // std Mutex: every use is one short synchronous statement or transaction, never held
+    // across an await; contention is low (logins, admin edits, audit batches).
+    conn: Arc<Mutex<Connection>>,
+}
+
+impl Store {
+    /// Opens (creating if needed) the tables in the database file at `path`.
+    pub fn open(path: &Path) -> Result<Store, StoreError> {
+        let open_err = |source| StoreError::Open {
+            path: path.to_owned(),
+            source,
+        };
+        let conn = Connection::open(path).map_err(open_err)?;
+        conn.execute_batch(SCHEMA).map_err(open_err)?;
+        Ok(Store::from_conn(conn))
+    }
+
+    /// A private in-memory database, for tests and `fleetlink demo`.
+    pub fn open_in_memory() -> Result<Store, StoreError> {
+        let conn = Connection::open_in_memory()?;
+        conn.execute_batch(SCHEMA)?;
+        Ok(Store::from_conn(conn))
+    }
+
+    fn from_conn(conn: Connection) -> Store {
+        Store {
+            conn: Arc::new(Mutex::new(conn)),
+        }
+    }
+
+    pub(crate) fn with<T>(
+        &self,
+        f: impl FnOnce(&mut Connection) -> Result<T, StoreError>,
+    ) -> Result<T, StoreError> {
+        let mut conn = self.conn.lock().unwrap_or_else(|p| p.into_inner());
+        f(&mut conn)
+    }
+
+    /// Holds the connection, stalling every writer: lets tests fill the audit channel.
+    #[cfg(test)]
+    pub(crate) fn lock_for_test(&self) -> std::sync::MutexGuard<'_, Connection> {
+        self.conn.lock().unwrap_or_else(|p| p.into_inner())
+    }
+}
+
+fn corrupt(what: &'static str) -> impl FnOnce(serde_json::Error) -> StoreError {
+    move |e| StoreError::Corrupt {
+        what,
+        reason: e.to_string(),
+    }
+}

@@ -1,0 +1,9 @@
+//! Integration tests of the security core, through its public API only.
+
+mod acl_matrix;
+mod admin;
+mod attacks;
+mod audit;
+mod jwt;
+mod tls;
+mod util;
