@@ -36,7 +36,10 @@ pub async fn serve(
         let (router, cfg, shutdown) = (router.clone(), cfg.clone(), shutdown.clone());
         tokio::spawn(async move {
             match tokio_tungstenite::accept_async_with_config(tcp, Some(ws_config)).await {
-                Ok(ws) => rosbridge::serve(ws, router, Some(addr), cfg, shutdown).await,
+                Ok(ws) => {
+                    let auth = fleetlink_relay::gate::SessionAuth::open();
+                    rosbridge::serve(ws, router, Some(addr), cfg, shutdown, auth).await
+                }
                 Err(e) => tracing::debug!("local client {addr}: WebSocket handshake failed: {e}"),
             }
         });

@@ -310,6 +310,7 @@ impl Uplink {
             heartbeat,
             namer,
             announce,
+            None,
         ));
         self.state.send_replace(LinkState::Connected {
             session,

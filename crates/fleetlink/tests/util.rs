@@ -32,6 +32,8 @@ pub async fn within<T>(what: &str, f: impl Future<Output = T>) -> T {
 
 pub struct TestHub {
     pub addr: SocketAddr,
+    /// A token of the `admin` group: rosbridge clients in tests connect with it.
+    pub operator_token: String,
     pub stop: CancellationToken,
     pub state: Arc<fleetlink_hub::server::HubState>,
     pub task: tokio::task::JoinHandle<()>,
@@ -68,6 +70,19 @@ pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Durati
     .expect("hub binds");
     let addr = hub.local_addr();
     let state = hub.state();
+    let now = fleetlink_auth::UnixTime::now();
+    let operator_token = state
+        .security
+        .store
+        .mint_operator_token(
+            &fleetlink_auth::UserName::new("tester").unwrap(),
+            &[fleetlink_auth::GroupName::new("admin").unwrap()],
+            None,
+            now,
+        )
+        .expect("mint operator token")
+        .expose()
+        .to_owned();
     let stop = CancellationToken::new();
     let s = stop.clone();
     let task = tokio::spawn(async move {
@@ -77,6 +92,7 @@ pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Durati
     });
     TestHub {
         addr,
+        operator_token,
         stop,
         state,
         task,
@@ -94,8 +110,40 @@ pub async fn start_hub() -> TestHub {
 }
 
 impl TestHub {
+    /// The rosbridge URL with the operator token (browsers' way of authenticating).
     pub fn ws_url(&self) -> String {
+        format!("ws://{}/?token={}", self.addr, self.operator_token)
+    }
+
+    /// The URL without credentials: agents authenticate in HELLO.
+    pub fn agent_url(&self) -> String {
         format!("ws://{}", self.addr)
+    }
+
+    /// Replaces the hub's access rules with a YAML document, as the operator.
+    pub fn set_rules(&self, yaml: &str) {
+        let now = fleetlink_auth::UnixTime::now();
+        let sec = &self.state.security;
+        let me = sec
+            .authenticate(
+                fleetlink_auth::Credential::Bearer(self.operator_token.clone()),
+                fleetlink_auth::ConnInfo::new([127, 0, 0, 1].into()),
+                now,
+            )
+            .expect("operator token is valid");
+        sec.import_rules_yaml(&me, yaml, now).expect("rules import");
+    }
+
+    /// A fresh token for robot `name`.
+    pub fn robot_token(&self, name: &str) -> String {
+        let robot = fleetlink_auth::RobotName::new(name).unwrap();
+        self.state
+            .security
+            .store
+            .add_robot_token(&robot, None, fleetlink_auth::UnixTime::now())
+            .expect("mint robot token")
+            .expose()
+            .to_owned()
     }
 
     pub async fn shutdown(self) {
@@ -113,11 +161,12 @@ pub struct TestAgent {
     pub task: tokio::task::JoinHandle<()>,
 }
 
-pub fn uplink_config(hub: &str, robot: &str) -> UplinkConfig {
+/// An uplink for robot `robot` of `hub`, with a token minted for it.
+pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
     UplinkConfig {
-        hub_url: hub.to_owned(),
+        hub_url: hub.agent_url(),
         robot: robot.to_owned(),
-        token: String::new(),
+        token: hub.robot_token(robot),
         heartbeat: Duration::from_millis(200),
         reconnect_initial: Duration::from_millis(50),
         reconnect_max: Duration::from_millis(400),
@@ -157,7 +206,7 @@ pub async fn start_agent_with(uplink: UplinkConfig, local: bool) -> TestAgent {
 }
 
 pub async fn start_agent(hub: &TestHub, robot: &str) -> TestAgent {
-    let a = start_agent_with(uplink_config(&hub.ws_url(), robot), true).await;
+    let a = start_agent_with(uplink_config(hub, robot), true).await;
     a.wait_connected().await;
     a
 }

@@ -13,6 +13,7 @@ use std::time::{Duration, SystemTime};
 
 use bytes::Bytes;
 use fleetlink_proto::frame::{Frame, Level, VERSION};
+use fleetlink_relay::gate::{Gate, Op};
 use fleetlink_relay::link::{Control, LinkEvent, LinkIn, write_link};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
@@ -73,6 +74,14 @@ impl Registry {
             .insert(robot.name.clone(), robot)
     }
 
+    /// Whether a robot of this name is connected now.
+    pub fn is_online(&self, name: &str) -> bool {
+        self.robots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .contains_key(name)
+    }
+
     fn remove_if_session(&self, name: &str, session: u64) {
         let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
         if m.get(name).is_some_and(|r| r.session == session) {
@@ -87,6 +96,7 @@ pub struct AgentContext {
     pub registry: Arc<Registry>,
     pub store: Store,
     pub shutdown: CancellationToken,
+    pub security: Arc<fleetlink_auth::Security>,
     /// Heartbeat used when the agent does not ask for one.
     pub default_heartbeat_ms: u32,
 }
@@ -100,8 +110,12 @@ pub fn valid_robot_name(name: &str) -> bool {
 }
 
 /// Runs one agent connection to the end.
-pub async fn serve_agent<S>(ws: S, ctx: Arc<AgentContext>, addr: Option<SocketAddr>)
-where
+pub async fn serve_agent<S>(
+    ws: S,
+    ctx: Arc<AgentContext>,
+    addr: Option<SocketAddr>,
+    conn: fleetlink_auth::ConnInfo,
+) where
     S: Stream<Item = Result<WsMessage, WsError>>
         + Sink<WsMessage, Error = WsError>
         + Unpin
@@ -138,8 +152,8 @@ where
         Err("connection closed before HELLO".to_owned())
     })
     .await;
-    let (robot, heartbeat_ms) = match hello {
-        Ok(Ok((version, robot, _token, hb))) => {
+    let (robot, heartbeat_ms, identity) = match hello {
+        Ok(Ok((version, robot, token, hb))) => {
             if version != VERSION {
                 return refuse(
                     sink,
@@ -155,7 +169,41 @@ where
             } else {
                 hb.clamp(MIN_HEARTBEAT_MS, MAX_HEARTBEAT_MS)
             };
-            (robot, hb)
+            // A robot token (or a certificate, or a trusted robot network) names the robot.
+            // An operator token of the admin group may also open an agent link, for tools
+            // such as `fleetlink bench relay`.
+            let operator = token.starts_with("flk_operator_")
+                || token.starts_with("flk_session_")
+                || token.starts_with("ey");
+            let credential = if operator {
+                fleetlink_auth::Credential::Bearer(token)
+            } else {
+                fleetlink_auth::Credential::Agent {
+                    robot: robot.clone(),
+                    token: (!token.is_empty()).then_some(token),
+                }
+            };
+            let admin = fleetlink_auth::GroupName::new("admin").expect("a valid group name");
+            match crate::security::authenticate(&ctx.security, credential, conn).await {
+                Ok(identity) if operator && !identity.in_group(&admin) => {
+                    return refuse(
+                        sink,
+                        format!(
+                            "{} may not open an agent link: only the admin group may",
+                            identity.principal()
+                        ),
+                    )
+                    .await;
+                }
+                Ok(identity) => (robot, hb, identity),
+                Err(e) => {
+                    return refuse(
+                        sink,
+                        format!("authentication failed: {}", e.public_message()),
+                    )
+                    .await;
+                }
+            }
         }
         Ok(Err(reason)) => return refuse(sink, reason).await,
         Err(_) => return refuse(sink, "no HELLO within 10 s".into()).await,
@@ -207,6 +255,7 @@ where
         }))
         .await;
     let heartbeat = Duration::from_millis(u64::from(heartbeat_ms));
+    let gate = crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity);
     let writer = tokio::spawn(write_link(
         sink,
         outbox,
@@ -214,6 +263,7 @@ where
         heartbeat,
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
+        Some(gate.fork()),
     ));
 
     let mut st = AgentSession {
@@ -223,6 +273,7 @@ where
         subs: HashMap::new(),
         ctrl: ctrl_tx.clone(),
         live: live.clone(),
+        gate: Box::new(gate),
     };
     let dead_after = heartbeat * 2;
     loop {
@@ -304,6 +355,7 @@ struct AgentSession {
     subs: HashMap<u32, SubscriptionId>,
     ctrl: mpsc::Sender<Control>,
     live: Arc<LiveRobot>,
+    gate: Box<dyn Gate>,
 }
 
 impl AgentSession {
@@ -341,6 +393,13 @@ impl AgentSession {
                             .await;
                     }
                 };
+                if !self.gate.allows(name.as_str(), Op::Publish) {
+                    let text = format!(
+                        "advertise {name}: not allowed for {}",
+                        self.gate.principal()
+                    );
+                    return self.status(Level::Error, 403, text).await;
+                }
                 match self
                     .ctx
                     .router
@@ -369,7 +428,13 @@ impl AgentSession {
                 payload,
             } => {
                 if let Some(p) = self.topics.get(&alias) {
-                    p.topic.publish(self.client, seq, stamp_ns, payload);
+                    // Asked per message (a cached answer) so a rule change applies at once.
+                    let name = p.topic.name();
+                    if self.gate.allows(name.as_str(), Op::Publish) {
+                        let size = payload.len();
+                        p.topic.publish(self.client, seq, stamp_ns, payload);
+                        self.gate.done(name.as_str(), Op::Publish, size);
+                    }
                 }
             }
             LinkEvent::Subscribe {
@@ -390,7 +455,12 @@ impl AgentSession {
                     }
                 } else {
                     match TopicName::parse(&pattern) {
-                        Ok(n) => Target::Exact(n),
+                        Ok(n) if self.gate.allows(n.as_str(), Op::Subscribe) => Target::Exact(n),
+                        Ok(n) => {
+                            let text =
+                                format!("subscribe {n}: not allowed for {}", self.gate.principal());
+                            return self.status(Level::Error, 403, text).await;
+                        }
                         Err(e) => {
                             return self
                                 .status(Level::Error, 6, format!("subscribe: {e}"))

@@ -138,3 +138,35 @@ fn ms(t: std::time::SystemTime) -> u64 {
 pub fn page() -> Html<&'static str> {
     Html(include_str!("page.html"))
 }
+
+/// The identity behind an API request, put in the request by [`require_identity`].
+#[derive(Clone)]
+pub struct Caller(pub fleetlink_auth::Identity);
+
+/// Every `/api` route and `/metrics` need an authenticated caller (or anonymous read where
+/// the hub allows it): a bearer token in `Authorization` or a `token` query parameter.
+pub async fn require_identity(
+    State(st): State<Arc<HubState>>,
+    axum::extract::ConnectInfo(peer): axum::extract::ConnectInfo<std::net::SocketAddr>,
+    mut req: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    let tls_name = req
+        .extensions()
+        .get::<crate::server::ConnMeta>()
+        .and_then(|m| m.tls_name.clone());
+    let conn = crate::security::conn_info(peer, req.headers(), tls_name);
+    let credential = crate::security::request_credential(req.headers(), req.uri().query());
+    match crate::security::authenticate(&st.security, credential, conn).await {
+        Ok(identity) => {
+            req.extensions_mut().insert(Caller(identity));
+            next.run(req).await
+        }
+        Err(e) => (
+            axum::http::StatusCode::UNAUTHORIZED,
+            Json(json!({"error": format!("authentication required: {}", e.public_message())})),
+        )
+            .into_response(),
+    }
+}

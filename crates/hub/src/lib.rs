@@ -13,11 +13,14 @@
 //!   robots.
 //! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
+//! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
+//!   the relay's `Gate` (checks at request time and on every delivery, audit log).
 //! - [`store`]: the SQLite database in the data directory (robots seen so far).
 
 pub mod agents;
 pub mod api;
 pub mod metrics;
+pub mod security;
 pub mod server;
 pub mod store;
 

@@ -42,6 +42,12 @@ pub struct HubConfig {
     pub max_message_size: usize,
     /// Queue length of subscriptions that do not set `queue_length`.
     pub default_queue: usize,
+    /// Who may connect: anonymous access, trusted proxies, robot networks, OIDC.
+    pub auth: fleetlink_auth::AuthPolicy,
+    /// Built-in grants (admin group, robots in their namespace, anonymous read).
+    pub acl: fleetlink_auth::AclDefaults,
+    /// Serve `wss://`/`https://` with these files (reloaded when they change).
+    pub tls: Option<fleetlink_auth::tls::ServerTlsFiles>,
 }
 
 impl Default for HubConfig {
@@ -52,6 +58,9 @@ impl Default for HubConfig {
             heartbeat: Duration::from_secs(1),
             max_message_size: 16 << 20,
             default_queue: 100,
+            auth: fleetlink_auth::AuthPolicy::default(),
+            acl: fleetlink_auth::AclDefaults::default(),
+            tls: None,
         }
     }
 }
@@ -67,6 +76,12 @@ pub enum HubError {
     Store(#[from] StoreError),
     #[error("server failed: {0}")]
     Serve(std::io::Error),
+    #[error("security store: {0}")]
+    Security(#[from] fleetlink_auth::SecurityError),
+    #[error("security store: {0}")]
+    SecurityStore(#[from] fleetlink_auth::StoreError),
+    #[error("TLS: {0}")]
+    Tls(#[from] fleetlink_auth::tls::TlsError),
 }
 
 /// Everything the HTTP handlers and sessions share.
@@ -78,6 +93,8 @@ pub struct HubState {
     pub rosbridge: Arc<SessionConfig>,
     pub ws_config: WebSocketConfig,
     pub shutdown: CancellationToken,
+    pub security: Arc<fleetlink_auth::Security>,
+    pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
     pub started: std::time::SystemTime,
 }
 
@@ -97,6 +114,17 @@ impl Hub {
                 source,
             })?;
         let store = Store::open(&cfg.data_dir)?;
+        let security = Arc::new(fleetlink_auth::Security::new(
+            fleetlink_auth::Store::open(&cfg.data_dir.join("hub.sqlite3"))?,
+            cfg.auth.clone(),
+            cfg.acl.clone(),
+        )?);
+        let tls = match &cfg.tls {
+            Some(files) => Some(Arc::new(fleetlink_auth::tls::ReloadingServerConfig::load(
+                files.clone(),
+            )?)),
+            None => None,
+        };
         let mut router = Router::new(transcoder);
         router.default_queue = cfg.default_queue;
         let router = Arc::new(router);
@@ -107,6 +135,7 @@ impl Hub {
             registry: registry.clone(),
             store: store.clone(),
             shutdown: shutdown.clone(),
+            security: security.clone(),
             default_heartbeat_ms: cfg.heartbeat.as_millis() as u32,
         });
         let rosbridge = Arc::new(SessionConfig {
@@ -125,6 +154,8 @@ impl Hub {
             rosbridge,
             ws_config,
             shutdown,
+            security,
+            tls,
             started: std::time::SystemTime::now(),
         });
         Ok(Hub { listener, state })
@@ -147,28 +178,139 @@ impl Hub {
     ) -> Result<(), HubError> {
         let state = self.state.clone();
         let token = state.shutdown.clone();
+        let api = crate::api::routes()
+            .route("/metrics", get(crate::metrics::handler))
+            .route_layer(axum::middleware::from_fn_with_state(
+                state.clone(),
+                crate::api::require_identity,
+            ));
         let app = HttpRouter::new()
             .route("/healthz", get(|| async { "ok\n" }))
-            .route("/metrics", get(crate::metrics::handler))
-            .merge(crate::api::routes())
+            .merge(api)
             .route("/", get(root))
             .fallback(root)
             .with_state(state.clone());
-        let listener = axum::serve::ListenerExt::tap_io(self.listener, |tcp| {
+        let housekeeping = tokio::spawn(housekeeping(state.clone()));
+        tokio::pin!(shutdown);
+        loop {
+            let (tcp, peer) = tokio::select! {
+                r = self.listener.accept() => match r {
+                    Ok(x) => x,
+                    Err(e) => {
+                        // Out of file descriptors and the like: keep serving the others.
+                        tracing::warn!("accept failed: {e}");
+                        tokio::time::sleep(Duration::from_millis(50)).await;
+                        continue;
+                    }
+                },
+                _ = &mut shutdown => break,
+            };
             let _ = tcp.set_nodelay(true);
-        });
-        let stop = token.clone();
-        let serve = axum::serve(
-            listener,
-            app.into_make_service_with_connect_info::<SocketAddr>(),
-        )
-        .with_graceful_shutdown(async move {
-            shutdown.await;
-            stop.cancel();
-        });
-        let r = serve.await.map_err(HubError::Serve);
+            let (app, tls, token) = (app.clone(), state.tls.clone(), token.clone());
+            tokio::spawn(async move {
+                match tls {
+                    None => {
+                        serve_connection(
+                            TokioIo::new(tcp),
+                            app,
+                            ConnMeta {
+                                peer,
+                                tls_name: None,
+                            },
+                            token,
+                        )
+                        .await
+                    }
+                    Some(cfg) => {
+                        let acceptor = tokio_rustls::TlsAcceptor::from(cfg.current());
+                        match tokio::time::timeout(Duration::from_secs(10), acceptor.accept(tcp))
+                            .await
+                        {
+                            Ok(Ok(stream)) => {
+                                let tls_name = fleetlink_auth::tls::client_cert_name(
+                                    stream.get_ref().1.peer_certificates(),
+                                );
+                                serve_connection(
+                                    TokioIo::new(stream),
+                                    app,
+                                    ConnMeta { peer, tls_name },
+                                    token,
+                                )
+                                .await;
+                            }
+                            Ok(Err(e)) => tracing::info!("TLS handshake with {peer} failed: {e}"),
+                            Err(_) => tracing::info!("TLS handshake with {peer} timed out"),
+                        }
+                    }
+                }
+            });
+        }
         token.cancel();
-        r
+        housekeeping.abort();
+        Ok(())
+    }
+}
+
+/// Per-connection facts handlers need: the peer and, over mutual TLS, the robot its
+/// verified certificate names.
+#[derive(Debug, Clone)]
+pub struct ConnMeta {
+    pub peer: SocketAddr,
+    pub tls_name: Option<fleetlink_auth::RobotName>,
+}
+
+/// Serves HTTP/1.1 (with upgrades) on one accepted connection until it ends or the hub
+/// shuts down.
+async fn serve_connection<I>(
+    io: TokioIo<I>,
+    app: HttpRouter,
+    meta: ConnMeta,
+    token: CancellationToken,
+) where
+    I: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin + Send + 'static,
+{
+    use tower::ServiceExt;
+    let svc = hyper::service::service_fn(move |req: hyper::Request<hyper::body::Incoming>| {
+        let mut req = req.map(Body::new);
+        req.extensions_mut().insert(ConnectInfo(meta.peer));
+        req.extensions_mut().insert(meta.clone());
+        app.clone().oneshot(req)
+    });
+    let conn = hyper::server::conn::http1::Builder::new()
+        .serve_connection(io, svc)
+        .with_upgrades();
+    tokio::select! {
+        r = conn => {
+            if let Err(e) = r {
+                tracing::debug!("HTTP connection ended: {e}");
+            }
+        }
+        _ = token.cancelled() => {}
+    }
+}
+
+/// Periodic work: pick up rule edits made by `fleetlink admin` on the same database,
+/// reload changed TLS files, prune an old audit log.
+async fn housekeeping(st: Arc<HubState>) {
+    let mut tick = tokio::time::interval(Duration::from_secs(1));
+    let mut n: u64 = 0;
+    loop {
+        tick.tick().await;
+        n += 1;
+        let sec = st.security.clone();
+        let tls = st.tls.clone();
+        let _ = tokio::task::spawn_blocking(move || {
+            if let Err(e) = sec.reload_rules_if_changed() {
+                tracing::warn!("cannot reload access rules: {e}");
+            }
+            if n.is_multiple_of(5)
+                && let Some(t) = tls
+                && let Err(e) = t.reload_if_changed()
+            {
+                tracing::warn!("cannot reload TLS files (keeping the old ones): {e}");
+            }
+        })
+        .await;
     }
 }
 
@@ -179,7 +321,7 @@ async fn root(
     req: Request,
 ) -> Response {
     if is_upgrade(req.headers()) {
-        return upgrade(st, addr, req);
+        return upgrade(st, addr, req).await;
     }
     if req.uri().path() == "/" {
         return crate::api::page().into_response();
@@ -201,7 +343,7 @@ fn is_upgrade(h: &HeaderMap) -> bool {
     has(header::CONNECTION, "upgrade") && has(header::UPGRADE, "websocket")
 }
 
-fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Response {
+async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Response {
     let Some(key) = req.headers().get(header::SEC_WEBSOCKET_KEY).cloned() else {
         return (StatusCode::BAD_REQUEST, "missing Sec-WebSocket-Key\n").into_response();
     };
@@ -211,6 +353,32 @@ fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Response {
         .iter()
         .filter_map(|v| v.to_str().ok())
         .any(|v| v.split(',').any(|p| p.trim() == SUBPROTOCOL));
+    // Authenticate before switching protocols: a bad credential gets a plain 401 the
+    // client can show; no credential means the client authenticates in-band (agents in
+    // HELLO, rosbridge clients with an `auth` operation) or reads anonymously where that
+    // is allowed.
+    let tls_name = req
+        .extensions()
+        .get::<ConnMeta>()
+        .and_then(|m| m.tls_name.clone());
+    let conn = crate::security::conn_info(addr, req.headers(), tls_name);
+    let credential = crate::security::request_credential(req.headers(), req.uri().query());
+    let presented = !matches!(credential, fleetlink_auth::Credential::None);
+    let identity = if agent && !presented {
+        None
+    } else {
+        match crate::security::authenticate(&st.security, credential, conn.clone()).await {
+            Ok(id) => Some(id),
+            Err(e) if presented => {
+                return (
+                    StatusCode::UNAUTHORIZED,
+                    format!("authentication failed: {}\n", e.public_message()),
+                )
+                    .into_response();
+            }
+            Err(_) => None,
+        }
+    };
     let on_upgrade = hyper::upgrade::on(&mut req);
     let ws_config = st.ws_config;
     tokio::spawn(async move {
@@ -225,14 +393,31 @@ fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Response {
             WebSocketStream::from_raw_socket(TokioIo::new(upgraded), Role::Server, Some(ws_config))
                 .await;
         if agent {
-            crate::agents::serve_agent(ws, st.agents.clone(), Some(addr)).await;
+            crate::agents::serve_agent(ws, st.agents.clone(), Some(addr), conn).await;
         } else {
+            let gate = identity.map(|id| {
+                Box::new(crate::security::HubGate::new(
+                    st.security.clone(),
+                    st.registry.clone(),
+                    id,
+                )) as Box<dyn fleetlink_relay::gate::Gate>
+            });
+            let guard = crate::security::HubGuard {
+                security: st.security.clone(),
+                registry: st.registry.clone(),
+                conn,
+            };
+            let auth = fleetlink_relay::gate::SessionAuth {
+                gate,
+                guard: Some(Arc::new(guard)),
+            };
             rosbridge::serve(
                 ws,
                 st.router.clone(),
                 Some(addr),
                 st.rosbridge.clone(),
                 st.shutdown.clone(),
+                auth,
             )
             .await;
         }

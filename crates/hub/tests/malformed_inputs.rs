@@ -35,7 +35,19 @@ async fn hub() -> Fixture {
         ..HubConfig::default()
     };
     let hub = Hub::bind(cfg, Arc::new(GenericTranscoder)).await.unwrap();
-    let url = format!("ws://{}", hub.local_addr());
+    // Attackers here are authenticated operators: what is tested is input handling.
+    let token = hub
+        .state()
+        .security
+        .store
+        .mint_operator_token(
+            &fleetlink_auth::UserName::new("attacker").unwrap(),
+            &[fleetlink_auth::GroupName::new("admin").unwrap()],
+            None,
+            fleetlink_auth::UnixTime::now(),
+        )
+        .unwrap();
+    let url = format!("ws://{}/?token={}", hub.local_addr(), token.expose());
     let stop = CancellationToken::new();
     let s = stop.clone();
     tokio::spawn(hub.run(async move { s.cancelled().await }));

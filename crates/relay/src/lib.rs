@@ -15,6 +15,8 @@
 //!   default drop-oldest queue.
 //! - [`outbox`]: one client's outbound side: its subscriptions' queues, served round-robin
 //!   to the task that writes the client's socket.
+//! - [`gate`]: the authorization seam ([`gate::Gate`]): what a connection may do,
+//!   asked at request time and on every delivery.
 //! - [`link`]: what hub and agent share on a `fleetlink.v1` link: received frames to
 //!   events, and the writer that sends an outbox as (chunked) frames.
 //! - [`stats`]: per-topic counters and rates read by metrics and the API.
@@ -22,6 +24,7 @@
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
 //!   `/rosapi` services the hub answers itself.
 
+pub mod gate;
 pub mod link;
 pub mod message;
 pub mod names;

@@ -276,7 +276,8 @@ struct Lane {
 }
 
 /// Writes `outbox` and `control` onto the link until either side closes; sends a `PING`
-/// every `heartbeat`. `announce_first` topics are advertised before anything else.
+/// every `heartbeat`. `announce_first` topics are advertised before anything else;
+/// `gate`, if any, must allow each message's topic for it to be sent.
 pub async fn write_link<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -284,6 +285,7 @@ pub async fn write_link<K>(
     heartbeat: Duration,
     namer: LinkNamer,
     announce_first: Vec<(Arc<TopicMeta>, Encoding)>,
+    mut gate: Option<Box<dyn crate::gate::Gate>>,
 ) where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
@@ -370,6 +372,12 @@ pub async fn write_link<K>(
         // 3. A batch from the outbox.
         let taken = outbox.take(512, 4 << 20, Instant::now());
         for (_, _, msg) in &taken.items {
+            // Checked on delivery, so a rule change reaches live subscriptions.
+            if let Some(g) = gate.as_mut()
+                && !g.allows(msg.topic.name.as_str(), crate::gate::Op::Subscribe)
+            {
+                continue;
+            }
             let tid = msg.topic.id;
             if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
                 lane.waiting.push_back(msg.clone());

@@ -73,6 +73,7 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         Duration::from_secs(3600),
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
+        None,
     ));
 
     // 2 MiB: 32 chunks of 64 KiB.
@@ -87,7 +88,7 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         .filter(|f| matches!(f, Frame::Chunk { .. }))
         .count();
     assert!(
-        chunks_before >= 1 && chunks_before < 32,
+        (1..32).contains(&chunks_before),
         "{chunks_before} chunks before the pose was published"
     );
 

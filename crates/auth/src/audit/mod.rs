@@ -29,8 +29,10 @@ pub const BATCH_MAX: usize = 512;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum AuditAction {
-    /// Publishing to a robot's input topic.
+    /// Publishing to a robot's input topic (and every refused publish or advertise).
     Publish,
+    /// A refused subscription.
+    Subscribe,
     CallService,
     SendActionGoal,
     CancelActionGoal,
@@ -45,6 +47,7 @@ impl AuditAction {
     pub fn as_str(self) -> &'static str {
         match self {
             AuditAction::Publish => "publish",
+            AuditAction::Subscribe => "subscribe",
             AuditAction::CallService => "call_service",
             AuditAction::SendActionGoal => "send_action_goal",
             AuditAction::CancelActionGoal => "cancel_action_goal",
@@ -60,6 +63,7 @@ impl AuditAction {
         use AuditAction::*;
         [
             Publish,
+            Subscribe,
             CallService,
             SendActionGoal,
             CancelActionGoal,

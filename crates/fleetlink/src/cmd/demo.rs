@@ -38,14 +38,17 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("warn");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(async {
-        let hub_args = super::hub::Args {
+        let cfg = fleetlink_hub::HubConfig {
             listen: args.listen,
             data_dir: args.data_dir.clone(),
-            heartbeat_ms: 1000,
-            max_message_size: 16 << 20,
-            queue_length: 100,
+            // Anonymous clients may look (loopback only); tasking needs the operator token.
+            auth: fleetlink_auth::AuthPolicy::demo(),
+            acl: fleetlink_auth::AclDefaults::demo(),
+            ..fleetlink_hub::HubConfig::default()
         };
-        let hub = Hub::bind(hub_args.config(), crate::transcoder()).await?;
+        let hub = Hub::bind(cfg, crate::transcoder()).await?;
+        let security = hub.state().security.clone();
+        let now = fleetlink_auth::UnixTime::now();
         let addr = hub.local_addr();
         let stop = CancellationToken::new();
         let hub_stop = stop.clone();
@@ -53,7 +56,13 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let url = format!("ws://{addr}");
         let mut robots = Vec::new();
         for i in 1..=args.robots {
-            let cfg = robot_config(&url, i)?;
+            let mut cfg = robot_config(&url, i)?;
+            let robot = fleetlink_auth::RobotName::new(&cfg.name)?;
+            cfg.token = security
+                .store
+                .add_robot_token(&robot, None, now)?
+                .expose()
+                .to_owned();
             let agent = Agent::bind(AgentOptions::from_config(&cfg)?, crate::transcoder()).await?;
             robots.push(tokio::spawn(agent.run(stop.clone())));
         }
@@ -62,6 +71,17 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         println!(
             "  rosbridge clients (roslibjs, roslibpy): ws://{addr}/  e.g. subscribe to /robot1/scan"
         );
+        let operator = security.store.mint_operator_token(
+            &fleetlink_auth::UserName::new("operator")?,
+            &[fleetlink_auth::GroupName::new("admin")?],
+            None,
+            now,
+        )?;
+        println!(
+            "  anonymous local clients may subscribe and list topics; to publish, authenticate with"
+        );
+        println!("  the operator token (full rights): {}", operator.expose());
+        println!("    e.g. ws://{addr}/?token={}", operator.expose());
         println!("  press Ctrl-C to stop");
         super::shutdown_signal().await;
         stop.cancel();

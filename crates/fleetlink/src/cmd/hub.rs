@@ -24,6 +24,21 @@ pub struct Args {
     /// Queue length of subscriptions that do not ask for one.
     #[arg(long, default_value_t = 100)]
     pub queue_length: usize,
+    /// TLS certificate chain (PEM): serve wss:// and https://. Reloaded when it changes.
+    #[arg(long, requires = "tls_key")]
+    pub tls_cert: Option<PathBuf>,
+    /// TLS private key (PEM).
+    #[arg(long, requires = "tls_cert")]
+    pub tls_key: Option<PathBuf>,
+    /// CA (PEM) that signs robots' client certificates; enables mutual TLS.
+    #[arg(long, requires = "tls_cert")]
+    pub tls_client_ca: Option<PathBuf>,
+    /// Refuse TLS clients without a certificate signed by --tls-client-ca.
+    #[arg(long, requires = "tls_client_ca")]
+    pub require_client_cert: bool,
+    /// A reverse proxy (CIDR) whose X-Forwarded-For header is believed; repeatable.
+    #[arg(long = "trusted-proxy", value_name = "CIDR")]
+    pub trusted_proxies: Vec<ipnet::IpNet>,
 }
 
 impl Args {
@@ -34,6 +49,29 @@ impl Args {
             heartbeat: Duration::from_millis(self.heartbeat_ms.max(10)),
             max_message_size: self.max_message_size,
             default_queue: self.queue_length.max(1),
+            auth: fleetlink_auth::AuthPolicy {
+                trusted_proxies: fleetlink_auth::TrustedProxies::new(self.trusted_proxies.clone()),
+                ..fleetlink_auth::AuthPolicy::default()
+            },
+            acl: fleetlink_auth::AclDefaults::default(),
+            tls: self
+                .tls_cert
+                .clone()
+                .zip(self.tls_key.clone())
+                .map(|(cert, key)| {
+                    use fleetlink_auth::tls::{ClientAuth, ServerTlsFiles};
+                    let client_auth = match (&self.tls_client_ca, self.require_client_cert) {
+                        (None, _) => ClientAuth::None,
+                        (Some(_), false) => ClientAuth::Optional,
+                        (Some(_), true) => ClientAuth::Required,
+                    };
+                    ServerTlsFiles {
+                        cert,
+                        key,
+                        client_ca: self.tls_client_ca.clone(),
+                        client_auth,
+                    }
+                }),
         }
     }
 }
@@ -44,9 +82,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     rt.block_on(async {
         let hub = Hub::bind(args.config(), crate::transcoder()).await?;
         let addr = hub.local_addr();
+        let (ws, http) = if args.tls_cert.is_some() {
+            ("wss", "https")
+        } else {
+            ("ws", "http")
+        };
         println!("fleetlink hub listening on {addr}");
-        println!("  dashboard:  http://{addr}/");
-        println!("  rosbridge:  ws://{addr}/   agents: ws://{addr}/ (subprotocol fleetlink.v1)");
+        println!("  dashboard:  {http}://{addr}/?token=TOKEN");
+        println!(
+            "  rosbridge:  {ws}://{addr}/   agents: {ws}://{addr}/ (subprotocol fleetlink.v1)"
+        );
+        println!(
+            "  credentials: fleetlink admin --data-dir {} --help",
+            args.data_dir.display()
+        );
         hub.run(super::shutdown_signal()).await?;
         println!("fleetlink hub stopped");
         Ok::<_, anyhow::Error>(())

@@ -143,7 +143,8 @@ async fn agent_reconnects_after_hub_restart_and_resubscribes_exactly_once() {
 async fn dead_link_is_detected_within_two_heartbeats_when_tcp_does_not_notice() {
     let hub = start_hub().await;
     let proxy = Blackhole::start(hub.addr).await;
-    let mut cfg = uplink_config(&format!("ws://{}", proxy.addr), "robot_dl");
+    let mut cfg = uplink_config(&hub, "robot_dl");
+    cfg.hub_url = format!("ws://{}", proxy.addr);
     let heartbeat = Duration::from_millis(300);
     cfg.heartbeat = heartbeat;
     cfg.reconnect_initial = Duration::from_secs(30); // keep it down once it is down

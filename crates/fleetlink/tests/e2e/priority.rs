@@ -14,7 +14,7 @@ use crate::util::*;
 #[tokio::test(flavor = "current_thread")]
 async fn priority_topic_overtakes_a_2mb_point_cloud() {
     let hub = start_hub().await;
-    let mut cfg = uplink_config(&hub.ws_url(), "robot_p");
+    let mut cfg = uplink_config(&hub, "robot_p");
     let spec = |p: f32| fleetlink_qos::TopicQosSpec {
         priority: Some(p),
         ..Default::default()

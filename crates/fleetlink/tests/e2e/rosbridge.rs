@@ -201,7 +201,11 @@ async fn rosapi_answers_either_spelling_and_echoes_names_and_ids() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn remapped_topic_appears_under_its_configured_hub_name() {
     let hub = start_hub().await;
-    let mut cfg = uplink_config(&hub.ws_url(), "robot9");
+    // Outside its own namespace a robot may publish only what a rule grants.
+    hub.set_rules(
+        "rules:\n  - subject: {robot: robot9}\n    names: \"/fleet/map\"\n    ops: [publish]\n",
+    );
+    let mut cfg = uplink_config(&hub, "robot9");
     cfg.names.remap.push((
         fleetlink_relay::TopicName::parse("/map").unwrap(),
         fleetlink_relay::TopicName::parse("/fleet/map").unwrap(),

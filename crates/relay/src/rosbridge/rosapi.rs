@@ -35,12 +35,23 @@ pub const SERVICES: &[&str] = &[
     "services",
 ];
 
-pub fn answer(router: &Router, node_name: &str, service: &str, args: &Value) -> Answer {
+pub fn answer(
+    router: &Router,
+    node_name: &str,
+    service: &str,
+    args: &Value,
+    visible: &mut dyn FnMut(&str) -> bool,
+) -> Answer {
     let name = service.trim_start_matches('/');
     let Some(call) = name.strip_prefix("rosapi/") else {
         return Answer::NotRosapi;
     };
-    let topics = router.topics();
+    // Listings show only what the caller may subscribe to.
+    let topics: Vec<_> = router
+        .topics()
+        .into_iter()
+        .filter(|t| visible(t.meta.name.as_str()))
+        .collect();
     let arg_topic = || -> Result<TopicName, String> {
         let raw = args
             .get("topic")

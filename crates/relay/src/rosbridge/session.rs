@@ -16,12 +16,15 @@ use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Request, outbound}
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
 use serde_json::Value;
+use std::sync::Mutex;
+
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
+use crate::gate::{Gate, Guard, Op as GateOp, SessionAuth};
 use crate::message::FrameKind;
 use crate::names::{ClientId, TopicName};
 use crate::outbox::{Delivery, Outbox};
@@ -63,6 +66,7 @@ pub async fn serve<S>(
     addr: Option<SocketAddr>,
     cfg: Arc<SessionConfig>,
     shutdown: CancellationToken,
+    auth: SessionAuth,
 ) where
     S: Stream<Item = Result<WsMessage, WsError>>
         + Sink<WsMessage, Error = WsError>
@@ -73,12 +77,14 @@ pub async fn serve<S>(
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (sink, mut stream) = ws.split();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
+    let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
     let writer = tokio::spawn(write_loop(
         sink,
         outbox.clone(),
         reply_rx,
         router.clone(),
         cfg.batch,
+        writer_gate.clone(),
     ));
     let mut session = Session {
         router: router.clone(),
@@ -87,6 +93,9 @@ pub async fn serve<S>(
         published: HashMap::new(),
         subs: HashMap::new(),
         replies: reply_tx,
+        gate: auth.gate,
+        guard: auth.guard,
+        writer_gate,
     };
     loop {
         let frame = tokio::select! {
@@ -138,6 +147,12 @@ struct Session {
     published: HashMap<TopicName, Published>,
     /// Subscriptions by the `topic` string the client used, with the `id` each came with.
     subs: HashMap<String, Vec<(Option<Value>, SubscriptionId)>>,
+    /// What this client may do; `None` until it authenticates.
+    gate: Option<Box<dyn Gate>>,
+    guard: Option<Arc<dyn Guard>>,
+    /// The writer's copy, checked for every message it delivers. std Mutex: taken once per
+    /// batch by the writer and on `auth` by the reader, never across an await.
+    writer_gate: Arc<Mutex<Option<Box<dyn Gate>>>>,
     replies: mpsc::Sender<Reply>,
 }
 
@@ -161,6 +176,16 @@ impl Session {
 
     async fn handle(&mut self, req: Request) {
         let id = req.id.clone();
+        if let Op::Auth { fields } = &req.op {
+            return self.authenticate(fields, id.as_ref()).await;
+        }
+        if self.gate.is_none() {
+            let msg = format!(
+                "{}: authentication required: send an 'auth' operation with a token first",
+                req.op.name()
+            );
+            return self.status("error", msg, id.as_ref()).await;
+        }
         let result = match req.op {
             Op::Advertise {
                 topic,
@@ -208,11 +233,42 @@ impl Session {
                 self.call_service(&service, args, id.as_ref()).await;
                 Ok(())
             }
-            Op::Auth { .. } => Ok(()),
+            Op::Auth { .. } => Ok(()), // handled above
             Op::Unknown { op } => Err(format!("unknown operation '{op}'")),
         };
         if let Err(msg) = result {
             self.status("error", msg, id.as_ref()).await;
+        }
+    }
+
+    async fn authenticate(&mut self, fields: &serde_json::Map<String, Value>, id: Option<&Value>) {
+        let Some(guard) = self.guard.clone() else {
+            // Nothing to authenticate against (a robot's local listener): accept quietly,
+            // as rosbridge does when authentication is off.
+            return;
+        };
+        match guard.authenticate(fields) {
+            Ok(gate) => {
+                *self.writer_gate.lock().unwrap_or_else(|p| p.into_inner()) = Some(gate.fork());
+                self.gate = Some(gate);
+            }
+            Err(msg) => self.status("error", format!("auth: {msg}"), id).await,
+        }
+    }
+
+    /// Whether the client may do `op` on `name`; the refusal text names both.
+    fn check(&mut self, verb: &str, name: &str, op: GateOp) -> Result<(), String> {
+        let gate = self
+            .gate
+            .as_mut()
+            .ok_or_else(|| format!("{verb} {name}: authentication required"))?;
+        if gate.allows(name, op) {
+            Ok(())
+        } else {
+            Err(format!(
+                "{verb} {name}: not allowed for {}",
+                gate.principal()
+            ))
         }
     }
 
@@ -221,6 +277,7 @@ impl Session {
         if type_name.trim().is_empty() {
             return Err(format!("advertise {name}: field 'type' is empty"));
         }
+        self.check("advertise", name.as_str(), GateOp::Publish)?;
         let t = self
             .router
             .advertise(self.client, &name, Schema::named(type_name), latch)
@@ -247,6 +304,9 @@ impl Session {
         if !is_object(&msg) {
             return Err(format!("publish {name}: field 'msg' must be an object"));
         }
+        // Asked for every message: rules can change while a client publishes, and the
+        // gate's cache makes the repeat question cheap.
+        self.check("publish", name.as_str(), GateOp::Publish)?;
         if !self.published.contains_key(&name) {
             // rosbridge lets a client publish on a topic whose type is already known.
             let Some(existing) = self
@@ -268,7 +328,11 @@ impl Session {
         }
         let p = self.published.get_mut(&name).expect("inserted above");
         p.seq += 1;
+        let size = msg.len();
         p.topic.publish(self.client, p.seq, unix_nanos(), msg);
+        if let Some(g) = self.gate.as_mut() {
+            g.done(name.as_str(), GateOp::Publish, size);
+        }
         Ok(())
     }
 
@@ -295,6 +359,7 @@ impl Session {
                     ));
                 }
             }
+            self.check("subscribe", name.as_str(), GateOp::Subscribe)?;
             Target::Exact(name)
         };
         let entry = self.subs.entry(topic.to_owned()).or_default();
@@ -330,7 +395,16 @@ impl Session {
         }
     }
 
-    async fn call_service(&self, service: &str, args: Payload, id: Option<&Value>) {
+    async fn call_service(&mut self, service: &str, args: Payload, id: Option<&Value>) {
+        let full = if service.starts_with('/') {
+            service.to_owned()
+        } else {
+            format!("/{service}")
+        };
+        if let Err(e) = self.check("call_service", &full, GateOp::CallService) {
+            let reply = outbound::service_response(service, id, Value::String(e), false);
+            return self.send(WsMessage::text(reply.to_string())).await;
+        }
         let args_json: Value = match args.encoding {
             Encoding::Json => serde_json::from_slice(&args.bytes).unwrap_or(Value::Null),
             _ => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
@@ -338,7 +412,19 @@ impl Session {
                 .and_then(|j| serde_json::from_slice(&j).ok())
                 .unwrap_or(Value::Null),
         };
-        let reply = match rosapi::answer(&self.router, &self.cfg.node_name, service, &args_json) {
+        let gate = self.gate.as_mut().expect("checked above");
+        let mut visible = |name: &str| gate.allows(name, GateOp::Subscribe);
+        let answer = rosapi::answer(
+            &self.router,
+            &self.cfg.node_name,
+            service,
+            &args_json,
+            &mut visible,
+        );
+        if matches!(answer, Answer::NotRosapi) {
+            gate.done(&full, GateOp::CallService, args.len());
+        }
+        let reply = match answer {
             Answer::Values(v) => outbound::service_response(service, id, v, true),
             Answer::Failed(e) => outbound::service_response(service, id, Value::String(e), false),
             Answer::NotRosapi => outbound::service_response(
@@ -393,6 +479,7 @@ async fn write_loop<K>(
     mut replies: mpsc::Receiver<Reply>,
     router: Arc<Router>,
     batch: usize,
+    gate: Arc<Mutex<Option<Box<dyn Gate>>>>,
 ) where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
@@ -414,7 +501,18 @@ async fn write_loop<K>(
             }
         }
         let now = Instant::now();
-        let taken = outbox.take(batch, 8 << 20, now);
+        let mut taken = outbox.take(batch, 8 << 20, now);
+        let took = taken.items.len();
+        // Checked on delivery, so a rule change reaches live subscriptions.
+        {
+            let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
+            match g.as_mut() {
+                Some(g) => taken
+                    .items
+                    .retain(|(_, _, m)| g.allows(m.topic.name.as_str(), GateOp::Subscribe)),
+                None => taken.items.clear(),
+            }
+        }
         for (slot, delivery, msg) in &taken.items {
             let kind = match delivery.compression {
                 Compression::Cbor => FrameKind::RosbridgeCbor,
@@ -463,7 +561,7 @@ async fn write_loop<K>(
         if wrote && sink.flush().await.is_err() {
             return;
         }
-        if !taken.items.is_empty() {
+        if took > 0 {
             continue;
         }
         if outbox.is_closed() {

@@ -53,13 +53,13 @@ pub fn hub_url(hub: &str) -> String {
     }
 }
 
-pub async fn connect(url: &str, robot: &str) -> anyhow::Result<Conn> {
-    tokio::time::timeout(SETUP_TIMEOUT, connect_inner(url, robot))
+pub async fn connect(url: &str, robot: &str, token: &str) -> anyhow::Result<Conn> {
+    tokio::time::timeout(SETUP_TIMEOUT, connect_inner(url, robot, token))
         .await
         .with_context(|| format!("{robot}: connecting to {url} timed out"))?
 }
 
-async fn connect_inner(url: &str, robot: &str) -> anyhow::Result<Conn> {
+async fn connect_inner(url: &str, robot: &str, token: &str) -> anyhow::Result<Conn> {
     let mut req = url
         .into_client_request()
         .with_context(|| format!("bad hub URL {url}"))?;
@@ -76,7 +76,7 @@ async fn connect_inner(url: &str, robot: &str) -> anyhow::Result<Conn> {
     let hello = Frame::Hello {
         version: VERSION,
         robot: robot.to_owned(),
-        token: String::new(),
+        token: token.to_owned(),
         heartbeat_ms: HEARTBEAT_MS,
     };
     ws.send(WsMessage::Binary(hello.to_bytes()))

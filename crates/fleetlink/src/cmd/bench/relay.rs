@@ -34,6 +34,10 @@ pub struct Args {
     /// Hub URL, e.g. ws://127.0.0.1:8080 (a bare host:port works too).
     #[arg(long)]
     pub hub: String,
+    /// An operator token of the hub's admin group (the bench opens agent links under
+    /// made-up robot names). Also read from FLEETLINK_TOKEN.
+    #[arg(long, env = "FLEETLINK_TOKEN", default_value = "")]
+    pub token: String,
     /// Number of publisher connections, each with its own topic.
     #[arg(long, default_value_t = 1)]
     pub publishers: usize,
@@ -168,9 +172,10 @@ pub async fn relay(args: &Args) -> anyhow::Result<Summary> {
     let subs = connect_all(args.subscribers, |i| {
         let url = url.clone();
         let queue = args.queue_length;
+        let token = args.token.clone();
         async move {
             let who = format!("bench_sub_{i}");
-            let mut c = conn::connect(&url, &who).await?;
+            let mut c = conn::connect(&url, &who, &token).await?;
             c.send_and_sync(&[subscriber::subscribe(queue)], &who)
                 .await?;
             Ok(c)
@@ -180,9 +185,10 @@ pub async fn relay(args: &Args) -> anyhow::Result<Summary> {
     // 2. Publishers, their topics confirmed created (which attaches the subscriptions).
     let pubs = connect_all(args.publishers, |i| {
         let url = url.clone();
+        let token = args.token.clone();
         async move {
             let who = format!("bench_pub_{i}");
-            let mut c = conn::connect(&url, &who).await?;
+            let mut c = conn::connect(&url, &who, &token).await?;
             c.send_and_sync(&[conn::advertise(i)], &who).await?;
             Ok(c)
         }

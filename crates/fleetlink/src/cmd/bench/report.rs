@@ -217,6 +217,7 @@ mod tests {
     fn args() -> Args {
         Args {
             hub: "127.0.0.1:1".into(),
+            token: String::new(),
             publishers: 2,
             subscribers: 2,
             size: 100,

@@ -2,75 +2,28 @@
 //! it and its `--json` summary is checked for what the bench promises (every message
 //! stamped in the window reaches every subscriber, nothing is lost at a modest rate,
 //! latency percentiles are filled in). No assertion depends on how fast the machine is.
-//!
-//! Its own test binary with its own small hub starter, so it only needs the hub crate.
 
-use std::net::SocketAddr;
-use std::sync::Arc;
 use std::time::Duration;
 
-use fleetlink_hub::{Hub, HubConfig};
-use fleetlink_relay::GenericTranscoder;
 use serde_json::Value;
-use tokio_util::sync::CancellationToken;
 
-/// Upper bound for anything a test waits for.
-const WAIT: Duration = Duration::from_secs(60);
-
-struct TestHub {
-    addr: SocketAddr,
-    stop: CancellationToken,
-    task: tokio::task::JoinHandle<()>,
-    data_dir: std::path::PathBuf,
-}
-
-async fn start_hub() -> TestHub {
-    let data_dir = std::env::temp_dir().join(format!(
-        "fleetlink-bench-cli-{}-{}",
-        std::process::id(),
-        fleetlink_relay::unix_nanos()
-    ));
-    std::fs::create_dir_all(&data_dir).expect("temp dir");
-    let cfg = HubConfig {
-        listen: "127.0.0.1:0".parse().expect("address"),
-        data_dir: data_dir.clone(),
-        ..HubConfig::default()
-    };
-    let hub = Hub::bind(cfg, Arc::new(GenericTranscoder))
-        .await
-        .expect("hub binds");
-    let addr = hub.local_addr();
-    let stop = CancellationToken::new();
-    let s = stop.clone();
-    let task = tokio::spawn(async move {
-        hub.run(async move { s.cancelled().await })
-            .await
-            .expect("hub runs");
-    });
-    TestHub {
-        addr,
-        stop,
-        task,
-        data_dir,
-    }
-}
-
-impl TestHub {
-    async fn shutdown(self) {
-        self.stop.cancel();
-        let _ = tokio::time::timeout(WAIT, self.task).await;
-        let _ = std::fs::remove_dir_all(&self.data_dir);
-    }
-}
+use crate::util::*;
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn bench_relay_json_summary_counts_every_delivery() {
     let hub = start_hub().await;
-    let url = format!("ws://{}", hub.addr);
+    let url = hub.agent_url();
     let out = tokio::time::timeout(
-        WAIT,
+        Duration::from_secs(60),
         tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
-            .args(["bench", "relay", "--hub", &url])
+            .args([
+                "bench",
+                "relay",
+                "--hub",
+                &url,
+                "--token",
+                &hub.operator_token,
+            ])
             .args(["--publishers", "1", "--subscribers", "2", "--size", "64"])
             .args(["--rate", "1000", "--duration", "1", "--warmup", "0.2"])
             // A queue that holds the whole run: a stalled test machine may delay messages

@@ -1,0 +1,261 @@
+//! The hub's side of authentication and authorization: the `fleetlink-auth` core plugged
+//! into the relay's [`Gate`] seam, and credentials read from where each transport carries
+//! them.
+//!
+//! - rosbridge clients: `Authorization: Bearer` on the upgrade request, a `token` query
+//!   parameter (browsers cannot set headers on WebSocket requests), or an `auth` operation
+//!   (`token`, or rosbridge's `mac` field, or `user` + `password`);
+//! - agents: the robot name and token in `HELLO` (or a verified client certificate);
+//! - the HTTP API: the same header or query parameter.
+//!
+//! Checking a credential can mean an argon2 hash (passwords) or a database read (tokens),
+//! so it never runs on a runtime worker: see [`authenticate`].
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+
+use fleetlink_auth::audit::AuditAction;
+use fleetlink_auth::{
+    Access, AuditRecord, ConnInfo, Credential, Identity, IdentityKind, Operation, Security,
+    UnixTime,
+};
+use fleetlink_relay::gate::{Gate, Guard, Op};
+use serde_json::{Map, Value};
+
+use crate::agents::Registry;
+
+fn operation(op: Op) -> Operation {
+    match op {
+        Op::Publish => Operation::Publish,
+        Op::Subscribe => Operation::Subscribe,
+        Op::CallService => Operation::CallService,
+    }
+}
+
+fn audit_action(op: Op) -> AuditAction {
+    match op {
+        Op::Publish => AuditAction::Publish,
+        Op::Subscribe => AuditAction::Subscribe,
+        Op::CallService => AuditAction::CallService,
+    }
+}
+
+/// One connection's gate: its identity's cached decisions, plus the audit log.
+pub struct HubGate {
+    access: Access,
+    security: Arc<Security>,
+    registry: Arc<Registry>,
+    /// Refusals already audited on this connection: a client retrying a refused publish
+    /// 30 times a second is recorded once per name, not flooding the log.
+    reported: std::collections::HashSet<(String, Op)>,
+}
+
+impl HubGate {
+    pub fn new(security: Arc<Security>, registry: Arc<Registry>, identity: Identity) -> HubGate {
+        HubGate {
+            access: security.access(identity),
+            security,
+            registry,
+            reported: Default::default(),
+        }
+    }
+
+    pub fn identity(&self) -> &Identity {
+        self.access.identity()
+    }
+
+    /// Whether `name` is an input of some online robot: a topic in its namespace that the
+    /// robot did not publish itself. Publishing there acts on a robot and is audited.
+    fn robot_input(&self, name: &str) -> bool {
+        let Some(first) = name.strip_prefix('/').and_then(|n| n.split('/').next()) else {
+            return false;
+        };
+        if let IdentityKind::Robot { name: me } = &self.identity().kind
+            && me.as_str() == first
+        {
+            return false;
+        }
+        self.registry.is_online(first)
+    }
+}
+
+impl Gate for HubGate {
+    fn allows(&mut self, name: &str, op: Op) -> bool {
+        let d = self.access.decide(name, operation(op));
+        if !d.allowed && self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
+            let rec = AuditRecord::operation(
+                self.identity(),
+                audit_action(op),
+                name,
+                None,
+                false,
+                UnixTime::now(),
+            )
+            .with_detail(format!("{:?}", d.reason));
+            self.security.audit.record(rec);
+        }
+        d.allowed
+    }
+
+    fn done(&mut self, name: &str, op: Op, size: usize) {
+        let audited = match op {
+            Op::Publish => self.robot_input(name),
+            Op::CallService => true,
+            Op::Subscribe => false,
+        };
+        if audited {
+            let rec = AuditRecord::operation(
+                self.identity(),
+                audit_action(op),
+                name,
+                Some(size as u64),
+                true,
+                UnixTime::now(),
+            );
+            self.security.audit.record(rec);
+        }
+    }
+
+    fn fork(&self) -> Box<dyn Gate> {
+        Box::new(HubGate {
+            access: self.access.clone(),
+            security: self.security.clone(),
+            registry: self.registry.clone(),
+            reported: Default::default(),
+        })
+    }
+
+    fn principal(&self) -> String {
+        self.identity().principal()
+    }
+}
+
+/// Authenticates `auth` operations of one rosbridge connection.
+pub struct HubGuard {
+    pub security: Arc<Security>,
+    pub registry: Arc<Registry>,
+    pub conn: ConnInfo,
+}
+
+/// The longest credential field accepted in an `auth` operation.
+const MAX_AUTH_FIELD: usize = 8 * 1024;
+
+impl Guard for HubGuard {
+    fn authenticate(&self, fields: &Map<String, Value>) -> Result<Box<dyn Gate>, String> {
+        let text = |k: &str| fields.get(k).and_then(Value::as_str);
+        for (k, v) in fields {
+            if let Value::String(s) = v
+                && s.len() > MAX_AUTH_FIELD
+            {
+                return Err(format!(
+                    "field '{k}' is {} bytes, over the {MAX_AUTH_FIELD}-byte limit",
+                    s.len()
+                ));
+            }
+        }
+        let credential = if let Some(t) = text("token").or_else(|| text("mac")) {
+            Credential::Bearer(t.to_owned())
+        } else if let (Some(u), Some(p)) = (text("user"), text("password")) {
+            Credential::Password {
+                user: u.to_owned(),
+                password: p.to_owned(),
+            }
+        } else {
+            return Err(
+                "send 'token' (or 'mac') with a fleetlink or OIDC token, or 'user' and 'password'"
+                    .into(),
+            );
+        };
+        let security = self.security.clone();
+        let conn = self.conn.clone();
+        let identity = blocking(move || security.authenticate(credential, conn, UnixTime::now()))
+            .map_err(|e| e.public_message())?;
+        Ok(Box::new(HubGate::new(
+            self.security.clone(),
+            self.registry.clone(),
+            identity,
+        )))
+    }
+}
+
+/// Runs a credential check off the async workers when the runtime allows it.
+fn blocking<T>(f: impl FnOnce() -> T) -> T {
+    match tokio::runtime::Handle::try_current().map(|h| h.runtime_flavor()) {
+        Ok(tokio::runtime::RuntimeFlavor::MultiThread) => tokio::task::block_in_place(f),
+        _ => f(),
+    }
+}
+
+/// Checks a credential on the blocking pool.
+pub async fn authenticate(
+    security: &Arc<Security>,
+    credential: Credential,
+    conn: ConnInfo,
+) -> Result<Identity, fleetlink_auth::AuthError> {
+    let security = security.clone();
+    match tokio::task::spawn_blocking(move || {
+        security.authenticate(credential, conn, UnixTime::now())
+    })
+    .await
+    {
+        Ok(r) => r,
+        Err(_) => Err(fleetlink_auth::AuthError::Missing),
+    }
+}
+
+/// Where a connection comes from, for the security layer.
+pub fn conn_info(
+    peer: SocketAddr,
+    headers: &axum::http::HeaderMap,
+    tls_name: Option<fleetlink_auth::RobotName>,
+) -> ConnInfo {
+    let mut c = ConnInfo::new(peer.ip());
+    if let Some(xff) = headers.get("x-forwarded-for").and_then(|v| v.to_str().ok()) {
+        c = c.with_forwarded_for(xff);
+    }
+    if let Some(n) = tls_name {
+        c = c.with_tls_client_name(n);
+    }
+    c
+}
+
+/// The credential an HTTP request carries: `Authorization: Bearer`, else `?token=`.
+pub fn request_credential(headers: &axum::http::HeaderMap, query: Option<&str>) -> Credential {
+    if let Some(c) = headers
+        .get(axum::http::header::AUTHORIZATION)
+        .and_then(|v| v.to_str().ok())
+        .and_then(Credential::from_authorization_header)
+    {
+        return c;
+    }
+    if let Some(q) = query {
+        for pair in q.split('&') {
+            if let Some(t) = pair.strip_prefix("token=")
+                && !t.is_empty()
+            {
+                return Credential::Bearer(percent_decode(t));
+            }
+        }
+    }
+    Credential::None
+}
+
+/// Tokens are base64url; only `%XX` escapes a browser may add need undoing.
+fn percent_decode(s: &str) -> String {
+    let b = s.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'%'
+            && i + 2 < b.len()
+            && let Ok(v) = u8::from_str_radix(&s[i + 1..i + 3], 16)
+        {
+            out.push(v);
+            i += 3;
+            continue;
+        }
+        out.push(b[i]);
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}

@@ -1,0 +1,79 @@
+//! Authorization as the relay sees it: a [`Gate`] answers "may this connection do this
+//! to that name?" and hears about what it did, for the audit log.
+//!
+//! The relay knows nothing of tokens, rules or databases; the hub implements `Gate` on
+//! top of its security layer and the agent's local listener uses [`AllowAll`]. A session
+//! asks at advertise/publish/subscribe time and again for every message it delivers, so a
+//! rule change reaches live subscriptions; implementations cache decisions so the
+//! per-message question is a hash lookup.
+
+use serde_json::{Map, Value};
+
+/// What a connection wants to do to a name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Op {
+    /// Advertise or publish a topic.
+    Publish,
+    /// Subscribe to a topic, see it listed, and keep receiving it.
+    Subscribe,
+    /// Call a service (the hub's own `/rosapi` services included).
+    CallService,
+}
+
+pub trait Gate: Send + Sync + 'static {
+    /// May this connection do `op` on `name`? Refusals are recorded by the gate.
+    fn allows(&mut self, name: &str, op: Op) -> bool;
+
+    /// `op` on `name` was done (`size` payload bytes); a gate records the operations that
+    /// act on robots.
+    fn done(&mut self, _name: &str, _op: Op, _size: usize) {}
+
+    /// A second gate for the same identity (the session's writer task gets one).
+    fn fork(&self) -> Box<dyn Gate>;
+
+    /// Who this is, for messages (`user:alice`, `robot:r1`, `anonymous`).
+    fn principal(&self) -> String;
+}
+
+/// No authorization: every operation is allowed (a robot's own local listener).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct AllowAll;
+
+impl Gate for AllowAll {
+    fn allows(&mut self, _name: &str, _op: Op) -> bool {
+        true
+    }
+
+    fn fork(&self) -> Box<dyn Gate> {
+        Box::new(AllowAll)
+    }
+
+    fn principal(&self) -> String {
+        "local".into()
+    }
+}
+
+/// Turns the fields of a rosbridge `auth` operation into a gate for the authenticated
+/// identity; the error text is sent back in a `status` message.
+pub trait Guard: Send + Sync + 'static {
+    fn authenticate(&self, fields: &Map<String, Value>) -> Result<Box<dyn Gate>, String>;
+}
+
+/// How a session starts out.
+pub struct SessionAuth {
+    /// Already authenticated (from the upgrade request, or anonymous access); `None`
+    /// means every operation but `auth` is refused until the client authenticates.
+    pub gate: Option<Box<dyn Gate>>,
+    /// Accepts the `auth` operation; `None` = the operation is not needed here.
+    pub guard: Option<std::sync::Arc<dyn Guard>>,
+}
+
+impl SessionAuth {
+    /// No authentication, everything allowed.
+    pub fn open() -> SessionAuth {
+        SessionAuth {
+            gate: Some(Box::new(AllowAll)),
+            guard: None,
+        }
+    }
+}
