@@ -29,6 +29,9 @@ use tokio_tungstenite::tungstenite::client::IntoClientRequest;
 use tokio_tungstenite::tungstenite::http::HeaderValue;
 use tokio_util::sync::CancellationToken;
 
+/// How often the agent reports its demand and link figures to the hub.
+const LINK_REPORT_INTERVAL: Duration = Duration::from_secs(1);
+
 /// How long connecting plus the `HELLO`/`WELCOME` exchange may take.
 const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
 
@@ -94,6 +97,8 @@ pub enum LinkState {
 pub struct UplinkStats {
     pub connects: std::sync::atomic::AtomicU64,
     pub rtt_ns: std::sync::atomic::AtomicU64,
+    /// The hub's capacity share for this robot, bytes/s (0 = none received / no cap).
+    pub share_bps: std::sync::atomic::AtomicU64,
 }
 
 pub struct Uplink {
@@ -319,6 +324,29 @@ impl Uplink {
 
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
         let dead_after = heartbeat * 2;
+        // Once a second the hub hears what this robot would send and what its link
+        // carries, for sharing a site's access link among its robots.
+        let reporter = {
+            let (outbox, ctrl) = (self.outbox.clone(), ctrl_tx.clone());
+            tokio::spawn(async move {
+                let mut tick = tokio::time::interval(LINK_REPORT_INTERVAL);
+                tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+                loop {
+                    tick.tick().await;
+                    let Some(f) = outbox.link_figures(std::time::Instant::now()) else {
+                        return;
+                    };
+                    let report = Frame::LinkReport {
+                        demand_bps: f.demand_bps as u64,
+                        rate_bps: f.rate_bps as u64,
+                        latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
+                    };
+                    if ctrl.send(Control::Frame(report)).await.is_err() {
+                        return;
+                    }
+                }
+            })
+        };
         let reason = loop {
             let m = match tokio::time::timeout(dead_after, stream.next()).await {
                 Err(_) => {
@@ -346,6 +374,7 @@ impl Uplink {
                 }
             }
         };
+        reporter.abort();
         let _ = ctrl_tx.try_send(Control::Close);
         drop(ctrl_tx);
         writer.abort();
@@ -400,7 +429,15 @@ impl Uplink {
                 };
                 let _ = ctrl.send(Control::Frame(pong)).await;
             }
-            LinkEvent::Pong { echo_ns, .. } => {
+            LinkEvent::Pong {
+                id,
+                echo_ns,
+                responder_ns,
+            } => {
+                if id < fleetlink_relay::link::HEARTBEAT_ID_BASE {
+                    self.outbox
+                        .on_echo(id, responder_ns, std::time::Instant::now());
+                }
                 let rtt = fleetlink_relay::unix_nanos().saturating_sub(echo_ns);
                 self.stats
                     .rtt_ns
@@ -412,6 +449,13 @@ impl Uplink {
             LinkEvent::Ack { messages } => {
                 self.outbox
                     .on_acked(messages as usize, std::time::Instant::now());
+            }
+            LinkEvent::Share { bytes_per_sec } => {
+                let share = (bytes_per_sec > 0).then_some(bytes_per_sec as f64);
+                self.outbox.set_share(share, std::time::Instant::now());
+                self.stats
+                    .share_bps
+                    .store(bytes_per_sec, std::sync::atomic::Ordering::Relaxed);
             }
             _ => {}
         }

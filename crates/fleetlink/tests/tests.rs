@@ -5,6 +5,7 @@ mod util;
 
 mod e2e {
     mod bench_cli;
+    mod capacity;
     mod cli;
     mod isolation;
     mod link;

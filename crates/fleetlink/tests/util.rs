@@ -58,10 +58,16 @@ fn fastrand_u64() -> u64 {
 pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Duration) -> TestHub {
     let cfg = HubConfig {
         listen: addr,
-        data_dir: data_dir.clone(),
+        data_dir,
         heartbeat,
         ..HubConfig::default()
     };
+    start_hub_with(cfg).await
+}
+
+/// A hub from a full configuration (its `listen` should use port 0 or a known free one).
+pub async fn start_hub_with(cfg: HubConfig) -> TestHub {
+    let data_dir = cfg.data_dir.clone();
     let hub = Hub::bind(
         cfg,
         Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled()),
@@ -436,4 +442,34 @@ async fn pump(
 /// Publishes on the hub's router directly, as an in-process participant.
 pub fn hub_publisher(hub: &TestHub, name: &str, type_name: &str) -> LocalPublisher {
     LocalPublisher::new(&hub.state.router, name, type_name)
+}
+
+/// `GET url` with a bearer token over plain HTTP/1.0: status code and JSON body.
+pub async fn http_get(url: &str, token: &str) -> (u16, serde_json::Value) {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let rest = url.strip_prefix("http://").expect("http URL");
+    let (host, path) = rest
+        .split_once('/')
+        .map(|(h, p)| (h, format!("/{p}")))
+        .unwrap_or((rest, "/".into()));
+    let mut s = within("HTTP connect", TcpStream::connect(host))
+        .await
+        .expect("connect");
+    let req =
+        format!("GET {path} HTTP/1.0\r\nHost: {host}\r\nAuthorization: Bearer {token}\r\n\r\n");
+    s.write_all(req.as_bytes()).await.unwrap();
+    let mut out = String::new();
+    within("HTTP response", s.read_to_string(&mut out))
+        .await
+        .unwrap();
+    let code: u16 = out
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(0);
+    let body = out.split_once("\r\n\r\n").map(|(_, b)| b).unwrap_or("");
+    (
+        code,
+        serde_json::from_str(body).unwrap_or(serde_json::Value::Null),
+    )
 }

@@ -43,7 +43,45 @@ pub struct LiveRobot {
     /// Round trip of the last ping the hub sent, in nanoseconds (0 = none yet).
     pub rtt_ns: AtomicU64,
     pub last_seen_ns: AtomicU64,
+    /// From the agent's last `LINK_REPORT`: what it would send, what its link delivered
+    /// (bytes/s) and its one-way latency (ns).
+    pub demand_bps: AtomicU64,
+    pub rate_bps: AtomicU64,
+    pub latency_ns: AtomicU64,
+    /// The capacity share last sent to it (bytes/s; 0 = none).
+    pub share_bps: AtomicU64,
+    /// Hub clock minus robot clock, from the least-delayed of the recent heartbeats.
+    clock: Mutex<ClockSync>,
     control: mpsc::Sender<Control>,
+}
+
+/// Clock offset from ping/pong exchanges, NTP style: each exchange bounds the offset
+/// within its round trip; the exchange with the shortest round trip among the recent
+/// ones gives the tightest estimate.
+#[derive(Default)]
+struct ClockSync {
+    samples: std::collections::VecDeque<(u64, i64)>,
+}
+
+const CLOCK_SAMPLES: usize = 16;
+
+impl LiveRobot {
+    /// Hub clock minus robot clock in nanoseconds, once a heartbeat has been answered.
+    pub fn clock_offset_ns(&self) -> Option<i64> {
+        let c = self.clock.lock().unwrap_or_else(|p| p.into_inner());
+        c.samples
+            .iter()
+            .min_by_key(|(rtt, _)| *rtt)
+            .map(|(_, o)| *o)
+    }
+
+    /// Sends the robot its capacity share (bytes/s; 0 = no cap). Never blocks.
+    pub fn send_share(&self, bytes_per_sec: u64) {
+        self.share_bps.store(bytes_per_sec, Relaxed);
+        let _ = self
+            .control
+            .try_send(Control::Frame(Frame::Share { bytes_per_sec }));
+    }
 }
 
 /// Robots online, by name.
@@ -227,6 +265,11 @@ pub async fn serve_agent<S>(
         heartbeat_ms,
         rtt_ns: AtomicU64::new(0),
         last_seen_ns: AtomicU64::new(fleetlink_relay::unix_nanos()),
+        demand_bps: AtomicU64::new(0),
+        rate_bps: AtomicU64::new(0),
+        latency_ns: AtomicU64::new(0),
+        share_bps: AtomicU64::new(0),
+        clock: Mutex::new(ClockSync::default()),
         control: ctrl_tx.clone(),
     });
     if let Some(old) = ctx.registry.insert(live.clone()) {
@@ -431,6 +474,15 @@ impl AgentSession {
                     // Asked per message (a cached answer) so a rule change applies at once.
                     let name = p.topic.name();
                     if self.gate.allows(name.as_str(), Op::Publish) {
+                        // End-to-end latency on the hub's clock: origin stamp plus the
+                        // robot's clock offset, to now.
+                        if let Some(off) = self.live.clock_offset_ns() {
+                            let origin = stamp_ns as i128 + off as i128;
+                            let lat = fleetlink_relay::unix_nanos() as i128 - origin;
+                            if lat >= 0 {
+                                p.topic.stats.record_latency(lat as u64);
+                            }
+                        }
                         let size = payload.len();
                         p.topic.publish(self.client, seq, stamp_ns, payload);
                         self.gate.done(name.as_str(), Op::Publish, size);
@@ -499,14 +551,37 @@ impl AgentSession {
                 };
                 let _ = self.ctrl.send(Control::Frame(pong)).await;
             }
-            LinkEvent::Pong { echo_ns, .. } => {
+            LinkEvent::Pong {
+                echo_ns,
+                responder_ns,
+                ..
+            } => {
                 let now = fleetlink_relay::unix_nanos();
-                self.live.rtt_ns.store(now.saturating_sub(echo_ns), Relaxed);
+                let rtt = now.saturating_sub(echo_ns);
+                self.live.rtt_ns.store(rtt, Relaxed);
+                // The robot read its clock about half a round trip after we sent.
+                let offset = (echo_ns as i128 + rtt as i128 / 2 - responder_ns as i128)
+                    .clamp(i64::MIN as i128, i64::MAX as i128) as i64;
+                let mut c = self.live.clock.lock().unwrap_or_else(|p| p.into_inner());
+                if c.samples.len() == CLOCK_SAMPLES {
+                    c.samples.pop_front();
+                }
+                c.samples.push_back((rtt, offset));
+            }
+            LinkEvent::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+            } => {
+                self.live.demand_bps.store(demand_bps, Relaxed);
+                self.live.rate_bps.store(rate_bps, Relaxed);
+                self.live.latency_ns.store(latency_ns, Relaxed);
             }
             LinkEvent::Status { level, text, .. } => {
                 tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
             }
             LinkEvent::Hello { .. }
+            | LinkEvent::Share { .. }
             | LinkEvent::Welcome { .. }
             | LinkEvent::Ack { .. }
             | LinkEvent::None => {}

@@ -21,6 +21,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/robots", get(robots))
         .route("/api/v1/topics", get(topics))
         .route("/api/v1/clients", get(clients))
+        .route("/api/v1/robots/{name}/offload", get(offload))
 }
 
 fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
@@ -46,6 +47,12 @@ async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
                 "rtt_ms": r.rtt_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
                 "last_seen_ms": r.last_seen_ns.load(std::sync::atomic::Ordering::Relaxed) / 1_000_000,
                 "topics": own,
+                "site": st.sites.iter().find(|site| site.robots.is_match(&r.name)).map(|site| site.name.clone()),
+                "share_bps": nonzero(r.share_bps.load(std::sync::atomic::Ordering::Relaxed)),
+                "demand_bps": r.demand_bps.load(std::sync::atomic::Ordering::Relaxed),
+                "link_rate_bps": r.rate_bps.load(std::sync::atomic::Ordering::Relaxed),
+                "latency_ms": r.latency_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
+                "clock_offset_ms": r.clock_offset_ns().map(|o| o as f64 / 1e6),
             })
         })
         .collect();
@@ -93,6 +100,10 @@ async fn topics(State(st): State<Arc<HubState>>) -> Json<Value> {
                 "bytes": t.stats.bytes.load(std::sync::atomic::Ordering::Relaxed),
                 "last_message_ms": if last == 0 { Value::Null } else { json!(last / 1_000_000) },
                 "drops": drops,
+                "latency_ms": match t.stats.latency_ns.load(std::sync::atomic::Ordering::Relaxed) {
+                    0 => Value::Null,
+                    ns => json!(ns as f64 / 1e6),
+                },
             })
         })
         .collect();
@@ -126,6 +137,68 @@ async fn clients(State(st): State<Arc<HubState>>) -> Json<Value> {
         })
         .collect();
     Json(json!({ "clients": list }))
+}
+
+fn nonzero(v: u64) -> Value {
+    if v == 0 { Value::Null } else { json!(v) }
+}
+
+/// The numbers of inequality (5), set by the operator for the task at hand.
+#[derive(serde::Deserialize)]
+struct OffloadQuery {
+    /// Robots that need each piece of cooperation data.
+    h: f64,
+    /// The robot's computing speed, operations/s.
+    s_m: f64,
+    /// The server's computing speed, operations/s.
+    s_s: f64,
+    /// Data per task, bytes.
+    d: f64,
+    /// Computation per task, operations.
+    x: f64,
+}
+
+/// Whether offloading a cooperation task to the cloud beats doing it on the robots,
+/// given the robot's measured link (Cloudroid Swarm's inequality (5)).
+async fn offload(
+    State(st): State<Arc<HubState>>,
+    axum::extract::Path(name): axum::extract::Path<String>,
+    q: Result<axum::extract::Query<OffloadQuery>, axum::extract::rejection::QueryRejection>,
+) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    let bad = |code, msg: String| (code, Json(json!({"error": msg}))).into_response();
+    let q = match q {
+        Ok(q) => q.0,
+        Err(e) => {
+            return bad(
+                axum::http::StatusCode::BAD_REQUEST,
+                format!("offload needs h, s_m, s_s, d and x: {e}"),
+            );
+        }
+    };
+    let Some(r) = st.registry.list().into_iter().find(|r| r.name == name) else {
+        return bad(
+            axum::http::StatusCode::NOT_FOUND,
+            format!("robot {name} is not online"),
+        );
+    };
+    let report = crate::capacity::report(&r);
+    let params = fleetlink_qos::OffloadParams {
+        h: q.h,
+        s_m: q.s_m,
+        s_s: q.s_s,
+        d: q.d,
+        x: q.x,
+    };
+    let offload = params.offload(report.rate, report.latency);
+    Json(json!({
+        "robot": name,
+        "offload": offload,
+        "link_rate_bps": report.rate,
+        "latency_ms": report.latency.as_millis_f64(),
+        "params": {"h": q.h, "s_m": q.s_m, "s_s": q.s_s, "d": q.d, "x": q.x},
+    }))
+    .into_response()
 }
 
 fn ms(t: std::time::SystemTime) -> u64 {

@@ -12,6 +12,7 @@
 //! - [`agents`]: one agent's `fleetlink.v1` session on the hub, and the registry of live
 //!   robots.
 //! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
+//! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
@@ -19,6 +20,7 @@
 
 pub mod agents;
 pub mod api;
+pub mod capacity;
 pub mod metrics;
 pub mod security;
 pub mod server;

@@ -48,6 +48,45 @@ pub struct HubConfig {
     pub acl: fleetlink_auth::AclDefaults,
     /// Serve `wss://`/`https://` with these files (reloaded when they change).
     pub tls: Option<fleetlink_auth::tls::ServerTlsFiles>,
+    /// Sites whose robots share one access link; the hub divides its capacity.
+    pub sites: Vec<SiteConfig>,
+}
+
+/// Robots behind one access link (a site uplink, a cell) and its capacity.
+#[derive(Debug, Clone)]
+pub struct SiteConfig {
+    pub name: String,
+    /// Capacity of the shared link, bytes/s.
+    pub capacity_bps: f64,
+    /// Robots (whole-name regex) at this site.
+    pub robots: regex::Regex,
+}
+
+impl std::str::FromStr for SiteConfig {
+    type Err = String;
+
+    /// `NAME=MBIT:ROBOT_REGEX`, e.g. `warehouse=20:robot[0-9]+`.
+    fn from_str(s: &str) -> Result<SiteConfig, String> {
+        let (name, rest) = s.split_once('=').ok_or("expected NAME=MBIT:ROBOT_REGEX")?;
+        let (mbit, re) = rest
+            .split_once(':')
+            .ok_or("expected NAME=MBIT:ROBOT_REGEX")?;
+        let mbit: f64 = mbit
+            .parse()
+            .map_err(|e| format!("capacity {mbit:?} is not a number of Mbit/s: {e}"))?;
+        if !(mbit > 0.0 && mbit.is_finite()) {
+            return Err(format!("capacity must be > 0 Mbit/s, got {mbit}"));
+        }
+        let robots = regex::RegexBuilder::new(&format!("^(?:{re})$"))
+            .size_limit(256 * 1024)
+            .build()
+            .map_err(|e| format!("robot pattern {re:?}: {e}"))?;
+        Ok(SiteConfig {
+            name: name.to_owned(),
+            capacity_bps: mbit * 1e6 / 8.0,
+            robots,
+        })
+    }
 }
 
 impl Default for HubConfig {
@@ -61,6 +100,7 @@ impl Default for HubConfig {
             auth: fleetlink_auth::AuthPolicy::default(),
             acl: fleetlink_auth::AclDefaults::default(),
             tls: None,
+            sites: Vec::new(),
         }
     }
 }
@@ -95,6 +135,7 @@ pub struct HubState {
     pub shutdown: CancellationToken,
     pub security: Arc<fleetlink_auth::Security>,
     pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
+    pub sites: Vec<SiteConfig>,
     pub started: std::time::SystemTime,
 }
 
@@ -156,6 +197,7 @@ impl Hub {
             shutdown,
             security,
             tls,
+            sites: cfg.sites.clone(),
             started: std::time::SystemTime::now(),
         });
         Ok(Hub { listener, state })
@@ -191,6 +233,7 @@ impl Hub {
             .fallback(root)
             .with_state(state.clone());
         let housekeeping = tokio::spawn(housekeeping(state.clone()));
+        let capacity = tokio::spawn(crate::capacity::share_sites(state.clone()));
         tokio::pin!(shutdown);
         loop {
             let (tcp, peer) = tokio::select! {
@@ -247,6 +290,7 @@ impl Hub {
         }
         token.cancel();
         housekeeping.abort();
+        capacity.abort();
         Ok(())
     }
 }

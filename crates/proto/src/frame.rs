@@ -42,6 +42,8 @@ pub enum FrameKind {
     Pong = 0x0a,
     Ack = 0x0b,
     Status = 0x0c,
+    Share = 0x0d,
+    LinkReport = 0x0e,
 }
 
 /// Severity of a `STATUS` frame.
@@ -177,6 +179,17 @@ pub enum Frame {
         alias: u32,
         text: String,
     },
+    /// Hub → agent: the robot's share of its site's access link, bytes per second
+    /// (0 = no cap). `bytes_per_sec u64le`
+    Share { bytes_per_sec: u64 },
+    /// Agent → hub, about once a second: what the robot would send if it could, what its
+    /// link delivered, and its measured one-way latency.
+    /// `demand_bps u64le | rate_bps u64le | latency_ns u64le`
+    LinkReport {
+        demand_bps: u64,
+        rate_bps: u64,
+        latency_ns: u64,
+    },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -196,6 +209,8 @@ impl Frame {
             Frame::Pong { .. } => FrameKind::Pong as u8,
             Frame::Ack { .. } => FrameKind::Ack as u8,
             Frame::Status { .. } => FrameKind::Status as u8,
+            Frame::Share { .. } => FrameKind::Share as u8,
+            Frame::LinkReport { .. } => FrameKind::LinkReport as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -317,6 +332,16 @@ impl Frame {
                 put_varint(b, u64::from(*code));
                 put_varint(b, u64::from(*alias));
                 put_str(b, text);
+            }
+            Frame::Share { bytes_per_sec } => b.put_u64_le(*bytes_per_sec),
+            Frame::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+            } => {
+                b.put_u64_le(*demand_bps);
+                b.put_u64_le(*rate_bps);
+                b.put_u64_le(*latency_ns);
             }
             Frame::Unknown { .. } => {}
         }
@@ -498,6 +523,14 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             code: r.varint_u32("STATUS.code")?,
             alias: r.varint_u32("STATUS.alias")?,
             text: r.string("STATUS.text")?,
+        },
+        0x0d => Frame::Share {
+            bytes_per_sec: r.u64_le("SHARE.bytes_per_sec")?,
+        },
+        0x0e => Frame::LinkReport {
+            demand_bps: r.u64_le("LINK_REPORT.demand_bps")?,
+            rate_bps: r.u64_le("LINK_REPORT.rate_bps")?,
+            latency_ns: r.u64_le("LINK_REPORT.latency_ns")?,
         },
         other => Frame::Unknown { kind: other },
     };

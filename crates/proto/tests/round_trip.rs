@@ -59,6 +59,12 @@ proptest! {
     fn status(f in util::status()) { assert_round_trip(&f)?; }
 
     #[test]
+    fn share(f in util::share()) { assert_round_trip(&f)?; }
+
+    #[test]
+    fn link_report(f in util::link_report()) { assert_round_trip(&f)?; }
+
+    #[test]
     fn unknown_kind(f in util::unknown()) { assert_round_trip(&f)?; }
 
     #[test]

@@ -153,8 +153,22 @@ pub fn status() -> impl Strategy<Value = Frame> {
 }
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
+pub fn share() -> impl Strategy<Value = Frame> {
+    any::<u64>().prop_map(|bytes_per_sec| Frame::Share { bytes_per_sec })
+}
+
+pub fn link_report() -> impl Strategy<Value = Frame> {
+    (any::<u64>(), any::<u64>(), any::<u64>()).prop_map(|(demand_bps, rate_bps, latency_ns)| {
+        Frame::LinkReport {
+            demand_bps,
+            rate_bps,
+            latency_ns,
+        }
+    })
+}
+
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x0du8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x0fu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -171,6 +185,8 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         pong(),
         ack(),
         status(),
+        share(),
+        link_report(),
         unknown(),
     ]
 }
@@ -237,6 +253,14 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             code: 403,
             alias: 300,
             text: "not allowed".into(),
+        },
+        Frame::Share {
+            bytes_per_sec: 500_000,
+        },
+        Frame::LinkReport {
+            demand_bps: 2_000_000,
+            rate_bps: 480_000,
+            latency_ns: 41_000_000,
         },
     ]
 }

@@ -22,6 +22,11 @@ use crate::message::{Message, TopicMeta};
 use crate::names::TopicId;
 use crate::outbox::Outbox;
 
+/// Ids of heartbeat `PING`s start here; lower ids are link-estimator probes.
+pub const HEARTBEAT_ID_BASE: u64 = 1 << 62;
+/// How often an idle writer looks whether an estimator probe is due.
+const PROBE_TICK: Duration = Duration::from_millis(50);
+
 /// Largest message reassembled from chunks.
 pub const MAX_LINK_MESSAGE: usize = 64 << 20;
 /// Largest total of partially received chunked messages on one link.
@@ -80,6 +85,16 @@ pub enum LinkEvent {
     /// The peer received this many whole messages since its previous `ACK`.
     Ack {
         messages: u32,
+    },
+    /// The hub's capacity share for this robot (bytes/s, 0 = no cap).
+    Share {
+        bytes_per_sec: u64,
+    },
+    /// An agent's link report.
+    LinkReport {
+        demand_bps: u64,
+        rate_bps: u64,
+        latency_ns: u64,
     },
     Hello {
         version: u32,
@@ -250,6 +265,16 @@ impl LinkIn {
                 heartbeat_ms,
             },
             Frame::Ack { frames } => LinkEvent::Ack { messages: frames },
+            Frame::Share { bytes_per_sec } => LinkEvent::Share { bytes_per_sec },
+            Frame::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+            } => LinkEvent::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+            },
             Frame::Unknown { .. } => LinkEvent::None,
         })
     }
@@ -306,7 +331,8 @@ pub async fn write_link<K>(
         }
     }
     let mut lanes: Vec<Lane> = Vec::new();
-    let mut ping_id = 0u64;
+    // Heartbeat ids live far from the link estimator's probe ids (which count from 0).
+    let mut ping_id = HEARTBEAT_ID_BASE;
     let mut next_ping = tokio::time::Instant::now() + heartbeat;
     // Small frames are packed into one WebSocket message up to this size.
     const PACK: usize = 64 * 1024;
@@ -328,7 +354,15 @@ pub async fn write_link<K>(
                 }
             }
         }
-        if tokio::time::Instant::now() >= next_ping {
+        // Echo probes of a scheduled outbox's link estimator also serve as heartbeats.
+        if let Some(id) = outbox.poll_probe(Instant::now()) {
+            Frame::Ping {
+                id,
+                sent_ns: crate::unix_nanos(),
+            }
+            .encode(&mut buf);
+            next_ping = tokio::time::Instant::now() + heartbeat;
+        } else if tokio::time::Instant::now() >= next_ping {
             ping_id += 1;
             Frame::Ping {
                 id: ping_id,
@@ -429,7 +463,7 @@ pub async fn write_link<K>(
                 }
             },
             _ = outbox.ready() => {}
-            _ = tokio::time::sleep_until(next_ping) => {}
+            _ = tokio::time::sleep_until(next_ping.min(tokio::time::Instant::now() + PROBE_TICK)) => {}
         }
     }
 }

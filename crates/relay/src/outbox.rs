@@ -16,7 +16,10 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::rosbridge::Compression;
 use tokio::sync::Notify;
 
-use fleetlink_qos::{Nanos, Push, Scheduler, SchedulerConfig, TopicId as QosTopic, TopicQos};
+use fleetlink_qos::{
+    LinkConfig, LinkEstimator, Nanos, Push, Scheduler, SchedulerConfig, TopicId as QosTopic,
+    TopicQos,
+};
 
 use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
@@ -64,7 +67,44 @@ enum Service {
         qos_for: QosFor,
         by_topic: HashMap<u32, SlotId, IdHash>,
         known: HashSet<u32>,
+        link: Box<LinkControl>,
     },
+}
+
+/// What a scheduled outbox knows about its link: the estimator fed by acknowledgements
+/// and echo probes, and the controls it sets on the scheduler.
+struct LinkControl {
+    est: LinkEstimator,
+    /// Size and send time of every unacknowledged message, in send order.
+    sent: VecDeque<(usize, Nanos)>,
+    /// The hub's capacity share for this robot, bytes/s.
+    share: Option<f64>,
+    /// Bytes offered by publishers since the last link report (the robot's demand).
+    offered: u64,
+    offered_since: Nanos,
+}
+
+/// Headroom of the byte window over the bandwidth-delay product (see docs/qos.md).
+const WINDOW_HEADROOM: f64 = 1.2;
+
+impl LinkControl {
+    fn apply(&mut self, sched: &mut Scheduler<Arc<Message>>, now: Nanos) {
+        sched.set_window_bytes(self.est.window_bytes(WINDOW_HEADROOM));
+        sched.set_rate_budget(self.share, now);
+    }
+}
+
+/// A link report for the hub: demand, delivered rate and one-way latency.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct LinkFigures {
+    pub demand_bps: f64,
+    pub rate_bps: f64,
+    pub latency: Option<Duration>,
+    pub rtt: Option<Duration>,
+    /// Hub clock minus robot clock.
+    pub clock_offset_ns: Option<i64>,
+    pub share_bps: Option<f64>,
+    pub in_flight_bytes: usize,
 }
 
 struct State {
@@ -113,6 +153,13 @@ impl Outbox {
                 qos_for,
                 by_topic: HashMap::default(),
                 known: HashSet::new(),
+                link: Box::new(LinkControl {
+                    est: LinkEstimator::new(LinkConfig::default()),
+                    sent: VecDeque::new(),
+                    share: None,
+                    offered: 0,
+                    offered_since: Nanos::ZERO,
+                }),
             },
         )
     }
@@ -228,8 +275,14 @@ impl Outbox {
                 }
                 (dropped.map(|(_, r)| r), wake)
             }
-            Service::Scheduled { sched, origin, .. } => {
+            Service::Scheduled {
+                sched,
+                origin,
+                link,
+                ..
+            } => {
                 let t = Nanos::since(*origin, now);
+                link.offered += msg.wire_len() as u64;
                 match sched.offer(QosTopic(s.topic), msg, t) {
                     Push::Queued => {
                         st.queued += 1;
@@ -252,9 +305,22 @@ impl Outbox {
     /// The peer acknowledged `messages` messages: a scheduled outbox may send more.
     pub fn on_acked(&self, messages: usize, now: Instant) {
         let mut st = self.lock();
-        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
+        if let Service::Scheduled {
+            sched,
+            origin,
+            link,
+            ..
+        } = &mut st.service
+        {
             let t = Nanos::since(*origin, now);
             sched.on_acked(messages, t);
+            for _ in 0..messages {
+                let Some((len, sent_at)) = link.sent.pop_front() else {
+                    break;
+                };
+                link.est.handle_ack(len, sent_at, t);
+            }
+            link.apply(sched, t);
             drop(st);
             self.notify.notify_one();
         }
@@ -263,18 +329,95 @@ impl Outbox {
     /// A new connection: nothing is in flight any more.
     pub fn on_link_reset(&self) {
         let mut st = self.lock();
-        if let Service::Scheduled { sched, .. } = &mut st.service {
+        if let Service::Scheduled { sched, link, .. } = &mut st.service {
             sched.on_link_reset();
+            link.sent.clear();
         }
     }
 
-    /// Caps a scheduled outbox's sending rate (bytes per second; `None` = no cap).
-    pub fn set_rate_budget(&self, bytes_per_sec: Option<f64>, now: Instant) {
+    /// The hub's capacity share for this robot (bytes per second; `None` = no cap): the
+    /// scheduler keeps the sending rate within it.
+    pub fn set_share(&self, bytes_per_sec: Option<f64>, now: Instant) {
         let mut st = self.lock();
-        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
+        if let Service::Scheduled {
+            sched,
+            origin,
+            link,
+            ..
+        } = &mut st.service
+        {
             let t = Nanos::since(*origin, now);
-            sched.set_rate_budget(bytes_per_sec, t);
+            link.share = bytes_per_sec;
+            link.apply(sched, t);
+            drop(st);
+            self.notify.notify_one();
         }
+    }
+
+    /// An echo probe due now, if any (scheduled outboxes only): its id goes out in a PING.
+    pub fn poll_probe(&self, now: Instant) -> Option<u64> {
+        let mut st = self.lock();
+        match &mut st.service {
+            Service::Scheduled { origin, link, .. } => link
+                .est
+                .poll_probe(Nanos::since(*origin, now))
+                .map(|p| p.id),
+            Service::RoundRobin { .. } => None,
+        }
+    }
+
+    /// The hub echoed probe `id`, reading `hub_ns` (Unix ns) on its clock.
+    pub fn on_echo(&self, id: u64, hub_ns: u64, now: Instant) {
+        let mut st = self.lock();
+        if let Service::Scheduled {
+            sched,
+            origin,
+            link,
+            ..
+        } = &mut st.service
+        {
+            let t = Nanos::since(*origin, now);
+            // The estimator runs on this outbox's clock (ns since `origin`); the hub's
+            // reading is put on the same scale, so the offset it finds is hub − robot.
+            let origin_unix = crate::instant_to_unix_nanos(*origin);
+            link.est
+                .handle_echo(id, Nanos(hub_ns.saturating_sub(origin_unix)), t);
+            link.apply(sched, t);
+        }
+    }
+
+    /// What the link looks like now; restarts the demand measurement (call about once a
+    /// second, for the hub's capacity sharing).
+    pub fn link_figures(&self, now: Instant) -> Option<LinkFigures> {
+        let mut st = self.lock();
+        let Service::Scheduled {
+            sched,
+            origin,
+            link,
+            ..
+        } = &mut st.service
+        else {
+            return None;
+        };
+        let t = Nanos::since(*origin, now);
+        let span = t.saturating_sub(link.offered_since).as_secs_f64();
+        let demand = if span > 0.0 {
+            link.offered as f64 / span
+        } else {
+            0.0
+        };
+        link.offered = 0;
+        link.offered_since = t;
+        let d = |n: Nanos| Duration::from_nanos(n.0);
+        Some(LinkFigures {
+            demand_bps: demand,
+            rate_bps: link.est.rate(),
+            latency: link.est.latency().map(d),
+            rtt: link.est.rtt().map(d),
+            clock_offset_ns: link.est.clock_offset(),
+            share_bps: link.share,
+            in_flight_bytes: sched.in_flight_bytes(),
+        })
     }
 
     /// Counts a message the writer had to give up on (e.g. it could not be encoded).
@@ -320,6 +463,7 @@ impl Outbox {
                 sched,
                 origin,
                 by_topic,
+                link,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
@@ -335,6 +479,7 @@ impl Outbox {
                         continue;
                     };
                     let delivery = st.slots.get(slot).map(|s| s.delivery).unwrap_or_default();
+                    link.sent.push_back((m.wire_len(), t));
                     bytes += m.wire_len();
                     items.push((*slot, delivery, m));
                 }

@@ -25,6 +25,9 @@ pub struct TopicStats {
     pub deliveries: AtomicU64,
     drops: [AtomicU64; DropReason::ALL.len()],
     pub last_message_ns: AtomicU64,
+    /// Origin-to-hub latency of messages from robots, an exponential average (ns; 0 =
+    /// not measured).
+    pub latency_ns: AtomicU64,
     buckets: [Bucket; BUCKETS],
 }
 
@@ -44,6 +47,17 @@ impl TopicStats {
         }
         b.messages.fetch_add(1, Relaxed);
         b.bytes.fetch_add(bytes as u64, Relaxed);
+    }
+
+    /// Folds one end-to-end latency sample into the average (weight 1/8).
+    pub fn record_latency(&self, ns: u64) {
+        let old = self.latency_ns.load(Relaxed);
+        let new = if old == 0 {
+            ns
+        } else {
+            (old as i128 + (ns as i128 - old as i128) / 8) as u64
+        };
+        self.latency_ns.store(new, Relaxed);
     }
 
     pub fn record_drop(&self, reason: DropReason) {

@@ -39,6 +39,10 @@ pub struct Args {
     /// A reverse proxy (CIDR) whose X-Forwarded-For header is believed; repeatable.
     #[arg(long = "trusted-proxy", value_name = "CIDR")]
     pub trusted_proxies: Vec<ipnet::IpNet>,
+    /// Robots sharing one access link: NAME=MBIT:ROBOT_REGEX (e.g. warehouse=20:wh_[0-9]+);
+    /// the hub divides the capacity among them by demand and latency. Repeatable.
+    #[arg(long = "site", value_name = "NAME=MBIT:REGEX")]
+    pub sites: Vec<fleetlink_hub::server::SiteConfig>,
 }
 
 impl Args {
@@ -54,6 +58,7 @@ impl Args {
                 ..fleetlink_auth::AuthPolicy::default()
             },
             acl: fleetlink_auth::AclDefaults::default(),
+            sites: self.sites.clone(),
             tls: self
                 .tls_cert
                 .clone()
