@@ -311,16 +311,23 @@ impl<T: WireLen> Scheduler<T> {
         let now_f = now.0 as f64;
         let mut best = f64::NEG_INFINITY;
         let mut best_g = usize::MAX;
-        for (g, (p, head)) in self.group_priority.iter().zip(&self.group_head).enumerate() {
-            // A head in the future (clock skew between callers) counts as no wait.
-            let score = if *head == f64::INFINITY {
-                f64::NEG_INFINITY
-            } else {
-                p * (now_f - head).max(0.0)
-            };
-            if score > best {
-                best = score;
-                best_g = g;
+        // Empty groups hold +inf, so their score is -inf and never wins. Scores are
+        // compared a block at a time (a branch-free max the compiler vectorises); only a
+        // block that beats the best so far is searched for its index.
+        const BLOCK: usize = 8;
+        let (prio, head) = (&self.group_priority, &self.group_head);
+        for (b, (ps, hs)) in prio.chunks(BLOCK).zip(head.chunks(BLOCK)).enumerate() {
+            let mut scores = [f64::NEG_INFINITY; BLOCK];
+            for i in 0..ps.len() {
+                scores[i] = ps[i] * (now_f - hs[i]);
+            }
+            let block_max = scores.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            if block_max > best {
+                // First index with the block's maximum: equal scores favour the higher
+                // priority, which comes first.
+                let i = scores.iter().position(|&x| x == block_max).unwrap_or(0);
+                best = block_max;
+                best_g = b * BLOCK + i;
             }
         }
         if best_g == usize::MAX {
