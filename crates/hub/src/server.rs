@@ -187,6 +187,7 @@ impl Hub {
         let app = HttpRouter::new()
             .route("/healthz", get(|| async { "ok\n" }))
             .merge(api)
+            .merge(crate::admin_api::public_routes())
             .route("/", get(root))
             .fallback(root)
             .with_state(state.clone());
