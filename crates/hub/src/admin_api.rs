@@ -25,8 +25,8 @@ use axum::{Extension, Json};
 use fleetlink_auth::audit::{AuditAction, AuditCursor, AuditQuery, MAX_PAGE};
 use fleetlink_auth::store::TokenId;
 use fleetlink_auth::{
-    AuditRecord, AuthError, Credential, GroupName, Identity, Operation, RobotName, Rule,
-    RuleId, Security, SecurityError, StoreError, UnixTime, UserName,
+    AuditRecord, AuthError, Credential, GroupName, Identity, Operation, RobotName, Rule, RuleId,
+    Security, SecurityError, StoreError, UnixTime, UserName,
 };
 use serde::Deserialize;
 use serde_json::{Value, json};
@@ -143,7 +143,12 @@ fn json_body<T: serde::de::DeserializeOwned>(body: &Bytes, what: &str) -> Result
 
 /// Refuses (403, audited) unless the caller may administer `resource`.
 fn require_admin(st: &HubState, caller: &Identity, resource: &str) -> Result<(), ApiError> {
-    if st.security.authz.decide(caller, resource, Operation::Admin).allowed {
+    if st
+        .security
+        .authz
+        .decide(caller, resource, Operation::Admin)
+        .allowed
+    {
         return Ok(());
     }
     let action = if resource == "/rules" {
@@ -159,6 +164,22 @@ fn require_admin(st: &HubState, caller: &Identity, resource: &str) -> Result<(),
         caller: caller.principal(),
         resource: resource.to_owned(),
     })
+}
+
+/// Records a refused rule change (a hostile or broken rule file) before answering 400.
+fn refused_rules(st: &HubState, caller: &Identity, err: ApiError) -> ApiError {
+    st.security.audit.record(
+        AuditRecord::operation(
+            caller,
+            AuditAction::RuleChange,
+            "/rules",
+            None,
+            false,
+            UnixTime::now(),
+        )
+        .with_detail(err.to_string()),
+    );
+    err
 }
 
 fn created(v: Value) -> Response {
@@ -241,8 +262,11 @@ async fn add_rule(
     body: Bytes,
 ) -> ApiResult {
     require_admin(&st, &me, "/rules")?;
-    let rule: Rule = json_body(&body, "rule")?;
-    let id = blocking(&st, move |sec| Ok(sec.add_rule(&me, rule, UnixTime::now())?)).await?;
+    let rule: Rule = json_body(&body, "rule").map_err(|e| refused_rules(&st, &me, e))?;
+    let id = blocking(&st, move |sec| {
+        Ok(sec.add_rule(&me, rule, UnixTime::now())?)
+    })
+    .await?;
     Ok(created(json!({ "id": id })))
 }
 
@@ -259,7 +283,16 @@ async fn replace_rules(
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())
         .is_some_and(|v| v.contains("json"));
-    let rules: Vec<Rule> = if is_json {
+    let rules = parse_rules(is_json, &body).map_err(|e| refused_rules(&st, &me, e))?;
+    let n = blocking(&st, move |sec| {
+        Ok(sec.replace_rules(&me, rules, UnixTime::now())?)
+    })
+    .await?;
+    Ok(Json(json!({ "rules": n })).into_response())
+}
+
+fn parse_rules(is_json: bool, body: &Bytes) -> Result<Vec<Rule>, ApiError> {
+    Ok(if is_json {
         #[derive(Deserialize)]
         #[serde(untagged)]
         enum Body {
@@ -267,7 +300,7 @@ async fn replace_rules(
             Bare(Vec<Rule>),
         }
         // Untagged enums hide the cause; parse the likely shape first for a clear error.
-        match serde_json::from_slice::<Body>(&body) {
+        match serde_json::from_slice::<Body>(body) {
             Ok(Body::Wrapped { rules }) | Ok(Body::Bare(rules)) => rules,
             Err(_) => {
                 #[derive(Deserialize)]
@@ -276,23 +309,18 @@ async fn replace_rules(
                     #[allow(dead_code)]
                     rules: Vec<Rule>,
                 }
-                let e = serde_json::from_slice::<Wrapped>(&body)
+                let e = serde_json::from_slice::<Wrapped>(body)
                     .err()
                     .map_or_else(|| "unreadable".to_owned(), |e| e.to_string());
                 return Err(ApiError::BadRequest(format!("invalid rules: {e}")));
             }
         }
     } else {
-        let text = std::str::from_utf8(&body)
+        let text = std::str::from_utf8(body)
             .map_err(|e| ApiError::BadRequest(format!("rules YAML is not UTF-8: {e}")))?;
         fleetlink_auth::acl::import_yaml(text)
             .map_err(|e| ApiError::Security(SecurityError::Import(e)))?
-    };
-    let n = blocking(&st, move |sec| {
-        Ok(sec.replace_rules(&me, rules, UnixTime::now())?)
     })
-    .await?;
-    Ok(Json(json!({ "rules": n })).into_response())
 }
 
 async fn remove_rule(
@@ -302,7 +330,11 @@ async fn remove_rule(
 ) -> ApiResult {
     require_admin(&st, &me, "/rules")?;
     let id = RuleId(parse_id(&id, "rule")?);
-    if blocking(&st, move |sec| Ok(sec.remove_rule(&me, id, UnixTime::now())?)).await? {
+    if blocking(&st, move |sec| {
+        Ok(sec.remove_rule(&me, id, UnixTime::now())?)
+    })
+    .await?
+    {
         Ok(no_content())
     } else {
         Err(ApiError::NotFound(format!("no rule {id}")))
@@ -340,7 +372,10 @@ async fn mint_robot_token(
     let b: MintBody = if body.is_empty() {
         MintBody::default()
     } else {
-        json_body(&body, "token request (expected {\"expires_at\"} or {\"ttl_secs\"})")?
+        json_body(
+            &body,
+            "token request (expected {\"expires_at\"} or {\"ttl_secs\"})",
+        )?
     };
     let now = UnixTime::now();
     let expires = match (b.expires_at, b.ttl_secs) {
@@ -396,10 +431,7 @@ async fn revoke_token(
     {
         Ok(no_content())
     } else {
-        Err(ApiError::NotFound(format!(
-            "no unrevoked token #{}",
-            id.0
-        )))
+        Err(ApiError::NotFound(format!("no unrevoked token #{}", id.0)))
     }
 }
 
@@ -428,15 +460,16 @@ async fn add_user(
     body: Bytes,
 ) -> ApiResult {
     require_admin(&st, &me, "/users")?;
-    let b: UserBody = json_body(&body, "user (expected {\"name\", \"password\", \"groups\"})")?;
+    let b: UserBody = json_body(
+        &body,
+        "user (expected {\"name\", \"password\", \"groups\"})",
+    )?;
     let name = UserName::new(&b.name)
         .map_err(|e| ApiError::BadRequest(format!("user name {:?}: {e}", b.name)))?;
     let groups = b
         .groups
         .iter()
-        .map(|g| {
-            GroupName::new(g).map_err(|e| ApiError::BadRequest(format!("group {g:?}: {e}")))
-        })
+        .map(|g| GroupName::new(g).map_err(|e| ApiError::BadRequest(format!("group {g:?}: {e}"))))
         .collect::<Result<Vec<_>, _>>()?;
     blocking(&st, move |sec| {
         Ok(sec.add_user(&me, &name, &b.password, &groups, UnixTime::now())?)
@@ -453,7 +486,11 @@ async fn remove_user(
     require_admin(&st, &me, "/users")?;
     let user = UserName::new(&name)
         .map_err(|e| ApiError::BadRequest(format!("user name {name:?}: {e}")))?;
-    if blocking(&st, move |sec| Ok(sec.remove_user(&me, &user, UnixTime::now())?)).await? {
+    if blocking(&st, move |sec| {
+        Ok(sec.remove_user(&me, &user, UnixTime::now())?)
+    })
+    .await?
+    {
         Ok(no_content())
     } else {
         Err(ApiError::NotFound(format!("no user {name:?}")))
@@ -488,8 +525,16 @@ fn audit_query(p: &HashMap<String, String>) -> Result<AuditQuery, ApiError> {
             .transpose()
     }
     const KNOWN: [&str; 10] = [
-        "principal", "action", "name", "name_regex", "allowed", "since", "until", "limit",
-        "cursor", "token",
+        "principal",
+        "action",
+        "name",
+        "name_regex",
+        "allowed",
+        "since",
+        "until",
+        "limit",
+        "cursor",
+        "token",
     ];
     if let Some(k) = p.keys().find(|k| !KNOWN.contains(&k.as_str())) {
         return Err(ApiError::BadRequest(format!(

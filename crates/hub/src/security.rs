@@ -159,9 +159,12 @@ impl Guard for HubGuard {
                     .policy()
                     .trusted_proxies
                     .client_ip(&self.conn);
-                self.security
-                    .audit
-                    .record(AuditRecord::auth_failure(ip, None, &err, UnixTime::now()));
+                self.security.audit.record(AuditRecord::auth_failure(
+                    ip,
+                    None,
+                    &err,
+                    UnixTime::now(),
+                ));
                 return Err(format!(
                     "field '{k}' is {} bytes, over the {MAX_AUTH_FIELD}-byte limit",
                     s.len()
