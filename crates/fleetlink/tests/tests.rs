@@ -4,6 +4,7 @@
 mod util;
 
 mod e2e {
+    mod acl;
     mod bench_cli;
     mod cli;
     mod isolation;
