@@ -12,4 +12,5 @@ mod e2e {
     mod priority;
     mod relay;
     mod rosbridge;
+    mod tls;
 }

@@ -190,6 +190,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         names: NameMap::default(),
         topic_qos: Vec::new(),
         max_in_flight: 32,
+        tls: None,
     }
 }
 
