@@ -30,6 +30,8 @@ enum Command {
     Demo(cmd::demo::Args),
     /// Load generators and measurements against a running hub.
     Bench(cmd::bench::Args),
+    /// Manage a hub's tokens, users, access rules and audit log (on its data directory).
+    Admin(cmd::admin::Args),
     /// Inspect ROS interface definitions and convert serialized messages.
     Msg(cmd::msg::Args),
     /// Reproduce the AFR paper's quality-of-information comparison (Figure 5).
@@ -43,6 +45,7 @@ fn main() -> anyhow::Result<()> {
         Command::Agent(args) => cmd::agent::run(args),
         Command::Demo(args) => cmd::demo::run(args),
         Command::Bench(args) => cmd::bench::run(args),
+        Command::Admin(args) => cmd::admin::run(args),
         Command::Msg(args) => cmd::msg::run(args),
         Command::QoiSim(args) => cmd::qoi_sim::run(args),
     }

@@ -331,6 +331,25 @@ impl LinkEstimator {
         }
     }
 
+    /// Bytes/s delivered over the last two completed slots (100 ms).
+    pub fn recent_goodput(&self) -> f64 {
+        self.recent_rate(2)
+    }
+
+    /// The bytes that may be unacknowledged at once ([`crate::Scheduler::set_window_bytes`]):
+    /// the recent goodput times the base round trip, with `headroom` (e.g. 1.2), never
+    /// below 16 KiB. `None` — no window — until a base round trip is known, while the link
+    /// is stalled, and for two slots after a stall, when the goodput still reflects the
+    /// outage rather than the link.
+    pub fn window_bytes(&self, headroom: f64) -> Option<usize> {
+        let base = self.base_rtt()?;
+        if self.is_stalled() || self.now < self.stall_ended + Nanos(2 * SLOT.0) {
+            return None;
+        }
+        let bdp = self.recent_goodput() * base.as_secs_f64();
+        Some(((bdp * headroom) as usize).max(16 * 1024))
+    }
+
     /// Bytes/s delivered over the last `k` completed slots.
     fn recent_rate(&self, k: u64) -> f64 {
         let last = self.now.0 / SLOT.0;

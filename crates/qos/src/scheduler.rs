@@ -145,11 +145,17 @@ pub struct Scheduler<T> {
     group_head: Vec<f64>,
     no_drop: VecDeque<(u32, T)>,
     in_flight: usize,
+    /// Sizes of the unacknowledged items, oldest first (acks arrive in send order), and
+    /// their sum: the byte window keeps what sits in the link's queue short.
+    in_flight_sizes: VecDeque<usize>,
+    in_flight_bytes: usize,
+    window_bytes: Option<usize>,
     budget: Option<Budget>,
 }
 
 impl<T: WireLen> Scheduler<T> {
     pub fn new(config: SchedulerConfig) -> Self {
+        let in_flight_sizes = VecDeque::with_capacity(config.max_in_flight.min(1024));
         Scheduler {
             config,
             topics: Vec::new(),
@@ -159,6 +165,9 @@ impl<T: WireLen> Scheduler<T> {
             group_head: Vec::new(),
             no_drop: VecDeque::new(),
             in_flight: 0,
+            in_flight_sizes,
+            in_flight_bytes: 0,
+            window_bytes: None,
             budget: None,
         }
     }
@@ -253,6 +262,14 @@ impl<T: WireLen> Scheduler<T> {
         if self.in_flight >= self.config.max_in_flight {
             return None;
         }
+        // The byte window: at least one item may always be in flight, so a window
+        // smaller than a message cannot stall the link.
+        if let Some(w) = self.window_bytes
+            && self.in_flight > 0
+            && self.in_flight_bytes >= w
+        {
+            return None;
+        }
         if let Some(b) = &mut self.budget {
             b.refill(now);
             if b.tokens <= 0.0 {
@@ -271,6 +288,9 @@ impl<T: WireLen> Scheduler<T> {
         let topic = &mut self.topics[index as usize];
         topic.last_sent = Some(now);
         self.in_flight += 1;
+        let len = item.wire_len();
+        self.in_flight_bytes += len;
+        self.in_flight_sizes.push_back(len);
         if let Some(b) = &mut self.budget {
             b.tokens -= item.wire_len() as f64;
         }
@@ -327,12 +347,20 @@ impl<T: WireLen> Scheduler<T> {
     /// `n` frames were acknowledged by the peer (pong or explicit ack).
     pub fn on_acked(&mut self, n_frames: usize, _now: Nanos) {
         self.in_flight = self.in_flight.saturating_sub(n_frames);
+        for _ in 0..n_frames {
+            match self.in_flight_sizes.pop_front() {
+                Some(len) => self.in_flight_bytes -= len,
+                None => break,
+            }
+        }
     }
 
     /// The link was re-established: nothing is in flight any more. (Frames lost with the
     /// old connection are the session layer's business.)
     pub fn on_link_reset(&mut self) {
         self.in_flight = 0;
+        self.in_flight_sizes.clear();
+        self.in_flight_bytes = 0;
     }
 
     /// Caps the sending rate at `bytes_per_sec` (the capacity share); `None` lifts the cap.
@@ -385,6 +413,19 @@ impl<T: WireLen> Scheduler<T> {
     }
 
     /// Frames sent and not yet acknowledged.
+    /// Caps the bytes sent but not yet acknowledged (`None` = only the item count nT
+    /// applies). Set it near the link's bandwidth-delay product: when capacity falls, the
+    /// excess then waits here, where priorities still apply, instead of in the link's own
+    /// queue where a small urgent message would wait behind it.
+    pub fn set_window_bytes(&mut self, window: Option<usize>) {
+        self.window_bytes = window;
+    }
+
+    /// Bytes sent and not yet acknowledged.
+    pub fn in_flight_bytes(&self) -> usize {
+        self.in_flight_bytes
+    }
+
     pub fn in_flight(&self) -> usize {
         self.in_flight
     }

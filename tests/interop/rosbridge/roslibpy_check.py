@@ -78,7 +78,11 @@ class Inbox:
 
 def connect(url):
     u = urllib.parse.urlparse(url)
-    ros = roslibpy.Ros(host=u.hostname, port=u.port, is_secure=u.scheme == "wss")
+    # roslibpy builds the URL from host and port; a token in the URL's query goes in an
+    # Authorization header instead (both are accepted by the hub).
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, is_secure=u.scheme == "wss", headers=headers)
     try:
         ros.run(timeout=TIMEOUT)
     except Exception as e:  # roslibpy raises RosTimeoutError

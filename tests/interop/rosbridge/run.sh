@@ -62,18 +62,24 @@ wait_for_line() {
     return 1
 }
 
+# --- credentials, minted in the hub's database before it starts (fleetlink admin)
+robot_token="$("$bin" admin --data-dir "$tmp/hub-data" token robot "$robot")"
+op_token="$("$bin" admin --data-dir "$tmp/hub-data" token operator interop --group admin)"
+
 # --- hub (log files exist before the background start, so the reader never races them)
 : >"$tmp/hub.log"; : >"$tmp/agent.log"
 "$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
 pids+=($!)
 hub_addr="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on ([0-9.:]+)$' "hub start" "${pids[0]}")"
-hub_url="ws://$hub_addr/"
-echo "hub: $hub_url"
+# Clients authenticate the way browsers do: the token in the URL.
+hub_url="ws://$hub_addr/?token=$op_token"
+echo "hub: ws://$hub_addr/ (operator token in the URL)"
 
 # --- agent
 cat >"$tmp/agent.yaml" <<EOF
-hub: $hub_url
+hub: ws://$hub_addr/
 name: $robot
+token: $robot_token
 local_rosbridge: { listen: 127.0.0.1:0 }
 sim:
   laser_scan:  { rate_hz: 10, ranges: $scan_ranges }
@@ -87,16 +93,18 @@ local_url="ws://$local_addr/"
 echo "agent $robot local rosbridge: $local_url"
 
 # --- ready: hub healthy, robot1 online with its sim topics (bounded: 15 s)
-"$python" - "$hub_addr" "$robot" <<'EOF'
+"$python" - "$hub_addr" "$robot" "$op_token" <<'EOF'
 import json, sys, time, urllib.request
-addr, robot = sys.argv[1], sys.argv[2]
+addr, robot, token = sys.argv[1], sys.argv[2], sys.argv[3]
 want = {f"/{robot}/scan", f"/{robot}/odom", f"/{robot}/points"}
 deadline, last = time.monotonic() + 15, None
 while time.monotonic() < deadline:
     try:
         with urllib.request.urlopen(f"http://{addr}/healthz", timeout=2) as r:
             assert r.status == 200, r.status
-        with urllib.request.urlopen(f"http://{addr}/api/v1/robots", timeout=2) as r:
+        req = urllib.request.Request(f"http://{addr}/api/v1/robots",
+                                     headers={"Authorization": f"Bearer {token}"})
+        with urllib.request.urlopen(req, timeout=2) as r:
             robots = json.load(r)["robots"]
         me = [x for x in robots if x["name"] == robot]
         last = me

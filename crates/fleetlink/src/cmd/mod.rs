@@ -1,5 +1,6 @@
 //! One module per subcommand, each with an `Args` struct and a `run` function.
 
+pub mod admin;
 pub mod agent;
 pub mod bench;
 pub mod demo;
