@@ -26,18 +26,18 @@ pub struct AgentOptions {
 
 impl AgentOptions {
     /// Options from a loaded configuration file.
-    pub fn from_config(cfg: &AgentConfig) -> Result<AgentOptions, fleetlink_relay::NameError> {
+    pub fn from_config(cfg: &AgentConfig) -> Result<AgentOptions, OptionsError> {
         let parse = TopicName::parse;
         let remap = cfg
             .remap
             .iter()
             .map(|(l, h)| Ok((parse(l)?, parse(h)?)))
-            .collect::<Result<_, _>>()?;
+            .collect::<Result<_, fleetlink_relay::NameError>>()?;
         let subscribe = cfg
             .subscribe
             .iter()
             .map(|s| Ok((parse(&s.hub)?, parse(&s.local)?)))
-            .collect::<Result<_, _>>()?;
+            .collect::<Result<_, fleetlink_relay::NameError>>()?;
         Ok(AgentOptions {
             uplink: UplinkConfig {
                 hub_url: cfg.hub.clone(),
@@ -51,13 +51,37 @@ impl AgentOptions {
                     .topics
                     .iter()
                     .map(|(n, spec)| Ok((parse(n)?, spec.clone())))
-                    .collect::<Result<_, _>>()?,
+                    .collect::<Result<_, fleetlink_relay::NameError>>()?,
                 max_in_flight: 32,
+                tls: tls_client(cfg)?,
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),
         })
     }
+}
+
+/// A configuration that checks out field by field but cannot be turned into options.
+#[derive(Debug, thiserror::Error)]
+pub enum OptionsError {
+    #[error(transparent)]
+    Name(#[from] fleetlink_relay::NameError),
+    #[error("tls: {0}")]
+    Tls(#[from] fleetlink_auth::tls::TlsError),
+}
+
+/// The TLS client config for a `wss://` hub: the `tls:` files, else the system's roots.
+fn tls_client(cfg: &AgentConfig) -> Result<Option<Arc<rustls::ClientConfig>>, OptionsError> {
+    use fleetlink_auth::tls::{ClientTlsFiles, HubRoots, client_config};
+    if !cfg.hub.starts_with("wss://") {
+        return Ok(None);
+    }
+    let tls = cfg.tls.clone().unwrap_or_default();
+    let files = ClientTlsFiles {
+        roots: tls.ca.map_or(HubRoots::System, HubRoots::CaFile),
+        client_cert: tls.cert.zip(tls.key),
+    };
+    Ok(Some(client_config(&files)?))
 }
 
 /// A bound agent, ready to run.

@@ -82,6 +82,9 @@ pub struct UplinkConfig {
     pub topic_qos: Vec<(TopicName, TopicQosSpec)>,
     /// Messages sent but not yet acknowledged by the hub at which sending pauses (nT).
     pub max_in_flight: usize,
+    /// TLS for a `wss://` hub: trusted roots and, for mutual TLS, the robot's
+    /// certificate. `None` with `wss://` fails the handshake (no roots are built in).
+    pub tls: Option<Arc<rustls::ClientConfig>>,
 }
 
 /// The link's state, observable by tests and the CLI.
@@ -202,11 +205,21 @@ impl Uplink {
             "Sec-WebSocket-Protocol",
             HeaderValue::from_static(SUBPROTOCOL),
         );
-        let (ws, response) =
-            tokio::time::timeout(HANDSHAKE_TIMEOUT, tokio_tungstenite::connect_async(req))
-                .await
-                .map_err(|_| format!("connecting to {} timed out", self.cfg.hub_url))?
-                .map_err(|e| format!("cannot connect to {}: {e}", self.cfg.hub_url))?;
+        let (ws, response) = tokio::time::timeout(
+            HANDSHAKE_TIMEOUT,
+            tokio_tungstenite::connect_async_tls_with_config(
+                req,
+                None,
+                true,
+                self.cfg
+                    .tls
+                    .clone()
+                    .map(tokio_tungstenite::Connector::Rustls),
+            ),
+        )
+        .await
+        .map_err(|_| format!("connecting to {} timed out", self.cfg.hub_url))?
+        .map_err(|e| format!("cannot connect to {}: {e}", self.cfg.hub_url))?;
         let agreed = response
             .headers()
             .get("Sec-WebSocket-Protocol")

@@ -4,6 +4,7 @@
 mod util;
 
 mod e2e {
+    mod acl;
     mod bench_cli;
     mod capacity;
     mod cli;
@@ -12,4 +13,5 @@ mod e2e {
     mod priority;
     mod relay;
     mod rosbridge;
+    mod tls;
 }

@@ -56,17 +56,28 @@ fn fastrand_u64() -> u64 {
 }
 
 pub async fn start_hub_at(addr: SocketAddr, data_dir: PathBuf, heartbeat: Duration) -> TestHub {
-    let cfg = HubConfig {
+    start_hub_cfg(HubConfig {
         listen: addr,
         data_dir,
         heartbeat,
         ..HubConfig::default()
-    };
-    start_hub_with(cfg).await
+    })
+    .await
 }
 
-/// A hub from a full configuration (its `listen` should use port 0 or a known free one).
-pub async fn start_hub_with(cfg: HubConfig) -> TestHub {
+/// A hub on port 0 with settings changed by `tweak` (TLS, anonymous read, ...).
+pub async fn start_hub_with(tweak: impl FnOnce(&mut HubConfig)) -> TestHub {
+    let mut cfg = HubConfig {
+        listen: "127.0.0.1:0".parse().unwrap(),
+        data_dir: temp_dir("hub"),
+        heartbeat: Duration::from_millis(500),
+        ..HubConfig::default()
+    };
+    tweak(&mut cfg);
+    start_hub_cfg(cfg).await
+}
+
+pub async fn start_hub_cfg(cfg: HubConfig) -> TestHub {
     let data_dir = cfg.data_dir.clone();
     let hub = Hub::bind(
         cfg,
@@ -179,6 +190,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         names: NameMap::default(),
         topic_qos: Vec::new(),
         max_in_flight: 32,
+        tls: None,
     }
 }
 
@@ -444,32 +456,72 @@ pub fn hub_publisher(hub: &TestHub, name: &str, type_name: &str) -> LocalPublish
     LocalPublisher::new(&hub.state.router, name, type_name)
 }
 
-/// `GET url` with a bearer token over plain HTTP/1.0: status code and JSON body.
-pub async fn http_get(url: &str, token: &str) -> (u16, serde_json::Value) {
+/// One JSON API call over a plain HTTP/1.1 connection: `(status, body as JSON)`.
+pub async fn http_json(
+    addr: SocketAddr,
+    method: &str,
+    path: &str,
+    token: Option<&str>,
+    body: Option<&Value>,
+) -> (u16, Value) {
     use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let rest = url.strip_prefix("http://").expect("http URL");
-    let (host, path) = rest
-        .split_once('/')
-        .map(|(h, p)| (h, format!("/{p}")))
-        .unwrap_or((rest, "/".into()));
-    let mut s = within("HTTP connect", TcpStream::connect(host))
+    let body = body.map(Value::to_string).unwrap_or_default();
+    let mut req = format!(
+        "{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Type: application/json\r\nContent-Length: {}\r\n",
+        body.len()
+    );
+    if let Some(t) = token {
+        req.push_str(&format!("Authorization: Bearer {t}\r\n"));
+    }
+    req.push_str("\r\n");
+    req.push_str(&body);
+    let mut tcp = within("HTTP connect", TcpStream::connect(addr))
         .await
         .expect("connect");
-    let req =
-        format!("GET {path} HTTP/1.0\r\nHost: {host}\r\nAuthorization: Bearer {token}\r\n\r\n");
-    s.write_all(req.as_bytes()).await.unwrap();
-    let mut out = String::new();
-    within("HTTP response", s.read_to_string(&mut out))
+    tcp.write_all(req.as_bytes()).await.expect("write request");
+    let mut raw = Vec::new();
+    within("HTTP response", tcp.read_to_end(&mut raw))
         .await
-        .unwrap();
-    let code: u16 = out
+        .expect("read response");
+    let text = String::from_utf8_lossy(&raw);
+    let (head, rest) = text.split_once("\r\n\r\n").unwrap_or((&text, ""));
+    let status: u16 = head
         .split_whitespace()
         .nth(1)
-        .and_then(|c| c.parse().ok())
-        .unwrap_or(0);
-    let body = out.split_once("\r\n\r\n").map(|(_, b)| b).unwrap_or("");
-    (
-        code,
-        serde_json::from_str(body).unwrap_or(serde_json::Value::Null),
-    )
+        .and_then(|s| s.parse().ok())
+        .expect("status line");
+    let json = if head
+        .to_ascii_lowercase()
+        .contains("transfer-encoding: chunked")
+    {
+        let mut out = String::new();
+        let mut r = rest;
+        while let Some((len, tail)) = r.split_once("\r\n") {
+            let n = usize::from_str_radix(len.trim(), 16).unwrap_or(0);
+            if n == 0 || tail.len() < n {
+                break;
+            }
+            out.push_str(&tail[..n]);
+            r = tail[n..].trim_start_matches("\r\n");
+        }
+        out
+    } else {
+        rest.to_owned()
+    };
+    let v = if json.trim().is_empty() {
+        Value::Null
+    } else {
+        serde_json::from_str(&json).unwrap_or_else(|e| panic!("body is not JSON ({e}): {json:?}"))
+    };
+    (status, v)
+}
+
+/// Waits until `cond` holds, checking every few milliseconds, for at most [`WAIT`].
+pub async fn eventually(what: &str, mut cond: impl FnMut() -> bool) {
+    within(what, async {
+        while !cond() {
+            tokio::time::sleep(Duration::from_millis(2)).await;
+        }
+    })
+    .await
 }

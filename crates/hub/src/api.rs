@@ -22,6 +22,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/topics", get(topics))
         .route("/api/v1/clients", get(clients))
         .route("/api/v1/robots/{name}/offload", get(offload))
+        .merge(crate::admin_api::routes())
 }
 
 fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {

@@ -12,12 +12,15 @@
 //! - [`agents`]: one agent's `fleetlink.v1` session on the hub, and the registry of live
 //!   robots.
 //! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
+//! - [`admin_api`]: `/api/v1/` login/logout, rules, tokens, users and the audit log,
+//!   every change through the security core.
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
 //! - [`store`]: the SQLite database in the data directory (robots seen so far).
 
+pub mod admin_api;
 pub mod agents;
 pub mod api;
 pub mod capacity;

@@ -147,6 +147,24 @@ impl Guard for HubGuard {
             if let Value::String(s) = v
                 && s.len() > MAX_AUTH_FIELD
             {
+                // Refused before the core sees it, so audited here.
+                let err = fleetlink_auth::AuthError::Oversized {
+                    what: "auth field",
+                    len: s.len(),
+                    max: MAX_AUTH_FIELD,
+                };
+                let ip = self
+                    .security
+                    .authn
+                    .policy()
+                    .trusted_proxies
+                    .client_ip(&self.conn);
+                self.security.audit.record(AuditRecord::auth_failure(
+                    ip,
+                    None,
+                    &err,
+                    UnixTime::now(),
+                ));
                 return Err(format!(
                     "field '{k}' is {} bytes, over the {MAX_AUTH_FIELD}-byte limit",
                     s.len()

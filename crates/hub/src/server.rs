@@ -229,6 +229,7 @@ impl Hub {
         let app = HttpRouter::new()
             .route("/healthz", get(|| async { "ok\n" }))
             .merge(api)
+            .merge(crate::admin_api::public_routes())
             .route("/", get(root))
             .fallback(root)
             .with_state(state.clone());
@@ -250,6 +251,7 @@ impl Hub {
             };
             let _ = tcp.set_nodelay(true);
             let (app, tls, token) = (app.clone(), state.tls.clone(), token.clone());
+            let security = state.security.clone();
             tokio::spawn(async move {
                 match tls {
                     None => {
@@ -281,7 +283,21 @@ impl Hub {
                                 )
                                 .await;
                             }
-                            Ok(Err(e)) => tracing::info!("TLS handshake with {peer} failed: {e}"),
+                            Ok(Err(e)) => {
+                                tracing::info!("TLS handshake with {peer} failed: {e}");
+                                // A missing or unverifiable client certificate is a
+                                // refused authentication; the audit log must show it.
+                                security.audit.record(fleetlink_auth::AuditRecord {
+                                    at: fleetlink_auth::UnixTime::now(),
+                                    principal: "unknown".into(),
+                                    client_ip: peer.ip(),
+                                    action: fleetlink_auth::audit::AuditAction::AuthFailure,
+                                    name: String::new(),
+                                    size: None,
+                                    allowed: false,
+                                    detail: Some(format!("TLS handshake: {e}")),
+                                });
+                            }
                             Err(_) => tracing::info!("TLS handshake with {peer} timed out"),
                         }
                     }

@@ -48,6 +48,9 @@ pub struct AgentConfig {
     pub name: String,
     /// Credential presented to the hub. Default empty (no credential).
     pub token: String,
+    /// TLS for a `wss://` hub: a private CA and, for mutual TLS, the robot's certificate.
+    /// Default `None`: a `wss://` hub is checked against the system's roots.
+    pub tls: Option<TlsConfig>,
     /// Ping interval in milliseconds; the link is declared dead after two intervals of
     /// silence. Default 1000.
     pub heartbeat_ms: u64,
@@ -72,6 +75,7 @@ impl Default for AgentConfig {
             hub: "ws://127.0.0.1:8080".to_owned(),
             name: "robot1".to_owned(),
             token: String::new(),
+            tls: None,
             heartbeat_ms: 1000,
             reconnect: ReconnectConfig::default(),
             local_rosbridge: Some(LocalRosbridgeConfig::default()),
@@ -130,6 +134,19 @@ impl Default for LocalRosbridgeConfig {
             listen: SocketAddr::from(([127, 0, 0, 1], 9090)),
         }
     }
+}
+
+/// Files for the TLS link to the hub (PEM). Relative paths are relative to the agent's
+/// working directory.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TlsConfig {
+    /// CA certificate(s) the hub's certificate must chain to; `None` = system roots.
+    pub ca: Option<PathBuf>,
+    /// Client certificate chain for hubs that require one (with `key`).
+    pub cert: Option<PathBuf>,
+    /// Private key of `cert`.
+    pub key: Option<PathBuf>,
 }
 
 /// A hub topic delivered to local subscribers under a local name.

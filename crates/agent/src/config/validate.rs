@@ -35,6 +35,41 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
         ));
     }
     check_robot_name(&cfg.name).map_err(|m| problem("name".into(), m))?;
+    if let Some(tls) = &cfg.tls {
+        if !cfg.hub.starts_with("wss://") {
+            return Err(problem(
+                "tls".into(),
+                format!("is only used with a wss:// hub, but hub is {:?}", cfg.hub),
+            ));
+        }
+        for (field, path) in [
+            ("tls.ca", &tls.ca),
+            ("tls.cert", &tls.cert),
+            ("tls.key", &tls.key),
+        ] {
+            if path.as_ref().is_some_and(|p| p.as_os_str().is_empty()) {
+                return Err(problem(
+                    field.into(),
+                    "must be a file path, got an empty string",
+                ));
+            }
+        }
+        match (&tls.cert, &tls.key) {
+            (Some(_), None) => {
+                return Err(problem(
+                    "tls.cert".into(),
+                    "needs tls.key (the certificate's private key)",
+                ));
+            }
+            (None, Some(_)) => {
+                return Err(problem(
+                    "tls.key".into(),
+                    "needs tls.cert (the client certificate)",
+                ));
+            }
+            _ => {}
+        }
+    }
     if cfg.heartbeat_ms == 0 {
         return Err(problem("heartbeat_ms".into(), "must be > 0, got 0"));
     }

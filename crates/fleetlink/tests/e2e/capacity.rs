@@ -19,7 +19,7 @@ async fn hub_with_site(capacity_mbit: f64) -> TestHub {
         sites: vec![format!("lab={capacity_mbit}:lab_[a-z]+").parse().unwrap()],
         ..HubConfig::default()
     };
-    start_hub_with(cfg).await
+    start_hub_cfg(cfg).await
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
@@ -145,9 +145,9 @@ async fn offload_signal_follows_inequality_5_for_a_robots_measured_link() {
     })
     .await;
     let get = |q: &str| {
-        let url = format!("http://{}/api/v1/robots/worker/offload?{q}", hub.addr);
-        let token = hub.operator_token.clone();
-        async move { http_get(&url, &token).await }
+        let path = format!("/api/v1/robots/worker/offload?{q}");
+        let (addr, token) = (hub.addr, hub.operator_token.clone());
+        async move { http_json(addr, "GET", &path, Some(&token), None).await }
     };
     // The server is 10x faster and five robots need the data: offload.
     let (code, v) = get("h=5&s_m=1e9&s_s=1e10&d=1e5&x=1e10").await;
