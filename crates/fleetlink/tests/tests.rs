@@ -10,6 +10,7 @@ mod e2e {
     mod cli;
     mod isolation;
     mod link;
+    mod oidc;
     mod priority;
     mod relay;
     mod rosbridge;

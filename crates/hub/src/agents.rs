@@ -223,11 +223,20 @@ pub async fn serve_agent<S>(
             };
             let admin = fleetlink_auth::GroupName::new("admin").expect("a valid group name");
             match crate::security::authenticate(&ctx.security, credential, conn).await {
-                Ok(identity) if operator && !identity.in_group(&admin) => {
+                // Anyone else acting as a robot needs a rule letting it publish under
+                // that robot's namespace: otherwise a viewer's token could evict a robot.
+                Ok(identity)
+                    if operator
+                        && !identity.in_group(&admin)
+                        && !ctx
+                            .security
+                            .access(identity.clone())
+                            .allows(&format!("/{robot}"), fleetlink_auth::Operation::Publish) =>
+                {
                     return refuse(
                         sink,
                         format!(
-                            "{} may not open an agent link: only the admin group may",
+                            "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
                             identity.principal()
                         ),
                     )

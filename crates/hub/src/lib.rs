@@ -15,6 +15,7 @@
 //! - [`admin_api`]: `/api/v1/` login/logout, rules, tokens, users and the audit log,
 //!   every change through the security core.
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
+//! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
@@ -24,6 +25,7 @@ pub mod admin_api;
 pub mod agents;
 pub mod api;
 pub mod capacity;
+pub mod jwks;
 pub mod metrics;
 pub mod security;
 pub mod server;

@@ -50,6 +50,8 @@ pub struct HubConfig {
     pub tls: Option<fleetlink_auth::tls::ServerTlsFiles>,
     /// Sites whose robots share one access link; the hub divides its capacity.
     pub sites: Vec<SiteConfig>,
+    /// Where the OIDC signing keys come from (with `auth.jwt` set).
+    pub jwks: Option<crate::jwks::JwksSource>,
 }
 
 /// Robots behind one access link (a site uplink, a cell) and its capacity.
@@ -101,6 +103,7 @@ impl Default for HubConfig {
             acl: fleetlink_auth::AclDefaults::default(),
             tls: None,
             sites: Vec::new(),
+            jwks: None,
         }
     }
 }
@@ -136,6 +139,7 @@ pub struct HubState {
     pub security: Arc<fleetlink_auth::Security>,
     pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
     pub sites: Vec<SiteConfig>,
+    pub jwks: Option<crate::jwks::JwksSource>,
     pub started: std::time::SystemTime,
 }
 
@@ -198,6 +202,7 @@ impl Hub {
             security,
             tls,
             sites: cfg.sites.clone(),
+            jwks: cfg.jwks.clone(),
             started: std::time::SystemTime::now(),
         });
         Ok(Hub { listener, state })
@@ -233,6 +238,9 @@ impl Hub {
             .route("/", get(root))
             .fallback(root)
             .with_state(state.clone());
+        if let Some(src) = &state.jwks {
+            crate::jwks::refresh_if_due(&state.security, src).await;
+        }
         let housekeeping = tokio::spawn(housekeeping(state.clone()));
         let capacity = tokio::spawn(crate::capacity::share_sites(state.clone()));
         tokio::pin!(shutdown);
@@ -357,6 +365,9 @@ async fn housekeeping(st: Arc<HubState>) {
     loop {
         tick.tick().await;
         n += 1;
+        if let Some(src) = &st.jwks {
+            crate::jwks::refresh_if_due(&st.security, src).await;
+        }
         let sec = st.security.clone();
         let tls = st.tls.clone();
         let _ = tokio::task::spawn_blocking(move || {

@@ -43,6 +43,22 @@ pub struct Args {
     /// the hub divides the capacity among them by demand and latency. Repeatable.
     #[arg(long = "site", value_name = "NAME=MBIT:REGEX")]
     pub sites: Vec<fleetlink_hub::server::SiteConfig>,
+    /// Accept OIDC/JWT bearer tokens signed by keys from this JWKS: a file, or the
+    /// provider's https:// URL (re-read hourly, and sooner for an unknown key id).
+    #[arg(long, value_name = "FILE|URL", requires_all = ["jwt_issuer", "jwt_audience"])]
+    pub jwks: Option<fleetlink_hub::jwks::JwksSource>,
+    /// Accepted `iss` of OIDC tokens (e.g. https://accounts.google.com); repeatable.
+    #[arg(long = "jwt-issuer", value_name = "ISS")]
+    pub jwt_issuer: Vec<String>,
+    /// Accepted `aud` of OIDC tokens (the client id registered with the provider); repeatable.
+    #[arg(long = "jwt-audience", value_name = "AUD")]
+    pub jwt_audience: Vec<String>,
+    /// Claim naming the user (`sub`, `email`, `preferred_username`).
+    #[arg(long, default_value = "sub")]
+    pub jwt_user_claim: String,
+    /// Claim listing the user's groups (Keycloak: `groups`).
+    #[arg(long)]
+    pub jwt_groups_claim: Option<String>,
 }
 
 impl Args {
@@ -55,8 +71,17 @@ impl Args {
             default_queue: self.queue_length.max(1),
             auth: fleetlink_auth::AuthPolicy {
                 trusted_proxies: fleetlink_auth::TrustedProxies::new(self.trusted_proxies.clone()),
+                jwt: self.jwks.as_ref().map(|_| {
+                    let mut c = fleetlink_auth::jwt::JwtConfig::new(String::new(), String::new());
+                    c.issuers = self.jwt_issuer.clone();
+                    c.audiences = self.jwt_audience.clone();
+                    c.user_claim = self.jwt_user_claim.clone();
+                    c.groups_claim = self.jwt_groups_claim.clone();
+                    c
+                }),
                 ..fleetlink_auth::AuthPolicy::default()
             },
+            jwks: self.jwks.clone(),
             acl: fleetlink_auth::AclDefaults::default(),
             sites: self.sites.clone(),
             tls: self
