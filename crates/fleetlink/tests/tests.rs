@@ -5,6 +5,7 @@ mod util;
 
 mod e2e {
     mod acl;
+    mod audit;
     mod bench_cli;
     mod capacity;
     mod cli;

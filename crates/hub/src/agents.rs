@@ -307,7 +307,12 @@ pub async fn serve_agent<S>(
         }))
         .await;
     let heartbeat = Duration::from_millis(u64::from(heartbeat_ms));
-    let gate = crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity);
+    let gate = crate::security::HubGate::for_agent(
+        ctx.security.clone(),
+        ctx.registry.clone(),
+        identity,
+        &robot,
+    );
     let writer = tokio::spawn(write_link(
         sink,
         outbox,

@@ -48,6 +48,9 @@ pub struct HubGate {
     /// Refusals already audited on this connection: a client retrying a refused publish
     /// 30 times a second is recorded once per name, not flooding the log.
     reported: std::collections::HashSet<(String, Op)>,
+    /// The robot an agent link speaks for (its HELLO name): what it publishes under that
+    /// namespace is the robot's own output, not an input to audit.
+    acting_as: Option<String>,
 }
 
 impl HubGate {
@@ -57,6 +60,20 @@ impl HubGate {
             security,
             registry,
             reported: Default::default(),
+            acting_as: None,
+        }
+    }
+
+    /// A gate for an agent link that speaks for robot `robot`.
+    pub fn for_agent(
+        security: Arc<Security>,
+        registry: Arc<Registry>,
+        identity: Identity,
+        robot: &str,
+    ) -> HubGate {
+        HubGate {
+            acting_as: Some(robot.to_owned()),
+            ..HubGate::new(security, registry, identity)
         }
     }
 
@@ -73,6 +90,9 @@ impl HubGate {
         if let IdentityKind::Robot { name: me } = &self.identity().kind
             && me.as_str() == first
         {
+            return false;
+        }
+        if self.acting_as.as_deref() == Some(first) {
             return false;
         }
         self.registry.is_online(first)
@@ -122,6 +142,7 @@ impl Gate for HubGate {
             security: self.security.clone(),
             registry: self.registry.clone(),
             reported: Default::default(),
+            acting_as: self.acting_as.clone(),
         })
     }
 

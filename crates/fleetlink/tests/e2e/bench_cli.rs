@@ -67,6 +67,20 @@ async fn bench_relay_json_summary_counts_every_delivery() {
     assert!(q("p50") > 0.0, "{s}");
     assert!(q("p50") <= q("p99") && q("p99") <= q("p999") && q("p999") <= q("max"));
 
+    // An operator-token link speaking for bench_pub_0 publishes its own output: nothing
+    // of it is a command to a robot, so none of it is in the audit log.
+    let sec = &hub.state.security;
+    sec.audit.flush();
+    let q = fleetlink_auth::audit::AuditQuery {
+        action: Some(fleetlink_auth::audit::AuditAction::Publish),
+        ..Default::default()
+    };
+    let audited = sec.store.query_audit(&q).unwrap().records;
+    assert!(
+        audited.is_empty(),
+        "bench traffic was audited: {} records",
+        audited.len()
+    );
     hub.shutdown().await;
 }
 
