@@ -39,6 +39,10 @@ pub struct Args {
     /// A reverse proxy (CIDR) whose X-Forwarded-For header is believed; repeatable.
     #[arg(long = "trusted-proxy", value_name = "CIDR")]
     pub trusted_proxies: Vec<ipnet::IpNet>,
+    /// Robots on this network (a VPN) may connect without a token: CIDR, or CIDR=ROBOT to
+    /// allow only that robot from it. Repeatable.
+    #[arg(long = "robot-network", value_name = "CIDR[=ROBOT]", value_parser = parse_robot_network)]
+    pub robot_networks: Vec<fleetlink_auth::authn::RobotNetwork>,
     /// Robots sharing one access link: NAME=MBIT:ROBOT_REGEX (e.g. warehouse=20:wh_[0-9]+);
     /// the hub divides the capacity among them by demand and latency. Repeatable.
     #[arg(long = "site", value_name = "NAME=MBIT:REGEX")]
@@ -71,6 +75,7 @@ impl Args {
             default_queue: self.queue_length.max(1),
             auth: fleetlink_auth::AuthPolicy {
                 trusted_proxies: fleetlink_auth::TrustedProxies::new(self.trusted_proxies.clone()),
+                robot_networks: self.robot_networks.clone(),
                 jwt: self.jwks.as_ref().map(|_| {
                     let mut c = fleetlink_auth::jwt::JwtConfig::new(String::new(), String::new());
                     c.issuers = self.jwt_issuer.clone();
@@ -131,4 +136,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Ok::<_, anyhow::Error>(())
     })?;
     Ok(())
+}
+
+/// `CIDR` or `CIDR=ROBOT`.
+fn parse_robot_network(s: &str) -> Result<fleetlink_auth::authn::RobotNetwork, String> {
+    let (net, robot) = match s.split_once('=') {
+        Some((n, r)) => (n, Some(r)),
+        None => (s, None),
+    };
+    let net: ipnet::IpNet = net
+        .parse()
+        .map_err(|e| format!("{net:?} is not a CIDR network: {e}"))?;
+    let robot = robot
+        .map(|r| fleetlink_auth::RobotName::new(r).map_err(|e| format!("robot {r:?}: {e}")))
+        .transpose()?;
+    Ok(fleetlink_auth::authn::RobotNetwork { net, robot })
 }

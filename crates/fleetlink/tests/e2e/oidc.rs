@@ -1,4 +1,4 @@
-//! OIDC: a hub configured with an issuer, an audience and a JWKS URL accepts bearer JWTs
+//! Credentials beyond tokens. OIDC: a hub configured with an issuer, an audience and a JWKS URL accepts bearer JWTs
 //! signed by the provider's key, maps their groups onto access rules, and refuses tokens
 //! for another audience. The provider here is a key generated in the test and its JWKS
 //! served over HTTP on loopback.
@@ -100,5 +100,40 @@ async fn oidc_bearer_tokens_from_a_jwks_url_authenticate_and_carry_groups() {
         Err(tokio_tungstenite::tungstenite::Error::Http(resp)) => assert_eq!(resp.status(), 401),
         other => panic!("expected HTTP 401, got {other:?}"),
     }
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn robot_on_a_trusted_network_connects_without_a_token_and_only_as_itself() {
+    let hub = start_hub_with(|cfg| {
+        cfg.auth.robot_networks = vec![fleetlink_auth::authn::RobotNetwork {
+            net: "127.0.0.0/8".parse().unwrap(),
+            robot: Some(fleetlink_auth::RobotName::new("vpn_bot").unwrap()),
+        }];
+    })
+    .await;
+    let mut cfg = uplink_config(&hub, "vpn_bot");
+    cfg.token = String::new();
+    let ok = start_agent_with(cfg, false).await;
+    ok.wait_connected().await;
+
+    // The network vouches for vpn_bot only; another name from it still needs a token.
+    let mut cfg = uplink_config(&hub, "intruder");
+    cfg.token = String::new();
+    let refused = start_agent_with(cfg, false).await;
+    let reason = refused.wait_disconnected().await;
+    assert!(
+        reason.contains("refused") || reason.contains("closed"),
+        "{reason}"
+    );
+    assert!(
+        !hub.state
+            .registry
+            .list()
+            .iter()
+            .any(|r| r.name == "intruder")
+    );
+    ok.shutdown().await;
+    refused.shutdown().await;
     hub.shutdown().await;
 }
