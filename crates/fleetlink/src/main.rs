@@ -21,6 +21,8 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
+// Parsed once at start-up; boxing the larger variants would buy nothing.
+#[allow(clippy::large_enum_variant)]
 enum Command {
     /// Run a hub: the relay robots connect to and operators use.
     Hub(cmd::hub::Args),
