@@ -28,6 +28,9 @@ pub struct TopicStats {
     /// Origin-to-hub latency of messages from robots, an exponential average (ns; 0 =
     /// not measured).
     pub latency_ns: AtomicU64,
+    /// The second of the first message (+1; 0 = none yet): a young topic's rate is
+    /// averaged over the seconds it has existed, not the whole window.
+    first_second: AtomicU64,
     buckets: [Bucket; BUCKETS],
 }
 
@@ -37,6 +40,9 @@ impl TopicStats {
         self.bytes.fetch_add(bytes as u64, Relaxed);
         self.last_message_ns.store(now_ns, Relaxed);
         let second = now_ns / 1_000_000_000;
+        if self.first_second.load(Relaxed) == 0 {
+            self.first_second.store(second + 1, Relaxed);
+        }
         let b = &self.buckets[(second % BUCKETS as u64) as usize];
         if b.second.load(Relaxed) != second {
             // First message of a new second resets the bucket; a concurrent publisher may
@@ -79,13 +85,29 @@ impl TopicStats {
                 b += bucket.bytes.load(Relaxed);
             }
         }
-        (m as f64 / RATE_WINDOW as f64, b as f64 / RATE_WINDOW as f64)
+        let span = match self.first_second.load(Relaxed) {
+            0 => RATE_WINDOW,
+            first => now_s.saturating_sub(first - 1).clamp(1, RATE_WINDOW),
+        };
+        (m as f64 / span as f64, b as f64 / span as f64)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_young_topic_is_averaged_over_the_seconds_it_has_existed() {
+        let s = TopicStats::default();
+        let base = 1_000 * 1_000_000_000u64;
+        for sec in 0..2u64 {
+            for i in 0..10u64 {
+                s.record_publish(1, base + sec * 1_000_000_000 + i * 1_000_000);
+            }
+        }
+        assert_eq!(s.rates(base + 2 * 1_000_000_000).0, 10.0);
+    }
 
     #[test]
     fn rate_averages_complete_seconds() {
