@@ -252,15 +252,15 @@ impl Uplink {
                             match link
                                 .on_frame(f.map_err(|e| format!("malformed frame from hub: {e}"))?)
                             {
-                                Ok(LinkEvent::Welcome {
+                                Ok(LinkEvent::Control(Frame::Welcome {
                                     session,
                                     namespace,
                                     heartbeat_ms,
                                     ..
-                                }) => {
+                                })) => {
                                     return Ok((session, namespace, heartbeat_ms));
                                 }
-                                Ok(LinkEvent::Status { text, .. }) => {
+                                Ok(LinkEvent::Control(Frame::Status { text, .. })) => {
                                     return Err(format!("hub refused: {text}"));
                                 }
                                 _ => {}
@@ -434,7 +434,7 @@ impl Uplink {
                     t.publish(self.client, seq, stamp_ns, payload);
                 }
             }
-            LinkEvent::Ping { id, sent_ns } => {
+            LinkEvent::Control(Frame::Ping { id, sent_ns }) => {
                 let pong = Frame::Pong {
                     id,
                     echo_ns: sent_ns,
@@ -442,11 +442,11 @@ impl Uplink {
                 };
                 let _ = ctrl.send(Control::Frame(pong)).await;
             }
-            LinkEvent::Pong {
+            LinkEvent::Control(Frame::Pong {
                 id,
                 echo_ns,
                 responder_ns,
-            } => {
+            }) => {
                 if id < fleetlink_relay::link::HEARTBEAT_ID_BASE {
                     self.outbox
                         .on_echo(id, responder_ns, std::time::Instant::now());
@@ -456,14 +456,14 @@ impl Uplink {
                     .rtt_ns
                     .store(rtt, std::sync::atomic::Ordering::Relaxed);
             }
-            LinkEvent::Status { level, text, .. } => {
+            LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::warn!(level = level.as_str(), "hub: {text}");
             }
-            LinkEvent::Ack { messages } => {
+            LinkEvent::Control(Frame::Ack { frames: messages }) => {
                 self.outbox
                     .on_acked(messages as usize, std::time::Instant::now());
             }
-            LinkEvent::Share { bytes_per_sec } => {
+            LinkEvent::Control(Frame::Share { bytes_per_sec }) => {
                 let share = (bytes_per_sec > 0).then_some(bytes_per_sec as f64);
                 self.outbox.set_share(share, std::time::Instant::now());
                 self.stats

@@ -7,7 +7,7 @@
 
 use std::collections::HashMap;
 use std::net::SocketAddr;
-use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, SystemTime};
 
@@ -52,6 +52,9 @@ pub struct LiveRobot {
     pub share_bps: AtomicU64,
     /// Hub clock minus robot clock, from the least-delayed of the recent heartbeats.
     clock: Mutex<ClockSync>,
+    /// The current estimate from `clock` (`i64::MIN` = none yet), read per message
+    /// without the lock.
+    clock_offset: AtomicI64,
     control: mpsc::Sender<Control>,
 }
 
@@ -68,11 +71,10 @@ const CLOCK_SAMPLES: usize = 16;
 impl LiveRobot {
     /// Hub clock minus robot clock in nanoseconds, once a heartbeat has been answered.
     pub fn clock_offset_ns(&self) -> Option<i64> {
-        let c = self.clock.lock().unwrap_or_else(|p| p.into_inner());
-        c.samples
-            .iter()
-            .min_by_key(|(rtt, _)| *rtt)
-            .map(|(_, o)| *o)
+        match self.clock_offset.load(Relaxed) {
+            i64::MIN => None,
+            o => Some(o),
+        }
     }
 
     /// Sends the robot its capacity share (bytes/s; 0 = no cap). Never blocks.
@@ -175,12 +177,12 @@ pub async fn serve_agent<S>(
             let frames = fleetlink_relay::link::decode_all(&b)
                 .map_err(|e| format!("malformed HELLO: {e}"))?;
             for f in frames {
-                if let Ok(LinkEvent::Hello {
+                if let Ok(LinkEvent::Control(Frame::Hello {
                     version,
                     robot,
                     token,
                     heartbeat_ms,
-                }) = link.on_frame(f)
+                })) = link.on_frame(f)
                 {
                     return Ok((version, robot, token, heartbeat_ms));
                 }
@@ -210,9 +212,11 @@ pub async fn serve_agent<S>(
             // A robot token (or a certificate, or a trusted robot network) names the robot.
             // An operator token of the admin group may also open an agent link, for tools
             // such as `fleetlink bench relay`.
-            let operator = token.starts_with("flk_operator_")
-                || token.starts_with("flk_session_")
-                || token.starts_with("ey");
+            // Anything but a robot token (operator, session, OIDC) is a bearer credential;
+            // the token module tells them apart, not string prefixes here.
+            let operator = !token.is_empty()
+                && fleetlink_auth::Token::parse(&token)
+                    .map_or(true, |t| t.kind() != fleetlink_auth::TokenKind::Robot);
             let credential = if operator {
                 fleetlink_auth::Credential::Bearer(token)
             } else {
@@ -279,6 +283,7 @@ pub async fn serve_agent<S>(
         latency_ns: AtomicU64::new(0),
         share_bps: AtomicU64::new(0),
         clock: Mutex::new(ClockSync::default()),
+        clock_offset: AtomicI64::new(i64::MIN),
         control: ctrl_tx.clone(),
     });
     if let Some(old) = ctx.registry.insert(live.clone()) {
@@ -403,6 +408,8 @@ where
 
 struct PubTopic {
     topic: Arc<Topic>,
+    /// Its name, kept for the per-message checks (the topic's own is behind an ArcSwap).
+    name: TopicName,
 }
 
 struct AgentSession {
@@ -463,7 +470,7 @@ impl AgentSession {
                     .advertise(self.client, &name, topic.schema, topic.latched)
                 {
                     Ok(t) => {
-                        self.topics.insert(alias, PubTopic { topic: t });
+                        self.topics.insert(alias, PubTopic { topic: t, name });
                     }
                     Err(e) => {
                         self.status(Level::Error, 5, format!("advertise: {e}"))
@@ -486,31 +493,31 @@ impl AgentSession {
             } => {
                 if let Some(p) = self.topics.get(&alias) {
                     // Asked per message (a cached answer) so a rule change applies at once.
-                    let name = p.topic.name();
-                    if self.gate.allows(name.as_str(), Op::Publish) {
+                    if self.gate.allows(p.name.as_str(), Op::Publish) {
+                        let size = payload.len();
+                        let msg = p.topic.publish(self.client, seq, stamp_ns, payload);
                         // End-to-end latency on the hub's clock: origin stamp plus the
-                        // robot's clock offset, to now.
+                        // robot's clock offset, to when the hub received it (the
+                        // message's own receive time: no second clock read).
                         if let Some(off) = self.live.clock_offset_ns() {
                             let origin = stamp_ns as i128 + off as i128;
-                            let lat = fleetlink_relay::unix_nanos() as i128 - origin;
-                            if lat >= 0 {
-                                p.topic.stats.record_latency(lat as u64);
+                            let at = fleetlink_relay::instant_to_unix_nanos(msg.received) as i128;
+                            if at >= origin {
+                                p.topic.stats.record_latency((at - origin) as u64);
                             }
                         }
-                        let size = payload.len();
-                        p.topic.publish(self.client, seq, stamp_ns, payload);
-                        self.gate.done(name.as_str(), Op::Publish, size);
+                        self.gate.done(p.name.as_str(), Op::Publish, size);
                     }
                 }
             }
-            LinkEvent::Subscribe {
+            LinkEvent::Control(Frame::Subscribe {
                 id,
                 pattern,
-                regex,
+                flags,
                 throttle_ms,
                 queue_length,
-            } => {
-                let target = if regex {
+            }) => {
+                let target = if flags & fleetlink_proto::frame::SUBSCRIBE_REGEX != 0 {
                     match Router::compile_pattern(&pattern) {
                         Ok(r) => Target::Pattern(r),
                         Err(e) => {
@@ -552,12 +559,12 @@ impl AgentSession {
                     }
                 }
             }
-            LinkEvent::Unsubscribe { id } => {
+            LinkEvent::Control(Frame::Unsubscribe { id }) => {
                 if let Some(sid) = self.subs.remove(&id) {
                     self.ctx.router.unsubscribe(self.client, sid);
                 }
             }
-            LinkEvent::Ping { id, sent_ns } => {
+            LinkEvent::Control(Frame::Ping { id, sent_ns }) => {
                 let pong = Frame::Pong {
                     id,
                     echo_ns: sent_ns,
@@ -565,11 +572,11 @@ impl AgentSession {
                 };
                 let _ = self.ctrl.send(Control::Frame(pong)).await;
             }
-            LinkEvent::Pong {
+            LinkEvent::Control(Frame::Pong {
                 echo_ns,
                 responder_ns,
                 ..
-            } => {
+            }) => {
                 let now = fleetlink_relay::unix_nanos();
                 let rtt = now.saturating_sub(echo_ns);
                 self.live.rtt_ns.store(rtt, Relaxed);
@@ -581,24 +588,24 @@ impl AgentSession {
                     c.samples.pop_front();
                 }
                 c.samples.push_back((rtt, offset));
+                if let Some((_, best)) = c.samples.iter().min_by_key(|(rtt, _)| *rtt) {
+                    self.live.clock_offset.store(*best, Relaxed);
+                }
             }
-            LinkEvent::LinkReport {
+            LinkEvent::Control(Frame::LinkReport {
                 demand_bps,
                 rate_bps,
                 latency_ns,
-            } => {
+            }) => {
                 self.live.demand_bps.store(demand_bps, Relaxed);
                 self.live.rate_bps.store(rate_bps, Relaxed);
                 self.live.latency_ns.store(latency_ns, Relaxed);
             }
-            LinkEvent::Status { level, text, .. } => {
+            LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
             }
-            LinkEvent::Hello { .. }
-            | LinkEvent::Share { .. }
-            | LinkEvent::Welcome { .. }
-            | LinkEvent::Ack { .. }
-            | LinkEvent::None => {}
+            // A second HELLO, frames only a hub sends, an agent's ACK: nothing to do.
+            LinkEvent::Control(_) | LinkEvent::None => {}
         }
     }
 }

@@ -11,7 +11,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use bytes::{Bytes, BytesMut};
-use fleetlink_proto::frame::{ADVERTISE_LATCHED, Frame, Level};
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, Frame};
 use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt};
@@ -58,57 +58,10 @@ pub enum LinkEvent {
         stamp_ns: u64,
         payload: Payload,
     },
-    Subscribe {
-        id: u32,
-        pattern: String,
-        regex: bool,
-        throttle_ms: u32,
-        queue_length: u32,
-    },
-    Unsubscribe {
-        id: u32,
-    },
-    Ping {
-        id: u64,
-        sent_ns: u64,
-    },
-    Pong {
-        id: u64,
-        echo_ns: u64,
-        responder_ns: u64,
-    },
-    Status {
-        level: Level,
-        code: u32,
-        text: String,
-    },
-    /// The peer received this many whole messages since its previous `ACK`.
-    Ack {
-        messages: u32,
-    },
-    /// The hub's capacity share for this robot (bytes/s, 0 = no cap).
-    Share {
-        bytes_per_sec: u64,
-    },
-    /// An agent's link report.
-    LinkReport {
-        demand_bps: u64,
-        rate_bps: u64,
-        latency_ns: u64,
-    },
-    Hello {
-        version: u32,
-        robot: String,
-        token: String,
-        heartbeat_ms: u32,
-    },
-    Welcome {
-        session: String,
-        namespace: String,
-        hub_time_ns: u64,
-        heartbeat_ms: u32,
-    },
-    /// Nothing for the router (an ACK, an unknown frame, a chunk that is not complete).
+    /// Every other frame (HELLO, SUBSCRIBE, PING, ACK, SHARE, ...), as decoded: there is
+    /// nothing to resolve on the link for them.
+    Control(Frame),
+    /// Nothing for the router (an unknown frame, a chunk that is not complete).
     None,
 }
 
@@ -215,67 +168,8 @@ impl LinkIn {
                     None => LinkEvent::None,
                 }
             }
-            Frame::Subscribe {
-                id,
-                pattern,
-                flags,
-                throttle_ms,
-                queue_length,
-            } => LinkEvent::Subscribe {
-                id,
-                pattern,
-                regex: flags & fleetlink_proto::frame::SUBSCRIBE_REGEX != 0,
-                throttle_ms,
-                queue_length,
-            },
-            Frame::Unsubscribe { id } => LinkEvent::Unsubscribe { id },
-            Frame::Ping { id, sent_ns } => LinkEvent::Ping { id, sent_ns },
-            Frame::Pong {
-                id,
-                echo_ns,
-                responder_ns,
-            } => LinkEvent::Pong {
-                id,
-                echo_ns,
-                responder_ns,
-            },
-            Frame::Status {
-                level, code, text, ..
-            } => LinkEvent::Status { level, code, text },
-            Frame::Hello {
-                version,
-                robot,
-                token,
-                heartbeat_ms,
-            } => LinkEvent::Hello {
-                version,
-                robot,
-                token,
-                heartbeat_ms,
-            },
-            Frame::Welcome {
-                session,
-                namespace,
-                hub_time_ns,
-                heartbeat_ms,
-            } => LinkEvent::Welcome {
-                session,
-                namespace,
-                hub_time_ns,
-                heartbeat_ms,
-            },
-            Frame::Ack { frames } => LinkEvent::Ack { messages: frames },
-            Frame::Share { bytes_per_sec } => LinkEvent::Share { bytes_per_sec },
-            Frame::LinkReport {
-                demand_bps,
-                rate_bps,
-                latency_ns,
-            } => LinkEvent::LinkReport {
-                demand_bps,
-                rate_bps,
-                latency_ns,
-            },
             Frame::Unknown { .. } => LinkEvent::None,
+            other => LinkEvent::Control(other),
         })
     }
 }

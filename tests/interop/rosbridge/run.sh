@@ -24,43 +24,9 @@ started=$SECONDS
 [ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
 [ -d "$here/node_modules/roslib" ] || { echo "FAIL: roslib missing; run scripts/setup.d/20-node-packages.sh" >&2; exit 1; }
 
-tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-rosbridge.XXXXXX")"
-pids=()
-cleanup() {
-    local rc=$?
-    for pid in "${pids[@]}"; do
-        kill -TERM "$pid" 2>/dev/null || true
-    done
-    for pid in "${pids[@]}"; do
-        # Bounded wait for a graceful stop, then force.
-        for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-        kill -KILL "$pid" 2>/dev/null || true
-        wait "$pid" 2>/dev/null || true
-    done
-    if [ "$rc" -ne 0 ]; then
-        for f in hub agent; do
-            [ -f "$tmp/$f.log" ] && { echo "--- last lines of $f log"; tail -n 30 "$tmp/$f.log"; } >&2
-        done
-    fi
-    rm -rf "$tmp"
-    exit "$rc"
-}
-trap cleanup EXIT
-trap 'exit 130' INT TERM
-
-# Waits (bounded) until a line matching $2 appears in log $1; prints the first capture.
-wait_for_line() {
-    local log=$1 pattern=$2 what=$3 pid=$4
-    for _ in $(seq 200); do # 200 x 0.05 s = 10 s
-        local m
-        m="$(sed -nE "s#${pattern}#\\1#p" "$log" | head -n1)"
-        if [ -n "$m" ]; then echo "$m"; return 0; fi
-        kill -0 "$pid" 2>/dev/null || { echo "FAIL: $what: process exited" >&2; return 1; }
-        sleep 0.05
-    done
-    echo "FAIL: $what: no line matching '$pattern' within 10 s" >&2
-    return 1
-}
+# shellcheck source=../lib.sh
+. "$here/../lib.sh"
+interop_begin rosbridge
 
 # --- credentials, minted in the hub's database before it starts (fleetlink admin)
 robot_token="$("$bin" admin --data-dir "$tmp/hub-data" token robot "$robot")"

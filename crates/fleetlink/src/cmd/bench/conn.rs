@@ -93,8 +93,12 @@ async fn connect_inner(url: &str, robot: &str, token: &str) -> anyhow::Result<Co
         let mut welcome = None;
         for f in fleetlink_proto::frame::frames(&b) {
             match link.on_frame(f.with_context(|| format!("{robot}: malformed frame"))?) {
-                Ok(LinkEvent::Welcome { heartbeat_ms, .. }) => welcome = Some(heartbeat_ms),
-                Ok(LinkEvent::Status { text, .. }) => bail!("{robot}: hub refused: {text}"),
+                Ok(LinkEvent::Control(Frame::Welcome { heartbeat_ms, .. })) => {
+                    welcome = Some(heartbeat_ms)
+                }
+                Ok(LinkEvent::Control(Frame::Status { text, .. })) => {
+                    bail!("{robot}: hub refused: {text}")
+                }
                 _ => {}
             }
         }
@@ -133,15 +137,17 @@ impl Conn {
                 };
                 for f in fleetlink_proto::frame::frames(&b) {
                     match self.link.on_frame(f?) {
-                        Ok(LinkEvent::Pong { id, .. }) if id == BARRIER_PING => return Ok(()),
-                        Ok(LinkEvent::Ping { id, sent_ns }) => {
+                        Ok(LinkEvent::Control(Frame::Pong { id, .. })) if id == BARRIER_PING => {
+                            return Ok(());
+                        }
+                        Ok(LinkEvent::Control(Frame::Ping { id, sent_ns })) => {
                             self.ws.send(WsMessage::Binary(pong(id, sent_ns))).await?;
                         }
-                        Ok(LinkEvent::Status {
+                        Ok(LinkEvent::Control(Frame::Status {
                             level: Level::Error,
                             text,
                             ..
-                        }) => bail!("hub: {text}"),
+                        })) => bail!("hub: {text}"),
                         _ => {}
                     }
                 }

@@ -19,7 +19,7 @@ use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 use std::time::Duration;
 
 use bytes::{Bytes, BytesMut};
-use fleetlink_proto::frame::{self, DEFAULT_CHUNK_SIZE, Level};
+use fleetlink_proto::frame::{self, DEFAULT_CHUNK_SIZE, Frame, Level};
 use fleetlink_relay::link::{LinkEvent, LinkIn};
 use fleetlink_relay::unix_nanos;
 use futures_util::stream::{SplitSink, SplitStream};
@@ -270,11 +270,13 @@ async fn read_hub(
         for f in fleetlink_proto::frame::frames(&b) {
             let Ok(f) = f else { break };
             match link.on_frame(f) {
-                Ok(LinkEvent::Ping { id, sent_ns }) => {
+                Ok(LinkEvent::Control(Frame::Ping { id, sent_ns })) => {
                     // A full channel means replies are already waiting; the hub pings again.
                     let _ = replies.try_send(pong(id, sent_ns));
                 }
-                Ok(LinkEvent::Status { level, text, .. }) if level != Level::Info => {
+                Ok(LinkEvent::Control(Frame::Status { level, text, .. }))
+                    if level != Level::Info =>
+                {
                     eprintln!("bench: hub to publisher: {text}");
                 }
                 _ => {}

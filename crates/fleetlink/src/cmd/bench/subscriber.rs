@@ -160,11 +160,13 @@ pub async fn run(
                         topics.insert(alias, p);
                     }
                 }
-                Ok(LinkEvent::Ping { id, sent_ns }) => {
+                Ok(LinkEvent::Control(Frame::Ping { id, sent_ns })) => {
                     // A full channel means replies are already waiting; the hub pings again.
                     let _ = reply_tx.try_send(pong(id, sent_ns));
                 }
-                Ok(LinkEvent::Status { level, text, .. }) if level != Level::Info => {
+                Ok(LinkEvent::Control(Frame::Status { level, text, .. }))
+                    if level != Level::Info =>
+                {
                     eprintln!("bench: hub to subscriber: {text}");
                 }
                 Ok(_) => {}

@@ -1,0 +1,46 @@
+# Shared by the interop suites (sourced, not run): a temp directory, processes started
+# in the background that are always stopped (gracefully, then by force) with their log
+# tails shown on failure, and a bounded wait for a line in a log.
+#
+# After `interop_begin NAME`: $tmp is the suite's directory; append background pids to
+# the `pids` array; logs named $tmp/hub.log and $tmp/agent.log are shown on failure.
+
+interop_begin() {
+    tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-$1.XXXXXX")"
+    pids=()
+    trap interop_cleanup EXIT
+    trap 'exit 130' INT TERM
+}
+
+interop_cleanup() {
+    local rc=$?
+    for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+    for pid in "${pids[@]}"; do
+        # Bounded wait for a graceful stop, then force.
+        for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+        kill -KILL "$pid" 2>/dev/null || true
+        wait "$pid" 2>/dev/null || true
+    done
+    if [ "$rc" -ne 0 ]; then
+        for f in hub agent; do
+            [ -f "$tmp/$f.log" ] && { echo "--- last lines of $f log"; tail -n 30 "$tmp/$f.log"; } >&2
+        done
+    fi
+    rm -rf "$tmp"
+    exit "$rc"
+}
+
+# Waits (bounded, 10 s) until a line matching $2 appears in log $1 written by process $4;
+# prints the first capture group. $3 names the wait in the failure message.
+wait_for_line() {
+    local log=$1 pattern=$2 what=$3 pid=$4
+    for _ in $(seq 200); do # 200 x 0.05 s
+        local m
+        m="$(sed -nE "s#${pattern}#\\1#p" "$log" | head -n1)"
+        if [ -n "$m" ]; then echo "$m"; return 0; fi
+        kill -0 "$pid" 2>/dev/null || { echo "FAIL: $what: process exited" >&2; return 1; }
+        sleep 0.05
+    done
+    echo "FAIL: $what: no line matching '$pattern' within 10 s" >&2
+    return 1
+}
