@@ -54,6 +54,7 @@ impl AgentOptions {
                     .collect::<Result<_, fleetlink_relay::NameError>>()?,
                 max_in_flight: 32,
                 tls: tls_client(cfg)?,
+                outbox: cfg.outbox.as_ref().map(|o| o.store()),
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),
@@ -100,6 +101,8 @@ pub enum AgentError {
         addr: SocketAddr,
         source: std::io::Error,
     },
+    #[error(transparent)]
+    Outbox(#[from] crate::outbox_store::StoreError),
 }
 
 impl Agent {
@@ -117,7 +120,7 @@ impl Agent {
         };
         let router = Arc::new(Router::new(transcoder));
         let robot = opts.uplink.robot.clone();
-        let uplink = Uplink::new(opts.uplink, router.clone());
+        let uplink = Uplink::new(opts.uplink, router.clone())?;
         Ok(Agent {
             router,
             uplink,

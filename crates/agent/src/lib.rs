@@ -9,12 +9,14 @@
 //! - [`agent`]: assembles and runs the pieces from one set of options.
 //! - [`config`]: the agent's YAML configuration, with errors that name file, line and field.
 //! - [`local`]: the local rosbridge-compatible listener.
+//! - [`outbox_store`]: the durable outbox: no-drop messages on disk until the hub has them.
 //! - [`sim`]: a simulated robot producing plausible sensor data at configured rates.
 //! - [`uplink`]: the `fleetlink.v1` link to the hub: reconnects, heartbeat, name mapping.
 
 pub mod agent;
 pub mod config;
 pub mod local;
+pub mod outbox_store;
 pub mod sim;
 pub mod uplink;
 

@@ -8,7 +8,18 @@
 //! Each connection: `HELLO` → `WELCOME` (the hub names the robot's namespace), then every
 //! local topic is advertised and every subscription sent exactly once; a heartbeat `PING`
 //! goes out every interval and a link silent for twice the interval is declared dead even
-//! if TCP has not noticed. Reconnects back off exponentially with jitter.
+//! if TCP has not noticed.
+//!
+//! Every connection starts from a clean slate of in-flight state ([`Outbox::on_link_reset`]):
+//! what the dead connection carried is no longer counted against the window, and no-drop
+//! messages it carried without a `DELIVERED` go first again, in order.
+//!
+//! Reconnecting distinguishes whose fault a failure is. When the robot's own link is down
+//! (no route, network unreachable, a connect that times out) an attempt costs one SYN, so
+//! the agent retries every half second or so and is back within that of the link
+//! returning. When the hub refuses, fails or is overloaded, attempts back off
+//! exponentially with full jitter (and never sooner than a `Retry-After` the hub sent), so
+//! a fleet does not stampede a restarted hub.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -20,6 +31,7 @@ use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
 use fleetlink_relay::link::{Control, LinkEvent, LinkIn, LinkNamer, write_link};
 use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
+use fleetlink_relay::reliable::ReliableOut;
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicName};
 use futures_util::{SinkExt, StreamExt};
@@ -34,6 +46,37 @@ const LINK_REPORT_INTERVAL: Duration = Duration::from_secs(1);
 
 /// How long connecting plus the `HELLO`/`WELCOME` exchange may take.
 const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
+/// How long a TCP connect may take before the link is taken to be down (one SYN
+/// retransmission fits; a healthy 4G link answers well within it).
+const CONNECT_TIMEOUT: Duration = Duration::from_secs(3);
+/// Longest wait between attempts while the robot's own link is down.
+const LINK_RETRY_MAX: Duration = Duration::from_millis(500);
+/// Unsent bytes the kernel may hold for the link (`TCP_NOTSENT_LOWAT`): the rest waits in
+/// the scheduler, where a priority message can still overtake it.
+const NOTSENT_LOWAT: u32 = 16 * 1024;
+/// How often the durable outbox gets a chance to sync pending writes.
+const JOURNAL_TICK: Duration = Duration::from_secs(1);
+
+/// Why a connection attempt failed, which decides how soon to try again.
+#[derive(Debug)]
+enum Failure {
+    /// The robot's own network: no route, unreachable, connect timed out.
+    Link(String),
+    /// The hub refused, failed or is overloaded; `retry_after` if it said when to return.
+    Hub {
+        reason: String,
+        retry_after: Option<Duration>,
+    },
+}
+
+impl Failure {
+    fn hub(reason: String) -> Failure {
+        Failure::Hub {
+            reason,
+            retry_after: None,
+        }
+    }
+}
 
 /// Local ↔ hub topic names.
 #[derive(Debug, Clone, Default)]
@@ -85,6 +128,8 @@ pub struct UplinkConfig {
     /// TLS for a `wss://` hub: trusted roots and, for mutual TLS, the robot's
     /// certificate. `None` with `wss://` fails the handshake (no roots are built in).
     pub tls: Option<Arc<rustls::ClientConfig>>,
+    /// The durable outbox for no-drop topics; `None` keeps them in memory only.
+    pub outbox: Option<crate::outbox_store::OutboxStoreConfig>,
 }
 
 /// The link's state, observable by tests and the CLI.
@@ -115,8 +160,31 @@ pub struct Uplink {
 
 impl Uplink {
     /// Attaches the uplink to the local router: from now on every local topic is queued
-    /// for the hub.
-    pub fn new(cfg: UplinkConfig, router: Arc<Router>) -> Uplink {
+    /// for the hub. With a durable outbox, what a previous run left unconfirmed is queued
+    /// first.
+    pub fn new(
+        cfg: UplinkConfig,
+        router: Arc<Router>,
+    ) -> Result<Uplink, crate::outbox_store::StoreError> {
+        let (reliable, recovered) = match &cfg.outbox {
+            Some(store) => {
+                let o = crate::outbox_store::open(store)?;
+                if !o.recovered.is_empty() {
+                    tracing::info!(
+                        "durable outbox {}: {} unconfirmed no_drop messages from the last run \
+                         go first",
+                        store.dir.display(),
+                        o.recovered.len()
+                    );
+                }
+                let journal: Box<dyn fleetlink_relay::reliable::Journal> = Box::new(o.journal);
+                (
+                    ReliableOut::new(o.epoch, o.next_seq, Some(journal)),
+                    o.recovered,
+                )
+            }
+            None => (ReliableOut::in_memory(), Vec::new()),
+        };
         let specs = cfg.topic_qos.clone();
         let qos_for: QosFor = Arc::new(move |meta: &TopicMeta| {
             let base = TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name);
@@ -137,22 +205,23 @@ impl Uplink {
                 role: "uplink".into(),
             },
             None,
-            |id| Outbox::scheduled(id, sched, qos_for),
+            |id| Outbox::scheduled(id, sched, qos_for, reliable),
         );
         let all = Router::compile_pattern(".*").expect("a constant pattern compiles");
         let opts = SubOptions::default();
         router
             .subscribe(client, Target::Pattern(all), opts)
             .expect("the uplink client was just connected");
+        restore(&router, client, &outbox, recovered);
         let (state, _) = watch::channel(LinkState::Connecting { attempt: 0 });
-        Uplink {
+        Ok(Uplink {
             cfg,
             router,
             client,
             outbox,
             state,
             stats: Arc::default(),
-        }
+        })
     }
 
     pub fn watch(&self) -> watch::Receiver<LinkState> {
@@ -161,7 +230,17 @@ impl Uplink {
 
     /// Connects, serves, reconnects — until `shutdown`.
     pub async fn run(self, shutdown: CancellationToken) {
-        let mut backoff = self.cfg.reconnect_initial;
+        let journal = {
+            let outbox = self.outbox.clone();
+            tokio::spawn(async move {
+                let mut tick = tokio::time::interval(JOURNAL_TICK);
+                loop {
+                    tick.tick().await;
+                    outbox.tick_journal();
+                }
+            })
+        };
+        let mut backoff = Backoff::new(self.cfg.reconnect_initial, self.cfg.reconnect_max);
         let mut attempt = 0u32;
         loop {
             attempt += 1;
@@ -170,68 +249,131 @@ impl Uplink {
                 r = self.connect_and_serve() => r,
                 _ = shutdown.cancelled() => break,
             };
-            let reason = match outcome {
+            let (reason, wait) = match outcome {
                 Ok(reason) => {
-                    // The link was up: start backing off from the beginning again.
-                    backoff = self.cfg.reconnect_initial;
                     attempt = 0;
-                    reason
+                    (reason.clone(), backoff.after_session())
                 }
-                Err(e) => e,
+                Err(Failure::Link(reason)) => {
+                    let w = backoff.after_link_failure();
+                    (reason, w)
+                }
+                Err(Failure::Hub {
+                    reason,
+                    retry_after,
+                }) => {
+                    let w = backoff.after_hub_failure(retry_after);
+                    (reason, w)
+                }
             };
-            tracing::warn!(robot = %self.cfg.robot, "hub link down: {reason}");
+            tracing::warn!(
+                robot = %self.cfg.robot,
+                "hub link down: {reason}; next attempt in {} ms",
+                wait.as_millis()
+            );
             self.state.send_replace(LinkState::Disconnected { reason });
-            // Full jitter in [backoff/2, backoff] so a fleet does not reconnect in step.
-            let wait = backoff.mul_f64(0.5 + fastrand::f64() * 0.5);
             tokio::select! {
                 _ = tokio::time::sleep(wait) => {}
                 _ = shutdown.cancelled() => break,
             }
-            backoff = (backoff * 2).min(self.cfg.reconnect_max);
         }
+        journal.abort();
+        self.outbox.tick_journal();
         self.router.disconnect(self.client);
+    }
+
+    /// TCP connect with a short timeout, socket options for a low-latency link, then the
+    /// WebSocket (and TLS) handshake.
+    async fn open_socket(
+        &self,
+        req: tokio_tungstenite::tungstenite::handshake::client::Request,
+    ) -> Result<
+        (
+            tokio_tungstenite::WebSocketStream<
+                tokio_tungstenite::MaybeTlsStream<tokio::net::TcpStream>,
+            >,
+            tokio_tungstenite::tungstenite::handshake::client::Response,
+        ),
+        Failure,
+    > {
+        let url = &self.cfg.hub_url;
+        let host = req
+            .uri()
+            .host()
+            .ok_or_else(|| Failure::hub(format!("hub URL {url} has no host")))?
+            .trim_start_matches('[')
+            .trim_end_matches(']')
+            .to_owned();
+        let tls = req.uri().scheme_str() == Some("wss");
+        let port = req.uri().port_u16().unwrap_or(if tls { 443 } else { 80 });
+        let tcp = match tokio::time::timeout(
+            CONNECT_TIMEOUT,
+            tokio::net::TcpStream::connect((host.as_str(), port)),
+        )
+        .await
+        {
+            Err(_) => {
+                return Err(Failure::Link(format!(
+                    "connecting to {url} timed out after {CONNECT_TIMEOUT:?}"
+                )));
+            }
+            Ok(Err(e)) => {
+                let reason = format!("cannot connect to {url}: {e}");
+                return Err(match e.kind() {
+                    // A reachable host answered: the hub is not there (restarting?).
+                    std::io::ErrorKind::ConnectionRefused => Failure::hub(reason),
+                    _ => Failure::Link(reason),
+                });
+            }
+            Ok(Ok(s)) => s,
+        };
+        let _ = tcp.set_nodelay(true);
+        // Keep the kernel's unsent backlog small so a priority message is never queued
+        // behind megabytes of bulk data below the scheduler (Linux only).
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        if let Err(e) = socket2::SockRef::from(&tcp).set_tcp_notsent_lowat(NOTSENT_LOWAT) {
+            tracing::debug!("TCP_NOTSENT_LOWAT not set: {e}");
+        }
+        let connector = self
+            .cfg
+            .tls
+            .clone()
+            .map(tokio_tungstenite::Connector::Rustls);
+        tokio_tungstenite::client_async_tls_with_config(req, tcp, None, connector)
+            .await
+            .map_err(|e| handshake_failure(url, e))
     }
 
     /// One connection. `Err` if it never came up, `Ok(reason)` when it ended after
     /// `WELCOME`.
-    async fn connect_and_serve(&self) -> Result<String, String> {
+    async fn connect_and_serve(&self) -> Result<String, Failure> {
         let mut req = self
             .cfg
             .hub_url
             .as_str()
             .into_client_request()
-            .map_err(|e| format!("bad hub URL {}: {e}", self.cfg.hub_url))?;
+            .map_err(|e| Failure::hub(format!("bad hub URL {}: {e}", self.cfg.hub_url)))?;
         req.headers_mut().insert(
             "Sec-WebSocket-Protocol",
             HeaderValue::from_static(SUBPROTOCOL),
         );
-        let (ws, response) = tokio::time::timeout(
-            HANDSHAKE_TIMEOUT,
-            tokio_tungstenite::connect_async_tls_with_config(
-                req,
-                None,
-                true,
-                self.cfg
-                    .tls
-                    .clone()
-                    .map(tokio_tungstenite::Connector::Rustls),
-            ),
-        )
-        .await
-        .map_err(|_| format!("connecting to {} timed out", self.cfg.hub_url))?
-        .map_err(|e| format!("cannot connect to {}: {e}", self.cfg.hub_url))?;
+        let (ws, response) = tokio::time::timeout(HANDSHAKE_TIMEOUT, self.open_socket(req))
+            .await
+            .map_err(|_| {
+                Failure::hub(format!(
+                    "the WebSocket handshake with {} took longer than {HANDSHAKE_TIMEOUT:?}",
+                    self.cfg.hub_url
+                ))
+            })??;
         let agreed = response
             .headers()
             .get("Sec-WebSocket-Protocol")
             .and_then(|v| v.to_str().ok());
         if agreed != Some(SUBPROTOCOL) {
-            return Err(format!(
+            return Err(Failure::hub(format!(
                 "{} does not speak {SUBPROTOCOL} (is it a fleetlink hub?)",
                 self.cfg.hub_url
-            ));
-        }
-        if let tokio_tungstenite::MaybeTlsStream::Plain(s) = ws.get_ref() {
-            let _ = s.set_nodelay(true);
+            )));
         }
         let (mut sink, mut stream) = ws.split();
         let hello = Frame::Hello {
@@ -239,10 +381,11 @@ impl Uplink {
             robot: self.cfg.robot.clone(),
             token: self.cfg.token.clone(),
             heartbeat_ms: self.cfg.heartbeat.as_millis() as u32,
+            outbox_epoch: self.outbox.outbox_epoch(),
         };
         sink.send(WsMessage::Binary(hello.to_bytes()))
             .await
-            .map_err(|e| format!("sending HELLO: {e}"))?;
+            .map_err(|e| Failure::Link(format!("sending HELLO: {e}")))?;
         let mut link = LinkIn::default();
         let (session, namespace, heartbeat_ms) = tokio::time::timeout(HANDSHAKE_TIMEOUT, async {
             while let Some(m) = stream.next().await {
@@ -277,11 +420,15 @@ impl Uplink {
             Err("hub closed before WELCOME".to_owned())
         })
         .await
-        .map_err(|_| "no WELCOME from hub".to_owned())??;
+        .map_err(|_| "no WELCOME from hub".to_owned())
+        .and_then(|r| r)
+        .map_err(Failure::hub)?;
         self.stats
             .connects
             .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         tracing::info!(robot = %self.cfg.robot, %namespace, "connected to hub");
+        // This connection owns the in-flight state from here on.
+        self.outbox.on_link_reset();
 
         // Everything the hub must know, exactly once on this connection.
         let names = self.cfg.names.clone();
@@ -459,6 +606,9 @@ impl Uplink {
             LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::warn!(level = level.as_str(), "hub: {text}");
             }
+            LinkEvent::Control(Frame::Delivered { alias, seq }) => {
+                self.outbox.on_delivered(alias, seq);
+            }
             LinkEvent::Control(Frame::Ack { frames: messages }) => {
                 self.outbox
                     .on_acked(messages as usize, std::time::Instant::now());
@@ -472,5 +622,152 @@ impl Uplink {
             }
             _ => {}
         }
+    }
+}
+
+/// Queues what the durable outbox held from the last run, each message on its topic
+/// (advertised locally by the uplink so it has a slot), before anything new.
+fn restore(
+    router: &Router,
+    client: ClientId,
+    outbox: &Outbox,
+    recovered: Vec<fleetlink_relay::reliable::Recovered>,
+) {
+    let mut lost = 0usize;
+    for r in recovered {
+        let topic = match router.advertise(client, &r.topic, r.schema.clone(), false) {
+            Ok(t) => t,
+            Err(e) => {
+                tracing::error!("durable outbox: cannot restore {}: {e}", r.topic);
+                lost += 1;
+                continue;
+            }
+        };
+        let msg = fleetlink_relay::Message::new(
+            topic.meta(),
+            r.seq,
+            r.stamp_ns,
+            client,
+            fleetlink_proto::Payload::new(r.encoding, r.payload),
+        );
+        if !outbox.restore(Arc::new(msg), std::time::Instant::now()) {
+            lost += 1;
+        }
+    }
+    if lost > 0 {
+        tracing::error!(
+            "durable outbox: {lost} recovered messages could not be queued (their topics are \
+             no longer no_drop in this configuration)"
+        );
+    }
+}
+
+/// Classifies a failed WebSocket/TLS handshake.
+fn handshake_failure(url: &str, e: tokio_tungstenite::tungstenite::Error) -> Failure {
+    use tokio_tungstenite::tungstenite::Error as E;
+    match e {
+        E::Http(resp) => {
+            let retry_after = resp
+                .headers()
+                .get("Retry-After")
+                .and_then(|v| v.to_str().ok())
+                .and_then(|v| v.trim().parse::<u64>().ok())
+                .map(Duration::from_secs);
+            Failure::Hub {
+                reason: format!("the hub at {url} answered HTTP {}", resp.status()),
+                retry_after,
+            }
+        }
+        E::Io(io) => Failure::Link(format!("connection to {url} failed: {io}")),
+        other => Failure::hub(format!("handshake with {url} failed: {other}")),
+    }
+}
+
+/// When to try again: fast while the robot's own link is down, exponential with full
+/// jitter while the hub refuses or fails (see the module docs). Sans-IO: tests drive it.
+#[derive(Debug)]
+struct Backoff {
+    initial: Duration,
+    max: Duration,
+    hub: Duration,
+    link: Duration,
+}
+
+impl Backoff {
+    fn new(initial: Duration, max: Duration) -> Backoff {
+        Backoff {
+            initial,
+            max: max.max(initial),
+            hub: initial,
+            link: initial.min(LINK_RETRY_MAX),
+        }
+    }
+
+    /// A session that was up has ended: start over, almost at once.
+    fn after_session(&mut self) -> Duration {
+        self.hub = self.initial;
+        self.link = self.initial.min(LINK_RETRY_MAX);
+        jitter(self.initial.min(LINK_RETRY_MAX))
+    }
+
+    fn after_link_failure(&mut self) -> Duration {
+        let w = jitter(self.link);
+        self.link = (self.link * 2).min(LINK_RETRY_MAX);
+        w
+    }
+
+    fn after_hub_failure(&mut self, retry_after: Option<Duration>) -> Duration {
+        let w = jitter(self.hub);
+        self.hub = (self.hub * 2).min(self.max);
+        match retry_after {
+            // Spread a fleet told the same time over half of it again.
+            Some(at_least) => w.max(at_least + jitter(at_least / 2)),
+            None => w,
+        }
+    }
+}
+
+/// Full jitter in `[d/2, d]`, so a fleet does not retry in step.
+fn jitter(d: Duration) -> Duration {
+    d.mul_f64(0.5 + fastrand::f64() * 0.5)
+}
+
+#[cfg(test)]
+mod backoff_tests {
+    use super::*;
+
+    #[test]
+    fn a_dead_robot_link_is_retried_within_half_a_second() {
+        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
+        for _ in 0..50 {
+            assert!(b.after_link_failure() <= LINK_RETRY_MAX);
+        }
+    }
+
+    #[test]
+    fn a_failing_hub_backs_off_to_the_maximum_and_a_session_resets_it() {
+        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
+        let waits: Vec<Duration> = (0..10).map(|_| b.after_hub_failure(None)).collect();
+        assert!(waits[0] <= Duration::from_millis(250));
+        assert!(waits[9] >= Duration::from_secs(5), "{waits:?}");
+        assert!(waits.iter().all(|w| *w <= Duration::from_secs(10)));
+        assert!(b.after_session() <= LINK_RETRY_MAX);
+        assert!(b.after_hub_failure(None) <= Duration::from_millis(250));
+    }
+
+    #[test]
+    fn retry_after_is_a_floor_spread_by_jitter() {
+        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
+        let waits: Vec<Duration> = (0..200)
+            .map(|_| {
+                let mut b2 = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
+                b2.after_hub_failure(Some(Duration::from_secs(4)))
+            })
+            .collect();
+        assert!(waits.iter().all(|w| *w >= Duration::from_secs(4)));
+        assert!(waits.iter().all(|w| *w <= Duration::from_secs(6)));
+        let distinct: std::collections::HashSet<_> = waits.iter().collect();
+        assert!(distinct.len() > 100, "attempts must not be in step");
+        assert!(b.after_hub_failure(None) <= Duration::from_millis(250));
     }
 }

@@ -11,6 +11,7 @@ mod e2e {
     mod cli;
     mod isolation;
     mod link;
+    mod no_drop;
     mod oidc;
     mod priority;
     mod relay;

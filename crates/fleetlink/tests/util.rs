@@ -191,6 +191,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         topic_qos: Vec::new(),
         max_in_flight: 32,
         tls: None,
+        outbox: None,
     }
 }
 
@@ -380,11 +381,13 @@ impl LocalPublisher {
 }
 
 /// A TCP proxy between a client and a server that a test can "blackhole": traffic stops
-/// flowing in both directions while both sockets stay open, as when a Wi-Fi link drops
-/// and TCP has not noticed.
+/// flowing (in both directions, or only server → client) while both sockets stay open, as
+/// when a Wi-Fi link drops and TCP has not noticed. [`Blackhole::restore`] lets traffic
+/// through again, as when the link comes back.
 pub struct Blackhole {
     pub addr: SocketAddr,
-    cut: Arc<std::sync::atomic::AtomicBool>,
+    up: Arc<std::sync::atomic::AtomicBool>,
+    down: Arc<std::sync::atomic::AtomicBool>,
     task: tokio::task::JoinHandle<()>,
 }
 
@@ -394,25 +397,49 @@ impl Blackhole {
             .await
             .expect("proxy binds");
         let addr = listener.local_addr().unwrap();
-        let cut = Arc::new(std::sync::atomic::AtomicBool::new(false));
-        let c = cut.clone();
+        let up = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let down = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let (u, d) = (up.clone(), down.clone());
         let task = tokio::spawn(async move {
             while let Ok((inbound, _)) = listener.accept().await {
+                if u.load(std::sync::atomic::Ordering::SeqCst) {
+                    // A dead link: the connection attempt goes nowhere.
+                    drop(inbound);
+                    continue;
+                }
                 let Ok(outbound) = TcpStream::connect(target).await else {
                     continue;
                 };
                 let (ri, wi) = inbound.into_split();
                 let (ro, wo) = outbound.into_split();
-                tokio::spawn(pump(ri, wo, c.clone()));
-                tokio::spawn(pump(ro, wi, c.clone()));
+                tokio::spawn(pump(ri, wo, u.clone()));
+                tokio::spawn(pump(ro, wi, d.clone()));
             }
         });
-        Blackhole { addr, cut, task }
+        Blackhole {
+            addr,
+            up,
+            down,
+            task,
+        }
     }
 
-    /// Stops forwarding; bytes read afterwards are discarded, sockets stay open.
+    /// Stops forwarding both ways; bytes read afterwards are discarded, sockets stay open.
     pub fn cut(&self) {
-        self.cut.store(true, std::sync::atomic::Ordering::SeqCst);
+        self.up.store(true, std::sync::atomic::Ordering::SeqCst);
+        self.down.store(true, std::sync::atomic::Ordering::SeqCst);
+    }
+
+    /// Stops forwarding server → client only: the server gets everything, the client
+    /// hears nothing back (no acknowledgements).
+    pub fn cut_downstream(&self) {
+        self.down.store(true, std::sync::atomic::Ordering::SeqCst);
+    }
+
+    /// Forwards again, for new connections and the ones still open.
+    pub fn restore(&self) {
+        self.up.store(false, std::sync::atomic::Ordering::SeqCst);
+        self.down.store(false, std::sync::atomic::Ordering::SeqCst);
     }
 }
 

@@ -24,6 +24,7 @@ use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
+use crate::delivery::{DeliveryLedger, RobotBook};
 use crate::store::Store;
 
 /// How long a new connection has to send `HELLO`.
@@ -139,6 +140,8 @@ pub struct AgentContext {
     pub security: Arc<fleetlink_auth::Security>,
     /// Heartbeat used when the agent does not ask for one.
     pub default_heartbeat_ms: u32,
+    /// How far each robot's no-drop topics were delivered.
+    pub ledger: Arc<DeliveryLedger>,
 }
 
 /// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
@@ -182,9 +185,10 @@ pub async fn serve_agent<S>(
                     robot,
                     token,
                     heartbeat_ms,
+                    outbox_epoch,
                 })) = link.on_frame(f)
                 {
-                    return Ok((version, robot, token, heartbeat_ms));
+                    return Ok((version, robot, token, heartbeat_ms, outbox_epoch));
                 }
             }
             return Err("the first frame must be HELLO".to_owned());
@@ -192,8 +196,8 @@ pub async fn serve_agent<S>(
         Err("connection closed before HELLO".to_owned())
     })
     .await;
-    let (robot, heartbeat_ms, identity) = match hello {
-        Ok(Ok((version, robot, token, hb))) => {
+    let (robot, heartbeat_ms, identity, outbox_epoch) = match hello {
+        Ok(Ok((version, robot, token, hb, epoch))) => {
             if version != VERSION {
                 return refuse(
                     sink,
@@ -246,7 +250,7 @@ pub async fn serve_agent<S>(
                     )
                     .await;
                 }
-                Ok(identity) => (robot, hb, identity),
+                Ok(identity) => (robot, hb, identity, epoch),
                 Err(e) => {
                     return refuse(
                         sink,
@@ -261,6 +265,7 @@ pub async fn serve_agent<S>(
     };
     let namespace = format!("/{robot}");
     let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(1024);
+    let book = ctx.ledger.open(&robot, outbox_epoch).await;
 
     let (client, outbox) = ctx.router.connect(
         ClientKind::Agent {
@@ -336,6 +341,8 @@ pub async fn serve_agent<S>(
         ctrl: ctrl_tx.clone(),
         live: live.clone(),
         gate: Box::new(gate),
+        book,
+        confirm: HashMap::new(),
     };
     let dead_after = heartbeat * 2;
     loop {
@@ -358,6 +365,7 @@ pub async fn serve_agent<S>(
                 if let Err(e) = st.on_binary(&mut link, &b).await {
                     st.status(Level::Error, 1, e).await;
                 }
+                st.confirm_delivered(&robot).await;
                 // Acknowledge what arrived so the agent's scheduler may send more.
                 if let Some(ack) = link.take_ack() {
                     let _ = st.ctrl.send(Control::Frame(ack)).await;
@@ -420,6 +428,10 @@ struct AgentSession {
     ctrl: mpsc::Sender<Control>,
     live: Arc<LiveRobot>,
     gate: Box<dyn Gate>,
+    /// Delivery marks of this robot's no-drop topics.
+    book: Arc<Mutex<RobotBook>>,
+    /// No-drop aliases to confirm after this batch, with the highest sequence seen.
+    confirm: HashMap<u32, u64>,
 }
 
 impl AgentSession {
@@ -439,11 +451,50 @@ impl AgentSession {
         for f in fleetlink_proto::frame::frames(data) {
             let f = f.map_err(|e| format!("malformed frame: {e}"))?;
             match link.on_frame(f) {
+                Ok(LinkEvent::Message {
+                    alias,
+                    seq,
+                    stamp_ns,
+                    payload,
+                }) if link.topic(alias).is_some_and(|t| t.reliable) => {
+                    let name = link.topic(alias).map_or("", |t| t.name.as_str());
+                    let fresh = self
+                        .book
+                        .lock()
+                        .unwrap_or_else(|p| p.into_inner())
+                        .admit(name, seq);
+                    let c = self.confirm.entry(alias).or_default();
+                    *c = (*c).max(seq);
+                    if fresh {
+                        let ev = LinkEvent::Message {
+                            alias,
+                            seq,
+                            stamp_ns,
+                            payload,
+                        };
+                        self.apply(ev).await;
+                    }
+                }
                 Ok(ev) => self.apply(ev).await,
                 Err(e) => self.status(Level::Error, 3, e.to_string()).await,
             }
         }
         Ok(())
+    }
+
+    /// Records the delivery marks this batch advanced, then confirms to the agent: once a
+    /// `DELIVERED` is sent, a restarted hub still knows not to deliver those again.
+    async fn confirm_delivered(&mut self, robot: &str) {
+        if self.confirm.is_empty() {
+            return;
+        }
+        self.ctx.ledger.record(robot, &self.book).await;
+        for (alias, seq) in self.confirm.drain() {
+            let _ = self
+                .ctrl
+                .send(Control::Frame(Frame::Delivered { alias, seq }))
+                .await;
+        }
     }
 
     async fn apply(&mut self, ev: LinkEvent) {

@@ -14,17 +14,21 @@
 //! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
 //! - [`admin_api`]: `/api/v1/` login/logout, rules, tokens, users and the audit log,
 //!   every change through the security core.
+//! - [`delivery`]: each message of a robot's no-drop topics delivered once, across
+//!   reconnects and hub restarts (delivery marks, `DELIVERED` confirmations).
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
-//! - [`store`]: the SQLite database in the data directory (robots seen so far).
+//! - [`store`]: the SQLite database in the data directory (robots seen so far, delivery
+//!   marks).
 
 pub mod admin_api;
 pub mod agents;
 pub mod api;
 pub mod capacity;
+pub mod delivery;
 pub mod jwks;
 pub mod metrics;
 pub mod security;

@@ -182,6 +182,7 @@ impl Hub {
             shutdown: shutdown.clone(),
             security: security.clone(),
             default_heartbeat_ms: cfg.heartbeat.as_millis() as u32,
+            ledger: Arc::new(crate::delivery::DeliveryLedger::new(store.clone())),
         });
         let rosbridge = Arc::new(SessionConfig {
             node_name: "/fleetlink_hub".into(),

@@ -1,7 +1,9 @@
 //! Durable hub state in an embedded SQLite database (`<data-dir>/hub.sqlite3`).
 //!
-//! For now it remembers every robot that ever connected, so the API can list robots that
-//! are offline. Writes are rare (connect/disconnect) and run on the blocking pool.
+//! It remembers every robot that ever connected, so the API can list robots that are
+//! offline, and how far each robot's no-drop topics have been delivered (see
+//! [`crate::delivery`]), so a restarted hub still delivers each message once. Writes run on
+//! the blocking pool.
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -60,6 +62,13 @@ impl Store {
                  last_seen_ms INTEGER NOT NULL,
                  last_addr TEXT NOT NULL,
                  connects INTEGER NOT NULL DEFAULT 0
+             );
+             CREATE TABLE IF NOT EXISTS delivered (
+                 robot TEXT NOT NULL,
+                 topic TEXT NOT NULL,
+                 epoch INTEGER NOT NULL,
+                 seq INTEGER NOT NULL,
+                 PRIMARY KEY (robot, topic)
              );",
         )
         .map_err(|source| StoreError::Open { path, source })?;
@@ -85,6 +94,49 @@ impl Store {
             )
             .map(|_| ())
         })
+    }
+
+    /// How far `robot`'s no-drop topics were delivered: (topic, epoch, last seq).
+    pub fn delivered(&self, robot: &str) -> Result<Vec<(String, u64, u64)>, StoreError> {
+        self.with(|c| {
+            let mut st = c.prepare("SELECT topic, epoch, seq FROM delivered WHERE robot = ?1")?;
+            let rows = st.query_map(params![robot], |r| {
+                Ok((
+                    r.get::<_, String>(0)?,
+                    r.get::<_, i64>(1)? as u64,
+                    r.get::<_, i64>(2)? as u64,
+                ))
+            })?;
+            rows.collect()
+        })
+    }
+
+    /// Records delivery marks of `robot` (topic, epoch, seq) in one transaction.
+    pub fn record_delivered(
+        &self,
+        robot: &str,
+        marks: &[(String, u64, u64)],
+    ) -> Result<(), StoreError> {
+        let mut conn = self.conn.lock().unwrap_or_else(|p| p.into_inner());
+        let tx = conn.transaction()?;
+        {
+            let mut st = tx.prepare_cached(
+                "INSERT INTO delivered (robot, topic, epoch, seq) VALUES (?1, ?2, ?3, ?4)
+                 ON CONFLICT(robot, topic) DO UPDATE SET epoch = ?3, seq = ?4",
+            )?;
+            for (topic, epoch, seq) in marks {
+                st.execute(params![robot, topic, *epoch as i64, *seq as i64])?;
+            }
+            // Marks of an earlier epoch belong to an outbox the robot no longer has.
+            if let Some((_, epoch, _)) = marks.first() {
+                tx.execute(
+                    "DELETE FROM delivered WHERE robot = ?1 AND epoch != ?2",
+                    params![robot, *epoch as i64],
+                )?;
+            }
+        }
+        tx.commit()?;
+        Ok(())
     }
 
     pub fn robots(&self) -> Result<Vec<RobotRecord>, StoreError> {

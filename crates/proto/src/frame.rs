@@ -44,6 +44,7 @@ pub enum FrameKind {
     Status = 0x0c,
     Share = 0x0d,
     LinkReport = 0x0e,
+    Delivered = 0x0f,
 }
 
 /// Severity of a `STATUS` frame.
@@ -98,18 +99,30 @@ pub mod status_code {
 
 /// `ADVERTISE` flag: the publisher wants late subscribers to get its last message.
 pub const ADVERTISE_LATCHED: u8 = 0x01;
+/// `ADVERTISE` flag: the topic is no-drop. Its `seq` numbers are the sender's stream
+/// sequence for this topic (strictly increasing for the life of the sender's outbox, see
+/// `HELLO.outbox_epoch`); the receiver delivers each sequence number at most once and
+/// confirms delivery with `DELIVERED`, and the sender keeps every message until then,
+/// resending it on the next connection if this one dies first.
+pub const ADVERTISE_RELIABLE: u8 = 0x02;
 /// `SUBSCRIBE` flag: `pattern` is a regular expression matched against whole topic names.
 pub const SUBSCRIBE_REGEX: u8 = 0x01;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Frame {
     /// Agent → hub, first frame on a connection.
-    /// `version varint | robot str | token str | heartbeat_ms varint`
+    /// `version varint | robot str | token str | heartbeat_ms varint | outbox_epoch u64le`
+    ///
+    /// `outbox_epoch` names the agent's no-drop sequence space: it changes only when the
+    /// agent's outbox starts afresh (a new durable outbox, or no durable outbox and a
+    /// restart), telling the receiver that sequence numbers begin again. 0 = none (no
+    /// reliable topics); absent in older senders, read as 0.
     Hello {
         version: u32,
         robot: String,
         token: String,
         heartbeat_ms: u32,
+        outbox_epoch: u64,
     },
     /// Hub → agent, answers `HELLO`.
     /// `session str | namespace str | hub_time_ns u64le | heartbeat_ms varint`
@@ -190,6 +203,10 @@ pub enum Frame {
         rate_bps: u64,
         latency_ns: u64,
     },
+    /// Receiver → sender of a reliable topic (`ADVERTISE_RELIABLE`): every message of
+    /// `alias` up to and including `seq` has been delivered (and recorded, so it is never
+    /// delivered again); the sender may forget them. `alias varint | seq varint`
+    Delivered { alias: u32, seq: u64 },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -211,6 +228,7 @@ impl Frame {
             Frame::Status { .. } => FrameKind::Status as u8,
             Frame::Share { .. } => FrameKind::Share as u8,
             Frame::LinkReport { .. } => FrameKind::LinkReport as u8,
+            Frame::Delivered { .. } => FrameKind::Delivered as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -239,11 +257,13 @@ impl Frame {
                 robot,
                 token,
                 heartbeat_ms,
+                outbox_epoch,
             } => {
                 put_varint(b, u64::from(*version));
                 put_str(b, robot);
                 put_str(b, token);
                 put_varint(b, u64::from(*heartbeat_ms));
+                b.put_u64_le(*outbox_epoch);
             }
             Frame::Welcome {
                 session,
@@ -343,6 +363,10 @@ impl Frame {
                 b.put_u64_le(*rate_bps);
                 b.put_u64_le(*latency_ns);
             }
+            Frame::Delivered { alias, seq } => {
+                put_varint(b, u64::from(*alias));
+                put_varint(b, *seq);
+            }
             Frame::Unknown { .. } => {}
         }
     }
@@ -429,6 +453,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             robot: r.string("HELLO.robot")?,
             token: r.string("HELLO.token")?,
             heartbeat_ms: r.varint_u32("HELLO.heartbeat_ms")?,
+            outbox_epoch: if r.is_empty() {
+                0
+            } else {
+                r.u64_le("HELLO.outbox_epoch")?
+            },
         },
         0x02 => Frame::Welcome {
             session: r.string("WELCOME.session")?,
@@ -531,6 +560,10 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             demand_bps: r.u64_le("LINK_REPORT.demand_bps")?,
             rate_bps: r.u64_le("LINK_REPORT.rate_bps")?,
             latency_ns: r.u64_le("LINK_REPORT.latency_ns")?,
+        },
+        0x0f => Frame::Delivered {
+            alias: r.varint_u32("DELIVERED.alias")?,
+            seq: r.varint("DELIVERED.seq")?,
         },
         other => Frame::Unknown { kind: other },
     };

@@ -65,6 +65,9 @@ proptest! {
     fn link_report(f in util::link_report()) { assert_round_trip(&f)?; }
 
     #[test]
+    fn delivered(f in util::delivered()) { assert_round_trip(&f)?; }
+
+    #[test]
     fn unknown_kind(f in util::unknown()) { assert_round_trip(&f)?; }
 
     #[test]

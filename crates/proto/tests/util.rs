@@ -9,14 +9,22 @@ use proptest::prelude::*;
 use serde_json::Value;
 
 pub fn hello() -> impl Strategy<Value = Frame> {
-    (any::<u32>(), any::<String>(), any::<String>(), any::<u32>()).prop_map(
-        |(version, robot, token, heartbeat_ms)| Frame::Hello {
-            version,
-            robot,
-            token,
-            heartbeat_ms,
-        },
+    (
+        any::<u32>(),
+        any::<String>(),
+        any::<String>(),
+        any::<u32>(),
+        any::<u64>(),
     )
+        .prop_map(
+            |(version, robot, token, heartbeat_ms, outbox_epoch)| Frame::Hello {
+                version,
+                robot,
+                token,
+                heartbeat_ms,
+                outbox_epoch,
+            },
+        )
 }
 
 pub fn welcome() -> impl Strategy<Value = Frame> {
@@ -167,8 +175,12 @@ pub fn link_report() -> impl Strategy<Value = Frame> {
     })
 }
 
+pub fn delivered() -> impl Strategy<Value = Frame> {
+    (any::<u32>(), any::<u64>()).prop_map(|(alias, seq)| Frame::Delivered { alias, seq })
+}
+
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x0fu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x10u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -187,6 +199,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         status(),
         share(),
         link_report(),
+        delivered(),
         unknown(),
     ]
 }
@@ -199,6 +212,7 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             robot: "robot-7".into(),
             token: "secret".into(),
             heartbeat_ms: 1000,
+            outbox_epoch: 0x0123_4567_89ab_cdef,
         },
         Frame::Welcome {
             session: "s-1".into(),
@@ -261,6 +275,10 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             demand_bps: 2_000_000,
             rate_bps: 480_000,
             latency_ns: 41_000_000,
+        },
+        Frame::Delivered {
+            alias: 300,
+            seq: 1 << 40,
         },
     ]
 }

@@ -201,7 +201,8 @@ impl<T: WireLen> Scheduler<T> {
             }
         };
         let lane = if qos.no_drop {
-            self.no_drop.reserve(qos.queue);
+            // A durable outbox sets a queue length that only its byte bound limits.
+            self.no_drop.reserve(qos.queue.min(1024));
             Lane::NoDrop {
                 queued: 0,
                 capacity: qos.queue,
@@ -253,6 +254,23 @@ impl<T: WireLen> Scheduler<T> {
                 }
                 outcome
             }
+        }
+    }
+
+    /// Puts a no-drop `item` back at the head of the no-drop FIFO: it was sent on a
+    /// connection that died before the peer confirmed it. Call in reverse send order so
+    /// the oldest goes first. Ignores the queue length (the item was admitted before).
+    pub fn requeue_no_drop(&mut self, topic: TopicId, item: T) -> Result<(), T> {
+        let Some(&index) = self.index.get(&topic) else {
+            return Err(item);
+        };
+        match &mut self.topics[index as usize].lane {
+            Lane::NoDrop { queued, .. } => {
+                *queued += 1;
+                self.no_drop.push_front((index, item));
+                Ok(())
+            }
+            Lane::Queue(_) => Err(item),
         }
     }
 

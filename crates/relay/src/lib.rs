@@ -15,6 +15,9 @@
 //!   default drop-oldest queue.
 //! - [`outbox`]: one client's outbound side: its subscriptions' queues, served round-robin
 //!   to the task that writes the client's socket.
+//! - [`reliable`]: no-drop topics on a link, the sender's half: stream numbering, messages
+//!   kept until confirmed and resent after a reconnect, the durable [`reliable::Journal`]
+//!   seam.
 //! - [`gate`]: the authorization seam ([`gate::Gate`]): what a connection may do,
 //!   asked at request time and on every delivery.
 //! - [`link`]: what hub and agent share on a `fleetlink.v1` link: received frames to
@@ -30,6 +33,7 @@ pub mod message;
 pub mod names;
 pub mod outbox;
 pub mod queue;
+pub mod reliable;
 pub mod rosbridge;
 pub mod router;
 pub mod stats;

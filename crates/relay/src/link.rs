@@ -11,7 +11,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use bytes::{Bytes, BytesMut};
-use fleetlink_proto::frame::{ADVERTISE_LATCHED, Frame};
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_RELIABLE, Frame};
 use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt};
@@ -39,6 +39,9 @@ pub struct InTopic {
     pub schema: Schema,
     pub encoding: Encoding,
     pub latched: bool,
+    /// No-drop: sequence numbers are the sender's stream numbering; confirm with
+    /// `DELIVERED`.
+    pub reliable: bool,
 }
 
 /// What a received frame means for the router.
@@ -110,6 +113,7 @@ impl LinkIn {
                     schema,
                     encoding,
                     latched: flags & ADVERTISE_LATCHED != 0,
+                    reliable: flags & ADVERTISE_RELIABLE != 0,
                 };
                 self.aliases.insert(alias, t.clone());
                 LinkEvent::Advertise { alias, topic: t }
@@ -218,7 +222,7 @@ pub async fn write_link<K>(
                 topic: name,
                 schema: meta.schema.clone(),
                 encoding: enc,
-                flags: 0,
+                flags: outbox.advertise_flags(meta.id.0),
             }
             .encode(&mut buf);
             advertised.insert(meta.id, enc);
@@ -285,7 +289,7 @@ pub async fn write_link<K>(
                     Some(m) => {
                         lane.frames = m.link_frames();
                         lane.next = 0;
-                        if !announce(&mut buf, &mut advertised, &m, &namer) {
+                        if !announce(&mut buf, &mut advertised, &m, &namer, &outbox) {
                             lane.next = lane.frames.len();
                         }
                     }
@@ -311,7 +315,7 @@ pub async fn write_link<K>(
                 lane.waiting.push_back(msg.clone());
                 continue;
             }
-            if !announce(&mut buf, &mut advertised, msg, &namer) {
+            if !announce(&mut buf, &mut advertised, msg, &namer, &outbox) {
                 continue;
             }
             let frames = msg.link_frames();
@@ -369,6 +373,7 @@ fn announce(
     advertised: &mut HashMap<TopicId, Encoding>,
     msg: &Message,
     namer: &LinkNamer,
+    outbox: &Outbox,
 ) -> bool {
     let enc = msg.payload.encoding;
     if advertised.get(&msg.topic.id) == Some(&enc) {
@@ -382,7 +387,7 @@ fn announce(
         topic: name,
         schema: msg.topic.schema.clone(),
         encoding: enc,
-        flags: 0,
+        flags: outbox.advertise_flags(msg.topic.id.0),
     }
     .encode(buf);
     advertised.insert(msg.topic.id, enc);

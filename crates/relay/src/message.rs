@@ -74,6 +74,22 @@ impl Message {
         }
     }
 
+    /// The same message numbered `seq` (a no-drop stream's own numbering, see
+    /// [`crate::reliable`]); shares the payload, starts with an empty frame cache.
+    pub fn resequenced(&self, seq: u64) -> Message {
+        Message {
+            seq,
+            received: self.received,
+            ..Message::new(
+                self.topic.clone(),
+                seq,
+                self.stamp_ns,
+                self.origin,
+                self.payload.clone(),
+            )
+        }
+    }
+
     pub fn wire_len(&self) -> usize {
         self.payload.len()
     }

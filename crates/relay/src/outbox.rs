@@ -24,6 +24,7 @@ use fleetlink_qos::{
 use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
 use crate::queue::{DropReason, OutboundQueue, QosQueue};
+use crate::reliable::ReliableOut;
 use crate::stats::TopicStats;
 
 /// Chooses the QoS of each topic a scheduled outbox carries (the agent's per-topic
@@ -68,8 +69,16 @@ enum Service {
         by_topic: HashMap<u32, SlotId, IdHash>,
         known: HashSet<u32>,
         link: Box<LinkControl>,
+        /// No-drop topics: numbered, kept until confirmed, resent after a reconnect.
+        reliable: Box<ReliableOut>,
+        reliable_topics: HashSet<u32>,
+        /// When a no-drop refusal was last logged (they are counted always, logged at
+        /// most once per [`REFUSAL_LOG_INTERVAL`]).
+        refusal_logged: Option<Instant>,
     },
 }
+
+const REFUSAL_LOG_INTERVAL: Duration = Duration::from_secs(5);
 
 /// What a scheduled outbox knows about its link: the estimator fed by acknowledgements
 /// and echo probes, and the controls it sets on the scheduler.
@@ -92,6 +101,16 @@ impl LinkControl {
         sched.set_window_bytes(self.est.window_bytes(WINDOW_HEADROOM));
         sched.set_rate_budget(self.share, now);
     }
+}
+
+/// Logs that a no-drop message was refused, at most once per interval (every refusal is
+/// counted in the topic's drop statistics regardless).
+fn log_refusal(last: &mut Option<Instant>, now: Instant, topic: &crate::TopicName, why: &str) {
+    if last.is_some_and(|at| now.saturating_duration_since(at) < REFUSAL_LOG_INTERVAL) {
+        return;
+    }
+    *last = Some(now);
+    tracing::error!("no_drop topic {topic}: message refused: {why}");
 }
 
 /// A link report for the hub: demand, delivered rate and one-way latency.
@@ -144,7 +163,12 @@ impl Outbox {
 
     /// An outbox served by the Robofleet scheduler, for a link whose peer acknowledges
     /// messages ([`Outbox::on_acked`]).
-    pub fn scheduled(client: ClientId, config: SchedulerConfig, qos_for: QosFor) -> Arc<Outbox> {
+    pub fn scheduled(
+        client: ClientId,
+        config: SchedulerConfig,
+        qos_for: QosFor,
+        reliable: ReliableOut,
+    ) -> Arc<Outbox> {
         Self::with_service(
             client,
             Service::Scheduled {
@@ -160,6 +184,9 @@ impl Outbox {
                     offered: 0,
                     offered_since: Nanos::ZERO,
                 }),
+                reliable: Box::new(reliable),
+                reliable_topics: HashSet::new(),
+                refusal_logged: None,
             },
         )
     }
@@ -208,10 +235,20 @@ impl Outbox {
                 qos_for,
                 by_topic,
                 known,
+                reliable,
+                reliable_topics,
                 ..
             } => {
                 if known.insert(tid) {
-                    let q = qos_for(topic);
+                    let mut q = qos_for(topic);
+                    if q.no_drop {
+                        reliable_topics.insert(tid);
+                        if reliable.is_durable() {
+                            // Waiting messages are on disk too: the journal's byte
+                            // bound limits them, not a count.
+                            q.queue = usize::MAX;
+                        }
+                    }
                     if let Err(e) = sched.add_topic(QosTopic(tid), q) {
                         tracing::warn!("topic {}: invalid QoS ({e}); using defaults", topic.name);
                         let _ = sched.add_topic(QosTopic(tid), TopicQos::default());
@@ -279,17 +316,41 @@ impl Outbox {
                 sched,
                 origin,
                 link,
+                reliable,
+                reliable_topics,
+                refusal_logged,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
                 link.offered += msg.wire_len() as u64;
+                let mut msg = msg;
+                let no_drop = reliable_topics.contains(&s.topic);
+                if no_drop {
+                    match reliable.admit(&msg) {
+                        Ok(m) => msg = m,
+                        Err(e) => {
+                            log_refusal(refusal_logged, now, &msg.topic.name, &e.to_string());
+                            s.stats.record_drop(DropReason::Backpressure);
+                            self.dropped.fetch_add(1, Relaxed);
+                            return;
+                        }
+                    }
+                }
                 match sched.offer(QosTopic(s.topic), msg, t) {
                     Push::Queued => {
                         st.queued += 1;
                         (None, true)
                     }
                     Push::Dropped { reason, .. } => (Some(DropReason::from_qos(reason)), true),
-                    Push::Backpressure(_) => (Some(DropReason::Backpressure), false),
+                    Push::Backpressure(m) => {
+                        if no_drop {
+                            let why = "its no_drop queue is full (the publisher outpaces the \
+                                       link); raise its `queue` or set `outbox.dir` so \
+                                       waiting messages spill to disk";
+                            log_refusal(refusal_logged, now, &m.topic.name, why);
+                        }
+                        (Some(DropReason::Backpressure), false)
+                    }
                 }
             }
         };
@@ -326,13 +387,89 @@ impl Outbox {
         }
     }
 
-    /// A new connection: nothing is in flight any more.
+    /// A new connection: nothing is in flight any more. No-drop messages the old
+    /// connection carried but the peer never confirmed go first again, in their order.
     pub fn on_link_reset(&self) {
         let mut st = self.lock();
-        if let Service::Scheduled { sched, link, .. } = &mut st.service {
+        let st = &mut *st;
+        if let Service::Scheduled {
+            sched,
+            link,
+            reliable,
+            ..
+        } = &mut st.service
+        {
             sched.on_link_reset();
             link.sent.clear();
+            let again = reliable.take_unconfirmed();
+            for (alias, m) in again.into_iter().rev() {
+                if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
+                    st.queued += 1;
+                }
+            }
         }
+    }
+
+    /// The peer confirmed every no-drop message of link alias `alias` up to `seq`.
+    pub fn on_delivered(&self, alias: u32, seq: u64) {
+        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
+            reliable.confirm(alias, seq);
+        }
+    }
+
+    /// Periodic housekeeping of the durable outbox, if any (about once a second).
+    pub fn tick_journal(&self) {
+        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
+            reliable.tick();
+        }
+    }
+
+    /// `ADVERTISE` flags for topic `alias` on this outbox's link.
+    pub fn advertise_flags(&self, alias: u32) -> u8 {
+        match &self.lock().service {
+            Service::Scheduled {
+                reliable_topics, ..
+            } if reliable_topics.contains(&alias) => fleetlink_proto::frame::ADVERTISE_RELIABLE,
+            _ => 0,
+        }
+    }
+
+    /// The numbering epoch of this outbox's no-drop streams (0 for a plain outbox).
+    pub fn outbox_epoch(&self) -> u64 {
+        match &self.lock().service {
+            Service::Scheduled { reliable, .. } => reliable.epoch(),
+            Service::RoundRobin { .. } => 0,
+        }
+    }
+
+    /// Queues a no-drop message read back from the durable outbox after a restart (already
+    /// numbered and journaled). Its topic must have a slot here (advertised locally) and
+    /// be a no-drop topic; returns false otherwise.
+    pub fn restore(&self, msg: Arc<Message>, now: Instant) -> bool {
+        let mut st = self.lock();
+        let st = &mut *st;
+        let Service::Scheduled {
+            sched,
+            origin,
+            reliable,
+            reliable_topics,
+            ..
+        } = &mut st.service
+        else {
+            return false;
+        };
+        let tid = msg.topic.id.0;
+        if !reliable_topics.contains(&tid) {
+            return false;
+        }
+        reliable.restored(&msg.topic.name, msg.seq);
+        let t = Nanos::since(*origin, now);
+        let queued = matches!(sched.offer(QosTopic(tid), msg, t), Push::Queued);
+        if queued {
+            st.queued += 1;
+            self.notify.notify_one();
+        }
+        queued
     }
 
     /// The hub's capacity share for this robot (bytes per second; `None` = no cap): the
@@ -464,6 +601,8 @@ impl Outbox {
                 origin,
                 by_topic,
                 link,
+                reliable,
+                reliable_topics,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
@@ -472,6 +611,15 @@ impl Outbox {
                         break;
                     };
                     st.queued = st.queued.saturating_sub(1);
+                    if reliable_topics.contains(&tid.0) {
+                        // Sent even when its publisher has gone: it was promised delivery.
+                        reliable.sent(tid.0, m.clone());
+                        let slot = by_topic.get(&tid.0).copied().unwrap_or(SlotId(0));
+                        link.sent.push_back((m.wire_len(), t));
+                        bytes += m.wire_len();
+                        items.push((slot, Delivery::default(), m));
+                        continue;
+                    }
                     let Some(slot) = by_topic.get(&tid.0) else {
                         // Unsubscribed while queued: it was in flight by the scheduler's
                         // count, so acknowledge it locally.

@@ -67,6 +67,9 @@ pub struct AgentConfig {
     /// Per-topic QoS of the uplink, by local topic name (see docs/qos.md); topics not
     /// listed get the defaults for their type.
     pub topics: BTreeMap<String, fleetlink_qos::TopicQosSpec>,
+    /// The durable outbox for `no_drop` topics; `None` (the default) keeps them in memory,
+    /// which survives link outages but not an agent restart.
+    pub outbox: Option<OutboxConfig>,
 }
 
 impl Default for AgentConfig {
@@ -83,6 +86,7 @@ impl Default for AgentConfig {
             subscribe: Vec::new(),
             sim: None,
             topics: BTreeMap::new(),
+            outbox: None,
         }
     }
 }
@@ -113,6 +117,35 @@ impl ReconnectConfig {
 
     pub fn max(&self) -> Duration {
         Duration::from_millis(self.max_ms)
+    }
+}
+
+/// `outbox:` — where `no_drop` messages wait on disk until the hub confirms them.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutboxConfig {
+    /// Directory of the outbox file (created if missing). One agent per directory.
+    pub dir: PathBuf,
+    /// Largest total of unconfirmed message bytes held; beyond it new `no_drop` messages
+    /// are refused (counted, logged). Default 256.
+    #[serde(default = "default_outbox_mb")]
+    pub max_mb: u64,
+    /// `always`, `batch` (default) or `never`; see docs/config.md.
+    #[serde(default)]
+    pub fsync: crate::outbox_store::Fsync,
+}
+
+fn default_outbox_mb() -> u64 {
+    256
+}
+
+impl OutboxConfig {
+    pub fn store(&self) -> crate::outbox_store::OutboxStoreConfig {
+        crate::outbox_store::OutboxStoreConfig {
+            dir: self.dir.clone(),
+            max_bytes: self.max_mb.saturating_mul(1 << 20),
+            fsync: self.fsync,
+        }
     }
 }
 

@@ -70,6 +70,20 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
             _ => {}
         }
     }
+    if let Some(o) = &cfg.outbox {
+        if o.dir.as_os_str().is_empty() {
+            return Err(problem(
+                "outbox.dir".into(),
+                "must be a directory path, got an empty string",
+            ));
+        }
+        if o.max_mb == 0 {
+            return Err(problem(
+                "outbox.max_mb".into(),
+                "must be > 0 (megabytes of unconfirmed no_drop messages to hold), got 0",
+            ));
+        }
+    }
     if cfg.heartbeat_ms == 0 {
         return Err(problem("heartbeat_ms".into(), "must be > 0, got 0"));
     }

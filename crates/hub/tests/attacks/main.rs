@@ -238,6 +238,7 @@ where
         robot: robot.into(),
         token: token.into(),
         heartbeat_ms: 0,
+        outbox_epoch: 0,
     };
     ws.send(Message::Binary(f.to_bytes()))
         .await

@@ -78,6 +78,7 @@ async fn connect_inner(url: &str, robot: &str, token: &str) -> anyhow::Result<Co
         robot: robot.to_owned(),
         token: token.to_owned(),
         heartbeat_ms: HEARTBEAT_MS,
+        outbox_epoch: 0,
     };
     ws.send(WsMessage::Binary(hello.to_bytes()))
         .await

@@ -1,0 +1,197 @@
+//! The durable outbox on real files: restart, torn tails, compaction, limits, locking.
+
+use super::*;
+use fleetlink_relay::names::TopicId;
+
+struct Dir(PathBuf);
+
+impl Dir {
+    fn new(tag: &str) -> Dir {
+        let d = std::env::temp_dir().join(format!(
+            "fleetlink-outbox-{tag}-{}-{}",
+            std::process::id(),
+            fastrand::u64(..)
+        ));
+        Dir(d)
+    }
+    fn cfg(&self, max_bytes: u64) -> OutboxStoreConfig {
+        OutboxStoreConfig {
+            dir: self.0.clone(),
+            max_bytes,
+            fsync: Fsync::Never,
+        }
+    }
+}
+
+impl Drop for Dir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn meta(name: &str) -> TopicMeta {
+    TopicMeta {
+        id: TopicId(1),
+        name: TopicName::parse(name).unwrap(),
+        schema: Schema {
+            type_name: "std_msgs/msg/String".into(),
+            encoding: "ros2msg".into(),
+            text: "string data".into(),
+        },
+    }
+}
+
+fn payload(s: &str) -> Payload {
+    Payload::new(Encoding::Json, Bytes::copy_from_slice(s.as_bytes()))
+}
+
+fn seqs(o: &Opened) -> Vec<(String, u64, String)> {
+    o.recovered
+        .iter()
+        .map(|r| {
+            (
+                r.topic.to_string(),
+                r.seq,
+                String::from_utf8_lossy(&r.payload).into_owned(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn unconfirmed_messages_survive_a_restart_in_order() {
+    let d = Dir::new("restart");
+    let (a, b) = (meta("/a"), meta("/b"));
+    let epoch = {
+        let mut o = open(&d.cfg(1 << 20)).unwrap();
+        assert!(o.recovered.is_empty());
+        for i in 1..=3 {
+            o.journal
+                .append(&a, i, 10 + i, &payload(&format!("a{i}")))
+                .unwrap();
+            o.journal
+                .append(&b, i, 20 + i, &payload(&format!("b{i}")))
+                .unwrap();
+        }
+        o.journal.confirm(&a.name, 2);
+        o.epoch
+        // Dropped without any shutdown step, as a kill -9 would leave it.
+    };
+    let o = open(&d.cfg(1 << 20)).unwrap();
+    assert_eq!(o.epoch, epoch, "the numbering epoch is kept");
+    assert_eq!(
+        seqs(&o),
+        [
+            ("/b".to_owned(), 1, "b1".to_owned()),
+            ("/b".to_owned(), 2, "b2".to_owned()),
+            ("/a".to_owned(), 3, "a3".to_owned()),
+            ("/b".to_owned(), 3, "b3".to_owned()),
+        ]
+    );
+    assert_eq!(o.recovered[2].stamp_ns, 13);
+    assert_eq!(o.recovered[0].schema.type_name, "std_msgs/msg/String");
+    assert_eq!(o.next_seq[&a.name], 4);
+    assert_eq!(o.next_seq[&b.name], 4);
+}
+
+#[test]
+fn a_torn_last_record_is_cut_and_the_rest_kept() {
+    let d = Dir::new("torn");
+    let a = meta("/a");
+    {
+        let mut o = open(&d.cfg(1 << 20)).unwrap();
+        o.journal.append(&a, 1, 1, &payload("one")).unwrap();
+        o.journal.append(&a, 2, 2, &payload("two")).unwrap();
+    }
+    let path = d.0.join(FILE);
+    let full = std::fs::metadata(&path).unwrap().len();
+    // The agent died half-way through writing the second message.
+    let f = OpenOptions::new().write(true).open(&path).unwrap();
+    f.set_len(full - 3).unwrap();
+    drop(f);
+    let o = open(&d.cfg(1 << 20)).unwrap();
+    assert_eq!(seqs(&o), [("/a".to_owned(), 1, "one".to_owned())]);
+    assert!(std::fs::metadata(&path).unwrap().len() < full - 3);
+    drop(o);
+    // Flipped bits in a record are caught by its checksum the same way.
+    let mut bytes = std::fs::read(&path).unwrap();
+    let last = bytes.len() - 1;
+    bytes[last] ^= 0xff;
+    std::fs::write(&path, &bytes).unwrap();
+    let o = open(&d.cfg(1 << 20)).unwrap();
+    assert!(o.recovered.is_empty());
+}
+
+#[test]
+fn a_full_outbox_refuses_with_the_setting_to_raise() {
+    let d = Dir::new("full");
+    let a = meta("/a");
+    let mut o = open(&d.cfg(10)).unwrap();
+    o.journal.append(&a, 1, 1, &payload("12345678")).unwrap();
+    let e = o.journal.append(&a, 2, 1, &payload("123")).unwrap_err();
+    assert!(
+        matches!(e, JournalError::Full { used: 8, limit: 10 }),
+        "{e}"
+    );
+    assert!(e.to_string().contains("outbox.max_mb"), "{e}");
+    // Confirmed messages make room again.
+    o.journal.confirm(&a.name, 1);
+    o.journal.append(&a, 2, 1, &payload("123")).unwrap();
+}
+
+#[test]
+fn compaction_keeps_the_live_messages_and_the_numbering() {
+    let d = Dir::new("compact");
+    let a = meta("/a");
+    let big = "x".repeat(64 << 10);
+    {
+        let mut o = open(&d.cfg(1 << 30)).unwrap();
+        for i in 1..=200 {
+            o.journal.append(&a, i, i, &payload(&big)).unwrap();
+            o.journal.confirm(&a.name, i);
+        }
+        o.journal.append(&a, 201, 201, &payload("last")).unwrap();
+    }
+    let len = std::fs::metadata(d.0.join(FILE)).unwrap().len();
+    assert!(len < 2 * COMPACT_MIN, "compacted file is {len} bytes");
+    let o = open(&d.cfg(1 << 30)).unwrap();
+    assert_eq!(seqs(&o), [("/a".to_owned(), 201, "last".to_owned())]);
+    assert_eq!(o.next_seq[&a.name], 202);
+    drop(o);
+    // Everything confirmed: the numbering still goes on after a restart.
+    let mut o = open(&d.cfg(1 << 30)).unwrap();
+    o.journal.confirm(&a.name, 201);
+    drop(o);
+    assert_eq!(open(&d.cfg(1 << 30)).unwrap().next_seq[&a.name], 202);
+}
+
+#[test]
+fn two_agents_cannot_share_one_outbox() {
+    let d = Dir::new("lock");
+    let _first = open(&d.cfg(1 << 20)).unwrap();
+    match open(&d.cfg(1 << 20)) {
+        Err(e @ StoreError::Locked { .. }) => assert!(e.to_string().contains("outbox.dir")),
+        Err(e) => panic!("expected a lock error, got {e}"),
+        Ok(_) => panic!("a second agent opened a locked outbox"),
+    }
+}
+
+#[test]
+fn a_file_that_is_not_an_outbox_is_refused_not_overwritten() {
+    let d = Dir::new("foreign");
+    std::fs::create_dir_all(&d.0).unwrap();
+    std::fs::write(d.0.join(FILE), frame(b"\x03not a header")).unwrap();
+    let e = open(&d.cfg(1 << 20)).err().expect("refused");
+    assert!(matches!(e, StoreError::Foreign { .. }), "{e}");
+    assert!(std::fs::metadata(d.0.join(FILE)).unwrap().len() > 0);
+}
+
+#[test]
+fn shared_payloads_are_not_copied_on_append() {
+    let d = Dir::new("share");
+    let mut o = open(&d.cfg(1 << 20)).unwrap();
+    let p = payload("shared");
+    o.journal.append(&meta("/a"), 1, 1, &p).unwrap();
+    let held = &o.journal.live[0].payload;
+    assert_eq!(held.as_ptr(), p.bytes.as_ptr());
+}
