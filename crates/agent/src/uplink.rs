@@ -245,10 +245,12 @@ impl Uplink {
         loop {
             attempt += 1;
             self.state.send_replace(LinkState::Connecting { attempt });
-            let outcome = tokio::select! {
-                r = self.connect_and_serve() => r,
-                _ = shutdown.cancelled() => break,
-            };
+            // Cancellation is handled inside, so a connection's tasks are ended and awaited
+            // (and release the outbox) before `run` returns.
+            let outcome = self.connect_and_serve(&shutdown).await;
+            if shutdown.is_cancelled() {
+                break;
+            }
             let (reason, wait) = match outcome {
                 Ok(reason) => {
                     attempt = 0;
@@ -278,6 +280,9 @@ impl Uplink {
             }
         }
         journal.abort();
+        // Awaited so its handle on the outbox (and the outbox file's lock) is gone when
+        // `run` returns.
+        let _ = journal.await;
         self.outbox.tick_journal();
         self.router.disconnect(self.client);
     }
@@ -346,7 +351,7 @@ impl Uplink {
 
     /// One connection. `Err` if it never came up, `Ok(reason)` when it ended after
     /// `WELCOME`.
-    async fn connect_and_serve(&self) -> Result<String, Failure> {
+    async fn connect_and_serve(&self, shutdown: &CancellationToken) -> Result<String, Failure> {
         let mut req = self
             .cfg
             .hub_url
@@ -357,14 +362,17 @@ impl Uplink {
             "Sec-WebSocket-Protocol",
             HeaderValue::from_static(SUBPROTOCOL),
         );
-        let (ws, response) = tokio::time::timeout(HANDSHAKE_TIMEOUT, self.open_socket(req))
-            .await
-            .map_err(|_| {
-                Failure::hub(format!(
-                    "the WebSocket handshake with {} took longer than {HANDSHAKE_TIMEOUT:?}",
-                    self.cfg.hub_url
-                ))
-            })??;
+        let (ws, response) = or_shutdown(
+            shutdown,
+            tokio::time::timeout(HANDSHAKE_TIMEOUT, self.open_socket(req)),
+        )
+        .await?
+        .map_err(|_| {
+            Failure::hub(format!(
+                "the WebSocket handshake with {} took longer than {HANDSHAKE_TIMEOUT:?}",
+                self.cfg.hub_url
+            ))
+        })??;
         let agreed = response
             .headers()
             .get("Sec-WebSocket-Protocol")
@@ -387,7 +395,7 @@ impl Uplink {
             .await
             .map_err(|e| Failure::Link(format!("sending HELLO: {e}")))?;
         let mut link = LinkIn::default();
-        let (session, namespace, heartbeat_ms) = tokio::time::timeout(HANDSHAKE_TIMEOUT, async {
+        let welcome = tokio::time::timeout(HANDSHAKE_TIMEOUT, async {
             while let Some(m) = stream.next().await {
                 match m {
                     Ok(WsMessage::Binary(b)) => {
@@ -418,11 +426,12 @@ impl Uplink {
                 }
             }
             Err("hub closed before WELCOME".to_owned())
-        })
-        .await
-        .map_err(|_| "no WELCOME from hub".to_owned())
-        .and_then(|r| r)
-        .map_err(Failure::hub)?;
+        });
+        let (session, namespace, heartbeat_ms) = or_shutdown(shutdown, welcome)
+            .await?
+            .map_err(|_| "no WELCOME from hub".to_owned())
+            .and_then(|r| r)
+            .map_err(Failure::hub)?;
         self.stats
             .connects
             .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -508,7 +517,11 @@ impl Uplink {
             })
         };
         let reason = loop {
-            let m = match tokio::time::timeout(dead_after, stream.next()).await {
+            let next = tokio::select! {
+                n = tokio::time::timeout(dead_after, stream.next()) => n,
+                _ = shutdown.cancelled() => break "the agent is shutting down".to_owned(),
+            };
+            let m = match next {
                 Err(_) => {
                     break format!("no traffic from hub for {dead_after:?}: link declared dead");
                 }
@@ -535,6 +548,7 @@ impl Uplink {
             }
         };
         reporter.abort();
+        let _ = reporter.await;
         let _ = ctrl_tx.try_send(Control::Close);
         drop(ctrl_tx);
         writer.abort();
@@ -659,6 +673,17 @@ fn restore(
             "durable outbox: {lost} recovered messages could not be queued (their topics are \
              no longer no_drop in this configuration)"
         );
+    }
+}
+
+/// Runs `fut` unless the agent shuts down first.
+async fn or_shutdown<T>(
+    shutdown: &CancellationToken,
+    fut: impl std::future::Future<Output = T>,
+) -> Result<T, Failure> {
+    tokio::select! {
+        r = fut => Ok(r),
+        _ = shutdown.cancelled() => Err(Failure::hub("the agent is shutting down".to_owned())),
     }
 }
 
