@@ -7,6 +7,7 @@
 use std::sync::Arc;
 use std::time::Instant;
 
+use axum::Extension;
 use axum::extract::State;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
@@ -18,6 +19,7 @@ use prometheus_client::metrics::counter::ConstCounter;
 use prometheus_client::metrics::gauge::ConstGauge;
 use prometheus_client::registry::Registry;
 
+use crate::api::Caller;
 use crate::server::HubState;
 
 struct HubCollector(Arc<HubState>);
@@ -131,7 +133,16 @@ impl Collector for HubCollector {
     }
 }
 
-pub async fn handler(State(st): State<Arc<HubState>>) -> Response {
+/// `/metrics` for callers that may read [`fleetlink_auth::acl::METRICS`]: the admin
+/// group, the `metrics` group, a rule granting `admin` on `/metrics`, or anonymous
+/// clients where anonymous read is on.
+pub async fn handler(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Response {
+    if let Err(e) = crate::admin_api::require_read(&st, &me, fleetlink_auth::acl::METRICS) {
+        return e.into_response();
+    }
     let mut reg = Registry::default();
     reg.register_collector(Box::new(HubCollector(st)));
     let mut out = String::new();
