@@ -221,3 +221,49 @@ where
         self.inner.size_hint()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use http_body_util::BodyExt;
+
+    fn guarded<B>(inner: B, max: u64) -> (GuardedBody<B>, Arc<BodyVerdict>) {
+        let verdict = Arc::new(BodyVerdict::default());
+        let after = Duration::from_secs(5);
+        (
+            GuardedBody::new(inner, max, after, verdict.clone()),
+            verdict,
+        )
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn body_over_the_limit_is_cut_whatever_its_framing() {
+        let (body, verdict) = guarded(http_body_util::Full::new(Bytes::from(vec![7; 2000])), 1000);
+        let err = body.collect().await.expect_err("over the limit");
+        assert_eq!(err, BodyError::TooLarge { max: 1000 });
+        assert_eq!(verdict.too_large(), Some(true));
+
+        let (body, verdict) = guarded(http_body_util::Full::new(Bytes::from(vec![7; 1000])), 1000);
+        assert_eq!(
+            body.collect().await.expect("at the limit").to_bytes().len(),
+            1000
+        );
+        assert_eq!(verdict.too_large(), None);
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn body_that_never_arrives_times_out() {
+        let never = http_body_util::StreamBody::new(futures_util::stream::pending::<
+            Result<Frame<Bytes>, std::convert::Infallible>,
+        >());
+        let (body, verdict) = guarded(never, 1000);
+        let err = body.collect().await.expect_err("never completes");
+        assert_eq!(
+            err,
+            BodyError::TimedOut {
+                after: Duration::from_secs(5)
+            }
+        );
+        assert_eq!(verdict.too_large(), Some(false));
+    }
+}

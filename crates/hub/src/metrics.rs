@@ -129,8 +129,48 @@ impl Collector for HubCollector {
             MetricType::Gauge,
         )?;
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
-        Ok(())
+        encode_front_door(&st.limits, &mut enc)
     }
+}
+
+/// The front door's counts: open connections, handshakes, and what the limits refused.
+fn encode_front_door(
+    limits: &crate::limits::Limits,
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    let m = enc.encode_descriptor(
+        "fleetlink_connections_open",
+        "Client connections open now (HTTP and WebSocket)",
+        None,
+        MetricType::Gauge,
+    )?;
+    ConstGauge::new(limits.open() as i64).encode(m)?;
+    let m = enc.encode_descriptor(
+        "fleetlink_handshakes_in_progress",
+        "TLS handshakes and WebSocket upgrades not yet completed",
+        None,
+        MetricType::Gauge,
+    )?;
+    ConstGauge::new(limits.handshaking() as i64).encode(m)?;
+    let mut m = enc.encode_descriptor(
+        "fleetlink_connections_refused",
+        "Connections refused by a front-door limit (total, per_ip, handshakes)",
+        None,
+        MetricType::Counter,
+    )?;
+    for r in crate::limits::Refusal::ALL {
+        ConstCounter::new(limits.refused(r)).encode(m.encode_family(&[("limit", r.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_request_bodies_refused",
+        "Request bodies refused: over --max-body-bytes, or not complete within --body-timeout-secs",
+        None,
+        MetricType::Counter,
+    )?;
+    let (large, slow) = limits.bodies_refused();
+    ConstCounter::new(large).encode(m.encode_family(&[("reason", "too_large")])?)?;
+    ConstCounter::new(slow).encode(m.encode_family(&[("reason", "too_slow")])?)?;
+    Ok(())
 }
 
 /// `/metrics` for callers that may read [`fleetlink_auth::acl::METRICS`]: the admin
