@@ -75,9 +75,15 @@ pub struct Door {
 }
 
 impl Door {
-    /// Serves one accepted socket to its end.
-    pub async fn serve(self: Arc<Self>, tcp: TcpStream, peer: SocketAddr) {
-        let permit = match self.limits.admit(peer.ip()) {
+    /// Serves one accepted socket to its end. `admitted` is [`Limits::admit`]'s answer,
+    /// asked in the accept loop so connections are counted in the order they came.
+    pub async fn serve(
+        self: Arc<Self>,
+        tcp: TcpStream,
+        peer: SocketAddr,
+        admitted: Result<ConnPermit, Refusal>,
+    ) {
+        let permit = match admitted {
             Ok(p) => p,
             Err(r) => return self.refuse(tcp, peer, r).await,
         };

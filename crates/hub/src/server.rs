@@ -272,7 +272,8 @@ impl Hub {
                 _ = &mut shutdown => break,
             };
             let _ = tcp.set_nodelay(true);
-            tokio::spawn(door.clone().serve(tcp, peer));
+            let admitted = door.limits.admit(peer.ip());
+            tokio::spawn(door.clone().serve(tcp, peer, admitted));
         }
         token.cancel();
         housekeeping.abort();
