@@ -141,8 +141,36 @@ fn json_body<T: serde::de::DeserializeOwned>(body: &Bytes, what: &str) -> Result
     serde_json::from_slice(body).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {e}")))
 }
 
+/// What a refused admin request was trying to do, for the audit record's action.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Intent {
+    /// Read a listing (`GET`): refused as `access_denied`.
+    Read,
+    /// Change rules or credentials: refused as `rule_change` / `credential_change`.
+    Change,
+}
+
 /// Refuses (403, audited) unless the caller may administer `resource`.
 fn require_admin(st: &HubState, caller: &Identity, resource: &str) -> Result<(), ApiError> {
+    require(st, caller, resource, Intent::Change)
+}
+
+/// Refuses (403, audited as `access_denied`) unless the caller may read the admin
+/// resource `resource` (`/rules`, `/clients`, `/metrics`, ...).
+pub(crate) fn require_read(
+    st: &HubState,
+    caller: &Identity,
+    resource: &str,
+) -> Result<(), ApiError> {
+    require(st, caller, resource, Intent::Read)
+}
+
+fn require(
+    st: &HubState,
+    caller: &Identity,
+    resource: &str,
+    intent: Intent,
+) -> Result<(), ApiError> {
     if st
         .security
         .authz
@@ -151,10 +179,10 @@ fn require_admin(st: &HubState, caller: &Identity, resource: &str) -> Result<(),
     {
         return Ok(());
     }
-    let action = if resource == "/rules" {
-        AuditAction::RuleChange
-    } else {
-        AuditAction::CredentialChange
+    let action = match intent {
+        Intent::Read => AuditAction::AccessDenied,
+        Intent::Change if resource == "/rules" => AuditAction::RuleChange,
+        Intent::Change => AuditAction::CredentialChange,
     };
     st.security.audit.record(
         AuditRecord::operation(caller, action, resource, None, false, UnixTime::now())
@@ -250,7 +278,7 @@ async fn list_rules(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,
 ) -> ApiResult {
-    require_admin(&st, &me, "/rules")?;
+    require_read(&st, &me, "/rules")?;
     let rules = blocking(&st, |sec| Ok(sec.store.list_rules()?)).await?;
     Ok(Json(json!({ "rules": rules })).into_response())
 }
@@ -412,7 +440,7 @@ async fn list_tokens(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,
 ) -> ApiResult {
-    require_admin(&st, &me, "/tokens")?;
+    require_read(&st, &me, "/tokens")?;
     let tokens = blocking(&st, |sec| Ok(sec.store.list_tokens(None)?)).await?;
     Ok(Json(json!({ "tokens": tokens })).into_response())
 }
@@ -439,7 +467,7 @@ async fn list_users(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,
 ) -> ApiResult {
-    require_admin(&st, &me, "/users")?;
+    require_read(&st, &me, "/users")?;
     let users = blocking(&st, |sec| Ok(sec.store.list_users()?)).await?;
     Ok(Json(json!({ "users": users })).into_response())
 }
@@ -504,7 +532,7 @@ async fn audit(
     Extension(Caller(me)): Extension<Caller>,
     Query(params): Query<HashMap<String, String>>,
 ) -> ApiResult {
-    require_admin(&st, &me, "/audit")?;
+    require_read(&st, &me, "/audit")?;
     let q = audit_query(&params)?;
     let page = blocking(&st, move |sec| {
         // Records still in the writer's channel would be missing from the answer.

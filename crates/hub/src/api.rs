@@ -2,14 +2,22 @@
 //!
 //! Everything here is read from live state at request time: the router's tables and
 //! counters, the registry of online robots, and the database for robots seen before.
+//!
+//! Design choice: listings answer the caller with what the caller may see under the same
+//! rules as `/rosapi` — a topic appears when the caller may subscribe to it, a robot when
+//! the caller may subscribe to its namespace or one of its topics — so the REST API is
+//! never a side door around the access rules. Who is connected from where (robot
+//! addresses, `/api/v1/clients`) is for those who may administer `/robots` and
+//! `/clients`.
 
 use std::sync::Arc;
 use std::time::Instant;
 
-use axum::Json;
 use axum::extract::State;
 use axum::response::Html;
 use axum::routing::get;
+use axum::{Extension, Json};
+use fleetlink_auth::{Access, Operation};
 use fleetlink_relay::queue::DropReason;
 use fleetlink_relay::router::ClientKind;
 use serde_json::{Value, json};
@@ -29,20 +37,45 @@ fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
     fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id)
 }
 
-/// Robots online now and robots seen before, online first.
-async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
+/// Whether the caller may subscribe to robot `name`'s namespace as a whole (`/<name>`
+/// or, for rules written `/<name>/.*`, `/<name>/`).
+fn namespace_visible(access: &mut Access, name: &str) -> bool {
+    access.allows(&format!("/{name}"), Operation::Subscribe)
+        || access.allows(&format!("/{name}/"), Operation::Subscribe)
+}
+
+/// Robots online now and robots seen before, online first; only those the caller may
+/// see, with addresses only for those who may administer `/robots`.
+async fn robots(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Json<Value> {
+    let show_addr = st
+        .security
+        .authz
+        .decide(&me, "/robots", Operation::Admin)
+        .allowed;
+    let mut access = st.security.access(me);
     let live = st.registry.list();
     let topics = st.router.topics();
-    let mut out: Vec<Value> = live
-        .iter()
-        .map(|r| {
-            let ns = format!("/{}/", r.name);
-            let own: Vec<&str> = topics.iter().map(|t| t.meta.name.as_str()).filter(|n| n.starts_with(&ns)).collect();
-            json!({
+    let mut out: Vec<Value> = Vec::new();
+    for r in &live {
+        let ns = format!("/{}/", r.name);
+        let own: Vec<&str> = access.visible(
+            topics
+                .iter()
+                .map(|t| t.meta.name.as_str())
+                .filter(|n| n.starts_with(&ns)),
+            Operation::Subscribe,
+        );
+        if own.is_empty() && !namespace_visible(&mut access, &r.name) {
+            continue;
+        }
+        out.push(json!({
                 "name": r.name,
                 "online": true,
                 "namespace": format!("/{}", r.name),
-                "addr": r.addr.map(|a| a.to_string()),
+                "addr": r.addr.filter(|_| show_addr).map(|a| a.to_string()),
                 "connected_at_ms": ms(r.connected_at),
                 "heartbeat_ms": r.heartbeat_ms,
                 "rtt_ms": r.rtt_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
@@ -54,9 +87,8 @@ async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
                 "link_rate_bps": r.rate_bps.load(std::sync::atomic::Ordering::Relaxed),
                 "latency_ms": r.latency_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
                 "clock_offset_ms": r.clock_offset_ns().map(|o| o as f64 / 1e6),
-            })
-        })
-        .collect();
+        }));
+    }
     let store = st.store.clone();
     let known = tokio::task::spawn_blocking(move || store.robots())
         .await
@@ -64,12 +96,12 @@ async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
         .and_then(Result::ok)
         .unwrap_or_default();
     for k in known {
-        if !live.iter().any(|r| r.name == k.name) {
+        if !live.iter().any(|r| r.name == k.name) && namespace_visible(&mut access, &k.name) {
             out.push(json!({
                 "name": k.name,
                 "online": false,
                 "namespace": format!("/{}", k.name),
-                "addr": k.last_addr,
+                "addr": if show_addr { json!(k.last_addr) } else { Value::Null },
                 "last_seen_ms": k.last_seen_ms,
                 "connects": k.connects,
                 "topics": [],
@@ -79,12 +111,18 @@ async fn robots(State(st): State<Arc<HubState>>) -> Json<Value> {
     Json(json!({ "robots": out }))
 }
 
-async fn topics(State(st): State<Arc<HubState>>) -> Json<Value> {
+/// Topics the caller may subscribe to.
+async fn topics(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Json<Value> {
     let now = fleetlink_relay::unix_nanos();
+    let mut access = st.security.access(me);
     let list: Vec<Value> = st
         .router
         .topics()
         .iter()
+        .filter(|t| access.allows(t.meta.name.as_str(), Operation::Subscribe))
         .map(|t| {
             let (rate, bw) = t.stats.rates(now);
             let last = t.stats.last_message_ns.load(std::sync::atomic::Ordering::Relaxed);
@@ -111,7 +149,12 @@ async fn topics(State(st): State<Arc<HubState>>) -> Json<Value> {
     Json(json!({ "topics": list }))
 }
 
-async fn clients(State(st): State<Arc<HubState>>) -> Json<Value> {
+/// Every client connection with its queues: for those who may administer `/clients`.
+async fn clients(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Result<Json<Value>, crate::admin_api::ApiError> {
+    crate::admin_api::require_read(&st, &me, "/clients")?;
     let now = Instant::now();
     let list: Vec<Value> = st
         .router
@@ -137,7 +180,7 @@ async fn clients(State(st): State<Arc<HubState>>) -> Json<Value> {
             })
         })
         .collect();
-    Json(json!({ "clients": list }))
+    Ok(Json(json!({ "clients": list })))
 }
 
 fn nonzero(v: u64) -> Value {
@@ -163,6 +206,7 @@ struct OffloadQuery {
 /// given the robot's measured link (Cloudroid Swarm's inequality (5)).
 async fn offload(
     State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
     axum::extract::Path(name): axum::extract::Path<String>,
     q: Result<axum::extract::Query<OffloadQuery>, axum::extract::rejection::QueryRejection>,
 ) -> axum::response::Response {
@@ -177,7 +221,13 @@ async fn offload(
             );
         }
     };
-    let Some(r) = st.registry.list().into_iter().find(|r| r.name == name) else {
+    let visible = namespace_visible(&mut st.security.access(me), &name);
+    let Some(r) = st
+        .registry
+        .list()
+        .into_iter()
+        .find(|r| r.name == name && visible)
+    else {
         return bad(
             axum::http::StatusCode::NOT_FOUND,
             format!("robot {name} is not online"),

@@ -9,6 +9,10 @@
 //!
 //! - [`server`]: binds the port, tells WebSocket upgrades from plain HTTP, spawns one task
 //!   per connection, shuts everything down on request.
+//! - [`connection`]: one accepted socket: front-door limits, TLS, hyper, the hand-over
+//!   to a WebSocket session.
+//! - [`limits`]: the front door's timeouts and connection limits, as permits.
+//! - [`http_guards`]: idle and request-body bounds hyper does not enforce itself.
 //! - [`agents`]: one agent's `fleetlink.v1` session on the hub, and the registry of live
 //!   robots.
 //! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
@@ -28,8 +32,11 @@ pub mod admin_api;
 pub mod agents;
 pub mod api;
 pub mod capacity;
+pub mod connection;
 pub mod delivery;
+pub mod http_guards;
 pub mod jwks;
+pub mod limits;
 pub mod metrics;
 pub mod security;
 pub mod server;

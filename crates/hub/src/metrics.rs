@@ -7,6 +7,7 @@
 use std::sync::Arc;
 use std::time::Instant;
 
+use axum::Extension;
 use axum::extract::State;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
@@ -18,6 +19,7 @@ use prometheus_client::metrics::counter::ConstCounter;
 use prometheus_client::metrics::gauge::ConstGauge;
 use prometheus_client::registry::Registry;
 
+use crate::api::Caller;
 use crate::server::HubState;
 
 struct HubCollector(Arc<HubState>);
@@ -127,11 +129,60 @@ impl Collector for HubCollector {
             MetricType::Gauge,
         )?;
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
-        Ok(())
+        encode_front_door(&st.limits, &mut enc)
     }
 }
 
-pub async fn handler(State(st): State<Arc<HubState>>) -> Response {
+/// The front door's counts: open connections, handshakes, and what the limits refused.
+fn encode_front_door(
+    limits: &crate::limits::Limits,
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    let m = enc.encode_descriptor(
+        "fleetlink_connections_open",
+        "Client connections open now (HTTP and WebSocket)",
+        None,
+        MetricType::Gauge,
+    )?;
+    ConstGauge::new(limits.open() as i64).encode(m)?;
+    let m = enc.encode_descriptor(
+        "fleetlink_handshakes_in_progress",
+        "TLS handshakes and WebSocket upgrades not yet completed",
+        None,
+        MetricType::Gauge,
+    )?;
+    ConstGauge::new(limits.handshaking() as i64).encode(m)?;
+    let mut m = enc.encode_descriptor(
+        "fleetlink_connections_refused",
+        "Connections refused by a front-door limit (total, per_ip, handshakes)",
+        None,
+        MetricType::Counter,
+    )?;
+    for r in crate::limits::Refusal::ALL {
+        ConstCounter::new(limits.refused(r)).encode(m.encode_family(&[("limit", r.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_request_bodies_refused",
+        "Request bodies refused: over --max-body-bytes, or not complete within --body-timeout-secs",
+        None,
+        MetricType::Counter,
+    )?;
+    let (large, slow) = limits.bodies_refused();
+    ConstCounter::new(large).encode(m.encode_family(&[("reason", "too_large")])?)?;
+    ConstCounter::new(slow).encode(m.encode_family(&[("reason", "too_slow")])?)?;
+    Ok(())
+}
+
+/// `/metrics` for callers that may read [`fleetlink_auth::acl::METRICS`]: the admin
+/// group, the `metrics` group, a rule granting `admin` on `/metrics`, or anonymous
+/// clients where anonymous read is on.
+pub async fn handler(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Response {
+    if let Err(e) = crate::admin_api::require_read(&st, &me, fleetlink_auth::acl::METRICS) {
+        return e.into_response();
+    }
     let mut reg = Registry::default();
     reg.register_collector(Box::new(HubCollector(st)));
     let mut out = String::new();

@@ -28,6 +28,8 @@ use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
 use tokio_tungstenite::tungstenite::protocol::{Role, WebSocketConfig};
 use tokio_util::sync::CancellationToken;
 
+pub use crate::connection::ConnMeta;
+
 use crate::agents::{AgentContext, Registry};
 use crate::store::{Store, StoreError};
 
@@ -52,6 +54,8 @@ pub struct HubConfig {
     pub sites: Vec<SiteConfig>,
     /// Where the OIDC signing keys come from (with `auth.jwt` set).
     pub jwks: Option<crate::jwks::JwksSource>,
+    /// Timeouts and connection limits at the front door.
+    pub door: crate::limits::FrontDoor,
 }
 
 /// Robots behind one access link (a site uplink, a cell) and its capacity.
@@ -104,6 +108,7 @@ impl Default for HubConfig {
             tls: None,
             sites: Vec::new(),
             jwks: None,
+            door: crate::limits::FrontDoor::default(),
         }
     }
 }
@@ -141,6 +146,7 @@ pub struct HubState {
     pub sites: Vec<SiteConfig>,
     pub jwks: Option<crate::jwks::JwksSource>,
     pub started: std::time::SystemTime,
+    pub limits: Arc<crate::limits::Limits>,
 }
 
 /// A bound hub, ready to run.
@@ -205,6 +211,7 @@ impl Hub {
             sites: cfg.sites.clone(),
             jwks: cfg.jwks.clone(),
             started: std::time::SystemTime::now(),
+            limits: Arc::new(crate::limits::Limits::new(cfg.door.clone())),
         });
         Ok(Hub { listener, state })
     }
@@ -242,6 +249,13 @@ impl Hub {
         if let Some(src) = &state.jwks {
             crate::jwks::refresh_if_due(&state.security, src).await;
         }
+        let door = Arc::new(crate::connection::Door {
+            app,
+            limits: state.limits.clone(),
+            tls: state.tls.clone(),
+            security: state.security.clone(),
+            shutdown: token.clone(),
+        });
         let housekeeping = tokio::spawn(housekeeping(state.clone()));
         let capacity = tokio::spawn(crate::capacity::share_sites(state.clone()));
         tokio::pin!(shutdown);
@@ -259,102 +273,13 @@ impl Hub {
                 _ = &mut shutdown => break,
             };
             let _ = tcp.set_nodelay(true);
-            let (app, tls, token) = (app.clone(), state.tls.clone(), token.clone());
-            let security = state.security.clone();
-            tokio::spawn(async move {
-                match tls {
-                    None => {
-                        serve_connection(
-                            TokioIo::new(tcp),
-                            app,
-                            ConnMeta {
-                                peer,
-                                tls_name: None,
-                            },
-                            token,
-                        )
-                        .await
-                    }
-                    Some(cfg) => {
-                        let acceptor = tokio_rustls::TlsAcceptor::from(cfg.current());
-                        match tokio::time::timeout(Duration::from_secs(10), acceptor.accept(tcp))
-                            .await
-                        {
-                            Ok(Ok(stream)) => {
-                                let tls_name = fleetlink_auth::tls::client_cert_name(
-                                    stream.get_ref().1.peer_certificates(),
-                                );
-                                serve_connection(
-                                    TokioIo::new(stream),
-                                    app,
-                                    ConnMeta { peer, tls_name },
-                                    token,
-                                )
-                                .await;
-                            }
-                            Ok(Err(e)) => {
-                                tracing::info!("TLS handshake with {peer} failed: {e}");
-                                // A missing or unverifiable client certificate is a
-                                // refused authentication; the audit log must show it.
-                                security.audit.record(fleetlink_auth::AuditRecord {
-                                    at: fleetlink_auth::UnixTime::now(),
-                                    principal: "unknown".into(),
-                                    client_ip: peer.ip(),
-                                    action: fleetlink_auth::audit::AuditAction::AuthFailure,
-                                    name: String::new(),
-                                    size: None,
-                                    allowed: false,
-                                    detail: Some(format!("TLS handshake: {e}")),
-                                });
-                            }
-                            Err(_) => tracing::info!("TLS handshake with {peer} timed out"),
-                        }
-                    }
-                }
-            });
+            let admitted = door.limits.admit(peer.ip());
+            tokio::spawn(door.clone().serve(tcp, peer, admitted));
         }
         token.cancel();
         housekeeping.abort();
         capacity.abort();
         Ok(())
-    }
-}
-
-/// Per-connection facts handlers need: the peer and, over mutual TLS, the robot its
-/// verified certificate names.
-#[derive(Debug, Clone)]
-pub struct ConnMeta {
-    pub peer: SocketAddr,
-    pub tls_name: Option<fleetlink_auth::RobotName>,
-}
-
-/// Serves HTTP/1.1 (with upgrades) on one accepted connection until it ends or the hub
-/// shuts down.
-async fn serve_connection<I>(
-    io: TokioIo<I>,
-    app: HttpRouter,
-    meta: ConnMeta,
-    token: CancellationToken,
-) where
-    I: tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin + Send + 'static,
-{
-    use tower::ServiceExt;
-    let svc = hyper::service::service_fn(move |req: hyper::Request<hyper::body::Incoming>| {
-        let mut req = req.map(Body::new);
-        req.extensions_mut().insert(ConnectInfo(meta.peer));
-        req.extensions_mut().insert(meta.clone());
-        app.clone().oneshot(req)
-    });
-    let conn = hyper::server::conn::http1::Builder::new()
-        .serve_connection(io, svc)
-        .with_upgrades();
-    tokio::select! {
-        r = conn => {
-            if let Err(e) = r {
-                tracing::debug!("HTTP connection ended: {e}");
-            }
-        }
-        _ = token.cancelled() => {}
     }
 }
 
@@ -405,6 +330,22 @@ async fn root(
         .into_response()
 }
 
+/// 503 with a jittered `Retry-After`: too many handshakes in progress.
+fn busy(st: &HubState, r: crate::limits::Refusal) -> Response {
+    st.limits.note_refused(r);
+    let secs = st.limits.retry_after_secs();
+    let text = format!(
+        "the hub is busy with {} connections still handshaking; retry in {secs}s \
+         (the hub's operator can raise the limit with {})\n",
+        st.limits.limit(r),
+        r.flag()
+    );
+    let mut res = (r.status(), text).into_response();
+    res.headers_mut()
+        .insert(header::RETRY_AFTER, HeaderValue::from(secs));
+    res
+}
+
 fn is_upgrade(h: &HeaderMap) -> bool {
     let has = |name: header::HeaderName, want: &str| {
         h.get_all(name)
@@ -419,6 +360,13 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
     let Some(key) = req.headers().get(header::SEC_WEBSOCKET_KEY).cloned() else {
         return (StatusCode::BAD_REQUEST, "missing Sec-WebSocket-Key\n").into_response();
     };
+    // The slot is held through authentication and, for agents, until HELLO is answered:
+    // that is the work a reconnecting fleet piles onto a restarted hub.
+    let slot = match st.limits.try_handshake() {
+        Ok(s) => s,
+        Err(r) => return busy(&st, r),
+    };
+    let open = req.extensions().get::<ConnMeta>().map(|m| m.open.clone());
     let agent = req
         .headers()
         .get_all(header::SEC_WEBSOCKET_PROTOCOL)
@@ -461,12 +409,19 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 return;
             }
         };
+        if let Some(o) = &open {
+            o.upgraded();
+        }
+        // Held until the session ends: the connection counts against the limits.
+        let _open = open;
         let ws =
             WebSocketStream::from_raw_socket(TokioIo::new(upgraded), Role::Server, Some(ws_config))
                 .await;
         if agent {
+            let ws = crate::connection::UntilFirstReply::new(ws, slot);
             crate::agents::serve_agent(ws, st.agents.clone(), Some(addr), conn).await;
         } else {
+            drop(slot);
             let gate = identity.map(|id| {
                 Box::new(crate::security::HubGate::new(
                     st.security.clone(),

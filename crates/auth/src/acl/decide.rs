@@ -25,10 +25,16 @@ pub struct AclDefaults {
     pub robot_own_namespace: OpSet,
     /// Members of this group may do everything (the demo's operator token is in it).
     pub admin_group: Option<GroupName>,
-    /// Anonymous identities may subscribe to anything and call `/rosapi/*` (listings).
-    /// Only meaningful if the authenticator lets anonymous clients in at all.
+    /// Members of this group may scrape `/metrics` (`admin` on the resource
+    /// [`METRICS`]) and nothing else: the group for a Prometheus token.
+    pub metrics_group: Option<GroupName>,
+    /// Anonymous identities may subscribe to anything, call `/rosapi/*` (listings) and
+    /// read [`METRICS`]. Only meaningful if the authenticator lets anonymous clients in.
     pub anonymous_read: bool,
 }
+
+/// The resource name of the hub's Prometheus metrics, checked with [`Operation::Admin`].
+pub const METRICS: &str = "/metrics";
 
 impl Default for AclDefaults {
     fn default() -> AclDefaults {
@@ -42,6 +48,7 @@ impl Default for AclDefaults {
                 Operation::SendActionGoal,
             ]),
             admin_group: GroupName::new("admin").ok(),
+            metrics_group: GroupName::new("metrics").ok(),
             anonymous_read: false,
         }
     }
@@ -61,6 +68,7 @@ impl AclDefaults {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Reason {
     AdminGroup,
+    MetricsGroup,
     OwnNamespace,
     AnonymousRead,
     Rule(RuleId),
@@ -206,9 +214,19 @@ fn evaluate<'a>(
         IdentityKind::Anonymous
             if defaults.anonymous_read
                 && (op == Operation::Subscribe
-                    || (op == Operation::CallService && name.starts_with("/rosapi/"))) =>
+                    || (op == Operation::CallService && name.starts_with("/rosapi/"))
+                    || (op == Operation::Admin && name == METRICS)) =>
         {
             Decision::allow(Reason::AnonymousRead)
+        }
+        _ if op == Operation::Admin
+            && name == METRICS
+            && defaults
+                .metrics_group
+                .as_ref()
+                .is_some_and(|g| identity.in_group(g)) =>
+        {
+            Decision::allow(Reason::MetricsGroup)
         }
         _ => Decision::deny(Reason::NoRule),
     }

@@ -29,7 +29,7 @@
 mod decide;
 mod rule;
 
-pub use decide::{Access, AclDefaults, Authorizer, Decision, Reason};
+pub use decide::{Access, AclDefaults, Authorizer, Decision, METRICS, Reason};
 pub use rule::{
     Effect, MAX_PATTERN_LEN, NamePattern, OpSet, Operation, PatternError, Rule, RuleId, StoredRule,
     Subject,

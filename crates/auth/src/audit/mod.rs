@@ -41,6 +41,9 @@ pub enum AuditAction {
     Logout,
     RuleChange,
     CredentialChange,
+    /// A refused read of something only some may see: an admin listing (`/rules`,
+    /// `/audit`, `/clients`, ...) or `/metrics`.
+    AccessDenied,
 }
 
 impl AuditAction {
@@ -56,6 +59,7 @@ impl AuditAction {
             AuditAction::Logout => "logout",
             AuditAction::RuleChange => "rule_change",
             AuditAction::CredentialChange => "credential_change",
+            AuditAction::AccessDenied => "access_denied",
         }
     }
 
@@ -72,6 +76,7 @@ impl AuditAction {
             Logout,
             RuleChange,
             CredentialChange,
+            AccessDenied,
         ]
         .into_iter()
         .find(|a| a.as_str() == s)

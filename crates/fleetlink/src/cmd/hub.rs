@@ -63,6 +63,33 @@ pub struct Args {
     /// Claim listing the user's groups (Keycloak: `groups`).
     #[arg(long)]
     pub jwt_groups_claim: Option<String>,
+    /// Seconds a client has to send a whole request head; also how long an idle
+    /// keep-alive connection waits for its next request.
+    #[arg(long, default_value_t = 10.0, value_parser = positive_secs)]
+    pub header_timeout_secs: f64,
+    /// Seconds an HTTP exchange may sit with nothing read or written before it is closed.
+    #[arg(long, default_value_t = 60.0, value_parser = positive_secs)]
+    pub idle_timeout_secs: f64,
+    /// Seconds a client has to send a whole request body.
+    #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
+    pub body_timeout_secs: f64,
+    /// Largest request body (bytes); larger ones get 413.
+    #[arg(long, default_value_t = 1 << 20)]
+    pub max_body_bytes: u64,
+    /// Seconds for a TLS handshake, including the wait for a handshake slot.
+    #[arg(long, default_value_t = 10.0, value_parser = positive_secs)]
+    pub tls_handshake_timeout_secs: f64,
+    /// Connections open at once, all clients together (each needs a file descriptor:
+    /// raise `ulimit -n` to match).
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_connections: u32,
+    /// Connections open at once from one client address (a NAT or a proxy is one address).
+    #[arg(long, default_value_t = 2_000, value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_connections_per_ip: u32,
+    /// TLS handshakes and WebSocket upgrades in progress at once; above it upgrades get
+    /// 503 with a Retry-After of a few seconds.
+    #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_handshakes: u32,
 }
 
 impl Args {
@@ -89,6 +116,16 @@ impl Args {
             jwks: self.jwks.clone(),
             acl: fleetlink_auth::AclDefaults::default(),
             sites: self.sites.clone(),
+            door: fleetlink_hub::limits::FrontDoor {
+                header_timeout: Duration::from_secs_f64(self.header_timeout_secs),
+                idle_timeout: Duration::from_secs_f64(self.idle_timeout_secs),
+                body_timeout: Duration::from_secs_f64(self.body_timeout_secs),
+                max_body: self.max_body_bytes,
+                tls_handshake_timeout: Duration::from_secs_f64(self.tls_handshake_timeout_secs),
+                max_connections: self.max_connections as usize,
+                max_connections_per_ip: self.max_connections_per_ip as usize,
+                max_handshakes: self.max_handshakes as usize,
+            },
             tls: self
                 .tls_cert
                 .clone()
@@ -136,6 +173,18 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Ok::<_, anyhow::Error>(())
     })?;
     Ok(())
+}
+
+/// A timeout in seconds: finite, above zero, at most a day.
+fn positive_secs(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .parse()
+        .map_err(|e| format!("{s:?} is not a number of seconds: {e}"))?;
+    if v > 0.0 && v <= 86_400.0 {
+        Ok(v)
+    } else {
+        Err(format!("{v} s: expected more than 0 and at most 86400"))
+    }
 }
 
 /// `CIDR` or `CIDR=ROBOT`.

@@ -6,6 +6,8 @@
 //! Plumbing is here; the attacks are grouped by what they target.
 
 mod credentials;
+mod front_door;
+mod listings;
 mod names;
 mod transport;
 
