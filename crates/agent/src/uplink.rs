@@ -623,9 +623,9 @@ impl Uplink {
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {
                 self.outbox.on_delivered(alias, seq);
             }
-            LinkEvent::Control(Frame::Ack { frames: messages }) => {
+            LinkEvent::Control(Frame::Ack { frames, bytes }) => {
                 self.outbox
-                    .on_acked(messages as usize, std::time::Instant::now());
+                    .on_acked(frames as usize, bytes, std::time::Instant::now());
             }
             LinkEvent::Control(Frame::Share { bytes_per_sec }) => {
                 let share = (bytes_per_sec > 0).then_some(bytes_per_sec as f64);

@@ -27,7 +27,11 @@ fn packed_frames(c: &mut Criterion) {
     let mut buf = BytesMut::new();
     for i in 0..1000u32 {
         if i % 10 == 0 {
-            Frame::Ack { frames: i }.encode(&mut buf);
+            Frame::Ack {
+                frames: i,
+                bytes: 0,
+            }
+            .encode(&mut buf);
         } else {
             encode_message(&mut buf, i % 16, u64::from(i), 5, &[7; 24]);
         }

@@ -23,8 +23,10 @@ use crate::wire::{Reader, put_bytes, put_str, put_varint, varint_len};
 pub const SUBPROTOCOL: &str = "fleetlink.v1";
 /// Protocol version carried in `HELLO`.
 pub const VERSION: u32 = 1;
-/// Payloads larger than this are sent as `CHUNK` frames by default.
-pub const DEFAULT_CHUNK_SIZE: usize = 64 * 1024;
+/// Payloads larger than this are sent as `CHUNK` frames by default. Small enough that a
+/// priority message waiting behind one chunk on a 4 Mbit/s link waits ~33 ms, large enough
+/// that the ~25 bytes of chunk header stay under 0.2 % of the data.
+pub const DEFAULT_CHUNK_SIZE: usize = 16 * 1024;
 
 /// Frame kind bytes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -182,9 +184,12 @@ pub enum Frame {
         echo_ns: u64,
         responder_ns: u64,
     },
-    /// Receiver → sender: this many `MESSAGE`/`CHUNK` frames arrived since the last `ACK`.
-    /// `frames varint`
-    Ack { frames: u32 },
+    /// Receiver → sender, since the last `ACK`: `frames` whole messages arrived (a chunked
+    /// message counts when its last chunk does) and `bytes` bytes of message payload
+    /// (`MESSAGE` payloads and `CHUNK` data), in arrival order. `bytes` lets a sender account
+    /// for every chunk it wrote, not only for whole messages.
+    /// `frames varint | bytes varint` (`bytes` absent in older senders: read as 0)
+    Ack { frames: u32, bytes: u64 },
     /// `level u8 | code varint | alias varint (0 = none) | text str`
     Status {
         level: Level,
@@ -341,7 +346,10 @@ impl Frame {
                 b.put_u64_le(*echo_ns);
                 b.put_u64_le(*responder_ns);
             }
-            Frame::Ack { frames } => put_varint(b, u64::from(*frames)),
+            Frame::Ack { frames, bytes } => {
+                put_varint(b, u64::from(*frames));
+                put_varint(b, *bytes);
+            }
             Frame::Status {
                 level,
                 code,
@@ -546,6 +554,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
         },
         0x0b => Frame::Ack {
             frames: r.varint_u32("ACK.frames")?,
+            bytes: if r.is_empty() {
+                0
+            } else {
+                r.varint("ACK.bytes")?
+            },
         },
         0x0c => Frame::Status {
             level: Level::from_u8(r.u8("STATUS.level")?),

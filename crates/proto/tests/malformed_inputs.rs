@@ -172,11 +172,21 @@ fn chunk_whose_offset_plus_len_overflows_u64_is_invalid() {
 fn unknown_frame_kind_is_skipped_and_the_next_frame_still_decodes() {
     let mut b = BytesMut::new();
     b.extend_from_slice(&raw_frame(0x7e, b"a body from a future version"));
-    Frame::Ack { frames: 3 }.encode(&mut b);
+    Frame::Ack {
+        frames: 3,
+        bytes: 0,
+    }
+    .encode(&mut b);
     let got: Vec<Frame> = frame::frames(&b.freeze()).map(Result::unwrap).collect();
     assert_eq!(
         got,
-        vec![Frame::Unknown { kind: 0x7e }, Frame::Ack { frames: 3 }]
+        vec![
+            Frame::Unknown { kind: 0x7e },
+            Frame::Ack {
+                frames: 3,
+                bytes: 0
+            }
+        ]
     );
 }
 
@@ -213,7 +223,11 @@ fn unknown_status_level_is_read_as_error() {
 
 #[test]
 fn decoding_past_the_end_of_the_buffer_is_an_error_not_a_panic() {
-    let b = Frame::Ack { frames: 1 }.to_bytes();
+    let b = Frame::Ack {
+        frames: 1,
+        bytes: 0,
+    }
+    .to_bytes();
     assert!(Frame::decode(&b, b.len()).is_err());
     assert!(Frame::decode(&b, b.len() + 100).is_err());
 }
@@ -221,9 +235,17 @@ fn decoding_past_the_end_of_the_buffer_is_an_error_not_a_panic() {
 #[test]
 fn a_bad_frame_stops_the_iterator() {
     let mut b = BytesMut::new();
-    Frame::Ack { frames: 1 }.encode(&mut b);
+    Frame::Ack {
+        frames: 1,
+        bytes: 0,
+    }
+    .encode(&mut b);
     b.extend_from_slice(&chunk_body(1, 0, b"too long"));
-    Frame::Ack { frames: 2 }.encode(&mut b);
+    Frame::Ack {
+        frames: 2,
+        bytes: 0,
+    }
+    .encode(&mut b);
     let got: Vec<_> = frame::frames(&b.freeze()).collect();
     assert_eq!(got.len(), 2);
     assert!(got[0].is_ok() && got[1].is_err());

@@ -142,7 +142,7 @@ pub fn pong() -> impl Strategy<Value = Frame> {
 }
 
 pub fn ack() -> impl Strategy<Value = Frame> {
-    any::<u32>().prop_map(|frames| Frame::Ack { frames })
+    (any::<u32>(), any::<u64>()).prop_map(|(frames, bytes)| Frame::Ack { frames, bytes })
 }
 
 pub fn status() -> impl Strategy<Value = Frame> {
@@ -261,7 +261,10 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             echo_ns: 2,
             responder_ns: 3,
         },
-        Frame::Ack { frames: 129 },
+        Frame::Ack {
+            frames: 129,
+            bytes: 300_000,
+        },
         Frame::Status {
             level: Level::Warning,
             code: 403,

@@ -104,6 +104,8 @@ struct Topic<T> {
     last_sent: Option<Nanos>,
     /// In its group's heap (has something queued).
     ready: bool,
+    /// Not eligible for now ([`Scheduler::set_held`]): its messages wait in its queue.
+    held: bool,
 }
 
 #[derive(Debug)]
@@ -218,6 +220,7 @@ impl<T: WireLen> Scheduler<T> {
             group,
             last_sent: None,
             ready: false,
+            held: false,
         });
         self.index.insert(id, index);
         Ok(())
@@ -245,7 +248,7 @@ impl<T: WireLen> Scheduler<T> {
             }
             Lane::Queue(queue) => {
                 let outcome = queue.push(item, now);
-                if !t.ready && !queue.is_empty() {
+                if !t.ready && !t.held && !queue.is_empty() {
                     t.ready = true;
                     let since = t.last_sent.unwrap_or(now);
                     let g = t.group;
@@ -323,9 +326,59 @@ impl<T: WireLen> Scheduler<T> {
         };
     }
 
-    /// Pops from the topic with the largest `priority × wait`. Groups are in descending
-    /// priority, so on equal scores the higher priority wins (strict `>`).
+    /// Holds back (or releases) a topic that is not a no-drop one: while held it is never
+    /// picked, and what it publishes waits in its own queue under its drop policy. The
+    /// link writer holds a topic while one of its large messages is still going out in
+    /// chunks, so the next one is chosen (or dropped) by the queue's policy when the link
+    /// can take it, not committed to the link early.
+    pub fn set_held(&mut self, topic: TopicId, held: bool, now: Nanos) {
+        let Some(&index) = self.index.get(&topic) else {
+            return;
+        };
+        let t = &mut self.topics[index as usize];
+        let Lane::Queue(queue) = &t.lane else {
+            return;
+        };
+        t.held = held;
+        if !held && !t.ready && !queue.is_empty() {
+            t.ready = true;
+            let since = t.last_sent.unwrap_or(now);
+            let g = t.group;
+            self.groups[g].ready.push(Reverse((since, index)));
+            self.refresh_head(g);
+        }
+    }
+
+    /// Pops from the topic with the largest `priority × wait`, skipping held topics (they
+    /// leave the heap when met and return on release).
     fn pick_weighted(&mut self, now: Nanos) -> Option<(u32, T)> {
+        loop {
+            let g = self.best_group(now)?;
+            let Reverse((_, index)) = self.groups[g].ready.pop()?;
+            self.refresh_head(g);
+            let topic = &mut self.topics[index as usize];
+            if topic.held {
+                topic.ready = false;
+                continue;
+            }
+            let Lane::Queue(queue) = &mut topic.lane else {
+                return None;
+            };
+            let item = queue.pop(now)?;
+            if queue.is_empty() {
+                topic.ready = false;
+            } else {
+                self.groups[g].ready.push(Reverse((now, index)));
+                self.refresh_head(g);
+            }
+            return Some((index, item));
+        }
+    }
+
+    /// The group whose longest-waiting ready topic has the largest `priority × wait`.
+    /// Groups are in descending priority, so on equal scores the higher priority wins
+    /// (strict `>`).
+    fn best_group(&self, now: Nanos) -> Option<usize> {
         let now_f = now.0 as f64;
         let mut best = f64::NEG_INFINITY;
         let mut best_g = usize::MAX;
@@ -348,25 +401,7 @@ impl<T: WireLen> Scheduler<T> {
                 best_g = b * BLOCK + i;
             }
         }
-        if best_g == usize::MAX {
-            return None;
-        }
-        let g = best_g;
-        let popped = self.groups[g].ready.pop();
-        self.refresh_head(g);
-        let Reverse((_, index)) = popped?;
-        let topic = &mut self.topics[index as usize];
-        let Lane::Queue(queue) = &mut topic.lane else {
-            return None;
-        };
-        let item = queue.pop(now)?;
-        if queue.is_empty() {
-            topic.ready = false;
-        } else {
-            self.groups[g].ready.push(Reverse((now, index)));
-            self.refresh_head(g);
-        }
-        Some((index, item))
+        (best_g != usize::MAX).then_some(best_g)
     }
 
     /// `n` frames were acknowledged by the peer (pong or explicit ack).

@@ -187,3 +187,24 @@ fn unknown_topics_and_bad_configuration_are_reported() {
     s.add_topic(A, TopicQos::default()).unwrap();
     assert!(s.add_topic(A, TopicQos::default()).is_err());
 }
+
+#[test]
+fn a_held_topic_is_skipped_while_its_queue_keeps_its_policy() {
+    let mut s = sched(32);
+    s.add_topic(A, qos(10.0)).unwrap();
+    s.add_topic(B, qos(1.0)).unwrap();
+    let t = Nanos::ZERO;
+    // Ready before it is held, and offered to while held.
+    let _ = s.offer(A, msg(1, 10), t);
+    s.set_held(A, true, t);
+    let _ = s.offer(A, msg(2, 10), t);
+    let _ = s.offer(B, msg(1, 10), t);
+    let later = Nanos::from_millis(5);
+    assert_eq!(s.poll_next(later).map(|(id, _)| id), Some(B));
+    assert!(s.poll_next(later).is_none(), "a held topic is not served");
+    s.set_held(A, false, later);
+    let (id, m) = s.poll_next(later).expect("released");
+    // `latest` kept only the newest while it waited.
+    assert_eq!((id, m.seq), (A, 2));
+    assert!(s.poll_next(later).is_none());
+}

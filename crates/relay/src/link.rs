@@ -11,13 +11,14 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use bytes::{Bytes, BytesMut};
-use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_RELIABLE, Frame};
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_RELIABLE, DEFAULT_CHUNK_SIZE, Frame};
 use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt};
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
+use crate::link_control::SMALL_FRAME;
 use crate::message::{Message, TopicMeta};
 use crate::names::TopicId;
 use crate::outbox::Outbox;
@@ -82,6 +83,8 @@ pub struct LinkIn {
     reassembly: Reassembler,
     /// Whole messages received since the last `ACK` we sent.
     pub unacked: u32,
+    /// Payload bytes (message payloads, chunk data) received since the last `ACK`.
+    pub unacked_bytes: u64,
 }
 
 impl Default for LinkIn {
@@ -90,6 +93,7 @@ impl Default for LinkIn {
             aliases: HashMap::new(),
             reassembly: Reassembler::new(MAX_LINK_MESSAGE, MAX_LINK_REASSEMBLY),
             unacked: 0,
+            unacked_bytes: 0,
         }
     }
 }
@@ -132,6 +136,7 @@ impl LinkIn {
                 payload,
             } => {
                 self.unacked += 1;
+                self.unacked_bytes += payload.len() as u64;
                 let t = self
                     .aliases
                     .get(&alias)
@@ -151,6 +156,7 @@ impl LinkIn {
                 offset,
                 data,
             } => {
+                self.unacked_bytes += data.len() as u64;
                 let encoding = self
                     .aliases
                     .get(&alias)
@@ -194,13 +200,43 @@ pub enum Control {
 struct Lane {
     topic: TopicId,
     frames: Arc<[Bytes]>,
+    /// Payload bytes of the message, to tell how many each chunk carries.
+    payload_len: usize,
     next: usize,
     waiting: VecDeque<Arc<Message>>,
+}
+
+impl Lane {
+    fn start(topic: TopicId, msg: &Message) -> Lane {
+        Lane {
+            topic,
+            frames: msg.link_frames(),
+            payload_len: msg.payload.len(),
+            next: 0,
+            waiting: VecDeque::new(),
+        }
+    }
+
+    /// Payload bytes carried by frame `i` (what the receiver counts in `ACK.bytes`).
+    fn payload_of(&self, i: usize) -> usize {
+        if self.frames.len() == 1 {
+            return self.payload_len;
+        }
+        self.payload_len
+            .saturating_sub(i * DEFAULT_CHUNK_SIZE)
+            .min(DEFAULT_CHUNK_SIZE)
+    }
 }
 
 /// Writes `outbox` and `control` onto the link until either side closes; sends a `PING`
 /// every `heartbeat`. `announce_first` topics are advertised before anything else;
 /// `gate`, if any, must allow each message's topic for it to be sent.
+///
+/// Small messages go out as soon as they are taken. A large one (any frame over
+/// [`SMALL_FRAME`]) gets a lane and goes out a chunk per round, each chunk only when the
+/// outbox's bulk gate allows (see [`crate::link_control`]); its topic is held in the
+/// scheduler until the lane is done, so the next large message of that topic is chosen by
+/// the topic's drop policy when the link can take it.
 pub async fn write_link<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -239,17 +275,12 @@ pub async fn write_link<K>(
         loop {
             match control.try_recv() {
                 Ok(Control::Frame(f)) => f.encode(&mut buf),
-                Ok(Control::Close) => {
+                Ok(Control::Close) | Err(mpsc::error::TryRecvError::Disconnected) => {
                     let _ = flush_buf(&mut sink, &mut buf).await;
                     let _ = sink.close().await;
                     return;
                 }
                 Err(mpsc::error::TryRecvError::Empty) => break,
-                Err(mpsc::error::TryRecvError::Disconnected) => {
-                    let _ = flush_buf(&mut sink, &mut buf).await;
-                    let _ = sink.close().await;
-                    return;
-                }
             }
         }
         // Echo probes of a scheduled outbox's link estimator also serve as heartbeats.
@@ -269,31 +300,41 @@ pub async fn write_link<K>(
             .encode(&mut buf);
             next_ping = tokio::time::Instant::now() + heartbeat;
         }
-        // 2. One chunk from every lane in progress.
+        // 2. One chunk from every lane in progress, while the bulk gate allows.
+        let mut gated: Option<Option<Instant>> = None;
         let mut i = 0;
         while i < lanes.len() {
-            let lane = &mut lanes[i];
             if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
                 return;
             }
+            let lane = &mut lanes[i];
             if lane.next < lane.frames.len() {
-                let f = &lane.frames[lane.next];
+                if let Err(wake) = outbox.bulk_check(Instant::now()) {
+                    gated = Some(wake);
+                    break;
+                }
+                let (f, n) = (lane.frames[lane.next].clone(), lane.payload_of(lane.next));
                 lane.next += 1;
-                if send_large(&mut sink, &mut buf, f, PACK).await.is_err() {
+                if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
                     return;
                 }
+                outbox.on_written(n, Instant::now());
             }
             if lane.next >= lane.frames.len() {
                 // Done: start the next waiting message of the same topic, if any.
                 match lane.waiting.pop_front() {
                     Some(m) => {
-                        lane.frames = m.link_frames();
-                        lane.next = 0;
+                        let topic = lane.topic;
+                        *lane = Lane {
+                            waiting: std::mem::take(&mut lane.waiting),
+                            ..Lane::start(topic, &m)
+                        };
                         if !announce(&mut buf, &mut advertised, &m, &namer, &outbox) {
                             lane.next = lane.frames.len();
                         }
                     }
                     None => {
+                        outbox.hold(lane.topic.0, false, Instant::now());
                         lanes.swap_remove(i);
                         continue;
                     }
@@ -319,37 +360,32 @@ pub async fn write_link<K>(
                 continue;
             }
             let frames = msg.link_frames();
-            if frames.len() == 1 {
+            if frames.len() == 1 && frames[0].len() <= SMALL_FRAME {
                 if send_large(&mut sink, &mut buf, &frames[0], PACK)
                     .await
                     .is_err()
                 {
                     return;
                 }
+                outbox.on_written(msg.payload.len(), Instant::now());
             } else {
-                if send_large(&mut sink, &mut buf, &frames[0], PACK)
-                    .await
-                    .is_err()
-                {
-                    return;
-                }
-                lanes.push(Lane {
-                    topic: tid,
-                    frames,
-                    next: 1,
-                    waiting: VecDeque::new(),
-                });
+                outbox.hold(tid.0, true, Instant::now());
+                lanes.push(Lane::start(tid, msg));
             }
         }
         if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
             return;
         }
-        if !taken.items.is_empty() || !lanes.is_empty() {
+        if !taken.items.is_empty() || (!lanes.is_empty() && gated.is_none()) {
             continue;
         }
         if outbox.is_closed() {
             let _ = sink.close().await;
             return;
+        }
+        let mut wake = next_ping.min(tokio::time::Instant::now() + PROBE_TICK);
+        if let Some(Some(at)) = gated {
+            wake = wake.min(tokio::time::Instant::from_std(at));
         }
         tokio::select! {
             c = control.recv() => match c {
@@ -361,7 +397,7 @@ pub async fn write_link<K>(
                 }
             },
             _ = outbox.ready() => {}
-            _ = tokio::time::sleep_until(next_ping.min(tokio::time::Instant::now() + PROBE_TICK)) => {}
+            _ = tokio::time::sleep_until(wake) => {}
         }
     }
 }
@@ -440,7 +476,8 @@ impl LinkIn {
     /// An `ACK` for what arrived since the last one, if anything did.
     pub fn take_ack(&mut self) -> Option<Frame> {
         let n = std::mem::take(&mut self.unacked);
-        (n > 0).then_some(Frame::Ack { frames: n })
+        let bytes = std::mem::take(&mut self.unacked_bytes);
+        (n > 0 || bytes > 0).then_some(Frame::Ack { frames: n, bytes })
     }
 }
 

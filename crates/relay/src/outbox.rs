@@ -21,6 +21,7 @@ use fleetlink_qos::{
     TopicQos,
 };
 
+use crate::link_control::LinkControl;
 use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
 use crate::queue::{DropReason, OutboundQueue, QosQueue};
@@ -79,29 +80,6 @@ enum Service {
 }
 
 const REFUSAL_LOG_INTERVAL: Duration = Duration::from_secs(5);
-
-/// What a scheduled outbox knows about its link: the estimator fed by acknowledgements
-/// and echo probes, and the controls it sets on the scheduler.
-struct LinkControl {
-    est: LinkEstimator,
-    /// Size and send time of every unacknowledged message, in send order.
-    sent: VecDeque<(usize, Nanos)>,
-    /// The hub's capacity share for this robot, bytes/s.
-    share: Option<f64>,
-    /// Bytes offered by publishers since the last link report (the robot's demand).
-    offered: u64,
-    offered_since: Nanos,
-}
-
-/// Headroom of the byte window over the bandwidth-delay product (see docs/qos.md).
-const WINDOW_HEADROOM: f64 = 1.2;
-
-impl LinkControl {
-    fn apply(&mut self, sched: &mut Scheduler<Arc<Message>>, now: Nanos) {
-        sched.set_window_bytes(self.est.window_bytes(WINDOW_HEADROOM));
-        sched.set_rate_budget(self.share, now);
-    }
-}
 
 /// Logs that a no-drop message was refused, at most once per interval (every refusal is
 /// counted in the topic's drop statistics regardless).
@@ -177,13 +155,10 @@ impl Outbox {
                 qos_for,
                 by_topic: HashMap::default(),
                 known: HashSet::new(),
-                link: Box::new(LinkControl {
-                    est: LinkEstimator::new(LinkConfig::default()),
-                    sent: VecDeque::new(),
-                    share: None,
-                    offered: 0,
-                    offered_since: Nanos::ZERO,
-                }),
+                link: Box::new(LinkControl::new(
+                    LinkEstimator::new(LinkConfig::default()),
+                    Nanos::ZERO,
+                )),
                 reliable: Box::new(reliable),
                 reliable_topics: HashSet::new(),
                 refusal_logged: None,
@@ -363,8 +338,9 @@ impl Outbox {
         }
     }
 
-    /// The peer acknowledged `messages` messages: a scheduled outbox may send more.
-    pub fn on_acked(&self, messages: usize, now: Instant) {
+    /// The peer acknowledged `messages` whole messages and `bytes` payload bytes: a
+    /// scheduled outbox may send more.
+    pub fn on_acked(&self, messages: usize, bytes: u64, now: Instant) {
         let mut st = self.lock();
         if let Service::Scheduled {
             sched,
@@ -375,15 +351,45 @@ impl Outbox {
         {
             let t = Nanos::since(*origin, now);
             sched.on_acked(messages, t);
-            for _ in 0..messages {
-                let Some((len, sent_at)) = link.sent.pop_front() else {
-                    break;
-                };
-                link.est.handle_ack(len, sent_at, t);
-            }
-            link.apply(sched, t);
+            link.on_acked_bytes(bytes, t);
             drop(st);
             self.notify.notify_one();
+        }
+    }
+
+    /// The writer put a frame carrying `bytes` of payload on the link.
+    pub fn on_written(&self, bytes: usize, now: Instant) {
+        if let Service::Scheduled { origin, link, .. } = &mut self.lock().service {
+            let t = Nanos::since(*origin, now);
+            link.on_written(bytes, t);
+        }
+    }
+
+    /// Whether a bulk frame may be written now; if not, when it may (`None`: not until an
+    /// acknowledgement or echo changes the pacing). Always yes for a plain outbox.
+    pub fn bulk_check(&self, now: Instant) -> Result<(), Option<Instant>> {
+        match &mut self.lock().service {
+            Service::Scheduled { origin, link, .. } => {
+                let t = Nanos::since(*origin, now);
+                link.gate
+                    .check(t)
+                    .map_err(|at| at.map(|at| *origin + Duration::from_nanos(at.0)))
+            }
+            Service::RoundRobin { .. } => Ok(()),
+        }
+    }
+
+    /// Holds back (or releases) topic `alias` in the scheduler while one of its large
+    /// messages is going out in chunks (see `Scheduler::set_held`).
+    pub fn hold(&self, alias: u32, held: bool, now: Instant) {
+        let mut st = self.lock();
+        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
+            let t = Nanos::since(*origin, now);
+            sched.set_held(QosTopic(alias), held, t);
+            if !held {
+                drop(st);
+                self.notify.notify_one();
+            }
         }
     }
 
@@ -396,11 +402,12 @@ impl Outbox {
             sched,
             link,
             reliable,
+            origin,
             ..
         } = &mut st.service
         {
             sched.on_link_reset();
-            link.sent.clear();
+            link.reset(Nanos::since(*origin, Instant::now()));
             let again = reliable.take_unconfirmed();
             for (alias, m) in again.into_iter().rev() {
                 if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
@@ -476,16 +483,10 @@ impl Outbox {
     /// scheduler keeps the sending rate within it.
     pub fn set_share(&self, bytes_per_sec: Option<f64>, now: Instant) {
         let mut st = self.lock();
-        if let Service::Scheduled {
-            sched,
-            origin,
-            link,
-            ..
-        } = &mut st.service
-        {
+        if let Service::Scheduled { origin, link, .. } = &mut st.service {
             let t = Nanos::since(*origin, now);
             link.share = bytes_per_sec;
-            link.apply(sched, t);
+            link.apply(t);
             drop(st);
             self.notify.notify_one();
         }
@@ -506,20 +507,17 @@ impl Outbox {
     /// The hub echoed probe `id`, reading `hub_ns` (Unix ns) on its clock.
     pub fn on_echo(&self, id: u64, hub_ns: u64, now: Instant) {
         let mut st = self.lock();
-        if let Service::Scheduled {
-            sched,
-            origin,
-            link,
-            ..
-        } = &mut st.service
-        {
+        if let Service::Scheduled { origin, link, .. } = &mut st.service {
             let t = Nanos::since(*origin, now);
             // The estimator runs on this outbox's clock (ns since `origin`); the hub's
             // reading is put on the same scale, so the offset it finds is hub − robot.
             let origin_unix = crate::instant_to_unix_nanos(*origin);
             link.est
                 .handle_echo(id, Nanos(hub_ns.saturating_sub(origin_unix)), t);
-            link.apply(sched, t);
+            link.apply(t);
+            drop(st);
+            // The pacing may have changed (a stall ended): a gated writer looks again.
+            self.notify.notify_one();
         }
     }
 
@@ -527,13 +525,7 @@ impl Outbox {
     /// second, for the hub's capacity sharing).
     pub fn link_figures(&self, now: Instant) -> Option<LinkFigures> {
         let mut st = self.lock();
-        let Service::Scheduled {
-            sched,
-            origin,
-            link,
-            ..
-        } = &mut st.service
-        else {
+        let Service::Scheduled { origin, link, .. } = &mut st.service else {
             return None;
         };
         let t = Nanos::since(*origin, now);
@@ -553,7 +545,7 @@ impl Outbox {
             rtt: link.est.rtt().map(d),
             clock_offset_ns: link.est.clock_offset(),
             share_bps: link.share,
-            in_flight_bytes: sched.in_flight_bytes(),
+            in_flight_bytes: link.unacked_bytes(),
         })
     }
 
@@ -600,7 +592,6 @@ impl Outbox {
                 sched,
                 origin,
                 by_topic,
-                link,
                 reliable,
                 reliable_topics,
                 ..
@@ -615,7 +606,6 @@ impl Outbox {
                         // Sent even when its publisher has gone: it was promised delivery.
                         reliable.sent(tid.0, m.clone());
                         let slot = by_topic.get(&tid.0).copied().unwrap_or(SlotId(0));
-                        link.sent.push_back((m.wire_len(), t));
                         bytes += m.wire_len();
                         items.push((slot, Delivery::default(), m));
                         continue;
@@ -627,7 +617,6 @@ impl Outbox {
                         continue;
                     };
                     let delivery = st.slots.get(slot).map(|s| s.delivery).unwrap_or_default();
-                    link.sent.push_back((m.wire_len(), t));
                     bytes += m.wire_len();
                     items.push((*slot, delivery, m));
                 }

@@ -76,8 +76,9 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         None,
     ));
 
-    // 2 MiB: 32 chunks of 64 KiB.
+    // 2 MiB: 128 chunks of 16 KiB.
     let payload = Bytes::from(vec![7u8; 2 << 20]);
+    let total = payload.len().div_ceil(frame::DEFAULT_CHUNK_SIZE);
     big.publish(publisher, 1, 0, Payload::json(payload.clone()));
 
     // The writer announces the topic and sends the first chunk, then waits on the sink.
@@ -88,7 +89,7 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         .filter(|f| matches!(f, Frame::Chunk { .. }))
         .count();
     assert!(
-        (1..32).contains(&chunks_before),
+        (1..total).contains(&chunks_before),
         "{chunks_before} chunks before the pose was published"
     );
 
@@ -118,11 +119,11 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         }
     }
     assert!(
-        chunks < 32,
+        chunks < total,
         "the pose waited for the whole cloud ({chunks} chunks sent first)"
     );
     // The rest of the cloud follows, in order.
-    while chunks < 32 {
+    while chunks < total {
         for f in next_frames(&mut rx).await {
             if let Frame::Chunk {
                 offset, total_len, ..
@@ -138,5 +139,103 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         offsets.windows(2).all(|w| w[0] < w[1]),
         "chunks out of order: {offsets:?}"
     );
+    writer.abort();
+}
+
+/// A scheduled outbox (the agent's uplink) whose bulk gate is nearly shut: the first chunk
+/// of a large message goes, the next ones wait for the gate, and a small message published
+/// meanwhile goes at once instead of queueing behind them. Once the gate opens, the rest
+/// of the large message follows in order.
+#[tokio::test]
+async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
+    use fleetlink_qos::{SchedulerConfig, TopicQos};
+    use fleetlink_relay::Outbox;
+    use fleetlink_relay::reliable::ReliableOut;
+    use std::time::Instant;
+
+    let router = Arc::new(Router::default());
+    let (link, outbox) = router.connect_with(
+        ClientKind::Internal {
+            role: "uplink".into(),
+        },
+        None,
+        |id| {
+            Outbox::scheduled(
+                id,
+                SchedulerConfig::default(),
+                Arc::new(|_| TopicQos::default()),
+                ReliableOut::in_memory(),
+            )
+        },
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let advertise = |name: &str, ty: &str| {
+        router
+            .advertise(
+                publisher,
+                &TopicName::parse(name).unwrap(),
+                Schema::named(ty),
+                false,
+            )
+            .unwrap()
+    };
+    let (big, small) = (advertise("/cloud", "t/Blob"), advertise("/pose", "t/Pose"));
+    // 1 kB/s: after its burst the gate would take many seconds to let a chunk through.
+    outbox.set_share(Some(1000.0), Instant::now());
+
+    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(64);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox.clone(),
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+    ));
+    let payload = Bytes::from(vec![7u8; 4 * frame::DEFAULT_CHUNK_SIZE]);
+    big.publish(publisher, 1, 0, Payload::json(payload.clone()));
+    let mut chunks = Vec::new();
+    while chunks.is_empty() {
+        for f in next_frames(&mut rx).await {
+            if let Frame::Chunk { offset, .. } = f {
+                chunks.push(offset);
+            }
+        }
+    }
+    small.publish(publisher, 1, 0, Payload::json(&b"{\"x\":1}"[..]));
+    let mut pose = false;
+    while !pose {
+        for f in next_frames(&mut rx).await {
+            match f {
+                Frame::Chunk { offset, .. } => chunks.push(offset),
+                Frame::Message { .. } => pose = true,
+                _ => {}
+            }
+        }
+    }
+    assert!(
+        chunks.len() < 4,
+        "the small message waited for the whole large one: {chunks:?}"
+    );
+    // Open the gate: the rest follows, in order.
+    outbox.set_share(None, Instant::now());
+    while chunks.len() < 4 {
+        for f in next_frames(&mut rx).await {
+            if let Frame::Chunk { offset, .. } = f {
+                chunks.push(offset);
+            }
+        }
+    }
+    assert!(chunks.windows(2).all(|w| w[0] < w[1]), "{chunks:?}");
     writer.abort();
 }
