@@ -176,7 +176,7 @@ proptest! {
     }
 }
 
-/// The worked example of `docs/protocol.md` §1.9, byte for byte.
+/// The worked example of `docs/protocol.md` §1.10, byte for byte.
 #[test]
 fn protocol_md_worked_example() {
     let hex = "07 18 03 ac 02 15 cd 85 3d fe 9c 97 17 7b 22 64 61 74 61 22 3a 22 68 69 22 7d";
