@@ -7,9 +7,12 @@
 //! - [`conn`]: a bench client's `fleetlink.v1` connection and setup handshake.
 //! - [`publisher`], [`subscriber`]: the two kinds of client and their hot loops.
 //! - [`report`]: the progress line and the final summary.
+//! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
+//!   hub that restarts, measuring how the fleet comes back.
 
 mod conn;
 mod publisher;
+mod reconnect;
 mod relay;
 mod report;
 mod subscriber;
@@ -25,10 +28,14 @@ enum Command {
     /// Publishers and subscribers on fleetlink.v1 links through a running hub: delivered
     /// msg/s, MB/s, latency percentiles and drops.
     Relay(relay::Args),
+    /// A fleet of agents against a hub that is stopped and restarted: how fast and how
+    /// spread out the robots come back (backoff, jitter, handshake admission).
+    Reconnect(reconnect::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     match args.command {
         Command::Relay(a) => relay::run(a),
+        Command::Reconnect(a) => reconnect::run(a),
     }
 }
