@@ -260,6 +260,19 @@ impl<T: WireLen> Scheduler<T> {
         }
     }
 
+    /// Whether no-drop topic `topic` can take another message without backpressure
+    /// (`true` for other topics and unknown ones).
+    pub fn no_drop_room(&self, topic: TopicId) -> bool {
+        match self
+            .index
+            .get(&topic)
+            .map(|&i| &self.topics[i as usize].lane)
+        {
+            Some(Lane::NoDrop { queued, capacity }) => queued < capacity,
+            _ => true,
+        }
+    }
+
     /// Puts a no-drop `item` back at the head of the no-drop FIFO: it was sent on a
     /// connection that died before the peer confirmed it. Call in reverse send order so
     /// the oldest goes first. Ignores the queue length (the item was admitted before).

@@ -314,6 +314,9 @@ impl Outbox {
                 match sched.offer(QosTopic(s.topic), msg, t) {
                     Push::Queued => {
                         st.queued += 1;
+                        if no_drop && !sched.no_drop_room(QosTopic(s.topic)) {
+                            s.stats.no_drop_flow.set_full();
+                        }
                         (None, true)
                     }
                     Push::Dropped { reason, .. } => (Some(DropReason::from_qos(reason)), true),
@@ -412,6 +415,11 @@ impl Outbox {
             for (alias, m) in again.into_iter().rev() {
                 if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
                     st.queued += 1;
+                }
+                if !sched.no_drop_room(QosTopic(alias))
+                    && let Some(slot) = st.slots.values().find(|s| s.topic == alias)
+                {
+                    slot.stats.no_drop_flow.set_full();
                 }
             }
         }
@@ -606,6 +614,11 @@ impl Outbox {
                         // Sent even when its publisher has gone: it was promised delivery.
                         reliable.sent(tid.0, m.clone());
                         let slot = by_topic.get(&tid.0).copied().unwrap_or(SlotId(0));
+                        if sched.no_drop_room(tid)
+                            && let Some(s) = st.slots.get(&slot)
+                        {
+                            s.stats.no_drop_flow.set_room();
+                        }
                         bytes += m.wire_len();
                         items.push((slot, Delivery::default(), m));
                         continue;

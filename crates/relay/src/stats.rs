@@ -17,6 +17,45 @@ struct Bucket {
     bytes: AtomicU64,
 }
 
+/// No-drop flow control of a topic: set while a subscriber's no-drop queue for it is full
+/// (the agent's uplink during an outage, without a durable outbox). A publisher that can
+/// wait — a local rosbridge client's session — waits for room instead of having its
+/// message refused; the uplink clears it as the queue drains. Lives with the counters
+/// because both are the per-topic state every subscriber's slot shares.
+#[derive(Default)]
+pub struct NoDropFlow {
+    full: std::sync::atomic::AtomicBool,
+    room: tokio::sync::Notify,
+}
+
+impl NoDropFlow {
+    pub fn is_full(&self) -> bool {
+        self.full.load(std::sync::atomic::Ordering::Acquire)
+    }
+
+    pub fn set_full(&self) {
+        self.full.store(true, std::sync::atomic::Ordering::Release);
+    }
+
+    /// There is room again: wakes every waiting publisher.
+    pub fn set_room(&self) {
+        if self.full.swap(false, std::sync::atomic::Ordering::AcqRel) {
+            self.room.notify_waiters();
+        }
+    }
+
+    /// Returns once the topic has room (at once if it has).
+    pub async fn wait_room(&self) {
+        loop {
+            let notified = self.room.notified();
+            if !self.is_full() {
+                return;
+            }
+            notified.await;
+        }
+    }
+}
+
 #[derive(Default)]
 pub struct TopicStats {
     pub messages: AtomicU64,
@@ -32,6 +71,7 @@ pub struct TopicStats {
     /// averaged over the seconds it has existed, not the whole window.
     first_second: AtomicU64,
     buckets: [Bucket; BUCKETS],
+    pub no_drop_flow: NoDropFlow,
 }
 
 impl TopicStats {

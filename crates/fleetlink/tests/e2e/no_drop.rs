@@ -190,3 +190,45 @@ async fn issue9_durable_outbox_delivers_what_was_queued_before_an_agent_restart(
     hub.shutdown().await;
     let _ = std::fs::remove_dir_all(dir);
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue9_a_full_no_drop_queue_slows_the_local_rosbridge_publisher_instead_of_dropping() {
+    let hub = start_hub().await;
+    let proxy = Blackhole::start(hub.addr).await;
+    let mut cfg = no_drop_config(&hub, &proxy);
+    // A short queue, so the outage fills it: 32 messages in flight, then 5 queued.
+    cfg.topic_qos[0].1.queue = Some(5);
+    let agent = start_agent_with(cfg, true).await;
+    agent.wait_connected().await;
+    let mut op = subscriber(&hub).await;
+    let mut local = Rosbridge::connect(&agent.local_url()).await;
+    local
+        .send(json!({"op": "advertise", "topic": TOPIC, "type": "std_msgs/msg/String"}))
+        .await;
+    let send = |n: u64| json!({"op": "publish", "topic": TOPIC, "msg": {"data": n.to_string()}});
+    local.send(send(1)).await;
+    assert_eq!(received_until(&mut op, 1).await, vec![1]);
+
+    proxy.cut();
+    for n in 2..=80 {
+        local.send(send(n)).await;
+    }
+    agent.wait_disconnected().await;
+    proxy.restore();
+    agent.wait_connected().await;
+    assert_eq!(
+        received_until(&mut op, 80).await,
+        (2..=80).collect::<Vec<_>>(),
+        "the publisher was held back, not dropped"
+    );
+    let topic = agent
+        .router
+        .topic(&TopicName::parse(TOPIC).unwrap())
+        .expect("topic");
+    assert_eq!(
+        topic.stats.drops(fleetlink_relay::DropReason::Backpressure),
+        0
+    );
+    agent.shutdown().await;
+    hub.shutdown().await;
+}

@@ -120,9 +120,17 @@ pub async fn serve<S>(
             }
             Err(_) => break,
         };
-        match req {
-            Ok(req) => session.handle(req).await,
-            Err(e) => session.parse_error(e).await,
+        // A publish may wait for room on a no-drop topic (`Session::wait_for_room`); a
+        // shutdown must not wait for it.
+        let step = async {
+            match req {
+                Ok(req) => session.handle(req).await,
+                Err(e) => session.parse_error(e).await,
+            }
+        };
+        tokio::select! {
+            _ = step => {}
+            _ = shutdown.cancelled() => break,
         }
     }
     router.disconnect(client);
@@ -194,7 +202,10 @@ impl Session {
                 ..
             } => self.advertise(&topic, &type_name, latch),
             Op::Unadvertise { topic } => self.unadvertise(&topic),
-            Op::Publish { topic, msg } => self.publish(&topic, msg),
+            Op::Publish { topic, msg } => {
+                self.wait_for_room(&topic).await;
+                self.publish(&topic, msg)
+            }
             Op::Subscribe {
                 topic,
                 type_name,
@@ -297,6 +308,24 @@ impl Session {
         }
         self.router.unadvertise(self.client, &name);
         Ok(())
+    }
+
+    /// Backpressure for no-drop topics: while a subscriber's no-drop queue of this topic is
+    /// full (the robot's link is down and nothing spills to disk), this client's next
+    /// message waits here — and, because this loop is what reads the socket, the client's
+    /// own sends slow down with it — instead of being refused.
+    async fn wait_for_room(&self, topic: &str) {
+        let Some(p) = TopicName::parse(topic)
+            .ok()
+            .and_then(|n| self.published.get(&n))
+        else {
+            return;
+        };
+        let flow = &p.topic.stats.no_drop_flow;
+        if flow.is_full() {
+            tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
+            flow.wait_room().await;
+        }
     }
 
     fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
