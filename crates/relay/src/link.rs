@@ -18,7 +18,6 @@ use futures_util::{Sink, SinkExt};
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
-use crate::link_control::SMALL_FRAME;
 use crate::message::{Message, TopicMeta};
 use crate::names::TopicId;
 use crate::outbox::Outbox;
@@ -199,32 +198,73 @@ pub enum Control {
 /// waiting behind it.
 struct Lane {
     topic: TopicId,
-    frames: Arc<[Bytes]>,
-    /// Payload bytes of the message, to tell how many each chunk carries.
-    payload_len: usize,
+    msg: Arc<Message>,
+    /// The message's cached frames, on links whose outbox does not size chunks (the
+    /// hub's: the same frames serve every link), and the next one to send.
+    cached: Option<Arc<[Bytes]>>,
     next: usize,
+    /// Payload bytes sent so far, when chunks are cut for this link as they go.
+    offset: usize,
     waiting: VecDeque<Arc<Message>>,
 }
 
 impl Lane {
-    fn start(topic: TopicId, msg: &Message) -> Lane {
+    fn start(topic: TopicId, msg: Arc<Message>, sized: bool) -> Lane {
         Lane {
             topic,
-            frames: msg.link_frames(),
-            payload_len: msg.payload.len(),
+            cached: (!sized).then(|| msg.link_frames()),
+            msg,
             next: 0,
+            offset: 0,
             waiting: VecDeque::new(),
         }
     }
 
-    /// Payload bytes carried by frame `i` (what the receiver counts in `ACK.bytes`).
-    fn payload_of(&self, i: usize) -> usize {
-        if self.frames.len() == 1 {
-            return self.payload_len;
+    /// Marks the message as sent without sending it (its topic is not carried here).
+    fn skip(&mut self) {
+        self.next = usize::MAX / 2;
+        self.offset = self.msg.payload.len();
+    }
+
+    fn is_done(&self) -> bool {
+        match &self.cached {
+            Some(frames) => self.next >= frames.len(),
+            None => self.offset >= self.msg.payload.len() && self.next > 0,
         }
-        self.payload_len
-            .saturating_sub(i * DEFAULT_CHUNK_SIZE)
-            .min(DEFAULT_CHUNK_SIZE)
+    }
+
+    /// The next frame and the payload bytes it carries (what the peer's `ACK.bytes`
+    /// counts). `chunk` is the link's chunk size now, for a lane that cuts its own.
+    fn next_frame(&mut self, chunk: usize) -> (Bytes, usize) {
+        let total = self.msg.payload.len();
+        if let Some(frames) = &self.cached {
+            let i = self.next;
+            self.next += 1;
+            let n = if frames.len() == 1 {
+                total
+            } else {
+                total
+                    .saturating_sub(i * DEFAULT_CHUNK_SIZE)
+                    .min(DEFAULT_CHUNK_SIZE)
+            };
+            return (frames[i].clone(), n);
+        }
+        self.next += 1;
+        let m = &self.msg;
+        let end = (self.offset + chunk.max(1)).min(total);
+        let data = &m.payload.bytes[self.offset..end];
+        let mut b = BytesMut::with_capacity(data.len() + 40);
+        fleetlink_proto::frame::encode_chunk(
+            &mut b,
+            m.topic.id.0,
+            m.seq,
+            m.stamp_ns,
+            total as u64,
+            self.offset as u64,
+            data,
+        );
+        self.offset = end;
+        (b.freeze(), data.len())
     }
 }
 
@@ -232,11 +272,12 @@ impl Lane {
 /// every `heartbeat`. `announce_first` topics are advertised before anything else;
 /// `gate`, if any, must allow each message's topic for it to be sent.
 ///
-/// Small messages go out as soon as they are taken. A large one (any frame over
-/// [`SMALL_FRAME`]) gets a lane and goes out a chunk per round, each chunk only when the
-/// outbox's bulk gate allows (see [`crate::link_control`]); its topic is held in the
-/// scheduler until the lane is done, so the next large message of that topic is chosen by
-/// the topic's drop policy when the link can take it.
+/// Small messages go out as soon as they are taken. A larger one (a payload over the
+/// link's chunk size: 16 KiB, or less on a slow uplink) gets a lane and goes out a chunk
+/// per round, each chunk only when the outbox allows bulk data now (see
+/// [`crate::link_control`]); its topic is held in the scheduler until the lane is done, so
+/// the next large message of that topic is chosen by the topic's drop policy when the link
+/// can take it.
 pub async fn write_link<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -308,29 +349,32 @@ pub async fn write_link<K>(
                 return;
             }
             let lane = &mut lanes[i];
-            if lane.next < lane.frames.len() {
-                if let Err(wake) = outbox.bulk_check(Instant::now()) {
+            if !lane.is_done() {
+                let now = Instant::now();
+                if let Err(wake) = outbox.bulk_check(now) {
                     gated = Some(wake);
                     break;
                 }
-                let (f, n) = (lane.frames[lane.next].clone(), lane.payload_of(lane.next));
-                lane.next += 1;
+                let chunk = outbox.chunk_size(now).unwrap_or(DEFAULT_CHUNK_SIZE);
+                let (f, n) = lane.next_frame(chunk);
                 if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
                     return;
                 }
                 outbox.on_written(n, Instant::now());
             }
-            if lane.next >= lane.frames.len() {
+            if lane.is_done() {
                 // Done: start the next waiting message of the same topic, if any.
                 match lane.waiting.pop_front() {
                     Some(m) => {
-                        let topic = lane.topic;
+                        let (topic, sized) = (lane.topic, lane.cached.is_none());
+                        let waiting = std::mem::take(&mut lane.waiting);
+                        let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
                         *lane = Lane {
-                            waiting: std::mem::take(&mut lane.waiting),
-                            ..Lane::start(topic, &m)
+                            waiting,
+                            ..Lane::start(topic, m, sized)
                         };
-                        if !announce(&mut buf, &mut advertised, &m, &namer, &outbox) {
-                            lane.next = lane.frames.len();
+                        if !carried {
+                            lane.skip();
                         }
                     }
                     None => {
@@ -359,8 +403,11 @@ pub async fn write_link<K>(
             if !announce(&mut buf, &mut advertised, msg, &namer, &outbox) {
                 continue;
             }
-            let frames = msg.link_frames();
-            if frames.len() == 1 && frames[0].len() <= SMALL_FRAME {
+            let now = Instant::now();
+            let sized = outbox.chunk_size(now);
+            if msg.payload.len() <= sized.unwrap_or(DEFAULT_CHUNK_SIZE) {
+                // One MESSAGE frame (payloads up to DEFAULT_CHUNK_SIZE are never chunked).
+                let frames = msg.link_frames();
                 if send_large(&mut sink, &mut buf, &frames[0], PACK)
                     .await
                     .is_err()
@@ -369,8 +416,8 @@ pub async fn write_link<K>(
                 }
                 outbox.on_written(msg.payload.len(), Instant::now());
             } else {
-                outbox.hold(tid.0, true, Instant::now());
-                lanes.push(Lane::start(tid, msg));
+                outbox.hold(tid.0, true, now);
+                lanes.push(Lane::start(tid, msg.clone(), sized.is_some()));
             }
         }
         if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {

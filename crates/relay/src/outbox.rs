@@ -21,7 +21,7 @@ use fleetlink_qos::{
     TopicQos,
 };
 
-use crate::link_control::LinkControl;
+use crate::link_control::{Hold, LinkControl};
 use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
 use crate::queue::{DropReason, OutboundQueue, QosQueue};
@@ -368,17 +368,30 @@ impl Outbox {
         }
     }
 
-    /// Whether a bulk frame may be written now; if not, when it may (`None`: not until an
-    /// acknowledgement or echo changes the pacing). Always yes for a plain outbox.
+    /// Whether a bulk frame may be written now; if not, when it may (`None`: once an
+    /// acknowledgement arrives, which wakes the writer). Always yes for a plain outbox.
     pub fn bulk_check(&self, now: Instant) -> Result<(), Option<Instant>> {
         match &mut self.lock().service {
             Service::Scheduled { origin, link, .. } => {
                 let t = Nanos::since(*origin, now);
-                link.gate
-                    .check(t)
-                    .map_err(|at| at.map(|at| *origin + Duration::from_nanos(at.0)))
+                link.bulk_check(t).map_err(|hold| match hold {
+                    Hold::Window | Hold::Share(None) => None,
+                    Hold::Share(Some(at)) => Some(*origin + Duration::from_nanos(at.0)),
+                })
             }
             Service::RoundRobin { .. } => Ok(()),
+        }
+    }
+
+    /// The size to cut large payloads into for this link now: `None` for a plain outbox,
+    /// whose links use each message's cached frames; a size that follows the measured rate
+    /// for a scheduled one (see [`crate::link_control`]).
+    pub fn chunk_size(&self, now: Instant) -> Option<usize> {
+        match &self.lock().service {
+            Service::Scheduled { origin, link, .. } => {
+                Some(link.chunk_size(Nanos::since(*origin, now)))
+            }
+            Service::RoundRobin { .. } => None,
         }
     }
 
@@ -405,12 +418,11 @@ impl Outbox {
             sched,
             link,
             reliable,
-            origin,
             ..
         } = &mut st.service
         {
             sched.on_link_reset();
-            link.reset(Nanos::since(*origin, Instant::now()));
+            link.reset();
             let again = reliable.take_unconfirmed();
             for (alias, m) in again.into_iter().rev() {
                 if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
@@ -493,8 +505,7 @@ impl Outbox {
         let mut st = self.lock();
         if let Service::Scheduled { origin, link, .. } = &mut st.service {
             let t = Nanos::since(*origin, now);
-            link.share = bytes_per_sec;
-            link.apply(t);
+            link.set_share(bytes_per_sec, t);
             drop(st);
             self.notify.notify_one();
         }
@@ -522,10 +533,6 @@ impl Outbox {
             let origin_unix = crate::instant_to_unix_nanos(*origin);
             link.est
                 .handle_echo(id, Nanos(hub_ns.saturating_sub(origin_unix)), t);
-            link.apply(t);
-            drop(st);
-            // The pacing may have changed (a stall ended): a gated writer looks again.
-            self.notify.notify_one();
         }
     }
 

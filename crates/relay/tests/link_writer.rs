@@ -142,10 +142,10 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
     writer.abort();
 }
 
-/// A scheduled outbox (the agent's uplink) whose bulk gate is nearly shut: the first chunk
-/// of a large message goes, the next ones wait for the gate, and a small message published
-/// meanwhile goes at once instead of queueing behind them. Once the gate opens, the rest
-/// of the large message follows in order.
+/// A scheduled outbox (the agent's uplink) that may not send bulk data (a capacity share of
+/// 1 kB/s, and no acknowledgements): the first chunks of a large message go, the next
+/// ones wait, and a small message published meanwhile goes at once instead of queueing
+/// behind them. Once bulk may go again, the rest of the large message follows in order.
 #[tokio::test]
 async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
     use fleetlink_qos::{SchedulerConfig, TopicQos};
@@ -227,8 +227,10 @@ async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
         chunks.len() < 4,
         "the small message waited for the whole large one: {chunks:?}"
     );
-    // Open the gate: the rest follows, in order.
+    // Lift the share and acknowledge what was written (as the hub would): the rest
+    // follows, in order.
     outbox.set_share(None, Instant::now());
+    outbox.on_acked(0, 1 << 20, Instant::now());
     while chunks.len() < 4 {
         for f in next_frames(&mut rx).await {
             if let Frame::Chunk { offset, .. } = f {
