@@ -297,7 +297,7 @@ mod tests {
                 last_delay = start.saturating_sub(now);
                 queue.push_back((chunk, link_free));
             }
-            now = now + step;
+            now = Nanos(now.0 + step.0);
         }
         (last_delay, c.delivered_rate(now))
     }
