@@ -13,7 +13,8 @@
 //! window = max(2 × chunk, delivered rate × (base round trip + QUEUE_TARGET))
 //! ```
 //!
-//! where the delivered rate is the best 50 ms of the last half second. The window is
+//! where the delivered rate is the best 50 ms of the last half second and `QUEUE_TARGET`
+//! is 5 ms. The window is
 //! clocked by acknowledgements: while the link is faster than what is sent, the base round
 //! trip is all it takes and the window grows by `QUEUE_TARGET / base` each round trip;
 //! when the link is the bottleneck, the window settles where about `QUEUE_TARGET` of data
@@ -22,8 +23,8 @@
 //! delay-triggered rate cut, nothing here collapses when round trips wobble (a busy CPU, a
 //! radio retransmission): a late acknowledgement only delays the next chunk.
 //!
-//! Chunks are sized to the link too: about [`CHUNK_TIME`] of the delivered rate, between
-//! 2 and 16 KiB, so a priority message waits behind at most a few milliseconds of bulk
+//! Chunks are sized to the link too: about [`CHUNK_TIME`] (2 ms) of the delivered rate,
+//! between 1 and 16 KiB, so a priority message waits behind at most a few milliseconds of bulk
 //! data even at 4 Mbit/s. Small frames are never held back (they count in the window, so
 //! bulk yields to them).
 //!
@@ -35,11 +36,11 @@ use fleetlink_proto::frame::DEFAULT_CHUNK_SIZE;
 use fleetlink_qos::{LinkEstimator, Nanos};
 
 /// Queueing delay the window allows in the network.
-pub const QUEUE_TARGET: Nanos = Nanos::from_millis(10);
+pub const QUEUE_TARGET: Nanos = Nanos::from_millis(5);
 /// Link time one chunk should take at the delivered rate.
-pub const CHUNK_TIME: Nanos = Nanos::from_millis(4);
+pub const CHUNK_TIME: Nanos = Nanos::from_millis(2);
 /// Smallest chunk.
-pub const MIN_CHUNK: usize = 2 * 1024;
+pub const MIN_CHUNK: usize = 1024;
 /// Largest chunk (and the chunk size before any rate is known).
 pub const MAX_CHUNK: usize = DEFAULT_CHUNK_SIZE;
 /// Delivered-rate slots: 50 ms each, the best of the last ten counts.
@@ -313,9 +314,9 @@ mod tests {
                 delivered * 8.0 / 1e6
             );
             // A priority message arriving now waits behind this much: the target plus
-            // a chunk or two.
+            // about a chunk.
             assert!(
-                delay <= QUEUE_TARGET + Nanos::from_millis(12),
+                delay <= QUEUE_TARGET + Nanos::from_millis(4),
                 "{mbit} Mbit/s, {one_way_ms} ms: queue {delay:?}"
             );
         }
