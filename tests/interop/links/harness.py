@@ -1,0 +1,333 @@
+"""Plumbing of the bad-links suite: processes in the two network namespaces, the hub and
+agent as the suite runs them, the link's knobs (down/up, tbf), and the peers' records.
+
+Everything here is bounded: every wait has a deadline and names what it waited for when
+it runs out; every process started is registered and stopped by `Procs.stop_all` (the
+driver calls it on any exit; run.sh also kills whatever is left in its namespaces).
+"""
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+import urllib.request
+from dataclasses import dataclass, field
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PEERS = os.path.join(HERE, "peers.py")
+
+
+class Failed(Exception):
+    """A harness step could not be done (not an outcome that was measured)."""
+
+
+def now_ns():
+    return time.time_ns()
+
+
+def wait_until(pred, timeout, what, interval=0.05):
+    deadline = time.monotonic() + timeout
+    while True:
+        v = pred()
+        if v:
+            return v
+        if time.monotonic() >= deadline:
+            raise Failed(f"{what}: not within {timeout:g} s")
+        time.sleep(interval)
+
+
+@dataclass
+class Net:
+    """The topology run.sh made: hub namespace and robot namespace joined by a veth pair."""
+    hub_ns: str
+    robot_ns: str
+    hub_ip: str
+    robot_dev: str
+
+    def run(self, ns, *argv):
+        r = subprocess.run(["ip", "netns", "exec", ns, *argv], capture_output=True, text=True, timeout=10)
+        if r.returncode != 0:
+            raise Failed(f"{' '.join(argv)} in {ns}: {r.stderr.strip()}")
+        return r.stdout
+
+    def link(self, up):
+        self.run(self.robot_ns, "ip", "link", "set", self.robot_dev, "up" if up else "down")
+
+    def shape(self, mbit):
+        """Robot egress (the uplink) through a token bucket; None removes it.
+
+        burst: 10 ms of the rate, at least 16 kB (so the kernel's timer granularity is not
+        what limits the rate); latency 100 ms: the bucket's queue holds at most 100 ms of
+        traffic, a moderate buffer like a cellular modem's (a deeper one only makes a
+        sender that overfills it look worse)."""
+        if mbit is None:
+            subprocess.run(["ip", "netns", "exec", self.robot_ns, "tc", "qdisc", "del", "dev",
+                            self.robot_dev, "root"], capture_output=True, timeout=10)
+            return
+        burst = max(int(mbit * 1e6 / 8 * 0.010), 16000)
+        self.run(self.robot_ns, "tc", "qdisc", "replace", "dev", self.robot_dev, "root", "tbf",
+                 "rate", f"{mbit}mbit", "burst", str(burst), "latency", "100ms")
+
+
+@dataclass
+class Proc:
+    name: str
+    popen: subprocess.Popen
+    log: str
+
+    def alive(self):
+        return self.popen.poll() is None
+
+    def text(self):
+        try:
+            with open(self.log, encoding="utf-8", errors="replace") as f:
+                return f.read()
+        except FileNotFoundError:
+            return ""
+
+    def kill9(self):
+        # `ip netns exec` execs the command, so this pid is the command itself.
+        if self.alive():
+            self.popen.send_signal(signal.SIGKILL)
+        self.popen.wait(timeout=5)
+
+
+@dataclass
+class Procs:
+    tmp: str
+    running: list = field(default_factory=list)
+    counter: int = 0
+
+    def start(self, name, ns, argv):
+        self.counter += 1
+        log = os.path.join(self.tmp, f"{self.counter:02d}-{name}.out")
+        f = open(log, "w")
+        p = subprocess.Popen(["ip", "netns", "exec", ns, *argv], stdout=f, stderr=subprocess.STDOUT,
+                             stdin=subprocess.DEVNULL)
+        f.close()
+        proc = Proc(name, p, log)
+        self.running.append(proc)
+        return proc
+
+    def stop(self, proc, grace=3.0):
+        if proc.alive():
+            proc.popen.send_signal(signal.SIGTERM)
+            try:
+                proc.popen.wait(timeout=grace)
+            except subprocess.TimeoutExpired:
+                proc.popen.kill()
+                proc.popen.wait(timeout=5)
+        if proc in self.running:
+            self.running.remove(proc)
+
+    def stop_all(self):
+        for p in list(self.running):
+            try:
+                self.stop(p, grace=2.0)
+            except Exception as e:  # keep stopping the others
+                print(f"warning: stopping {p.name}: {e}", file=sys.stderr)
+
+    def wait_line(self, proc, pattern, timeout, what):
+        rx = re.compile(pattern, re.M)
+
+        def found():
+            m = rx.search(proc.text())
+            if m:
+                return m
+            if not proc.alive():
+                tail = "\n".join(proc.text().splitlines()[-15:])
+                raise Failed(f"{what}: {proc.name} exited ({proc.popen.returncode}):\n{tail}")
+            return None
+        return wait_until(found, timeout, what)
+
+
+@dataclass
+class Fleet:
+    """The hub, one agent (robot1) and the peers, as the scenarios start and kill them."""
+    net: Net
+    procs: Procs
+    bin: str
+    python: str
+    tmp: str
+    robot_token: str = ""
+    op_token: str = ""
+    hub: Proc = None
+    hub_port: int = 0
+    agent: Proc = None
+    local_url: str = ""
+    outbox: bool = False
+    outbox_dir: str = ""
+    agents: int = 0
+    data_dir: str = ""
+
+    def admin(self, *args):
+        r = subprocess.run([self.bin, "admin", "--data-dir", self.data_dir, *args],
+                           capture_output=True, text=True, timeout=20)
+        if r.returncode != 0:
+            raise Failed(f"fleetlink admin {' '.join(args)}: {r.stderr.strip()}")
+        return r.stdout.strip()
+
+    def mint_tokens(self):
+        self.data_dir = os.path.join(self.tmp, "hub-data")
+        self.robot_token = self.admin("token", "robot", "robot1")
+        self.op_token = self.admin("token", "operator", "links", "--group", "admin")
+
+    # --- hub
+    def start_hub(self, extra=()):
+        """Listens on every address of the hub namespace (veth for the agent, loopback for
+        the subscriber). Port 0 the first time; a restart reuses the port it got."""
+        self.hub = self.procs.start("hub", self.net.hub_ns, [
+            self.bin, "hub", "--listen", f"0.0.0.0:{self.hub_port}", "--data-dir", self.data_dir, *extra])
+        m = self.procs.wait_line(self.hub, r"^fleetlink hub listening on [0-9.]+:(\d+)$", 15, "hub start")
+        self.hub_port = int(m.group(1))
+        return self.hub
+
+    def hub_drops(self, topic):
+        """Messages of `topic` the hub's subscriber queues lost (its /metrics), or None."""
+        req = urllib.request.Request(f"http://127.0.0.1:{self.hub_port}/metrics",
+                                     headers={"Authorization": f"Bearer {self.op_token}"})
+        try:
+            with urllib.request.urlopen(req, timeout=5) as r:
+                text = r.read().decode()
+        except OSError:
+            return None
+        return sum(float(ln.rsplit(" ", 1)[1]) for ln in text.splitlines()
+                   if ln.startswith("fleetlink_topic_drops") and f'topic="{topic}"' in ln)
+
+    def hub_url(self):
+        return f"ws://127.0.0.1:{self.hub_port}/?token={self.op_token}"
+
+    # --- agent
+    def agent_yaml(self, sim):
+        lines = [
+            f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
+            "name: robot1",
+            f"token: {self.robot_token}",
+            "heartbeat_ms: 1000",
+            "local_rosbridge: { listen: 127.0.0.1:0 }",
+        ]
+        if self.outbox:
+            lines.append(f"outbox: {{ dir: {self.outbox_dir}, max_mb: 64, fsync: batch }}")
+        lines += [
+            "topics:",
+            "  /probe/reliable: { no_drop: true }",
+            "  /probe/fast: { priority: 10, policy: latest }",
+        ]
+        if sim:
+            lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
+        return "\n".join(lines) + "\n"
+
+    def start_agent(self, sim=False, same_outbox=False):
+        """A fresh outbox directory per agent, unless this is a restart of the last one (a
+        fresh agent must not replay an earlier scenario's leftovers)."""
+        if not same_outbox:
+            self.agents += 1
+            self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
+        path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
+        with open(path, "w") as f:
+            f.write(self.agent_yaml(sim))
+        self.agent = self.procs.start("agent", self.net.robot_ns, [self.bin, "agent", "--config", path])
+        m = self.procs.wait_line(self.agent, r"^  local rosbridge: (ws://[0-9.:]+/)$", 15, "agent start")
+        self.local_url = m.group(1)
+        return self.agent
+
+    def stop_agent(self):
+        if self.agent:
+            self.procs.stop(self.agent)
+            self.agent = None
+
+    # --- peers
+    def peer(self, kind, ns, log, *args):
+        return self.procs.start(kind, ns, [self.python, PEERS, kind, "--log", log, *args])
+
+    def start_sub(self, tag):
+        log = os.path.join(self.tmp, f"{tag}.sub")
+        p = self.peer("sub", self.net.hub_ns, log, "--url", self.hub_url())
+        self.procs.wait_line(p, r"^sub: subscribed", 15, "subscriber start")
+        return p, log
+
+    def start_points(self, tag):
+        log = os.path.join(self.tmp, f"{tag}.points")
+        p = self.peer("points", self.net.hub_ns, log, "--url", self.hub_url())
+        self.procs.wait_line(p, r"^points: subscribed", 15, "point cloud subscriber start")
+        return p, log
+
+    def start_pub(self, tag, fast_hz=50, reliable_hz=50, start_seq=1, count=0, duration=0):
+        log = os.path.join(self.tmp, f"{tag}.pub")
+        p = self.peer("pub", self.net.robot_ns, log, "--url", self.local_url,
+                      "--fast-hz", str(fast_hz), "--reliable-hz", str(reliable_hz),
+                      "--start-seq", str(start_seq), "--count", str(count), "--duration", str(duration))
+        self.procs.wait_line(p, r"^pub: connected", 15, "publisher start")
+        return p, log
+
+
+# --- records written by the peers
+
+@dataclass
+class Rx:
+    topic: str
+    recv: int  # ns
+    seq: int
+    sent: int  # ns
+
+    @property
+    def latency_ms(self):
+        return (self.recv - self.sent) / 1e6
+
+
+def read_lines(path):
+    try:
+        with open(path, encoding="ascii", errors="replace") as f:
+            lines = f.read().splitlines()
+    except FileNotFoundError:
+        return []
+    # The last line may be half-written while the peer runs.
+    return [ln.split() for ln in lines if ln and not ln.startswith("#")]
+
+
+def read_sub(path):
+    out = []
+    for p in read_lines(path):
+        if len(p) == 4 and p[0] in ("fast", "reliable"):
+            out.append(Rx(p[0], int(p[1]), int(p[2]), int(p[3])))
+    return out
+
+
+def read_pub(path):
+    """-> {short topic: [(seq, sent ns)]}"""
+    out = {"fast": [], "reliable": []}
+    for p in read_lines(path):
+        if len(p) == 3 and p[0].startswith("/probe/"):
+            out[p[0][len("/probe/"):]].append((int(p[1]), int(p[2])))
+    return out
+
+
+def read_points(path):
+    """-> [(recv ns, raw bytes)]"""
+    return [(int(p[1]), int(p[2])) for p in read_lines(path) if len(p) == 3 and p[0] == "points"]
+
+
+def percentile(xs, q):
+    if not xs:
+        return float("nan")
+    s = sorted(xs)
+    k = min(len(s) - 1, max(0, int(round(q / 100 * (len(s) - 1)))))
+    return s[k]
+
+
+def reliable_audit(sent_seqs, rx):
+    """Exactly once, in order, none missing: compares what was published with what the
+    subscriber got (`rx`: reliable records in arrival order)."""
+    got = [r.seq for r in rx]
+    seen, dups = set(), 0
+    for s in got:
+        if s in seen:
+            dups += 1
+        seen.add(s)
+    missing = sorted(set(sent_seqs) - seen)
+    reordered = sum(1 for a, b in zip(got, got[1:]) if b < a)
+    return {"sent": len(sent_seqs), "received": len(got), "missing": len(missing),
+            "duplicated": dups, "reordered": reordered,
+            "first_missing": missing[:5]}

@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Peers of the bad-links suite, each run as its own process inside a network namespace.
+
+  pub     roslibpy publisher on the agent's local rosbridge listener: /probe/fast and/or
+          /probe/reliable (std_msgs/msg/String, data "<seq> <send time ns>"), each on its
+          own connection (two programs on the robot, so one cannot hold up the other's
+          socket). Logs every publish as "<topic> <seq> <send ns>" to --log.
+  sub     roslibpy subscriber at the hub (token in an Authorization header) on
+          /<robot>/probe/fast and /<robot>/probe/reliable; logs every message as
+          "<topic> <recv ns> <seq> <send ns>" to --log. Reconnects by itself.
+  points  plain WebSocket subscriber at the hub on /<robot>/points with compression
+          cbor-raw (roslibpy cannot take binary frames); logs "points <recv ns> <bytes>"
+          where bytes is the raw ROS serialization's length. Reconnects by itself.
+  loris   slowloris: N TCP connections that send a request line and then one header
+          line a second, never finishing; logs "closed <seconds after open>" per
+          connection the server closes, "open <n>" at the end for the rest.
+
+Both namespaces share one clock, so receive time - send time is the one-way latency.
+Every process ends on SIGTERM (or its own --duration / --count) and flushes its log line
+by line, so a record survives a kill of the process under test.
+"""
+
+import argparse
+import json
+import selectors
+import signal
+import socket
+import sys
+import threading
+import time
+import urllib.parse
+
+import cbor2
+import roslibpy
+from roslibpy.comm.comm_autobahn import AutobahnRosBridgeClientFactory
+from websockets.sync.client import connect as ws_connect
+
+STRING = "std_msgs/msg/String"
+CONNECT_TIMEOUT = 10.0
+
+stop = threading.Event()
+
+
+def on_term(_sig, _frame):
+    stop.set()
+
+
+def open_log(path):
+    return open(path, "a", buffering=1, encoding="ascii")  # line-buffered
+
+
+class LockedLog:
+    """One log written by two publishing threads, a line at a time."""
+
+    def __init__(self, f):
+        self.f, self.lock = f, threading.Lock()
+
+    def write(self, line):
+        with self.lock:
+            self.f.write(line)
+
+
+def ros_connect(url):
+    u = urllib.parse.urlparse(url)
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers=headers)
+    ros.run(timeout=CONNECT_TIMEOUT)
+    return ros
+
+
+class FastResubscribeTopic(roslibpy.Topic):
+    """roslibpy re-sends a subscription one second after a reconnect; a hub restart
+    test wants it at once (the reconnect itself is already waited for by send_on_ready;
+    the short delay only lets the factory drop the dead protocol first)."""
+
+    def _reconnect_topic(self, _proto):
+        self.ros.call_later(0.05, lambda: self.ros.send_on_ready(self._connect_message))
+
+
+def run_pub(a):
+    log = LockedLog(open_log(a.log))
+    plan = []  # (topic name, rate)
+    if a.fast_hz > 0:
+        plan.append(("/probe/fast", a.fast_hz))
+    if a.reliable_hz > 0:
+        plan.append(("/probe/reliable", a.reliable_hz))
+    threads = []
+    for name, hz in plan:
+        ros = ros_connect(a.url)  # one connection per topic, as two robot programs
+        topic = roslibpy.Topic(ros, name, STRING)
+        topic.advertise()
+        t = threading.Thread(target=publish_loop, args=(topic, name, hz, a, log), daemon=True)
+        threads.append((t, ros))
+    print("pub: connected", flush=True)
+    for t, _ in threads:
+        t.start()
+    for t, _ in threads:
+        t.join()
+    time.sleep(0.5)  # let the reactor write what publish() queued before closing
+    for _, ros in threads:
+        ros.close()
+
+
+def publish_loop(topic, name, hz, a, log):
+    period = 1.0 / hz
+    seq = a.start_seq
+    deadline = time.monotonic() + a.duration if a.duration > 0 else None
+    next_at = time.monotonic()
+    sent = 0
+    while not stop.is_set():
+        if a.count and sent >= a.count:
+            break
+        if deadline and time.monotonic() >= deadline:
+            break
+        now_ns = time.time_ns()
+        topic.publish(roslibpy.Message({"data": f"{seq} {now_ns}"}))
+        log.write(f"{name} {seq} {now_ns}\n")
+        seq += 1
+        sent += 1
+        next_at += period
+        delay = next_at - time.monotonic()
+        if delay > 0:
+            stop.wait(delay)
+        else:
+            next_at = time.monotonic()  # fell behind (a stalled reactor): no burst to catch up
+
+
+def run_sub(a):
+    # Reconnect fast after a hub restart: first retry after 0.1 s, never more than 0.3 s.
+    AutobahnRosBridgeClientFactory.set_initial_delay(0.1)
+    AutobahnRosBridgeClientFactory.set_max_delay(0.3)
+    log = open_log(a.log)
+    ros = ros_connect(a.url)
+    lock = threading.Lock()
+
+    def handler(short):
+        def on_msg(m):
+            recv = time.time_ns()
+            seq, sent = m["data"].split()
+            with lock:
+                log.write(f"{short} {recv} {seq} {sent}\n")
+        return on_msg
+
+    for short in ("fast", "reliable"):
+        t = FastResubscribeTopic(ros, f"/{a.robot}/probe/{short}", STRING)
+        t.subscribe(handler(short))
+    ros.factory.on("ready", lambda _p: log.write(f"ready {time.time_ns()}\n"))
+    print("sub: subscribed", flush=True)
+    stop.wait()
+    ros.close()
+
+
+def run_points(a):
+    log = open_log(a.log)
+    u = urllib.parse.urlparse(a.url)
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    url = f"ws://{u.hostname}:{u.port}/"
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    sub = {"op": "subscribe", "id": "links-points", "topic": f"/{a.robot}/points",
+           "type": "sensor_msgs/msg/PointCloud2", "compression": "cbor-raw", "throttle_rate": 0}
+    announced = False
+    while not stop.is_set():
+        try:
+            with ws_connect(url, additional_headers=headers, open_timeout=CONNECT_TIMEOUT,
+                            close_timeout=1, max_size=256 << 20) as ws:
+                ws.send(json.dumps(sub))
+                if not announced:
+                    print("points: subscribed", flush=True)
+                    announced = True
+                while not stop.is_set():
+                    try:
+                        frame = ws.recv(timeout=0.2)
+                    except TimeoutError:
+                        continue
+                    recv = time.time_ns()
+                    if isinstance(frame, str):
+                        continue  # status messages
+                    m = cbor2.loads(frame)
+                    if m.get("op") == "publish":
+                        log.write(f"points {recv} {len(m['msg']['bytes'])}\n")
+        except Exception as e:  # connection lost or refused: retry, bounded by --duration/TERM
+            log.write(f"# {type(e).__name__}: {e}\n".encode("ascii", "replace").decode())
+            stop.wait(0.2)
+
+
+def run_loris(a):
+    log = open_log(a.log)
+    sel = selectors.DefaultSelector()
+    opened = {}
+    for i in range(a.conns):
+        s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        s.settimeout(5)
+        try:
+            s.connect((a.host, a.port))
+        except OSError as e:
+            log.write(f"refused {e}\n")
+            s.close()
+            continue
+        s.setblocking(False)
+        s.send(f"GET /?loris={i} HTTP/1.1\r\nHost: {a.host}\r\n".encode())
+        opened[s] = time.monotonic()
+        sel.register(s, selectors.EVENT_READ)
+    print(f"loris: {len(opened)} connections open", flush=True)
+    deadline = time.monotonic() + a.duration
+    next_trickle = time.monotonic() + 1
+    while opened and not stop.is_set() and time.monotonic() < deadline:
+        for key, _ in sel.select(timeout=0.1):
+            s = key.fileobj
+            try:
+                data = s.recv(4096)
+            except OSError:
+                data = b""
+            if not data:  # closed (or reset) by the server
+                log.write(f"closed {time.monotonic() - opened.pop(s):.3f}\n")
+                sel.unregister(s)
+                s.close()
+            # a response (408/400) before the close is fine; the close is what counts
+        if time.monotonic() >= next_trickle:
+            next_trickle += 1
+            for s in list(opened):
+                try:
+                    s.send(b"X-Trickle: 1\r\n")
+                except OSError:
+                    pass  # the read side reports the close
+    log.write(f"open {len(opened)}\n")
+    for s in opened:
+        s.close()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sp = ap.add_subparsers(dest="cmd", required=True)
+    p = sp.add_parser("pub")
+    p.add_argument("--url", required=True)
+    p.add_argument("--fast-hz", type=float, default=50)
+    p.add_argument("--reliable-hz", type=float, default=50)
+    p.add_argument("--start-seq", type=int, default=1)
+    p.add_argument("--count", type=int, default=0, help="per topic; 0 = until stopped")
+    p.add_argument("--duration", type=float, default=0, help="seconds; 0 = until stopped")
+    p.add_argument("--log", required=True)
+    for name in ("sub", "points"):
+        p = sp.add_parser(name)
+        p.add_argument("--url", required=True, help="hub URL with ?token=")
+        p.add_argument("--robot", default="robot1")
+        p.add_argument("--log", required=True)
+    p = sp.add_parser("loris")
+    p.add_argument("--host", required=True)
+    p.add_argument("--port", type=int, required=True)
+    p.add_argument("--conns", type=int, default=500)
+    p.add_argument("--duration", type=float, default=30)
+    p.add_argument("--log", required=True)
+    a = ap.parse_args()
+    signal.signal(signal.SIGTERM, on_term)
+    signal.signal(signal.SIGINT, on_term)
+    {"pub": run_pub, "sub": run_sub, "points": run_points, "loris": run_loris}[a.cmd](a)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
