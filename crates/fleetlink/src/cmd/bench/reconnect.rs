@@ -135,9 +135,13 @@ async fn bench(args: Args) -> anyhow::Result<()> {
         .await
         .context("the fleet did not connect at start")?;
     println!(
-        "fleetlink bench reconnect: {} robots connected in {:.2} s",
+        "fleetlink bench reconnect: {} robots connected in {:.2} s (all started at once; \
+         the hub refused {} handshakes with 503 + Retry-After)",
         args.robots,
-        started.elapsed().as_secs_f64()
+        started.elapsed().as_secs_f64(),
+        first
+            .limits
+            .refused(fleetlink_hub::limits::Refusal::Handshakes)
     );
 
     first.stop.cancel();
