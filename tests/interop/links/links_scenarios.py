@@ -240,7 +240,8 @@ def blackout(fleet, nominal, secs):
     if ratio is None:
         ratio_txt, ratio_ok = "- (fleetlink did not recover)", False
     else:
-        ratio_txt = f"{'> ' if lower else ''}{ratio:.0f}x" if ratio >= 10 else \
+        # One decimal where it is near the target, so 9.6 does not read as "10x".
+        ratio_txt = f"{'> ' if lower else ''}{ratio:.0f}x" if ratio >= 100 else \
             f"{'> ' if lower else ''}{ratio:.1f}x"
         # A lower bound under the target decides nothing: only informative.
         ratio_ok = None if lower and ratio < RATIO_TARGET else ratio >= RATIO_TARGET
