@@ -196,8 +196,10 @@ class Fleet:
         return sum(float(ln.rsplit(" ", 1)[1]) for ln in text.splitlines()
                    if ln.startswith("fleetlink_topic_drops") and f'topic="{topic}"' in ln)
 
-    def hub_url(self):
-        return f"ws://127.0.0.1:{self.hub_port}/?token={self.op_token}"
+    def hub_url(self, across_link=False):
+        """From the hub namespace (loopback), or across the veth from the robot's."""
+        host = self.net.hub_ip if across_link else "127.0.0.1"
+        return f"ws://{host}:{self.hub_port}/?token={self.op_token}"
 
     # --- agent
     def agent_yaml(self, sim):
@@ -254,6 +256,14 @@ class Fleet:
         self.procs.wait_line(p, r"^points: subscribed", 15, "point cloud subscriber start")
         return p, log
 
+    def start_direct(self, tag, hz=50):
+        """A rosbridge client on the robot that talks to the hub itself (no agent)."""
+        log = os.path.join(self.tmp, f"{tag}.direct")
+        p = self.peer("direct", self.net.robot_ns, log, "--url", self.hub_url(across_link=True),
+                      "--hz", str(hz))
+        self.procs.wait_line(p, r"^direct: connected", 15, "direct rosbridge client start")
+        return p, log
+
     def start_pub(self, tag, fast_hz=50, reliable_hz=50, start_seq=1, count=0, duration=0):
         log = os.path.join(self.tmp, f"{tag}.pub")
         p = self.peer("pub", self.net.robot_ns, log, "--url", self.local_url,
@@ -290,14 +300,14 @@ def read_lines(path):
 def read_sub(path):
     out = []
     for p in read_lines(path):
-        if len(p) == 4 and p[0] in ("fast", "reliable"):
+        if len(p) == 4 and p[0] in ("fast", "reliable", "direct"):
             out.append(Rx(p[0], int(p[1]), int(p[2]), int(p[3])))
     return out
 
 
 def read_pub(path):
     """-> {short topic: [(seq, sent ns)]}"""
-    out = {"fast": [], "reliable": []}
+    out = {"fast": [], "reliable": [], "direct": []}
     for p in read_lines(path):
         if len(p) == 3 and p[0].startswith("/probe/"):
             out[p[0][len("/probe/"):]].append((int(p[1]), int(p[2])))

@@ -22,6 +22,9 @@ FAST_DELIVERED = 0.9      # /probe/fast is `latest`, but 50 small messages a sec
                           # priority 10 fit any step of the ramp: most must get through
 RECOVERY_TARGET_S = 1.0
 BLACKOUT_WINDOW_S = 12.0  # observation after link-up (left early once recovered)
+DIRECT_WINDOW_S = 30.0    # the direct rosbridge client's, from link-up (left early too)
+RATIO_TARGET = 10.0       # its recovery / fleetlink's
+PROBE_PERIOD_S = 0.02     # 50 Hz: the resolution of a recovery time
 DRAIN_S = 8.0             # wait for the rest of /probe/reliable after publishing stops
 RAMP = [(100, 2.5), (50, 2.5), (20, 2.5), (10, 2.5), (6, 2.5), (4, 5.0)]
 CLOUD_HZ = 5
@@ -34,13 +37,16 @@ def fmt_ms(x):
 # --- sessions: an agent with a publisher and subscribers, stopped together
 
 class Session:
-    def __init__(self, fleet, tag, sim=False, points=False, fast_hz=50, reliable_hz=50):
+    def __init__(self, fleet, tag, sim=False, points=False, direct=False, fast_hz=50, reliable_hz=50):
         self.fleet, self.tag = fleet, tag
         fleet.start_agent(sim=sim)
         self.sub, self.sub_log = fleet.start_sub(tag)
         self.points = self.points_log = None
         if points:
             self.points, self.points_log = fleet.start_points(tag)
+        self.direct = self.direct_log = None
+        if direct:
+            self.direct, self.direct_log = fleet.start_direct(tag)
         self.pub, self.pub_log = fleet.start_pub(tag, fast_hz=fast_hz, reliable_hz=reliable_hz)
 
     def rx(self, topic=None):
@@ -53,8 +59,11 @@ class Session:
     def stop_pub(self):
         self.fleet.procs.stop(self.pub)
 
+    def stop_direct(self):
+        self.fleet.procs.stop(self.direct)
+
     def sent(self, topic):
-        return read_pub(self.pub_log)[topic]
+        return read_pub(self.direct_log if topic == "direct" else self.pub_log)[topic]
 
     def drain_reliable(self, timeout=DRAIN_S):
         """After the publisher stopped: wait until every published /probe/reliable seq
@@ -68,7 +77,7 @@ class Session:
         return reliable_audit(sorted(want), self.rx("reliable"))
 
     def close(self):
-        for p in (self.pub, self.points, self.sub):
+        for p in (self.pub, self.direct, self.points, self.sub):
             if p is not None:
                 self.fleet.procs.stop(p)
         self.fleet.stop_agent()
@@ -153,14 +162,34 @@ def recovery(fast_rx, t_up, thr_ms, t_end):
     return (post[i].recv - t_up) / 1e9
 
 
+def recovery_ratio(direct_s, fleet_s, bound_s):
+    """(ratio, is a lower bound) of the direct rosbridge client's recovery over fleetlink's;
+    (None, False) when fleetlink did not recover. A direct client that did not recover
+    within bound_s counts as bound_s (a lower bound). Both are floored at one probe period,
+    the resolution of a recovery time, so a recovery at the first message after link-up
+    does not make the ratio unbounded."""
+    if fleet_s is None:
+        return None, False
+    lower = direct_s is None
+    d = bound_s if lower else direct_s
+    return max(d, PROBE_PERIOD_S) / max(fleet_s, PROBE_PERIOD_S), lower
+
+
 def blackout(fleet, nominal, secs):
+    """One blackout, fleetlink's agent and a direct rosbridge client (roslibpy straight to
+    the hub across the same link) side by side. The agent's publisher stops once its
+    outcome is known, as before the comparison existed; the direct client keeps
+    publishing until it has been nominal for 2 s or DIRECT_WINDOW_S after link-up."""
     thr = nominal["threshold"]
-    s = Session(fleet, f"blackout{secs}")
+    s = Session(fleet, f"blackout{secs}", direct=True)
     try:
         s.wait_flow()
+        s.wait_flow("direct")
+        t_pre = now_ns()
         time.sleep(2)
         fleet.net.link(False)
         t_down = now_ns()
+        direct_pre = [r.latency_ms for r in s.rx("direct") if t_pre <= r.sent < t_down]
         time.sleep(secs)
         fleet.net.link(True)
         t_up = now_ns()
@@ -185,12 +214,47 @@ def blackout(fleet, nominal, secs):
         during = sum(1 for q, t in s.sent("reliable") if t_down <= t < t_up)
         audit = s.drain_reliable()
         post_lat = [r.latency_ms for r in fast if r.sent >= t_up + (rec or 0) * 1e9]
+        # The direct client: the rest of its window, unless it is back already.
+        direct_deadline = t_up + DIRECT_WINDOW_S * 1e9
+        while now_ns() < direct_deadline:
+            d = recovery(s.rx("direct"), t_up, thr, now_ns())
+            if d is not None and now_ns() - t_up >= (d + 2) * 1e9:
+                break
+            time.sleep(0.25)
+        s.stop_direct()
+        time.sleep(0.5)
+        sent_direct = s.sent("direct")
+        t_last_direct = max(t for _, t in sent_direct)
+        direct = s.rx("direct")
+        # Judged inside its window only: a message that got through after it does not
+        # turn "not recovered within the window" into a late recovery.
+        d_rec = recovery([r for r in direct if r.recv < direct_deadline], t_up, thr,
+                         min(t_last_direct, direct_deadline))
+        d_got = {r.seq for r in direct}
+        d_lost = sum(1 for q, t in sent_direct if t_down <= t < t_up and q not in d_got)
+        d_during = sum(1 for _, t in sent_direct if t_down <= t < t_up)
     finally:
         s.close()
     window = (t_last - t_up) / 1e9
+    ratio, lower = recovery_ratio(d_rec, rec, DIRECT_WINDOW_S)
+    if ratio is None:
+        ratio_txt, ratio_ok = "- (fleetlink did not recover)", False
+    else:
+        # One decimal where it is near the target, so 9.6 does not read as "10x".
+        ratio_txt = f"{'> ' if lower else ''}{ratio:.0f}x" if ratio >= 100 else \
+            f"{'> ' if lower else ''}{ratio:.1f}x"
+        # A lower bound under the target decides nothing: only informative.
+        ratio_ok = None if lower and ratio < RATIO_TARGET else ratio >= RATIO_TARGET
     rows = [
         (f"{secs} s: recovery of /probe/fast", "not recovered" if rec is None else f"{rec:.2f} s",
          f"<= {RECOVERY_TARGET_S:g} s", rec is not None and rec <= RECOVERY_TARGET_S),
+        (f"{secs} s: recovery of /probe/direct (roslibpy straight to the hub)",
+         f"> {DIRECT_WINDOW_S:g} s (not recovered)" if d_rec is None else f"{d_rec:.2f} s",
+         "", None),
+        (f"{secs} s: recovery ratio direct / fleetlink", ratio_txt,
+         f">= {RATIO_TARGET:g}x", ratio_ok),
+        (f"{secs} s: /probe/direct before the blackout; lost of those sent in it",
+         f"p50 {fmt_ms(percentile(direct_pre, 50))}; {d_lost}/{d_during}", "", None),
         (f"{secs} s: uplink alive after (fast rx in last 2 s)", f"{alive:.0%} (window {window:.1f} s)",
          ">= 80 %", alive >= 0.8),
         (f"{secs} s: /probe/fast after recovery", f"p50 {fmt_ms(percentile(post_lat, 50))}, "

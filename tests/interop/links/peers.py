@@ -5,9 +5,16 @@
           /probe/reliable (std_msgs/msg/String, data "<seq> <send time ns>"), each on its
           own connection (two programs on the robot, so one cannot hold up the other's
           socket). Logs every publish as "<topic> <seq> <send ns>" to --log.
+  direct  roslibpy publisher connected straight to the hub, no agent in between: what a
+          robot without fleetlink runs (a rosbridge client talking to a rosbridge
+          server). Publishes /probe/direct like /probe/fast and logs it the same way.
+          Keeps roslibpy's defaults on purpose: its factory reconnects by itself (first
+          retry after 1 s, growing) and its topics re-advertise after a reconnect; no
+          reconnect logic of ours, so the suite measures what a user of it gets.
   sub     roslibpy subscriber at the hub (token in an Authorization header) on
-          /<robot>/probe/fast and /<robot>/probe/reliable; logs every message as
-          "<topic> <recv ns> <seq> <send ns>" to --log. Reconnects by itself.
+          /<robot>/probe/fast, /<robot>/probe/reliable and /probe/direct; logs every
+          message as "<topic> <recv ns> <seq> <send ns>" to --log (topic without its
+          prefix). Reconnects by itself.
   points  plain WebSocket subscriber at the hub on /<robot>/points with compression
           cbor-raw (roslibpy cannot take binary frames); logs "points <recv ns> <bytes>"
           where bytes is the raw ROS serialization's length. Reconnects by itself.
@@ -102,6 +109,17 @@ def run_pub(a):
         ros.close()
 
 
+def run_direct(a):
+    log = LockedLog(open_log(a.log))
+    ros = ros_connect(a.url)
+    topic = roslibpy.Topic(ros, "/probe/direct", STRING)
+    topic.advertise()
+    print("direct: connected", flush=True)
+    publish_loop(topic, "/probe/direct", a.hz, a, log)
+    time.sleep(0.5)  # as run_pub: what publish() queued leaves before the close
+    ros.close()
+
+
 def publish_loop(topic, name, hz, a, log):
     period = 1.0 / hz
     seq = a.start_seq
@@ -142,8 +160,12 @@ def run_sub(a):
                 log.write(f"{short} {recv} {seq} {sent}\n")
         return on_msg
 
-    for short in ("fast", "reliable"):
-        t = FastResubscribeTopic(ros, f"/{a.robot}/probe/{short}", STRING)
+    # /probe/direct comes from a client of the hub itself (peers.py direct), so its name
+    # has no robot prefix.
+    names = {"fast": f"/{a.robot}/probe/fast", "reliable": f"/{a.robot}/probe/reliable",
+             "direct": "/probe/direct"}
+    for short, name in names.items():
+        t = FastResubscribeTopic(ros, name, STRING)
         t.subscribe(handler(short))
     ros.factory.on("ready", lambda _p: log.write(f"ready {time.time_ns()}\n"))
     print("sub: subscribed", flush=True)
@@ -239,6 +261,11 @@ def main():
     p.add_argument("--count", type=int, default=0, help="per topic; 0 = until stopped")
     p.add_argument("--duration", type=float, default=0, help="seconds; 0 = until stopped")
     p.add_argument("--log", required=True)
+    p = sp.add_parser("direct")
+    p.add_argument("--url", required=True, help="hub URL with ?token=")
+    p.add_argument("--hz", type=float, default=50)
+    p.add_argument("--log", required=True)
+    p.set_defaults(start_seq=1, count=0, duration=0)
     for name in ("sub", "points"):
         p = sp.add_parser(name)
         p.add_argument("--url", required=True, help="hub URL with ?token=")
@@ -253,7 +280,7 @@ def main():
     a = ap.parse_args()
     signal.signal(signal.SIGTERM, on_term)
     signal.signal(signal.SIGINT, on_term)
-    {"pub": run_pub, "sub": run_sub, "points": run_points, "loris": run_loris}[a.cmd](a)
+    {"pub": run_pub, "direct": run_direct, "sub": run_sub, "points": run_points, "loris": run_loris}[a.cmd](a)
     return 0
 
 

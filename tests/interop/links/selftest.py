@@ -5,7 +5,7 @@ measured outcome and not a counting mistake. run.sh runs it first (no root neede
 import sys
 
 from harness import Rx, reliable_audit
-from links_scenarios import bulk_rate, recovery
+from links_scenarios import bulk_rate, recovery, recovery_ratio
 
 S = 1_000_000_000
 MS = 1_000_000
@@ -32,6 +32,11 @@ def main():
     rx = fast_records(t_up, 0)
     rec = recovery(rx, t_up, 51, rx[-1].sent)
     assert rec is not None and rec < 0.03, f"recovery of an unbroken link: {rec}"
+
+    assert recovery_ratio(3.0, 0.2, 30) == (15.0, False)
+    assert recovery_ratio(None, 0.5, 30) == (60.0, True), "a direct client that never recovered"
+    assert recovery_ratio(1.0, 0.0, 30) == (50.0, False), "fleetlink's 0 s is floored at one period"
+    assert recovery_ratio(1.0, None, 30) == (None, False)
 
     a = reliable_audit([1, 2, 3, 4, 5], [Rx("reliable", 0, s, 0) for s in (1, 3, 2, 3, 5)])
     assert (a["missing"], a["duplicated"], a["reordered"]) == (1, 1, 1), a
