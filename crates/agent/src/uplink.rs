@@ -51,6 +51,9 @@ const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
 const CONNECT_TIMEOUT: Duration = Duration::from_secs(3);
 /// Longest wait between attempts while the robot's own link is down.
 const LINK_RETRY_MAX: Duration = Duration::from_millis(500);
+/// Wait between attempts while the robot has no route at all (interface down): such an
+/// attempt fails in the local kernel without sending anything, so it is free to repeat.
+const NO_ROUTE_RETRY: Duration = Duration::from_millis(100);
 /// Unsent bytes the kernel may hold for the link (`TCP_NOTSENT_LOWAT`): the rest waits in
 /// the scheduler, where a priority message can still overtake it.
 const NOTSENT_LOWAT: u32 = 16 * 1024;
@@ -60,8 +63,10 @@ const JOURNAL_TICK: Duration = Duration::from_secs(1);
 /// Why a connection attempt failed, which decides how soon to try again.
 #[derive(Debug)]
 enum Failure {
-    /// The robot's own network: no route, unreachable, connect timed out.
+    /// The robot's own network: unreachable, connect timed out.
     Link(String),
+    /// No route at all (the interface is down): failed locally, nothing was sent.
+    NoRoute(String),
     /// The hub refused, failed or is overloaded; `retry_after` if it said when to return.
     Hub {
         reason: String,
@@ -241,6 +246,7 @@ impl Uplink {
             })
         };
         let mut backoff = Backoff::new(self.cfg.reconnect_initial, self.cfg.reconnect_max);
+        let mut log = FailureLog::default();
         let mut attempt = 0u32;
         loop {
             attempt += 1;
@@ -260,6 +266,7 @@ impl Uplink {
                     let w = backoff.after_link_failure();
                     (reason, w)
                 }
+                Err(Failure::NoRoute(reason)) => (reason, jitter(NO_ROUTE_RETRY)),
                 Err(Failure::Hub {
                     reason,
                     retry_after,
@@ -268,11 +275,23 @@ impl Uplink {
                     (reason, w)
                 }
             };
-            tracing::warn!(
-                robot = %self.cfg.robot,
-                "hub link down: {reason}; next attempt in {} ms",
-                wait.as_millis()
-            );
+            // Attempts repeat every 100 ms while there is no route: say so once, then
+            // only when the reason changes or every 10 s, with the count in between.
+            if log.due(&reason) {
+                let again = std::mem::take(&mut log.repeats);
+                let repeats = if again > 0 {
+                    format!(" ({again} more attempts failed since the last report)")
+                } else {
+                    String::new()
+                };
+                tracing::warn!(
+                    robot = %self.cfg.robot,
+                    "hub link down: {reason}; next attempt in {} ms{repeats}",
+                    wait.as_millis()
+                );
+            } else {
+                log.repeats += 1;
+            }
             self.state.send_replace(LinkState::Disconnected { reason });
             tokio::select! {
                 _ = tokio::time::sleep(wait) => {}
@@ -324,9 +343,11 @@ impl Uplink {
             }
             Ok(Err(e)) => {
                 let reason = format!("cannot connect to {url}: {e}");
+                use std::io::ErrorKind as K;
                 return Err(match e.kind() {
                     // A reachable host answered: the hub is not there (restarting?).
-                    std::io::ErrorKind::ConnectionRefused => Failure::hub(reason),
+                    K::ConnectionRefused => Failure::hub(reason),
+                    K::NetworkUnreachable | K::NetworkDown => Failure::NoRoute(reason),
                     _ => Failure::Link(reason),
                 });
             }
@@ -673,6 +694,32 @@ fn restore(
             "durable outbox: {lost} recovered messages could not be queued (their topics are \
              no longer no_drop in this configuration)"
         );
+    }
+}
+
+/// Rate limit of the "hub link down" warning.
+#[derive(Default)]
+struct FailureLog {
+    last: Option<(std::time::Instant, String)>,
+    repeats: u32,
+}
+
+impl FailureLog {
+    const EVERY: Duration = Duration::from_secs(10);
+
+    /// Whether to log a failure with `reason` now (and remember it as logged).
+    fn due(&mut self, reason: &str) -> bool {
+        let now = std::time::Instant::now();
+        // Addresses and counters vary; the part before the first ':' names the failure.
+        let kind = reason.split(':').next().unwrap_or(reason);
+        let due = match &self.last {
+            Some((at, k)) => k != kind || now.duration_since(*at) >= Self::EVERY,
+            None => true,
+        };
+        if due {
+            self.last = Some((now, kind.to_owned()));
+        }
+        due
     }
 }
 
