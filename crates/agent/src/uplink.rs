@@ -15,9 +15,9 @@
 //! messages it carried without a `DELIVERED` go first again, in order.
 //!
 //! Reconnecting distinguishes whose fault a failure is. When the robot's own link is down
-//! (no route, network unreachable, a connect that times out) an attempt costs one SYN, so
-//! the agent retries every half second or so and is back within that of the link
-//! returning. When the hub refuses, fails or is overloaded, attempts back off
+//! an attempt is cheap — with no route at all it fails in the local kernel (retried every
+//! 50–100 ms), otherwise it costs one SYN (retried every 125–500 ms) — so the agent is back
+//! within a fraction of a second of the link returning. When the hub refuses, fails or is overloaded, attempts back off
 //! exponentially with full jitter (and never sooner than a `Retry-After` the hub sent), so
 //! a fleet does not stampede a restarted hub.
 
