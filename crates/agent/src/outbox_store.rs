@@ -309,17 +309,7 @@ impl FileJournal {
             return Ok(r);
         }
         let id = self.topics.len() as u32;
-        let mut b = vec![TOPIC];
-        b.extend_from_slice(&id.to_le_bytes());
-        for s in [
-            topic.name.as_str(),
-            &topic.schema.type_name,
-            &topic.schema.encoding,
-            &topic.schema.text,
-        ] {
-            put_str(&mut b, s);
-        }
-        self.write(&b)?;
+        self.write(&topic_body(id, &topic.name, &topic.schema))?;
         self.refs.insert(topic.name.clone(), id);
         self.topics.push(TopicEntry {
             name: topic.name.clone(),
@@ -368,17 +358,7 @@ impl FileJournal {
         h.extend_from_slice(&self.epoch.to_le_bytes());
         out.extend_from_slice(&frame(&h));
         for (id, t) in self.topics.iter().enumerate() {
-            let mut b = vec![TOPIC];
-            b.extend_from_slice(&(id as u32).to_le_bytes());
-            for s in [
-                t.name.as_str(),
-                &t.schema.type_name,
-                &t.schema.encoding,
-                &t.schema.text,
-            ] {
-                put_str(&mut b, s);
-            }
-            out.extend_from_slice(&frame(&b));
+            out.extend_from_slice(&frame(&topic_body(id as u32, &t.name, &t.schema)));
             let mut f = vec![FLOOR];
             f.extend_from_slice(&(id as u32).to_le_bytes());
             f.extend_from_slice(&t.next_seq.to_le_bytes());
@@ -473,6 +453,20 @@ impl Journal for FileJournal {
     fn tick(&mut self) {
         self.sync(true);
     }
+}
+
+fn topic_body(id: u32, name: &TopicName, schema: &Schema) -> Vec<u8> {
+    let mut b = vec![TOPIC];
+    b.extend_from_slice(&id.to_le_bytes());
+    for s in [
+        name.as_str(),
+        &schema.type_name,
+        &schema.encoding,
+        &schema.text,
+    ] {
+        put_str(&mut b, s);
+    }
+    b
 }
 
 fn message_body(l: &Live) -> Vec<u8> {

@@ -42,6 +42,29 @@ async fn subscriber(hub: &TestHub) -> Rosbridge {
     op
 }
 
+/// A hub, a blackholing proxy in front of it, an agent linked through the proxy, and an
+/// operator subscribed to the no-drop topic.
+async fn setup(cfg: impl FnOnce(&TestHub, &Blackhole) -> UplinkConfig, local: bool) -> Fleet {
+    let hub = start_hub().await;
+    let proxy = Blackhole::start(hub.addr).await;
+    let agent = start_agent_with(cfg(&hub, &proxy), local).await;
+    agent.wait_connected().await;
+    let op = subscriber(&hub).await;
+    Fleet {
+        hub,
+        proxy,
+        agent,
+        op,
+    }
+}
+
+struct Fleet {
+    hub: TestHub,
+    proxy: Blackhole,
+    agent: TestAgent,
+    op: Rosbridge,
+}
+
 fn publish(p: &mut LocalPublisher, range: std::ops::RangeInclusive<u64>) {
     for n in range {
         p.publish_json(&json!({"data": n.to_string()}));
@@ -69,11 +92,12 @@ async fn received_until(op: &mut Rosbridge, last: u64) -> Vec<u64> {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn issue9_link_dying_with_more_than_the_window_unacknowledged_neither_stalls_nor_loses() {
-    let hub = start_hub().await;
-    let proxy = Blackhole::start(hub.addr).await;
-    let agent = start_agent_with(no_drop_config(&hub, &proxy), false).await;
-    agent.wait_connected().await;
-    let mut op = subscriber(&hub).await;
+    let Fleet {
+        hub,
+        proxy,
+        agent,
+        mut op,
+    } = setup(no_drop_config, false).await;
     let mut p = LocalPublisher::new(&agent.router, TOPIC, "std_msgs/msg/String");
     publish(&mut p, 1..=10);
     assert_eq!(
@@ -111,11 +135,12 @@ async fn issue9_link_dying_with_more_than_the_window_unacknowledged_neither_stal
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn issue9_a_resent_message_the_hub_already_delivered_is_not_delivered_again() {
-    let hub = start_hub().await;
-    let proxy = Blackhole::start(hub.addr).await;
-    let agent = start_agent_with(no_drop_config(&hub, &proxy), false).await;
-    agent.wait_connected().await;
-    let mut op = subscriber(&hub).await;
+    let Fleet {
+        hub,
+        proxy,
+        agent,
+        mut op,
+    } = setup(no_drop_config, false).await;
     let mut p = LocalPublisher::new(&agent.router, TOPIC, "std_msgs/msg/String");
     publish(&mut p, 1..=5);
     assert_eq!(
@@ -193,14 +218,18 @@ async fn issue9_durable_outbox_delivers_what_was_queued_before_an_agent_restart(
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn issue9_a_full_no_drop_queue_slows_the_local_rosbridge_publisher_instead_of_dropping() {
-    let hub = start_hub().await;
-    let proxy = Blackhole::start(hub.addr).await;
-    let mut cfg = no_drop_config(&hub, &proxy);
-    // A short queue, so the outage fills it: 32 messages in flight, then 5 queued.
-    cfg.topic_qos[0].1.queue = Some(5);
-    let agent = start_agent_with(cfg, true).await;
-    agent.wait_connected().await;
-    let mut op = subscriber(&hub).await;
+    let short_queue = |hub: &TestHub, proxy: &Blackhole| {
+        let mut cfg = no_drop_config(hub, proxy);
+        // A short queue, so the outage fills it: 32 messages in flight, then 5 queued.
+        cfg.topic_qos[0].1.queue = Some(5);
+        cfg
+    };
+    let Fleet {
+        hub,
+        proxy,
+        agent,
+        mut op,
+    } = setup(short_queue, true).await;
     let mut local = Rosbridge::connect(&agent.local_url()).await;
     local
         .send(json!({"op": "advertise", "topic": TOPIC, "type": "std_msgs/msg/String"}))
