@@ -120,6 +120,9 @@ pub struct Outbox {
     pub dropped: AtomicU64,
     /// Messages handed to this client's writer.
     pub sent: AtomicU64,
+    /// Served by the scheduler (the agent's uplink); fixed at construction, so the
+    /// per-frame link calls of a plain outbox return without taking the lock.
+    scheduled: bool,
 }
 
 /// A batch taken by the writer.
@@ -167,6 +170,7 @@ impl Outbox {
     }
 
     fn with_service(client: ClientId, service: Service) -> Arc<Outbox> {
+        let scheduled = matches!(service, Service::Scheduled { .. });
         Arc::new(Outbox {
             client,
             state: Mutex::new(State {
@@ -179,6 +183,7 @@ impl Outbox {
             closed: AtomicBool::new(false),
             dropped: AtomicU64::new(0),
             sent: AtomicU64::new(0),
+            scheduled,
         })
     }
 
@@ -362,6 +367,9 @@ impl Outbox {
 
     /// The writer put a frame carrying `bytes` of payload on the link.
     pub fn on_written(&self, bytes: usize, now: Instant) {
+        if !self.scheduled {
+            return;
+        }
         if let Service::Scheduled { origin, link, .. } = &mut self.lock().service {
             let t = Nanos::since(*origin, now);
             link.on_written(bytes, t);
@@ -371,6 +379,9 @@ impl Outbox {
     /// Whether a bulk frame may be written now; if not, when it may (`None`: once an
     /// acknowledgement arrives, which wakes the writer). Always yes for a plain outbox.
     pub fn bulk_check(&self, now: Instant) -> Result<(), Option<Instant>> {
+        if !self.scheduled {
+            return Ok(());
+        }
         match &mut self.lock().service {
             Service::Scheduled { origin, link, .. } => {
                 let t = Nanos::since(*origin, now);
@@ -387,6 +398,9 @@ impl Outbox {
     /// whose links use each message's cached frames; a size that follows the measured rate
     /// for a scheduled one (see [`crate::link_control`]).
     pub fn chunk_size(&self, now: Instant) -> Option<usize> {
+        if !self.scheduled {
+            return None;
+        }
         match &self.lock().service {
             Service::Scheduled { origin, link, .. } => {
                 Some(link.chunk_size(Nanos::since(*origin, now)))
