@@ -355,12 +355,12 @@ pub async fn write_link<K>(
                     gated = Some(wake);
                     break;
                 }
-                let chunk = outbox.chunk_size(now).unwrap_or(DEFAULT_CHUNK_SIZE);
+                let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
                 let (f, n) = lane.next_frame(chunk);
                 if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
                     return;
                 }
-                outbox.on_written(n, Instant::now());
+                outbox.on_written(n);
             }
             if lane.is_done() {
                 // Done: start the next waiting message of the same topic, if any.
@@ -403,8 +403,9 @@ pub async fn write_link<K>(
             if !announce(&mut buf, &mut advertised, msg, &namer, &outbox) {
                 continue;
             }
-            let now = Instant::now();
-            let sized = outbox.chunk_size(now);
+            // Per message on the hub's fan-out path: these calls read no clock and take no
+            // lock unless the outbox is the agent's scheduled uplink.
+            let sized = outbox.chunk_size();
             if msg.payload.len() <= sized.unwrap_or(DEFAULT_CHUNK_SIZE) {
                 // One MESSAGE frame (payloads up to DEFAULT_CHUNK_SIZE are never chunked).
                 let frames = msg.link_frames();
@@ -414,9 +415,9 @@ pub async fn write_link<K>(
                 {
                     return;
                 }
-                outbox.on_written(msg.payload.len(), Instant::now());
+                outbox.on_written(msg.payload.len());
             } else {
-                outbox.hold(tid.0, true, now);
+                outbox.hold(tid.0, true, Instant::now());
                 lanes.push(Lane::start(tid, msg.clone(), sized.is_some()));
             }
         }

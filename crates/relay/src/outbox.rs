@@ -366,12 +366,12 @@ impl Outbox {
     }
 
     /// The writer put a frame carrying `bytes` of payload on the link.
-    pub fn on_written(&self, bytes: usize, now: Instant) {
+    pub fn on_written(&self, bytes: usize) {
         if !self.scheduled {
             return;
         }
         if let Service::Scheduled { origin, link, .. } = &mut self.lock().service {
-            let t = Nanos::since(*origin, now);
+            let t = Nanos::since(*origin, Instant::now());
             link.on_written(bytes, t);
         }
     }
@@ -397,13 +397,13 @@ impl Outbox {
     /// The size to cut large payloads into for this link now: `None` for a plain outbox,
     /// whose links use each message's cached frames; a size that follows the measured rate
     /// for a scheduled one (see [`crate::link_control`]).
-    pub fn chunk_size(&self, now: Instant) -> Option<usize> {
+    pub fn chunk_size(&self) -> Option<usize> {
         if !self.scheduled {
             return None;
         }
         match &self.lock().service {
             Service::Scheduled { origin, link, .. } => {
-                Some(link.chunk_size(Nanos::since(*origin, now)))
+                Some(link.chunk_size(Nanos::since(*origin, Instant::now())))
             }
             Service::RoundRobin { .. } => None,
         }
