@@ -192,21 +192,72 @@ pub struct Subscription {
     pub local: String,
 }
 
+/// Command-line values that replace the file's (`fleetlink agent --hub … --name …`). They
+/// are applied before the checks, so what is checked is the configuration the agent will
+/// run with — a `tls:` section is right for a `--hub wss://…`, and a `--hub http://x` is
+/// refused like a bad `hub:` line would be.
+#[derive(Debug, Clone, Default)]
+pub struct Overrides {
+    pub hub: Option<String>,
+    pub name: Option<String>,
+}
+
+impl Overrides {
+    fn apply(&self, cfg: &mut AgentConfig) {
+        if let Some(h) = &self.hub {
+            cfg.hub = h.clone();
+        }
+        if let Some(n) = &self.name {
+            cfg.name = n.clone();
+        }
+    }
+
+    /// The command-line flag that set `field`, if one did.
+    fn flag_for(&self, field: &str) -> Option<&'static str> {
+        match field {
+            "hub" if self.hub.is_some() => Some("--hub"),
+            "name" if self.name.is_some() => Some("--name"),
+            _ => None,
+        }
+    }
+}
+
 impl AgentConfig {
     /// Reads and checks a config file. Errors name the file, line, column and field.
     pub fn load(path: &Path) -> Result<Self, ConfigError> {
+        Self::load_with(Some(path), &Overrides::default())
+    }
+
+    /// Reads a config file (or starts from the defaults), applies command-line
+    /// `overrides`, then checks the result once. A problem with an overridden value names
+    /// its flag; others name the file's line and field.
+    pub fn load_with(path: Option<&Path>, overrides: &Overrides) -> Result<Self, ConfigError> {
+        let Some(path) = path else {
+            let mut cfg = Self::default();
+            overrides.apply(&mut cfg);
+            validate::validate(&cfg).map_err(|problem| flag_or_field(problem, overrides))?;
+            return Ok(cfg);
+        };
         let text = std::fs::read_to_string(path).map_err(|source| ConfigError::Read {
             path: path.to_owned(),
             source,
         })?;
-        Self::from_str(&text, &path.display().to_string())
+        Self::parse_with(&text, &path.display().to_string(), overrides)
     }
 
     /// Parses and checks config text; `file_name` is only used in error messages.
     pub fn from_str(text: &str, file_name: &str) -> Result<Self, ConfigError> {
-        let config: Self =
+        Self::parse_with(text, file_name, &Overrides::default())
+    }
+
+    fn parse_with(text: &str, file_name: &str, overrides: &Overrides) -> Result<Self, ConfigError> {
+        let mut config: Self =
             serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
+        overrides.apply(&mut config);
         validate::validate(&config).map_err(|problem| {
+            if overrides.flag_for(&problem.path.to_string()).is_some() {
+                return flag_or_field(problem, overrides);
+            }
             let (line, column) = LocationTree::parse(text).map_or((1, 1), |tree| {
                 tree.position_of(&problem.path, problem.at_key)
             });
@@ -307,6 +358,25 @@ pub enum ConfigError {
     /// From [`AgentConfig::validate`] on a config that did not come from a file.
     #[error("config field {field}: {message}")]
     Invalid { field: String, message: String },
+    /// A value given on the command line (`flag`, e.g. `--hub`) fails a check.
+    #[error("{flag}: {message}")]
+    Flag { flag: &'static str, message: String },
+}
+
+/// A check's problem as an error naming the command-line flag that set the field, or the
+/// field alone.
+fn flag_or_field(problem: validate::Problem, overrides: &Overrides) -> ConfigError {
+    let field = problem.path.to_string();
+    match overrides.flag_for(&field) {
+        Some(flag) => ConfigError::Flag {
+            flag,
+            message: problem.message,
+        },
+        None => ConfigError::Invalid {
+            field,
+            message: problem.message,
+        },
+    }
 }
 
 impl ConfigError {
@@ -314,6 +384,7 @@ impl ConfigError {
     pub fn field(&self) -> Option<&str> {
         match self {
             Self::Field { field, .. } | Self::Invalid { field, .. } => Some(field),
+            Self::Flag { flag, .. } => Some(flag),
             Self::Read { .. } | Self::Syntax { .. } => None,
         }
     }
@@ -322,7 +393,7 @@ impl ConfigError {
     pub fn position(&self) -> Option<&SourcePos> {
         match self {
             Self::Syntax { at, .. } | Self::Field { at, .. } => Some(at),
-            Self::Read { .. } | Self::Invalid { .. } => None,
+            Self::Read { .. } | Self::Invalid { .. } | Self::Flag { .. } => None,
         }
     }
 }

@@ -156,7 +156,7 @@ fn semantic_errors() {
     );
     assert_err(
         "hub: http://x\n",
-        "robot.yaml:1:6: hub: must be a ws:// or wss:// URL, got \"http://x\"",
+        "robot.yaml:1:6: hub: must be a ws:// or wss:// URL such as ws://hub.example:8080, got \"http://x\"",
     );
     assert_err(
         "heartbeat_ms: 0\n",
@@ -314,4 +314,45 @@ fn validate_reports_the_field_without_position() {
         e.to_string(),
         "config field name: may only contain A-Z, a-z, 0-9 and _, got ' ' in \"bad name\""
     );
+}
+
+/// Issue 14: `--hub` is applied before the checks, and is checked like `hub:`.
+#[test]
+fn command_line_overrides_are_checked_together_with_the_file() {
+    let dir = std::env::temp_dir().join(format!("fleetlink-overrides-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("robot.yaml");
+    std::fs::write(
+        &path,
+        "name: robot7\ntls: { ca: /etc/fleetlink/hub-ca.pem }\n",
+    )
+    .unwrap();
+    let hub = |h: &str| Overrides {
+        hub: Some(h.to_owned()),
+        name: None,
+    };
+    // The README's pattern: the wss:// hub on the command line, tls: in the file.
+    let cfg = AgentConfig::load_with(Some(&path), &hub("wss://hub.example:8080")).expect("valid");
+    assert_eq!(cfg.hub, "wss://hub.example:8080");
+    // Not a WebSocket URL, or no host: refused, naming the flag.
+    for bad in ["http://x", "hub.example:8080", "ws://"] {
+        let e = AgentConfig::load_with(None, &hub(bad)).expect_err(bad);
+        assert!(e.to_string().starts_with("--hub: "), "{bad}: {e}");
+        assert_eq!(e.field(), Some("--hub"));
+    }
+    // A plain ws:// hub with tls: in the file is still a mistake in the file.
+    let e = AgentConfig::load_with(Some(&path), &hub("ws://127.0.0.1:8080")).expect_err("tls");
+    assert_eq!(e.field(), Some("tls"), "{e}");
+    assert!(e.position().is_some());
+    // --name is checked the same way.
+    let e = AgentConfig::load_with(
+        None,
+        &Overrides {
+            hub: None,
+            name: Some("bad name".into()),
+        },
+    )
+    .expect_err("name");
+    assert!(e.to_string().starts_with("--name: "), "{e}");
+    let _ = std::fs::remove_dir_all(dir);
 }

@@ -31,8 +31,26 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if !(cfg.hub.starts_with("ws://") || cfg.hub.starts_with("wss://")) {
         return Err(problem(
             "hub".into(),
-            format!("must be a ws:// or wss:// URL, got {:?}", cfg.hub),
+            format!(
+                "must be a ws:// or wss:// URL such as ws://hub.example:8080, got {:?}",
+                cfg.hub
+            ),
         ));
+    }
+    match cfg.hub.parse::<tokio_tungstenite::tungstenite::http::Uri>() {
+        Ok(uri) if uri.host().is_some_and(|h| !h.is_empty()) => {}
+        Ok(_) => {
+            return Err(problem(
+                "hub".into(),
+                format!("names no host: {:?} (expected ws://HOST:PORT)", cfg.hub),
+            ));
+        }
+        Err(e) => {
+            return Err(problem(
+                "hub".into(),
+                format!("is not a valid URL ({e}): {:?}", cfg.hub),
+            ));
+        }
     }
     check_robot_name(&cfg.name).map_err(|m| problem("name".into(), m))?;
     if let Some(tls) = &cfg.tls {

@@ -4,7 +4,7 @@ use std::net::SocketAddr;
 use std::path::PathBuf;
 
 use anyhow::Context;
-use fleetlink_agent::config::{AgentConfig, check_robot_name};
+use fleetlink_agent::config::{AgentConfig, Overrides};
 use fleetlink_agent::{Agent, AgentOptions};
 use tokio_util::sync::CancellationToken;
 
@@ -29,17 +29,11 @@ pub struct Args {
 
 /// Loads the file (if any) and applies the command-line overrides.
 pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
-    let mut cfg = match &args.config {
-        Some(path) => AgentConfig::load(path)?,
-        None => AgentConfig::default(),
+    let overrides = Overrides {
+        hub: args.hub.clone(),
+        name: args.name.clone(),
     };
-    if let Some(h) = &args.hub {
-        cfg.hub = h.clone();
-    }
-    if let Some(n) = &args.name {
-        check_robot_name(n).map_err(|e| anyhow::anyhow!("--name: {e}"))?;
-        cfg.name = n.clone();
-    }
+    let mut cfg = AgentConfig::load_with(args.config.as_deref(), &overrides)?;
     if let Some(addr) = args.local_listen {
         let l = cfg.local_rosbridge.get_or_insert_with(Default::default);
         l.enabled = true;
