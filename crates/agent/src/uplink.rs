@@ -57,6 +57,10 @@ const NO_ROUTE_RETRY: Duration = Duration::from_millis(100);
 /// Unsent bytes the kernel may hold for the link (`TCP_NOTSENT_LOWAT`): the rest waits in
 /// the scheduler, where a priority message can still overtake it.
 const NOTSENT_LOWAT: u32 = 16 * 1024;
+/// Wait between attempts after a permanent failure (credentials or certificate refused):
+/// nothing changes by itself, but an operator may fix the hub side, so the robot comes
+/// back within this without a restart.
+const PERMANENT_RETRY: Duration = Duration::from_secs(60);
 /// How often the durable outbox gets a chance to sync pending writes.
 const JOURNAL_TICK: Duration = Duration::from_secs(1);
 
@@ -72,6 +76,9 @@ enum Failure {
         reason: String,
         retry_after: Option<Duration>,
     },
+    /// Will not go away by retrying: refused credentials, an untrusted certificate, a
+    /// protocol mismatch. `reason` says what to do.
+    Permanent(String),
 }
 
 impl Failure {
@@ -267,6 +274,7 @@ impl Uplink {
                     (reason, w)
                 }
                 Err(Failure::NoRoute(reason)) => (reason, jitter(NO_ROUTE_RETRY)),
+                Err(Failure::Permanent(reason)) => (reason, jitter(PERMANENT_RETRY)),
                 Err(Failure::Hub {
                     reason,
                     retry_after,
@@ -421,9 +429,10 @@ impl Uplink {
                 match m {
                     Ok(WsMessage::Binary(b)) => {
                         for f in fleetlink_proto::frame::frames(&b) {
-                            match link
-                                .on_frame(f.map_err(|e| format!("malformed frame from hub: {e}"))?)
-                            {
+                            let f = f.map_err(|e| {
+                                Failure::hub(format!("malformed frame from the hub: {e}"))
+                            })?;
+                            match link.on_frame(f) {
                                 Ok(LinkEvent::Control(Frame::Welcome {
                                     session,
                                     namespace,
@@ -433,26 +442,28 @@ impl Uplink {
                                     return Ok((session, namespace, heartbeat_ms));
                                 }
                                 Ok(LinkEvent::Control(Frame::Status { text, .. })) => {
-                                    return Err(format!("hub refused: {text}"));
+                                    return Err(self.refusal(&text));
                                 }
                                 _ => {}
                             }
                         }
                     }
-                    Ok(WsMessage::Close(c)) => {
-                        return Err(format!("hub closed the connection: {c:?}"));
+                    Ok(WsMessage::Close(_)) => {
+                        return Err(Failure::hub(
+                            "the hub closed the connection before WELCOME".to_owned(),
+                        ));
                     }
                     Ok(_) => {}
-                    Err(e) => return Err(format!("reading WELCOME: {e}")),
+                    Err(e) => return Err(Failure::Link(format!("reading WELCOME: {e}"))),
                 }
             }
-            Err("hub closed before WELCOME".to_owned())
+            Err(Failure::hub(
+                "the hub closed the connection before WELCOME".to_owned(),
+            ))
         });
         let (session, namespace, heartbeat_ms) = or_shutdown(shutdown, welcome)
             .await?
-            .map_err(|_| "no WELCOME from hub".to_owned())
-            .and_then(|r| r)
-            .map_err(Failure::hub)?;
+            .map_err(|_| Failure::hub("no WELCOME from the hub within 10 s".to_owned()))??;
         self.stats
             .connects
             .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -575,6 +586,10 @@ impl Uplink {
         writer.abort();
         let _ = writer.await;
         Ok(reason)
+    }
+
+    fn refusal(&self, text: &str) -> Failure {
+        refusal(text, &self.cfg.hub_url, &self.cfg.robot, &self.cfg.token)
     }
 
     async fn on_event(
@@ -750,8 +765,116 @@ fn handshake_failure(url: &str, e: tokio_tungstenite::tungstenite::Error) -> Fai
                 retry_after,
             }
         }
-        E::Io(io) => Failure::Link(format!("connection to {url} failed: {io}")),
+        E::Io(io) => match io.get_ref().and_then(|e| e.downcast_ref::<rustls::Error>()) {
+            Some(tls) => Failure::Permanent(tls_advice(url, tls)),
+            None => Failure::Link(format!("connection to {url} failed: {io}")),
+        },
         other => Failure::hub(format!("handshake with {url} failed: {other}")),
+    }
+}
+
+/// What the hub's refusal of `HELLO` means and what to do about it. Refused
+/// credentials, a bad name or a protocol mismatch do not go away by retrying; a rate
+/// limit or an unavailable credential store do.
+fn refusal(text: &str, url: &str, robot: &str, token: &str) -> Failure {
+    let mint = format!(
+        "create one on the hub with `fleetlink admin --data-dir <hub data dir> token robot \
+         {robot}` and set it as `token:` in this agent's configuration"
+    );
+    if let Some(secs) = text
+        .strip_prefix("too many failed logins; retry in ")
+        .and_then(|r| r.trim_end_matches(" s").parse::<u64>().ok())
+    {
+        return Failure::Hub {
+            reason: format!("the hub at {url} is rate-limiting logins from this address"),
+            retry_after: Some(Duration::from_secs(secs)),
+        };
+    }
+    match text {
+        "authentication unavailable" => Failure::hub(format!(
+            "the hub at {url} cannot check credentials right now (its credential store failed)"
+        )),
+        "authentication required" if token.is_empty() => Failure::Permanent(format!(
+            "the hub at {url} requires a robot token and this agent has none: {mint}"
+        )),
+        "authentication required" | "authentication failed" => Failure::Permanent(format!(
+            "the hub at {url} refused the token of robot {robot} ({}): it is unknown, \
+                 revoked, expired or issued for another robot; {mint}",
+            token_hint(token)
+        )),
+        other => Failure::Permanent(format!("the hub at {url} refused this agent: {other}")),
+    }
+}
+
+/// A token's first characters, enough to tell which one was used without revealing it.
+fn token_hint(token: &str) -> String {
+    let shown: String = token.chars().take(14).collect();
+    if shown.len() < token.len() {
+        format!("{shown}…")
+    } else {
+        "a short token".to_owned()
+    }
+}
+
+/// What a TLS failure with the hub means, in words that say what to do.
+fn tls_advice(url: &str, e: &rustls::Error) -> String {
+    use rustls::CertificateError as C;
+    let host = url
+        .split("://")
+        .nth(1)
+        .and_then(|r| r.split(['/', ':']).next())
+        .unwrap_or(url);
+    match e {
+        rustls::Error::InvalidCertificate(c) => match c {
+            C::UnknownIssuer => format!(
+                "the certificate of the hub at {url} is not issued by a CA this agent trusts: \
+                 give the CA that issued it — or the certificate itself, if it is self-signed — \
+                 as `tls.ca` in this agent's configuration"
+            ),
+            C::NotValidForName | C::NotValidForNameContext { .. } => format!(
+                "the certificate of the hub at {url} is not issued for the name {host}: connect \
+                 with a name the certificate lists, or reissue it with {host} as a subject \
+                 alternative name"
+            ),
+            C::Expired | C::ExpiredContext { .. } => format!(
+                "the certificate of the hub at {url} has expired: renew it on the hub (or check \
+                 this robot's clock)"
+            ),
+            C::NotValidYet | C::NotValidYetContext { .. } => format!(
+                "the certificate of the hub at {url} is not valid yet: check this robot's clock"
+            ),
+            C::Revoked => format!("the certificate of the hub at {url} has been revoked"),
+            C::Other(o) if o.to_string().contains("CaUsedAsEndEntity") => format!(
+                "the hub at {url} presents a CA certificate as its own (as a self-signed \
+                 `openssl req -x509` certificate is): the agent's verifier does not accept that; \
+                 give the hub a certificate issued by a CA and that CA as `tls.ca` (see \
+                 docs/security.md)"
+            ),
+            _ => format!(
+                "the certificate of the hub at {url} could not be verified ({}); check `tls.ca`",
+                certificate_problem(c)
+            ),
+        },
+        rustls::Error::AlertReceived(alert) => format!(
+            "the hub at {url} ended the TLS handshake ({alert:?}): if it requires client \
+             certificates, check `tls.cert` and `tls.key`"
+        ),
+        other => format!("TLS with the hub at {url} failed: {other}"),
+    }
+}
+
+/// A certificate problem in a few words (rustls' own text is a debug dump of its enum).
+fn certificate_problem(c: &rustls::CertificateError) -> &'static str {
+    use rustls::CertificateError as C;
+    match c {
+        C::BadEncoding => "it is not a valid certificate",
+        C::BadSignature => "its signature is wrong",
+        C::UnsupportedSignatureAlgorithmContext { .. }
+        | C::UnsupportedSignatureAlgorithmForPublicKeyContext { .. } => {
+            "it is signed with an algorithm this agent does not support"
+        }
+        C::InvalidPurpose | C::InvalidPurposeContext { .. } => "it is not for TLS servers",
+        _ => "see the hub's certificate chain",
     }
 }
 
@@ -841,5 +964,66 @@ mod backoff_tests {
         let distinct: std::collections::HashSet<_> = waits.iter().collect();
         assert!(distinct.len() > 100, "attempts must not be in step");
         assert!(b.after_hub_failure(None) <= Duration::from_millis(250));
+    }
+}
+
+/// Issue 14: permanent failures are told apart from transient ones and say what to do.
+#[cfg(test)]
+mod failure_tests {
+    use super::*;
+
+    const URL: &str = "wss://hub.example:8080/";
+
+    #[test]
+    fn refused_credentials_are_permanent_and_say_how_to_mint_a_token() {
+        let Failure::Permanent(m) = refusal("authentication required", URL, "robot4", "") else {
+            panic!("no token must be permanent");
+        };
+        assert!(m.contains("has none"), "{m}");
+        assert!(m.contains("fleetlink admin --data-dir"), "{m}");
+        assert!(m.contains("token robot robot4"), "{m}");
+        let Failure::Permanent(m) = refusal(
+            "authentication failed",
+            URL,
+            "robot4",
+            "flk_robot_abcdefghijklmnop",
+        ) else {
+            panic!("a refused token must be permanent");
+        };
+        assert!(
+            m.contains("flk_robot_abcd…"),
+            "the token is named, not shown: {m}"
+        );
+        assert!(!m.contains("abcdefghijklmnop"), "{m}");
+        assert!(
+            !m.contains("authentication failed: authentication failed"),
+            "{m}"
+        );
+    }
+
+    #[test]
+    fn a_rate_limit_is_transient_with_the_hubs_delay() {
+        match refusal("too many failed logins; retry in 30 s", URL, "r", "t") {
+            Failure::Hub { retry_after, .. } => {
+                assert_eq!(retry_after, Some(Duration::from_secs(30)));
+            }
+            other => panic!("expected a transient failure, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn certificate_problems_name_the_setting_to_change() {
+        use rustls::CertificateError as C;
+        let advice = |c: C| tls_advice(URL, &rustls::Error::InvalidCertificate(c));
+        assert!(advice(C::UnknownIssuer).contains("`tls.ca`"));
+        assert!(advice(C::NotValidForName).contains("hub.example"));
+        assert!(advice(C::Expired).contains("expired"));
+        let ca = advice(C::Other(rustls::OtherError(std::sync::Arc::new(
+            std::io::Error::other("CaUsedAsEndEntity"),
+        ))));
+        assert!(ca.contains("CA certificate as its own"), "{ca}");
+        for m in [advice(C::BadSignature), advice(C::UnknownIssuer)] {
+            assert!(!m.contains("Some(") && !m.contains("OtherError"), "{m}");
+        }
     }
 }

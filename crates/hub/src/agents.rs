@@ -251,13 +251,9 @@ pub async fn serve_agent<S>(
                     .await;
                 }
                 Ok(identity) => (robot, hb, identity, epoch),
-                Err(e) => {
-                    return refuse(
-                        sink,
-                        format!("authentication failed: {}", e.public_message()),
-                    )
-                    .await;
-                }
+                // The public message alone ("authentication failed", "authentication
+                // required", a rate limit): the agent turns it into advice.
+                Err(e) => return refuse(sink, e.public_message()).await,
             }
         }
         Ok(Err(reason)) => return refuse(sink, reason).await,

@@ -392,7 +392,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
             Err(e) if presented => {
                 return (
                     StatusCode::UNAUTHORIZED,
-                    format!("authentication failed: {}\n", e.public_message()),
+                    format!("{}\n", e.public_message()),
                 )
                     .into_response();
             }

@@ -181,3 +181,31 @@ async fn dead_link_is_detected_within_two_heartbeats_when_tcp_does_not_notice() 
     agent.shutdown().await;
     hub.shutdown().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue14_a_refused_token_says_how_to_fix_it_and_is_not_retried_at_once() {
+    let hub = start_hub().await;
+    let mut cfg = uplink_config(&hub, "robot4");
+    cfg.token = "flk_robot_not_a_real_token_at_all".into();
+    let agent = start_agent_with(cfg, false).await;
+    let reason = agent.wait_disconnected().await;
+    assert!(
+        reason.contains("refused the token of robot robot4"),
+        "{reason}"
+    );
+    assert!(reason.contains("token robot robot4"), "{reason}");
+    assert!(
+        !reason.contains("not_a_real_token"),
+        "the token leaked: {reason}"
+    );
+    // A permanent refusal waits the long interval instead of hammering the hub.
+    let mut rx = agent.state.clone();
+    let retried = tokio::time::timeout(
+        Duration::from_secs(2),
+        rx.wait_for(|s| matches!(s, fleetlink_agent::uplink::LinkState::Connecting { .. })),
+    )
+    .await;
+    assert!(retried.is_err(), "retried within 2 s of a refused token");
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
