@@ -260,6 +260,13 @@ impl<T: WireLen> Scheduler<T> {
         }
     }
 
+    /// Whether `topic` is a no-drop topic (its messages go through the no-drop FIFO).
+    pub fn is_no_drop(&self, topic: TopicId) -> bool {
+        self.index
+            .get(&topic)
+            .is_some_and(|&i| matches!(self.topics[i as usize].lane, Lane::NoDrop { .. }))
+    }
+
     /// Whether no-drop topic `topic` can take another message without backpressure
     /// (`true` for other topics and unknown ones).
     pub fn no_drop_room(&self, topic: TopicId) -> bool {

@@ -70,9 +70,9 @@ enum Service {
         by_topic: HashMap<u32, SlotId, IdHash>,
         known: HashSet<u32>,
         link: Box<LinkControl>,
-        /// No-drop topics: numbered, kept until confirmed, resent after a reconnect.
+        /// No-drop topics (the scheduler's no-drop lanes): numbered, kept until confirmed,
+        /// resent after a reconnect.
         reliable: Box<ReliableOut>,
-        reliable_topics: HashSet<u32>,
         /// When a no-drop refusal was last logged (they are counted always, logged at
         /// most once per [`REFUSAL_LOG_INTERVAL`]).
         refusal_logged: Option<Instant>,
@@ -163,7 +163,6 @@ impl Outbox {
                     Nanos::ZERO,
                 )),
                 reliable: Box::new(reliable),
-                reliable_topics: HashSet::new(),
                 refusal_logged: None,
             },
         )
@@ -216,18 +215,14 @@ impl Outbox {
                 by_topic,
                 known,
                 reliable,
-                reliable_topics,
                 ..
             } => {
                 if known.insert(tid) {
                     let mut q = qos_for(topic);
-                    if q.no_drop {
-                        reliable_topics.insert(tid);
-                        if reliable.is_durable() {
-                            // Waiting messages are on disk too: the journal's byte
-                            // bound limits them, not a count.
-                            q.queue = usize::MAX;
-                        }
+                    if q.no_drop && reliable.is_durable() {
+                        // Waiting messages are on disk too: the journal's byte bound
+                        // limits them, not a count.
+                        q.queue = usize::MAX;
                     }
                     if let Err(e) = sched.add_topic(QosTopic(tid), q) {
                         tracing::warn!("topic {}: invalid QoS ({e}); using defaults", topic.name);
@@ -297,14 +292,13 @@ impl Outbox {
                 origin,
                 link,
                 reliable,
-                reliable_topics,
                 refusal_logged,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
                 link.offered += msg.wire_len() as u64;
                 let mut msg = msg;
-                let no_drop = reliable_topics.contains(&s.topic);
+                let no_drop = sched.is_no_drop(QosTopic(s.topic));
                 if no_drop {
                     match reliable.admit(&msg) {
                         Ok(m) => msg = m,
@@ -438,14 +432,17 @@ impl Outbox {
             sched.on_link_reset();
             link.reset();
             let again = reliable.take_unconfirmed();
+            let mut topics = HashSet::new();
             for (alias, m) in again.into_iter().rev() {
                 if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
                     st.queued += 1;
+                    topics.insert(alias);
                 }
-                if !sched.no_drop_room(QosTopic(alias))
-                    && let Some(slot) = st.slots.values().find(|s| s.topic == alias)
-                {
-                    slot.stats.no_drop_flow.set_full();
+            }
+            // Requeued messages may fill a queue: its publishers wait for room again.
+            for s in st.slots.values() {
+                if topics.contains(&s.topic) && !sched.no_drop_room(QosTopic(s.topic)) {
+                    s.stats.no_drop_flow.set_full();
                 }
             }
         }
@@ -468,9 +465,9 @@ impl Outbox {
     /// `ADVERTISE` flags for topic `alias` on this outbox's link.
     pub fn advertise_flags(&self, alias: u32) -> u8 {
         match &self.lock().service {
-            Service::Scheduled {
-                reliable_topics, ..
-            } if reliable_topics.contains(&alias) => fleetlink_proto::frame::ADVERTISE_RELIABLE,
+            Service::Scheduled { sched, .. } if sched.is_no_drop(QosTopic(alias)) => {
+                fleetlink_proto::frame::ADVERTISE_RELIABLE
+            }
             _ => 0,
         }
     }
@@ -493,14 +490,13 @@ impl Outbox {
             sched,
             origin,
             reliable,
-            reliable_topics,
             ..
         } = &mut st.service
         else {
             return false;
         };
         let tid = msg.topic.id.0;
-        if !reliable_topics.contains(&tid) {
+        if !sched.is_no_drop(QosTopic(tid)) {
             return false;
         }
         reliable.restored(&msg.topic.name, msg.seq);
@@ -622,7 +618,6 @@ impl Outbox {
                 origin,
                 by_topic,
                 reliable,
-                reliable_topics,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
@@ -631,7 +626,7 @@ impl Outbox {
                         break;
                     };
                     st.queued = st.queued.saturating_sub(1);
-                    if reliable_topics.contains(&tid.0) {
+                    if sched.is_no_drop(tid) {
                         // Sent even when its publisher has gone: it was promised delivery.
                         reliable.sent(tid.0, m.clone());
                         let slot = by_topic.get(&tid.0).copied().unwrap_or(SlotId(0));
