@@ -626,6 +626,7 @@ impl Uplink {
                 seq,
                 stamp_ns,
                 payload,
+                ..
             } => {
                 if let Some(t) = down.get(&alias) {
                     t.publish(self.client, seq, stamp_ns, payload);

@@ -452,7 +452,8 @@ impl AgentSession {
                     seq,
                     stamp_ns,
                     payload,
-                }) if link.topic(alias).is_some_and(|t| t.reliable) => {
+                    reliable: true,
+                }) => {
                     let name = link.topic(alias).map_or("", |t| t.name.as_str());
                     let fresh = self
                         .book
@@ -467,6 +468,7 @@ impl AgentSession {
                             seq,
                             stamp_ns,
                             payload,
+                            reliable: true,
                         };
                         self.apply(ev).await;
                     }
@@ -537,6 +539,7 @@ impl AgentSession {
                 seq,
                 stamp_ns,
                 payload,
+                ..
             } => {
                 if let Some(p) = self.topics.get(&alias) {
                     // Asked per message (a cached answer) so a rule change applies at once.

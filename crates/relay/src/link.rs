@@ -60,6 +60,9 @@ pub enum LinkEvent {
         seq: u64,
         stamp_ns: u64,
         payload: Payload,
+        /// Its topic was advertised reliable (no-drop): `seq` is the sender's stream
+        /// number, to be confirmed with `DELIVERED`.
+        reliable: bool,
     },
     /// Every other frame (HELLO, SUBSCRIBE, PING, ACK, SHARE, ...), as decoded: there is
     /// nothing to resolve on the link for them.
@@ -145,6 +148,7 @@ impl LinkIn {
                     seq,
                     stamp_ns,
                     payload: Payload::new(t.encoding, payload),
+                    reliable: t.reliable,
                 }
             }
             Frame::Chunk {
@@ -156,11 +160,11 @@ impl LinkIn {
                 data,
             } => {
                 self.unacked_bytes += data.len() as u64;
-                let encoding = self
+                let t = self
                     .aliases
                     .get(&alias)
-                    .ok_or(LinkError::UnknownAlias(alias))?
-                    .encoding;
+                    .ok_or(LinkError::UnknownAlias(alias))?;
+                let (encoding, reliable) = (t.encoding, t.reliable);
                 match self
                     .reassembly
                     .push(alias, seq, stamp_ns, total_len, offset, &data)?
@@ -172,6 +176,7 @@ impl LinkIn {
                             seq: done.seq,
                             stamp_ns: done.stamp_ns,
                             payload: Payload::new(encoding, done.payload),
+                            reliable,
                         }
                     }
                     None => LinkEvent::None,

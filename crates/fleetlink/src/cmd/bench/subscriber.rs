@@ -132,6 +132,7 @@ pub async fn run(
                     seq,
                     stamp_ns,
                     payload,
+                    ..
                 }) => {
                     let Some(&p) = topics.get(&alias) else {
                         continue;
