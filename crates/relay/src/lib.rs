@@ -22,8 +22,8 @@
 //!   asked at request time and on every delivery.
 //! - [`link`]: what hub and agent share on a `fleetlink.v1` link: received frames to
 //!   events, and the writer that sends an outbox as (chunked) frames.
-//! - [`link_control`]: per-frame link accounting of a scheduled outbox and the bulk gate
-//!   that keeps large data from queueing below the scheduler.
+//! - [`link_control`]: per-frame link accounting of a scheduled outbox and the window
+//!   that keeps bulk data from queueing below the scheduler.
 //! - [`stats`]: per-topic counters and rates read by metrics and the API.
 //! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the

@@ -346,7 +346,7 @@ pub async fn write_link<K>(
             .encode(&mut buf);
             next_ping = tokio::time::Instant::now() + heartbeat;
         }
-        // 2. One chunk from every lane in progress, while the bulk gate allows.
+        // 2. One chunk from every lane in progress, while the link's window allows.
         let mut gated: Option<Option<Instant>> = None;
         let mut i = 0;
         while i < lanes.len() {
