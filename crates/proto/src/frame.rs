@@ -12,12 +12,20 @@
 //! and a decoder skips frames of unknown kind and ignores bytes after the fields it knows,
 //! so later versions can add frames and append fields. Body layouts are drawn per variant
 //! below and in `docs/protocol.md`.
+//!
+//! The service and action frames (`0x10`–`0x17`) share the enum and the codec with the
+//! topic frames, but what only they need — call outcomes, their decoder, cutting a large
+//! call body into `CALL_CHUNK`s — lives in the `calls` submodule, re-exported here.
+
+mod calls;
 
 use bytes::{BufMut, Bytes, BytesMut};
 
 use crate::error::{DecodeError, ErrorKind};
 use crate::payload::{Encoding, Schema};
 use crate::wire::{Reader, put_bytes, put_str, put_varint, varint_len};
+
+pub use calls::{CallStatus, split_call_body};
 
 /// The WebSocket subprotocol name agents ask for.
 pub const SUBPROTOCOL: &str = "fleetlink.v1";
@@ -47,6 +55,14 @@ pub enum FrameKind {
     Share = 0x0d,
     LinkReport = 0x0e,
     Delivered = 0x0f,
+    ServiceAdvertise = 0x10,
+    ServiceUnadvertise = 0x11,
+    Call = 0x12,
+    Goal = 0x13,
+    Reply = 0x14,
+    Feedback = 0x15,
+    Cancel = 0x16,
+    CallChunk = 0x17,
 }
 
 /// Severity of a `STATUS` frame.
@@ -109,6 +125,12 @@ pub const ADVERTISE_LATCHED: u8 = 0x01;
 pub const ADVERTISE_RELIABLE: u8 = 0x02;
 /// `SUBSCRIBE` flag: `pattern` is a regular expression matched against whole topic names.
 pub const SUBSCRIBE_REGEX: u8 = 0x01;
+/// `SERVICE_ADVERTISE` flag: the service is an action (goals, feedback, cancel).
+pub const SERVICE_ACTION: u8 = 0x01;
+/// `SUBSCRIBE` flag: `pattern` names services and actions, not topics: the peer answers
+/// with `SERVICE_ADVERTISE` for every matching service it offers, now and as they appear,
+/// and `SERVICE_UNADVERTISE` as they go.
+pub const SUBSCRIBE_SERVICES: u8 = 0x02;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Frame {
@@ -212,6 +234,77 @@ pub enum Frame {
     /// `alias` up to and including `seq` has been delivered (and recorded, so it is never
     /// delivered again); the sender may forget them. `alias varint | seq varint`
     Delivered { alias: u32, seq: u64 },
+    /// Either direction: binds `alias` to a service (or, with [`SERVICE_ACTION`], an
+    /// action) this side provides, for the rest of the connection. Service aliases are a
+    /// space of their own, apart from topic aliases. `schema` carries the `.srv` or
+    /// `.action` definition so the receiver can convert bodies between encodings.
+    /// `alias varint | name str | type str | schema_encoding str | schema_text str |
+    ///  flags u8`
+    ServiceAdvertise {
+        alias: u32,
+        name: String,
+        schema: Schema,
+        flags: u8,
+    },
+    /// The service bound to `alias` is no longer offered; no new call may name the alias
+    /// until it is bound again. `alias varint`
+    ServiceUnadvertise { alias: u32 },
+    /// Caller side → provider side: a request to the service bound to `alias`. `call_id`
+    /// is chosen by the sender, unique among its calls in flight on this connection.
+    /// `deadline_ms` is what is left of the caller's deadline (0 = none).
+    /// `call_id varint | alias varint | deadline_ms varint | encoding u8 | payload (rest)`
+    Call {
+        call_id: u64,
+        alias: u32,
+        deadline_ms: u64,
+        encoding: Encoding,
+        payload: Bytes,
+    },
+    /// Caller side → provider side: a goal for the action bound to `alias`; a call that
+    /// may get `FEEDBACK` before its `REPLY` and may be cancelled. `goal_id` is the UUID
+    /// ROS 2 needs in `action_msgs/GoalInfo`.
+    /// `call_id varint | alias varint | deadline_ms varint | goal_id 16 bytes |
+    ///  encoding u8 | payload (rest)`
+    Goal {
+        call_id: u64,
+        alias: u32,
+        deadline_ms: u64,
+        goal_id: [u8; 16],
+        encoding: Encoding,
+        payload: Bytes,
+    },
+    /// Provider side → caller side: the end of call (or goal) `call_id`. The payload is the
+    /// response (the action's result for a goal) when `status` is `Ok`, otherwise UTF-8
+    /// text saying what went wrong.
+    /// `call_id varint | status u8 | encoding u8 | payload (rest)`
+    Reply {
+        call_id: u64,
+        status: CallStatus,
+        encoding: Encoding,
+        payload: Bytes,
+    },
+    /// Provider side → caller side: progress of goal `call_id`.
+    /// `call_id varint | encoding u8 | payload (rest)`
+    Feedback {
+        call_id: u64,
+        encoding: Encoding,
+        payload: Bytes,
+    },
+    /// Caller side → provider side: the caller gives up on call or goal `call_id`.
+    /// `call_id varint`
+    Cancel { call_id: u64 },
+    /// A piece of a large `CALL`/`GOAL`/`REPLY`/`FEEDBACK` body (`kind` names which). The
+    /// pieces go first, in order, and the frame they belong to follows with the last piece
+    /// as its payload, so a body is complete when its frame arrives (see
+    /// [`split_call_body`]).
+    /// `call_id varint | kind u8 | total_len varint | offset varint | data (rest)`
+    CallChunk {
+        call_id: u64,
+        kind: u8,
+        total_len: u64,
+        offset: u64,
+        data: Bytes,
+    },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -234,6 +327,14 @@ impl Frame {
             Frame::Share { .. } => FrameKind::Share as u8,
             Frame::LinkReport { .. } => FrameKind::LinkReport as u8,
             Frame::Delivered { .. } => FrameKind::Delivered as u8,
+            Frame::ServiceAdvertise { .. } => FrameKind::ServiceAdvertise as u8,
+            Frame::ServiceUnadvertise { .. } => FrameKind::ServiceUnadvertise as u8,
+            Frame::Call { .. } => FrameKind::Call as u8,
+            Frame::Goal { .. } => FrameKind::Goal as u8,
+            Frame::Reply { .. } => FrameKind::Reply as u8,
+            Frame::Feedback { .. } => FrameKind::Feedback as u8,
+            Frame::Cancel { .. } => FrameKind::Cancel as u8,
+            Frame::CallChunk { .. } => FrameKind::CallChunk as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -375,6 +476,82 @@ impl Frame {
                 put_varint(b, u64::from(*alias));
                 put_varint(b, *seq);
             }
+            Frame::ServiceAdvertise {
+                alias,
+                name,
+                schema,
+                flags,
+            } => {
+                put_varint(b, u64::from(*alias));
+                put_str(b, name);
+                put_str(b, &schema.type_name);
+                put_str(b, &schema.encoding);
+                put_str(b, &schema.text);
+                b.put_u8(*flags);
+            }
+            Frame::ServiceUnadvertise { alias } => put_varint(b, u64::from(*alias)),
+            Frame::Call {
+                call_id,
+                alias,
+                deadline_ms,
+                encoding,
+                payload,
+            } => {
+                put_varint(b, *call_id);
+                put_varint(b, u64::from(*alias));
+                put_varint(b, *deadline_ms);
+                b.put_u8(*encoding as u8);
+                b.put_slice(payload);
+            }
+            Frame::Goal {
+                call_id,
+                alias,
+                deadline_ms,
+                goal_id,
+                encoding,
+                payload,
+            } => {
+                put_varint(b, *call_id);
+                put_varint(b, u64::from(*alias));
+                put_varint(b, *deadline_ms);
+                b.put_slice(goal_id);
+                b.put_u8(*encoding as u8);
+                b.put_slice(payload);
+            }
+            Frame::Reply {
+                call_id,
+                status,
+                encoding,
+                payload,
+            } => {
+                put_varint(b, *call_id);
+                b.put_u8(*status as u8);
+                b.put_u8(*encoding as u8);
+                b.put_slice(payload);
+            }
+            Frame::Feedback {
+                call_id,
+                encoding,
+                payload,
+            } => {
+                put_varint(b, *call_id);
+                b.put_u8(*encoding as u8);
+                b.put_slice(payload);
+            }
+            Frame::Cancel { call_id } => put_varint(b, *call_id),
+            Frame::CallChunk {
+                call_id,
+                kind,
+                total_len,
+                offset,
+                data,
+            } => {
+                put_varint(b, *call_id);
+                b.put_u8(*kind);
+                put_varint(b, *total_len);
+                put_varint(b, *offset);
+                b.put_slice(data);
+            }
             Frame::Unknown { .. } => {}
         }
     }
@@ -479,10 +656,7 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             let type_name = r.string("ADVERTISE.type")?;
             let schema_encoding = r.string("ADVERTISE.schema_encoding")?;
             let text = r.string("ADVERTISE.schema_text")?;
-            let enc = r.u8("ADVERTISE.encoding")?;
-            let encoding = Encoding::from_u8(enc).ok_or_else(|| {
-                DecodeError::invalid("ADVERTISE.encoding", format!("unknown encoding {enc}"))
-            })?;
+            let encoding = read_encoding(r, "ADVERTISE.encoding")?;
             let flags = r.u8("ADVERTISE.flags")?;
             Frame::Advertise {
                 alias,
@@ -522,18 +696,7 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             let total_len = r.varint("CHUNK.total_len")?;
             let offset = r.varint("CHUNK.offset")?;
             let data = r.rest();
-            if offset
-                .checked_add(data.len() as u64)
-                .is_none_or(|end| end > total_len)
-            {
-                return Err(DecodeError::invalid(
-                    "CHUNK.offset",
-                    format!(
-                        "{} bytes at offset {offset} overrun total length {total_len}",
-                        data.len()
-                    ),
-                ));
-            }
+            check_piece_fits(total_len, offset, &data, "CHUNK.offset")?;
             Frame::Chunk {
                 alias,
                 seq,
@@ -578,9 +741,41 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             alias: r.varint_u32("DELIVERED.alias")?,
             seq: r.varint("DELIVERED.seq")?,
         },
+        0x10..=0x17 => calls::decode_body(kind, r)?,
         other => Frame::Unknown { kind: other },
     };
     Ok(frame)
+}
+
+/// Reads a payload encoding byte. An unknown value is invalid rather than skipped: the
+/// receiver could not interpret the payloads it describes.
+fn read_encoding(r: &mut Reader<'_>, ctx: &'static str) -> Result<Encoding, DecodeError> {
+    let enc = r.u8(ctx)?;
+    Encoding::from_u8(enc)
+        .ok_or_else(|| DecodeError::invalid(ctx, format!("unknown encoding {enc}")))
+}
+
+/// Checks that a piece of `data` at `offset` lies inside a body of `total_len` bytes,
+/// without overflowing: a reassembler can then trust the numbers it is given.
+fn check_piece_fits(
+    total_len: u64,
+    offset: u64,
+    data: &[u8],
+    ctx: &'static str,
+) -> Result<(), DecodeError> {
+    if offset
+        .checked_add(data.len() as u64)
+        .is_none_or(|end| end > total_len)
+    {
+        return Err(DecodeError::invalid(
+            ctx,
+            format!(
+                "{} bytes at offset {offset} overrun total length {total_len}",
+                data.len()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Iterates over the frames packed in one WebSocket message. Stops at the first error.

@@ -4,11 +4,13 @@
 //!
 //! - [`wire`]: the primitives every frame is built from (LEB128 varints, length-prefixed
 //!   strings and byte runs) and a bounds-checked reader over a received buffer.
-//! - [`frame`]: the `fleetlink.v1` frames agents and the hub exchange, their encoder and
-//!   decoder (one codec, used by both sides). Byte layouts are in `docs/protocol.md`.
+//! - [`frame`]: the `fleetlink.v1` frames agents and the hub exchange (topics, and service
+//!   and action calls), their encoder and decoder (one codec, used by both sides). Byte
+//!   layouts are in `docs/protocol.md`.
 //! - [`payload`]: a message body as it arrived ([`Payload`]: encoding tag plus shared bytes)
 //!   and the schema that travels with a topic ([`Schema`]).
-//! - [`reassembly`]: turns `CHUNK` frames back into whole messages, with size limits.
+//! - [`reassembly`]: turns `CHUNK` frames back into whole messages and `CALL_CHUNK` pieces
+//!   back into whole service/action bodies, with size limits.
 //! - [`rosbridge`]: rosbridge v2 operations, parsed from JSON text or CBOR binary frames,
 //!   and builders for the frames the server sends back.
 //! - [`error`]: decode errors that tell *incomplete* input from *invalid* input.

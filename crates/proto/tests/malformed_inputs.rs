@@ -4,8 +4,8 @@
 
 use bytes::{Bytes, BytesMut};
 use fleetlink_proto::ErrorKind;
-use fleetlink_proto::frame::{self, Frame, Level};
-use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
+use fleetlink_proto::frame::{self, CallStatus, Frame, FrameKind, Level};
+use fleetlink_proto::reassembly::{CallReassembler, Reassembler, ReassemblyError};
 use fleetlink_proto::rosbridge::{Op, ParseError, Request, convert};
 use serde_json::{Value, json};
 
@@ -15,6 +15,9 @@ const HELLO: u8 = 0x01;
 const ADVERTISE: u8 = 0x03;
 const MESSAGE: u8 = 0x07;
 const CHUNK: u8 = 0x08;
+const CALL: u8 = 0x12;
+const REPLY: u8 = 0x14;
+const CALL_CHUNK: u8 = 0x17;
 const DEPTH: usize = 10_000;
 
 fn decode_err(buf: &Bytes) -> fleetlink_proto::DecodeError {
@@ -193,7 +196,7 @@ fn unknown_frame_kind_is_skipped_and_the_next_frame_still_decodes() {
 #[test]
 fn trailing_fields_from_a_newer_version_are_ignored() {
     for f in util::one_of_each_kind() {
-        if matches!(f, Frame::Message { .. } | Frame::Chunk { .. }) {
+        if rest_of_body(&f).is_some() {
             continue; // their last field is "the rest of the body"
         }
         let plain = f.to_bytes();
@@ -205,6 +208,130 @@ fn trailing_fields_from_a_newer_version_are_ignored() {
         body.extend_from_slice(b"\x05extra");
         let (back, _) = Frame::decode(&raw_frame(f.kind_byte(), &body), 0).unwrap();
         assert_eq!(back, f);
+    }
+}
+
+/// The last field of frames that end with "the rest of the body", if `f` is one.
+fn rest_of_body(f: &Frame) -> Option<&Bytes> {
+    match f {
+        Frame::Message { payload, .. }
+        | Frame::Call { payload, .. }
+        | Frame::Goal { payload, .. }
+        | Frame::Reply { payload, .. }
+        | Frame::Feedback { payload, .. } => Some(payload),
+        Frame::Chunk { data, .. } | Frame::CallChunk { data, .. } => Some(data),
+        _ => None,
+    }
+}
+
+#[test]
+fn call_frame_bodies_cut_short_are_invalid_not_incomplete() {
+    let call_frames: Vec<Frame> = util::one_of_each_kind()
+        .into_iter()
+        .filter(|f| (0x10..=0x17).contains(&f.kind_byte()))
+        .collect();
+    assert_eq!(call_frames.len(), 8, "one frame of each call kind");
+    for f in call_frames {
+        let whole = f.to_bytes();
+        let (_, body_start) = {
+            let mut r = fleetlink_proto::wire::Reader::new(&whole);
+            r.u8("kind").unwrap();
+            (r.varint("len").unwrap(), r.position())
+        };
+        let body = &whole[body_start..];
+        // Cutting the payload ("rest") only shortens it; any cut before it loses a field.
+        let fields_end = body.len() - rest_of_body(&f).map_or(0, Bytes::len);
+        for cut in 0..fields_end {
+            let e = decode_err(&raw_frame(f.kind_byte(), &body[..cut]));
+            assert_eq!(e.kind, ErrorKind::Invalid, "{f:?} cut at {cut}: {e}");
+        }
+    }
+}
+
+fn call_body(encoding: u8) -> Bytes {
+    let body = Body::default()
+        .varint(1)
+        .varint(2)
+        .varint(3000)
+        .raw(&[encoding])
+        .raw(b"{}");
+    raw_frame(CALL, &body.0)
+}
+
+#[test]
+fn unknown_encoding_byte_in_a_call_frame_is_invalid() {
+    assert!(Frame::decode(&call_body(0), 0).is_ok());
+    let e = decode_err(&call_body(9));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "CALL.encoding"));
+    assert!(e.reason.contains('9'), "{e}");
+
+    let goal = Body::default()
+        .varint(1)
+        .varint(2)
+        .varint(0)
+        .raw(&[0; 16])
+        .raw(&[200]);
+    let e = decode_err(&raw_frame(FrameKind::Goal as u8, &goal.0));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "GOAL.encoding"));
+
+    let reply = Body::default().varint(1).raw(&[0, 4]);
+    let e = decode_err(&raw_frame(REPLY, &reply.0));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "REPLY.encoding"));
+
+    let feedback = Body::default().varint(1).raw(&[4]);
+    let e = decode_err(&raw_frame(FrameKind::Feedback as u8, &feedback.0));
+    assert_eq!(
+        (e.kind, e.context),
+        (ErrorKind::Invalid, "FEEDBACK.encoding")
+    );
+}
+
+#[test]
+fn unknown_reply_status_is_read_as_failed() {
+    let body = Body::default().varint(1).raw(&[99, 0]).raw(b"later");
+    let (f, _) = Frame::decode(&raw_frame(REPLY, &body.0), 0).unwrap();
+    assert!(matches!(
+        f,
+        Frame::Reply {
+            status: CallStatus::Failed,
+            ..
+        }
+    ));
+}
+
+fn call_chunk_body(kind: u8, total_len: u64, offset: u64, data: &[u8]) -> Bytes {
+    let body = Body::default()
+        .varint(7)
+        .raw(&[kind])
+        .varint(total_len)
+        .varint(offset)
+        .raw(data);
+    raw_frame(CALL_CHUNK, &body.0)
+}
+
+#[test]
+fn call_chunk_continuing_a_frame_without_a_body_is_invalid() {
+    for kind in [0x00, 0x07, 0x08, 0x10, 0x11, 0x16, CALL_CHUNK, 0x18, 0xff] {
+        let e = decode_err(&call_chunk_body(kind, 10, 0, b"abc"));
+        assert_eq!(
+            (e.kind, e.context),
+            (ErrorKind::Invalid, "CALL_CHUNK.kind"),
+            "kind {kind:#04x}"
+        );
+    }
+    for kind in util::CALL_BODY_KINDS {
+        assert!(Frame::decode(&call_chunk_body(kind as u8, 10, 0, b"abc"), 0).is_ok());
+    }
+}
+
+#[test]
+fn call_chunk_whose_offset_plus_len_overruns_total_len_is_invalid() {
+    for (total_len, offset) in [(10, 8), (u64::MAX, u64::MAX), (0, 0)] {
+        let e = decode_err(&call_chunk_body(REPLY, total_len, offset, b"abc"));
+        assert_eq!(
+            (e.kind, e.context),
+            (ErrorKind::Invalid, "CALL_CHUNK.offset")
+        );
     }
 }
 
@@ -328,6 +455,46 @@ fn reassembly_budget_exhaustion_is_refused_and_recovers() {
     }
     assert_eq!(r.buffered(), 0);
     assert!(r.push(2, 1, 0, 600, 0, b"b").is_ok());
+}
+
+#[test]
+fn call_chunk_with_forged_total_len_of_2_pow_40_is_refused_before_allocating() {
+    let wire = call_chunk_body(REPLY, 1 << 40, 0, b"tiny");
+    let (f, _) = Frame::decode(&wire, 0).expect("the frame itself is well formed");
+    let Frame::CallChunk {
+        call_id,
+        kind,
+        total_len,
+        offset,
+        data,
+    } = f
+    else {
+        panic!("not a CALL_CHUNK");
+    };
+    let mut r = CallReassembler::new(16 << 20, 64 << 20);
+    let e = r.push(call_id, kind, total_len, offset, &data).unwrap_err();
+    assert!(matches!(e, ReassemblyError::CallTooLarge { total_len, .. } if total_len == 1 << 40));
+    assert_eq!(r.pending_bytes(), 0);
+    // The REPLY that would end the body is refused too, not taken for the whole body.
+    assert!(r.finish(call_id, kind, Bytes::from_static(b"end")).is_err());
+}
+
+#[test]
+fn call_bodies_beyond_the_budget_are_refused_and_the_budget_recovers() {
+    let mut r = CallReassembler::new(600, 1000);
+    r.push(1, REPLY, 600, 0, b"a").unwrap();
+    let e = r.push(2, REPLY, 600, 0, b"b").unwrap_err();
+    assert_eq!(e, ReassemblyError::BudgetExceeded { limit: 1000 });
+    // Many call ids cannot be used to get around it.
+    let accepted = (10..1000u64)
+        .filter(|id| r.push(*id, REPLY, 10, 0, b"c").is_ok())
+        .count();
+    assert!(accepted < 10, "{accepted} more bodies accepted");
+    for id in (1..1000).chain([1]) {
+        r.forget(id);
+    }
+    assert_eq!(r.pending_bytes(), 0);
+    assert!(r.push(2, REPLY, 600, 0, b"b").is_ok());
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! builders for hand-made (usually hostile) inputs.
 
 use bytes::{Bytes, BytesMut};
-use fleetlink_proto::frame::{Frame, Level};
+use fleetlink_proto::frame::{CallStatus, Frame, FrameKind, Level};
 use fleetlink_proto::wire::{put_bytes, put_str, put_varint};
 use fleetlink_proto::{Encoding, Schema};
 use proptest::prelude::*;
@@ -160,7 +160,6 @@ pub fn status() -> impl Strategy<Value = Frame> {
         })
 }
 
-/// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn share() -> impl Strategy<Value = Frame> {
     any::<u64>().prop_map(|bytes_per_sec| Frame::Share { bytes_per_sec })
 }
@@ -179,8 +178,132 @@ pub fn delivered() -> impl Strategy<Value = Frame> {
     (any::<u32>(), any::<u64>()).prop_map(|(alias, seq)| Frame::Delivered { alias, seq })
 }
 
+pub fn service_advertise() -> impl Strategy<Value = Frame> {
+    (
+        any::<u32>(),
+        any::<String>(),
+        any::<String>(),
+        any::<String>(),
+        any::<String>(),
+        any::<u8>(),
+    )
+        .prop_map(|(alias, name, type_name, schema_encoding, text, flags)| {
+            Frame::ServiceAdvertise {
+                alias,
+                name,
+                schema: Schema {
+                    type_name,
+                    encoding: schema_encoding,
+                    text,
+                },
+                flags,
+            }
+        })
+}
+
+pub fn service_unadvertise() -> impl Strategy<Value = Frame> {
+    any::<u32>().prop_map(|alias| Frame::ServiceUnadvertise { alias })
+}
+
+pub fn call() -> impl Strategy<Value = Frame> {
+    (
+        any::<u64>(),
+        any::<u32>(),
+        any::<u64>(),
+        encoding(),
+        payload(300),
+    )
+        .prop_map(
+            |(call_id, alias, deadline_ms, encoding, payload)| Frame::Call {
+                call_id,
+                alias,
+                deadline_ms,
+                encoding,
+                payload,
+            },
+        )
+}
+
+pub fn goal() -> impl Strategy<Value = Frame> {
+    (
+        any::<u64>(),
+        any::<u32>(),
+        any::<u64>(),
+        any::<[u8; 16]>(),
+        encoding(),
+        payload(300),
+    )
+        .prop_map(
+            |(call_id, alias, deadline_ms, goal_id, encoding, payload)| Frame::Goal {
+                call_id,
+                alias,
+                deadline_ms,
+                goal_id,
+                encoding,
+                payload,
+            },
+        )
+}
+
+pub fn call_status() -> impl Strategy<Value = CallStatus> {
+    (0u8..=7).prop_map(CallStatus::from_u8)
+}
+
+pub fn reply() -> impl Strategy<Value = Frame> {
+    (any::<u64>(), call_status(), encoding(), payload(300)).prop_map(
+        |(call_id, status, encoding, payload)| Frame::Reply {
+            call_id,
+            status,
+            encoding,
+            payload,
+        },
+    )
+}
+
+pub fn feedback() -> impl Strategy<Value = Frame> {
+    (any::<u64>(), encoding(), payload(300)).prop_map(|(call_id, encoding, payload)| {
+        Frame::Feedback {
+            call_id,
+            encoding,
+            payload,
+        }
+    })
+}
+
+pub fn cancel() -> impl Strategy<Value = Frame> {
+    any::<u64>().prop_map(|call_id| Frame::Cancel { call_id })
+}
+
+/// The kinds whose bodies may be cut into `CALL_CHUNK`s.
+pub const CALL_BODY_KINDS: [FrameKind; 4] = [
+    FrameKind::Call,
+    FrameKind::Goal,
+    FrameKind::Reply,
+    FrameKind::Feedback,
+];
+
+/// A `CALL_CHUNK` whose fields are consistent: a body kind, and
+/// `offset + data.len() <= total_len`.
+pub fn call_chunk() -> impl Strategy<Value = Frame> {
+    (
+        any::<u64>(),
+        prop::sample::select(CALL_BODY_KINDS.to_vec()),
+        payload(300),
+        0..u64::MAX / 2,
+        0..u64::MAX / 2,
+    )
+        .prop_map(|(call_id, kind, data, offset, spare)| Frame::CallChunk {
+            call_id,
+            kind: kind as u8,
+            total_len: offset + data.len() as u64 + spare,
+            offset,
+            data,
+        })
+}
+
+/// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x10u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x18u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -200,6 +323,14 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         share(),
         link_report(),
         delivered(),
+        service_advertise(),
+        service_unadvertise(),
+        call(),
+        goal(),
+        reply(),
+        feedback(),
+        cancel(),
+        call_chunk(),
         unknown(),
     ]
 }
@@ -282,6 +413,51 @@ pub fn one_of_each_kind() -> Vec<Frame> {
         Frame::Delivered {
             alias: 300,
             seq: 1 << 40,
+        },
+        Frame::ServiceAdvertise {
+            alias: 2,
+            name: "/robot-7/set_mode".into(),
+            schema: Schema {
+                type_name: "fleet_msgs/srv/SetMode".into(),
+                encoding: "ros2srv".into(),
+                text: "string mode\n---\nbool ok\n".into(),
+            },
+            flags: fleetlink_proto::frame::SERVICE_ACTION,
+        },
+        Frame::ServiceUnadvertise { alias: 2 },
+        Frame::Call {
+            call_id: 1 << 35,
+            alias: 2,
+            deadline_ms: 5000,
+            encoding: Encoding::Json,
+            payload: Bytes::from_static(br#"{"mode":"dock"}"#),
+        },
+        Frame::Goal {
+            call_id: 17,
+            alias: 300,
+            deadline_ms: 0,
+            goal_id: *b"0123456789abcdef",
+            encoding: Encoding::Cdr,
+            payload: Bytes::from(vec![0, 1, 0, 0, 42, 0, 0, 0]),
+        },
+        Frame::Reply {
+            call_id: 17,
+            status: CallStatus::Aborted,
+            encoding: Encoding::Json,
+            payload: Bytes::from_static(b"link to robot-7 lost"),
+        },
+        Frame::Feedback {
+            call_id: 17,
+            encoding: Encoding::Cbor,
+            payload: Bytes::from(vec![0xa0; 150]),
+        },
+        Frame::Cancel { call_id: 17 },
+        Frame::CallChunk {
+            call_id: 17,
+            kind: FrameKind::Reply as u8,
+            total_len: 40_000,
+            offset: 16_384,
+            data: Bytes::from(vec![9; 150]),
         },
     ]
 }
