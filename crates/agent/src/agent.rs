@@ -149,6 +149,7 @@ impl Agent {
 
     /// Runs until `shutdown` is cancelled.
     pub async fn run(self, shutdown: CancellationToken) {
+        let deadlines = tokio::spawn(self.router.calls.clone().run_deadlines(shutdown.clone()));
         let local = self.local.map(|l| {
             let cfg = Arc::new(SessionConfig {
                 node_name: "/fleetlink_agent".into(),
@@ -173,5 +174,6 @@ impl Agent {
         for t in [local, sim].into_iter().flatten() {
             let _ = t.await;
         }
+        let _ = deadlines.await;
     }
 }

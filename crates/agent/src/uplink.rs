@@ -25,10 +25,13 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::Duration;
 
-use fleetlink_proto::frame::{Frame, SUBSCRIBE_REGEX, VERSION};
+use fleetlink_proto::frame::{CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, VERSION};
 use fleetlink_proto::{Encoding, SUBPROTOCOL};
 use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
+use fleetlink_relay::calls::{ChannelPeer, PeerMsg, ServiceChange};
+use fleetlink_relay::gate::AllowAll;
 use fleetlink_relay::link::{Control, LinkEvent, LinkIn, LinkNamer, write_link};
+use fleetlink_relay::link_calls::{LinkCalls, LinkNames, is_call_frame};
 use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::reliable::ReliableOut;
@@ -161,11 +164,35 @@ pub struct UplinkStats {
     pub share_bps: std::sync::atomic::AtomicU64,
 }
 
+/// Service names between the robot and the hub: the robot's own services go up under its
+/// namespace (or their remap); fleet services come down under their hub names, or
+/// relative to the robot when they lie in its namespace.
+struct AgentNames {
+    names: NameMap,
+    namespace: String,
+}
+
+impl LinkNames for AgentNames {
+    fn remote_name(&self, local: &TopicName) -> Option<String> {
+        Some(self.names.to_hub(local, &self.namespace).to_string())
+    }
+    fn local_name(&self, remote: &str) -> Option<TopicName> {
+        let hub = TopicName::parse(remote).ok()?;
+        Some(hub.strip_namespace(&self.namespace).unwrap_or(hub))
+    }
+}
+
+/// Id of the `SUBSCRIBE` that asks the hub for the fleet services this robot may call.
+const SERVICES_SUBSCRIPTION: u32 = 0x7fff_0000;
+
 pub struct Uplink {
     cfg: UplinkConfig,
     router: Arc<Router>,
     client: ClientId,
     outbox: Arc<Outbox>,
+    /// What the local call table tells the uplink: calls to fleet services, their
+    /// answers, and local services coming and going. Held by one connection at a time.
+    calls_rx: tokio::sync::Mutex<mpsc::UnboundedReceiver<PeerMsg>>,
     state: watch::Sender<LinkState>,
     pub stats: Arc<UplinkStats>,
 }
@@ -225,12 +252,20 @@ impl Uplink {
             .subscribe(client, Target::Pattern(all), opts)
             .expect("the uplink client was just connected");
         restore(&router, client, &outbox, recovered);
+        // Every local service is offered to the fleet, as every local topic is.
+        let (peer, calls_rx) = ChannelPeer::new();
+        router.calls.attach(client, peer);
+        router.calls.watch(
+            client,
+            Router::compile_pattern(".*").expect("a constant pattern compiles"),
+        );
         let (state, _) = watch::channel(LinkState::Connecting { attempt: 0 });
         Ok(Uplink {
             cfg,
             router,
             client,
             outbox,
+            calls_rx: tokio::sync::Mutex::new(calls_rx),
             state,
             stats: Arc::default(),
         })
@@ -498,6 +533,11 @@ impl Uplink {
         for (i, (hub, _)) in self.cfg.names.subscribe.iter().enumerate() {
             subs.push((i as u32 + 2, hub.to_string(), 0));
         }
+        subs.push((
+            SERVICES_SUBSCRIPTION,
+            ".*".to_owned(),
+            SUBSCRIBE_REGEX | SUBSCRIBE_SERVICES,
+        ));
         for (id, pattern, flags) in subs {
             let f = Frame::Subscribe {
                 id,
@@ -522,6 +562,39 @@ impl Uplink {
             session,
             namespace: namespace.clone(),
         });
+
+        // Calls: this connection takes the local table's queue; what queued while the
+        // link was down is stale (its calls were to services that are gone).
+        let mut calls_rx = self.calls_rx.lock().await;
+        while let Ok(m) = calls_rx.try_recv() {
+            if let PeerMsg::Call(req) = m {
+                let text = format!("{}: the link to the hub was down", req.service.name);
+                self.router
+                    .calls
+                    .respond(me, req.id, CallStatus::NoProvider, None, text);
+            }
+        }
+        let mut calls = LinkCalls::new(
+            self.router.calls.clone(),
+            me,
+            Box::new(AgentNames {
+                names: self.cfg.names.clone(),
+                namespace: namespace.clone(),
+            }),
+        );
+        let mut out = Vec::new();
+        for s in self.router.calls.services() {
+            if s.provider != me {
+                calls.on_peer(
+                    PeerMsg::Changed(ServiceChange::Added(s)),
+                    &mut AllowAll,
+                    &mut out,
+                );
+            }
+        }
+        for c in out.drain(..) {
+            let _ = ctrl_tx.send(c).await;
+        }
 
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
         let dead_after = heartbeat * 2;
@@ -551,6 +624,15 @@ impl Uplink {
         let reason = loop {
             let next = tokio::select! {
                 n = tokio::time::timeout(dead_after, stream.next()) => n,
+                m = calls_rx.recv() => {
+                    if let Some(m) = m {
+                        calls.on_peer(m, &mut AllowAll, &mut out);
+                        for c in out.drain(..) {
+                            let _ = ctrl_tx.send(c).await;
+                        }
+                    }
+                    continue;
+                }
                 _ = shutdown.cancelled() => break "the agent is shutting down".to_owned(),
             };
             let m = match next {
@@ -573,12 +655,23 @@ impl Uplink {
                         break;
                     }
                 };
+                if is_call_frame(&f) {
+                    calls.on_frame(f, &mut AllowAll, &mut out);
+                    for c in out.drain(..) {
+                        let _ = ctrl_tx.send(c).await;
+                    }
+                    continue;
+                }
                 match link.on_frame(f) {
                     Ok(ev) => self.on_event(ev, &namespace, &mut down, &ctrl_tx).await,
                     Err(e) => tracing::warn!("from hub: {e}"),
                 }
             }
         };
+        // The hub's services are not reachable any more, and the hub's calls into this
+        // robot will never be answered over this connection.
+        calls.close();
+        drop(calls_rx);
         reporter.abort();
         let _ = reporter.await;
         let _ = ctrl_tx.try_send(Control::Close);

@@ -196,10 +196,19 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
 }
 
 pub async fn start_agent_with(uplink: UplinkConfig, local: bool) -> TestAgent {
+    start_agent_sim(uplink, local, None).await
+}
+
+/// An agent that also runs a simulated robot (`sim`).
+pub async fn start_agent_sim(
+    uplink: UplinkConfig,
+    local: bool,
+    sim: Option<fleetlink_agent::config::SimConfig>,
+) -> TestAgent {
     let opts = AgentOptions {
         uplink,
         local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
-        sim: None,
+        sim,
     };
     let agent = Agent::bind(
         opts,

@@ -13,8 +13,10 @@ use std::time::{Duration, SystemTime};
 
 use bytes::Bytes;
 use fleetlink_proto::frame::{Frame, Level, VERSION};
+use fleetlink_relay::calls::{ChannelPeer, PeerMsg};
 use fleetlink_relay::gate::{Gate, Op};
 use fleetlink_relay::link::{Control, LinkEvent, LinkIn, write_link};
+use fleetlink_relay::link_calls::{LinkCalls, SameNames};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
@@ -269,6 +271,8 @@ pub async fn serve_agent<S>(
         },
         addr,
     );
+    let (peer, mut peer_rx) = ChannelPeer::new();
+    ctx.router.calls.attach(client, peer);
     let session = ctx.registry.next_session.fetch_add(1, Relaxed) + 1;
     let live = Arc::new(LiveRobot {
         name: robot.clone(),
@@ -339,12 +343,19 @@ pub async fn serve_agent<S>(
         gate: Box::new(gate),
         book,
         confirm: HashMap::new(),
+        calls: LinkCalls::new(ctx.router.calls.clone(), client, Box::new(SameNames)),
     };
     let dead_after = heartbeat * 2;
     loop {
         let next = tokio::select! {
             _ = ctx.shutdown.cancelled() => break,
             n = tokio::time::timeout(dead_after, stream.next()) => n,
+            m = peer_rx.recv() => {
+                if let Some(m) = m {
+                    st.on_peer(m).await;
+                }
+                continue;
+            }
         };
         let msg = match next {
             Err(_) => {
@@ -428,6 +439,8 @@ struct AgentSession {
     book: Arc<Mutex<RobotBook>>,
     /// No-drop aliases to confirm after this batch, with the highest sequence seen.
     confirm: HashMap<u32, u64>,
+    /// Services and calls across this link.
+    calls: LinkCalls,
 }
 
 impl AgentSession {
@@ -443,9 +456,28 @@ impl AgentSession {
             .await;
     }
 
+    async fn send_all(&self, out: Vec<Control>) {
+        for c in out {
+            let _ = self.ctrl.send(c).await;
+        }
+    }
+
+    /// Something the hub's call table queued for this robot's link.
+    async fn on_peer(&mut self, m: PeerMsg) {
+        let mut out = Vec::new();
+        self.calls.on_peer(m, &mut *self.gate, &mut out);
+        self.send_all(out).await;
+    }
+
     async fn on_binary(&mut self, link: &mut LinkIn, data: &Bytes) -> Result<(), String> {
         for f in fleetlink_proto::frame::frames(data) {
             let f = f.map_err(|e| format!("malformed frame: {e}"))?;
+            if fleetlink_relay::link_calls::is_call_frame(&f) {
+                let mut out = Vec::new();
+                self.calls.on_frame(f, &mut *self.gate, &mut out);
+                self.send_all(out).await;
+                continue;
+            }
             match link.on_frame(f) {
                 Ok(LinkEvent::Message {
                     alias,
@@ -557,6 +589,24 @@ impl AgentSession {
                             }
                         }
                         self.gate.done(p.name.as_str(), Op::Publish, size);
+                    }
+                }
+            }
+            LinkEvent::Control(Frame::Subscribe { pattern, flags, .. })
+                if flags & fleetlink_proto::frame::SUBSCRIBE_SERVICES != 0 =>
+            {
+                // The robot wants to hear of fleet services it may call (filtered by the
+                // gate when each is offered).
+                let source = if flags & fleetlink_proto::frame::SUBSCRIBE_REGEX != 0 {
+                    pattern
+                } else {
+                    regex::escape(&pattern)
+                };
+                match Router::compile_pattern(&source) {
+                    Ok(re) => self.ctx.router.calls.watch(self.client, re),
+                    Err(e) => {
+                        self.status(Level::Error, 6, format!("subscribe services: {e}"))
+                            .await
                     }
                 }
             }

@@ -29,6 +29,9 @@ fn operation(op: Op) -> Operation {
         Op::Publish => Operation::Publish,
         Op::Subscribe => Operation::Subscribe,
         Op::CallService => Operation::CallService,
+        Op::AdvertiseService => Operation::AdvertiseService,
+        Op::SendActionGoal | Op::CancelActionGoal => Operation::SendActionGoal,
+        Op::AdvertiseAction => Operation::AdvertiseAction,
     }
 }
 
@@ -37,6 +40,10 @@ fn audit_action(op: Op) -> AuditAction {
         Op::Publish => AuditAction::Publish,
         Op::Subscribe => AuditAction::Subscribe,
         Op::CallService => AuditAction::CallService,
+        Op::AdvertiseService => AuditAction::AdvertiseService,
+        Op::SendActionGoal => AuditAction::SendActionGoal,
+        Op::CancelActionGoal => AuditAction::CancelActionGoal,
+        Op::AdvertiseAction => AuditAction::AdvertiseAction,
     }
 }
 
@@ -120,8 +127,9 @@ impl Gate for HubGate {
     fn done(&mut self, name: &str, op: Op, size: usize) {
         let audited = match op {
             Op::Publish => self.robot_input(name),
-            Op::CallService => true,
-            Op::Subscribe => false,
+            Op::AdvertiseService | Op::AdvertiseAction => true,
+            // Calls and goals are recorded when they end, with their outcome.
+            _ => false,
         };
         if audited {
             let rec = AuditRecord::operation(
@@ -134,6 +142,19 @@ impl Gate for HubGate {
             );
             self.security.audit.record(rec);
         }
+    }
+
+    fn finished(&mut self, name: &str, op: Op, size: usize, outcome: &str) {
+        let rec = AuditRecord::operation(
+            self.identity(),
+            audit_action(op),
+            name,
+            Some(size as u64),
+            true,
+            UnixTime::now(),
+        )
+        .with_detail(outcome.chars().take(500).collect::<String>());
+        self.security.audit.record(rec);
     }
 
     fn fork(&self) -> Box<dyn Gate> {

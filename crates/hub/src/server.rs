@@ -233,6 +233,8 @@ impl Hub {
     ) -> Result<(), HubError> {
         let state = self.state.clone();
         let token = state.shutdown.clone();
+        // Call deadlines: one timer task for the hub's call table.
+        tokio::spawn(state.router.calls.clone().run_deadlines(token.clone()));
         let api = crate::api::routes()
             .route("/metrics", get(crate::metrics::handler))
             .route_layer(axum::middleware::from_fn_with_state(

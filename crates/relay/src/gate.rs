@@ -18,6 +18,14 @@ pub enum Op {
     Subscribe,
     /// Call a service (the hub's own `/rosapi` services included).
     CallService,
+    /// Provide a service (`advertise_service`, a robot's services on its link).
+    AdvertiseService,
+    /// Send a goal to an action.
+    SendActionGoal,
+    /// Cancel one's own goal (allowed where sending the goal is).
+    CancelActionGoal,
+    /// Provide an action.
+    AdvertiseAction,
 }
 
 pub trait Gate: Send + Sync + 'static {
@@ -27,6 +35,10 @@ pub trait Gate: Send + Sync + 'static {
     /// `op` on `name` was done (`size` payload bytes); a gate records the operations that
     /// act on robots.
     fn done(&mut self, _name: &str, _op: Op, _size: usize) {}
+
+    /// A call or goal (`op`) to `name` with a `size`-byte request ended with `outcome`
+    /// (`ok`, `timeout: ...`); a gate records calls that act on robots.
+    fn finished(&mut self, _name: &str, _op: Op, _size: usize, _outcome: &str) {}
 
     /// A second gate for the same identity (the session's writer task gets one).
     fn fork(&self) -> Box<dyn Gate>;

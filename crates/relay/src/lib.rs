@@ -18,6 +18,10 @@
 //! - [`reliable`]: no-drop topics on a link, the sender's half: stream numbering, messages
 //!   kept until confirmed and resent after a reconnect, the durable [`reliable::Journal`]
 //!   seam.
+//! - [`calls`]: services and actions: the provider table and every call in flight, with
+//!   deadlines, cancel and bounds ([`calls::Calls`]).
+//! - [`link_calls`]: calls across a `fleetlink.v1` link: service advertisements and call
+//!   frames to and from the table, on both the hub's and the agent's side.
 //! - [`gate`]: the authorization seam ([`gate::Gate`]): what a connection may do,
 //!   asked at request time and on every delivery.
 //! - [`link`]: what hub and agent share on a `fleetlink.v1` link: received frames to
@@ -29,8 +33,10 @@
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
 //!   `/rosapi` services the hub answers itself.
 
+pub mod calls;
 pub mod gate;
 pub mod link;
+pub mod link_calls;
 pub mod link_control;
 pub mod message;
 pub mod names;

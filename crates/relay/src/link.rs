@@ -195,6 +195,9 @@ pub type LinkNamer = Arc<dyn Fn(&TopicMeta) -> Option<String> + Send + Sync>;
 #[derive(Debug)]
 pub enum Control {
     Frame(Frame),
+    /// Frames of one large call body (its `CALL_CHUNK`s, then the frame they belong to):
+    /// sent one per writer round, between other traffic, in order.
+    Sequence(VecDeque<Frame>),
     /// Close the link (after flushing what is queued).
     Close,
 }
@@ -311,6 +314,8 @@ pub async fn write_link<K>(
         }
     }
     let mut lanes: Vec<Lane> = Vec::new();
+    // Large call bodies in progress, a frame of each per round.
+    let mut sequences: VecDeque<VecDeque<Frame>> = VecDeque::new();
     // Heartbeat ids live far from the link estimator's probe ids (which count from 0).
     let mut ping_id = HEARTBEAT_ID_BASE;
     let mut next_ping = tokio::time::Instant::now() + heartbeat;
@@ -321,6 +326,7 @@ pub async fn write_link<K>(
         loop {
             match control.try_recv() {
                 Ok(Control::Frame(f)) => f.encode(&mut buf),
+                Ok(Control::Sequence(s)) => sequences.push_back(s),
                 Ok(Control::Close) | Err(mpsc::error::TryRecvError::Disconnected) => {
                     let _ = flush_buf(&mut sink, &mut buf).await;
                     let _ = sink.close().await;
@@ -346,6 +352,13 @@ pub async fn write_link<K>(
             .encode(&mut buf);
             next_ping = tokio::time::Instant::now() + heartbeat;
         }
+        // Then a frame of every large call body in progress.
+        for seq in sequences.iter_mut() {
+            if let Some(f) = seq.pop_front() {
+                f.encode(&mut buf);
+            }
+        }
+        sequences.retain(|s| !s.is_empty());
         // 2. One chunk from every lane in progress, while the link's window allows.
         let mut gated: Option<Option<Instant>> = None;
         let mut i = 0;
@@ -429,7 +442,10 @@ pub async fn write_link<K>(
         if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
             return;
         }
-        if !taken.items.is_empty() || (!lanes.is_empty() && gated.is_none()) {
+        if !taken.items.is_empty()
+            || !sequences.is_empty()
+            || (!lanes.is_empty() && gated.is_none())
+        {
             continue;
         }
         if outbox.is_closed() {
@@ -443,6 +459,7 @@ pub async fn write_link<K>(
         tokio::select! {
             c = control.recv() => match c {
                 Some(Control::Frame(f)) => f.encode(&mut buf),
+                Some(Control::Sequence(s)) => sequences.push_back(s),
                 Some(Control::Close) | None => {
                     let _ = flush_buf(&mut sink, &mut buf).await;
                     let _ = sink.close().await;

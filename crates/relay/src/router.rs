@@ -194,6 +194,8 @@ pub struct Router {
     /// Queue length for subscriptions that do not ask for one.
     pub default_queue: usize,
     pub started: Instant,
+    /// Services and actions, and the calls in flight between this router's clients.
+    pub calls: Arc<crate::calls::Calls>,
 }
 
 /// A read-only view of one topic for listings.
@@ -214,7 +216,15 @@ impl Default for Router {
 
 impl Router {
     pub fn new(transcoder: Arc<dyn Transcoder>) -> Router {
+        Router::with_call_limits(transcoder, crate::calls::CallLimits::default())
+    }
+
+    pub fn with_call_limits(
+        transcoder: Arc<dyn Transcoder>,
+        limits: crate::calls::CallLimits,
+    ) -> Router {
         Router {
+            calls: Arc::new(crate::calls::Calls::new(limits)),
             state: Mutex::new(State::default()),
             transcoder,
             next_client: AtomicU64::new(1),
@@ -264,8 +274,10 @@ impl Router {
         (id, outbox)
     }
 
-    /// Removes a participant with everything it advertised and subscribed.
+    /// Removes a participant with everything it advertised and subscribed, its services
+    /// and its calls.
     pub fn disconnect(&self, id: ClientId) {
+        self.calls.detach(id);
         let mut st = self.lock();
         let Some(entry) = st.clients.remove(&id) else {
             return;

@@ -36,6 +36,14 @@ admin() { timeout 30 "$bin" admin --data-dir "$tmp/hub-data" "$@"; }
 robot_token="$(admin token robot "$robot")"
 op_token="$(admin token operator "$op_name" --group admin)"
 viewer_token="$(admin token operator "$viewer_name")"
+# Robots may call only their own namespace by default; this fleet lets them call the
+# cloud's services (what a deployment writes in its rules file).
+admin rules import - >/dev/null <<'RULES'
+rules:
+  - subject: any_robot
+    names: "/cloud/.*"
+    ops: [call_service, send_action_goal]
+RULES
 
 # --- hub (log files exist before the background start, so the reader never races them)
 : >"$tmp/hub.log"; : >"$tmp/agent.log"

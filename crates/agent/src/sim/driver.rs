@@ -6,10 +6,13 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::calls::{CallStatus, ChannelPeer, PeerMsg};
 use fleetlink_relay::{ClientKind, Router, TopicName};
+use serde_json::Value;
 use tokio_util::sync::CancellationToken;
 
 use super::Sim;
+use super::services::{Answer, FEEDBACK_EVERY, SimCalls, offered};
 use crate::config::SimConfig;
 
 pub async fn drive(
@@ -37,13 +40,67 @@ pub async fn drive(
             }
         }
     }
+    // Services and the navigation action, on the robot's local call table.
+    let (peer, mut peer_rx) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    for (name, schema, action) in offered() {
+        let name = TopicName::parse(name).expect("a constant name");
+        router.calls.advertise(client, name, schema, action);
+    }
+    let mut state = SimCalls::default();
+    let reply = |id, status, values: Option<Value>, text: String| {
+        let payload = values.map(|v| Payload::json(v.to_string().into_bytes()));
+        router.calls.respond(client, id, status, payload, text);
+    };
     let start = Instant::now();
+    let mut next_feedback = start;
     let mut due = Vec::new();
     loop {
-        let wait = sim.next_due().saturating_sub(start.elapsed());
+        let mut wait = sim.next_due().saturating_sub(start.elapsed());
+        if state.goal.is_some() {
+            wait = wait.min(next_feedback.saturating_duration_since(Instant::now()));
+        }
         tokio::select! {
             _ = tokio::time::sleep(wait.max(Duration::from_micros(100))) => {}
+            m = peer_rx.recv() => {
+                let now = start.elapsed();
+                match m {
+                    Some(PeerMsg::Call(req)) => {
+                        let local = req.service.name.to_string();
+                        let mut replaced = None;
+                        let answer = state.on_call(&mut sim, now, &local, &req, &mut replaced);
+                        if let Some((id, values)) = replaced {
+                            reply(id, CallStatus::Cancelled, Some(values),
+                                  "replaced by a newer goal".into());
+                        }
+                        match answer {
+                            Answer::Reply { status, values, text } => reply(req.id, status, values, text),
+                            Answer::Accepted => next_feedback = Instant::now(),
+                        }
+                    }
+                    Some(PeerMsg::Cancel(id)) => {
+                        if let Some(values) = state.on_cancel(&mut sim, now, id) {
+                            reply(id, CallStatus::Cancelled, Some(values), "cancelled".into());
+                        }
+                    }
+                    Some(_) => {}
+                    None => break,
+                }
+                continue;
+            }
             _ = shutdown.cancelled() => break,
+        }
+        if state.goal.is_some() && Instant::now() >= next_feedback {
+            next_feedback = Instant::now() + FEEDBACK_EVERY;
+            match state.progress(&mut sim, start.elapsed()) {
+                Some((id, Ok(fb))) => {
+                    router
+                        .calls
+                        .feedback(client, id, Payload::json(fb.to_string().into_bytes()));
+                }
+                Some((id, Err(result))) => reply(id, CallStatus::Ok, Some(result), String::new()),
+                None => {}
+            }
         }
         due.clear();
         sim.poll_into(start.elapsed(), &mut due);

@@ -13,6 +13,7 @@
 
 mod driver;
 mod messages;
+pub mod services;
 mod world;
 
 pub use driver::drive;
@@ -68,6 +69,27 @@ impl Sensor {
     }
 }
 
+/// How the robot moves: its figure-eight patrol, standing still, or driving straight to a
+/// navigation goal (times in seconds since start).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Motion {
+    Patrol,
+    Hold {
+        x: f64,
+        y: f64,
+        yaw: f64,
+    },
+    Drive {
+        from: (f64, f64),
+        to: (f64, f64),
+        t0: f64,
+        speed: f64,
+    },
+}
+
+/// Goals must lie this far inside the room's walls.
+pub const ROOM_HALF: f64 = 9.5;
+
 /// `frame_id`s, with the configured prefix applied once.
 #[derive(Debug)]
 struct Frames {
@@ -108,6 +130,7 @@ pub struct Sim {
     start_phase: f64,
     frames: Frames,
     scratch: Scratch,
+    motion: Motion,
 }
 
 impl Sim {
@@ -171,7 +194,85 @@ impl Sim {
             start_phase: world::start_phase(robot_seed),
             frames: Frames::new(&cfg.frame_prefix),
             scratch: Scratch::default(),
+            motion: Motion::Patrol,
         }
+    }
+
+    /// Where the robot is `t` seconds after start, under its current motion.
+    fn state_at(&self, t: f64) -> world::RobotState {
+        match self.motion {
+            Motion::Patrol => world::robot_state(t, self.start_phase),
+            Motion::Hold { x, y, yaw } => world::RobotState {
+                x,
+                y,
+                yaw,
+                speed: 0.0,
+                yaw_rate: 0.0,
+            },
+            Motion::Drive {
+                from,
+                to,
+                t0,
+                speed,
+            } => {
+                let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+                let d = dx.hypot(dy);
+                let s = ((t - t0) * speed).clamp(0.0, d);
+                let f = if d > 0.0 { s / d } else { 1.0 };
+                world::RobotState {
+                    x: from.0 + dx * f,
+                    y: from.1 + dy * f,
+                    yaw: if d > 0.0 { dy.atan2(dx) } else { 0.0 },
+                    speed: if s < d { speed } else { 0.0 },
+                    yaw_rate: 0.0,
+                }
+            }
+        }
+    }
+
+    /// The robot's pose `(x, y, yaw)` at `now` (time since start).
+    pub fn pose_at(&self, now: Duration) -> (f64, f64, f64) {
+        let s = self.state_at(now.as_secs_f64());
+        (s.x, s.y, s.yaw)
+    }
+
+    pub fn motion(&self) -> Motion {
+        self.motion
+    }
+
+    /// Starts driving from where the robot is at `now` to `(x, y)` at `speed` m/s.
+    /// Returns the distance to go.
+    pub fn navigate(&mut self, now: Duration, x: f64, y: f64, speed: f64) -> f64 {
+        let (fx, fy, _) = self.pose_at(now);
+        self.motion = Motion::Drive {
+            from: (fx, fy),
+            to: (x, y),
+            t0: now.as_secs_f64(),
+            speed: speed.max(0.01),
+        };
+        (x - fx).hypot(y - fy)
+    }
+
+    /// Distance left to the navigation goal at `now`, if driving to one.
+    pub fn distance_remaining(&self, now: Duration) -> Option<f64> {
+        match self.motion {
+            Motion::Drive { to, .. } => {
+                let (x, y, _) = self.pose_at(now);
+                Some((to.0 - x).hypot(to.1 - y))
+            }
+            _ => None,
+        }
+    }
+
+    /// Stops where the robot is at `now`.
+    pub fn hold(&mut self, now: Duration) {
+        let (x, y, yaw) = self.pose_at(now);
+        self.motion = Motion::Hold { x, y, yaw };
+    }
+
+    /// Back to the figure-eight patrol.
+    pub fn patrol(&mut self) {
+        self.motion = Motion::Patrol;
     }
 
     /// The simulated topics; [`SimMessage::topic_index`] indexes this.
@@ -230,7 +331,7 @@ impl Sim {
     fn generate_slot(&mut self, i: usize, slot: u64) -> SimMessage {
         let t_ns = slot.saturating_mul(self.period_ns[i]);
         let stamp_ns = self.epoch_ns.saturating_add(t_ns);
-        let state = world::robot_state(t_ns as f64 * 1e-9, self.start_phase);
+        let state = self.state_at(t_ns as f64 * 1e-9);
         let mut noise = Noise::new(world::mix64(
             self.robot_seed ^ world::mix64((i as u64) << 48 ^ slot),
         ));

@@ -36,6 +36,10 @@ pub enum AuditAction {
     CallService,
     SendActionGoal,
     CancelActionGoal,
+    /// Offering a service (and every refused offer).
+    AdvertiseService,
+    /// Offering an action (and every refused offer).
+    AdvertiseAction,
     AuthFailure,
     Login,
     Logout,
@@ -54,6 +58,8 @@ impl AuditAction {
             AuditAction::CallService => "call_service",
             AuditAction::SendActionGoal => "send_action_goal",
             AuditAction::CancelActionGoal => "cancel_action_goal",
+            AuditAction::AdvertiseService => "advertise_service",
+            AuditAction::AdvertiseAction => "advertise_action",
             AuditAction::AuthFailure => "auth_failure",
             AuditAction::Login => "login",
             AuditAction::Logout => "logout",
@@ -71,6 +77,8 @@ impl AuditAction {
             CallService,
             SendActionGoal,
             CancelActionGoal,
+            AdvertiseService,
+            AdvertiseAction,
             AuthFailure,
             Login,
             Logout,

@@ -194,7 +194,12 @@ async fn rosapi_answers_either_spelling_and_echoes_names_and_ids() {
     assert_eq!(v["result"], false);
     let v = op.call("/other/service", json!({}), "o").await;
     assert_eq!(v["result"], false);
-    assert!(v["values"].as_str().unwrap().contains("does not exist"));
+    assert!(
+        v["values"]
+            .as_str()
+            .unwrap()
+            .contains("is not advertised by anyone")
+    );
     hub.shutdown().await;
 }
 

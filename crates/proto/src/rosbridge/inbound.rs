@@ -78,6 +78,61 @@ pub enum Op {
         service: String,
         type_name: Option<String>,
         args: Payload,
+        /// Seconds the caller waits for the answer (`None`: the server's default).
+        timeout: Option<f64>,
+        /// Answer in fragments of at most this many characters.
+        fragment_size: Option<u32>,
+        /// `cbor` answers in a binary frame; anything else as JSON text.
+        compression: Compression,
+    },
+    /// The client provides `service`: calls to it come to this client as `call_service`
+    /// operations, answered with `service_response`.
+    AdvertiseService {
+        service: String,
+        type_name: String,
+    },
+    UnadvertiseService {
+        service: String,
+    },
+    /// A provider's answer to a `call_service` the server sent it (the request's `id`).
+    ServiceResponse {
+        service: Option<String>,
+        /// The response object, or on failure usually a text saying why.
+        values: Option<Payload>,
+        result: bool,
+    },
+    AdvertiseAction {
+        action: String,
+        type_name: String,
+    },
+    UnadvertiseAction {
+        action: String,
+    },
+    SendActionGoal {
+        action: String,
+        action_type: Option<String>,
+        args: Payload,
+        /// Whether the caller wants `action_feedback` operations.
+        feedback: bool,
+        timeout: Option<f64>,
+        compression: Compression,
+    },
+    /// Cancels the goal the request's `id` names.
+    CancelActionGoal {
+        action: Option<String>,
+    },
+    /// An action provider's progress report for the goal the request's `id` names.
+    ActionFeedback {
+        action: Option<String>,
+        values: Payload,
+    },
+    /// An action provider's final answer for the goal the request's `id` names.
+    ActionResult {
+        action: Option<String>,
+        values: Option<Payload>,
+        /// `action_msgs/GoalStatus` code (4 succeeded, 5 canceled, 6 aborted).
+        status: Option<u32>,
+        result: bool,
     },
     /// rosbridge's authentication operation; fields kept for the auth layer.
     Auth {
@@ -98,6 +153,15 @@ impl Op {
             Op::Subscribe { .. } => "subscribe",
             Op::Unsubscribe { .. } => "unsubscribe",
             Op::CallService { .. } => "call_service",
+            Op::AdvertiseService { .. } => "advertise_service",
+            Op::UnadvertiseService { .. } => "unadvertise_service",
+            Op::ServiceResponse { .. } => "service_response",
+            Op::AdvertiseAction { .. } => "advertise_action",
+            Op::UnadvertiseAction { .. } => "unadvertise_action",
+            Op::SendActionGoal { .. } => "send_action_goal",
+            Op::CancelActionGoal { .. } => "cancel_action_goal",
+            Op::ActionFeedback { .. } => "action_feedback",
+            Op::ActionResult { .. } => "action_result",
             Op::Auth { .. } => "auth",
             Op::Unknown { op } => op,
         }
@@ -190,7 +254,8 @@ impl Request {
 fn body_field_for(op: &str) -> Option<&'static str> {
     match op {
         "publish" => Some("msg"),
-        "call_service" => Some("args"),
+        "call_service" | "send_action_goal" => Some("args"),
+        "service_response" | "action_feedback" | "action_result" => Some("values"),
         _ => None,
     }
 }
@@ -281,9 +346,54 @@ fn parse_envelope(
                 topic: fields.req_str("topic")?,
             },
             "call_service" => Op::CallService {
-                service: fields.req_str("service")?,
+                service: fields.topic("service")?,
                 type_name: fields.opt_str("type")?,
                 args: body.clone().unwrap_or_else(|| Payload::json(&b"{}"[..])),
+                timeout: fields.opt_seconds("timeout")?,
+                fragment_size: fields.opt_u32("fragment_size")?,
+                compression: fields.compression()?,
+            },
+            "advertise_service" => Op::AdvertiseService {
+                service: fields.topic("service")?,
+                type_name: fields.req_type("type")?,
+            },
+            "unadvertise_service" => Op::UnadvertiseService {
+                service: fields.topic("service")?,
+            },
+            "service_response" => Op::ServiceResponse {
+                service: fields.opt_str("service")?,
+                values: body.clone(),
+                result: fields.opt_bool("result")?.unwrap_or(true),
+            },
+            "advertise_action" => Op::AdvertiseAction {
+                action: fields.topic("action")?,
+                type_name: fields.req_type("type")?,
+            },
+            "unadvertise_action" => Op::UnadvertiseAction {
+                action: fields.topic("action")?,
+            },
+            "send_action_goal" => Op::SendActionGoal {
+                action: fields.topic("action")?,
+                action_type: fields.opt_str("action_type")?,
+                args: body.clone().unwrap_or_else(|| Payload::json(&b"{}"[..])),
+                feedback: fields.opt_bool("feedback")?.unwrap_or(false),
+                timeout: fields.opt_seconds("timeout")?,
+                compression: fields.compression()?,
+            },
+            "cancel_action_goal" => Op::CancelActionGoal {
+                action: fields.opt_str("action")?,
+            },
+            "action_feedback" => Op::ActionFeedback {
+                action: fields.opt_str("action")?,
+                values: body
+                    .clone()
+                    .ok_or_else(|| "action_feedback: missing field 'values'".to_string())?,
+            },
+            "action_result" => Op::ActionResult {
+                action: fields.opt_str("action")?,
+                values: body.clone(),
+                status: fields.opt_u32("status")?,
+                result: fields.opt_bool("result")?.unwrap_or(true),
             },
             "auth" => Op::Auth {
                 fields: obj.clone(),
@@ -342,6 +452,51 @@ impl Fields<'_> {
                 self.op,
                 json_kind(other)
             )),
+        }
+    }
+
+    /// A type name such as `std_srvs/srv/SetBool`: non-empty, no whitespace.
+    fn req_type(&self, key: &str) -> Result<String, String> {
+        let s = self.req_str(key)?;
+        if s.trim().is_empty() || s.len() > 256 || s.chars().any(|c| c.is_whitespace()) {
+            return Err(format!(
+                "{}: field '{key}' is not a valid type name: {:?}",
+                self.op,
+                preview(&s)
+            ));
+        }
+        Ok(s)
+    }
+
+    /// A duration in seconds: a non-negative finite number.
+    fn opt_seconds(&self, key: &str) -> Result<Option<f64>, String> {
+        match self.obj.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::Number(n)) => match n.as_f64() {
+                Some(f) if f.is_finite() && f >= 0.0 => Ok(Some(f)),
+                _ => Err(format!(
+                    "{}: field '{key}' must be a non-negative number of seconds, got {n}",
+                    self.op
+                )),
+            },
+            Some(other) => Err(format!(
+                "{}: field '{key}' must be a number of seconds, got {}",
+                self.op,
+                json_kind(other)
+            )),
+        }
+    }
+
+    fn compression(&self) -> Result<Compression, String> {
+        match self.opt_str("compression")? {
+            None => Ok(Compression::None),
+            Some(s) => Compression::parse(&s).ok_or_else(|| {
+                format!(
+                    "{}: field 'compression' has unknown value '{}' (use none, cbor or cbor-raw)",
+                    self.op,
+                    preview(&s)
+                )
+            }),
         }
     }
 
@@ -412,7 +567,7 @@ fn json_kind(v: &Value) -> &'static str {
 pub fn payload_bytes(op: &Op) -> Option<&Bytes> {
     match op {
         Op::Publish { msg, .. } => Some(&msg.bytes),
-        Op::CallService { args, .. } => Some(&args.bytes),
+        Op::CallService { args, .. } | Op::SendActionGoal { args, .. } => Some(&args.bytes),
         _ => None,
     }
 }

@@ -98,6 +98,41 @@ pub fn fragments(id: &str, text: &str, size: usize) -> Vec<String> {
         .collect()
 }
 
+/// An operation object whose `body_key` value is an already encoded JSON value, spliced in
+/// without being parsed: `fields` must be a JSON object (without `body_key`).
+pub fn op_json(fields: &Value, body_key: &str, body_json: &[u8]) -> Bytes {
+    let head = fields.to_string();
+    debug_assert!(head.starts_with('{') && head.ends_with('}'));
+    let key = serde_json::to_string(body_key).expect("a string serializes");
+    let mut b = BytesMut::with_capacity(head.len() + key.len() + body_json.len() + 4);
+    b.put_slice(&head.as_bytes()[..head.len() - 1]);
+    if head.len() > 2 {
+        b.put_u8(b',');
+    }
+    b.put_slice(key.as_bytes());
+    b.put_u8(b':');
+    b.put_slice(body_json);
+    b.put_u8(b'}');
+    b.freeze()
+}
+
+/// The same operation as a CBOR map, with `body_cbor` (an encoded CBOR value) spliced in
+/// as the `body_key` value. `fields` must be a JSON object of plain values.
+pub fn op_cbor(fields: &Value, body_key: &str, body_cbor: &[u8]) -> Bytes {
+    let map = fields.as_object().cloned().unwrap_or_default();
+    let mut b = BytesMut::with_capacity(body_cbor.len() + 64 * (map.len() + 1));
+    cbor_head(&mut b, 5, map.len() as u64 + 1);
+    for (k, v) in &map {
+        cbor_text(&mut b, k);
+        let mut enc = Vec::new();
+        ciborium::into_writer(v, &mut enc).expect("a JSON value encodes as CBOR");
+        b.put_slice(&enc);
+    }
+    cbor_text(&mut b, body_key);
+    b.put_slice(body_cbor);
+    b.freeze()
+}
+
 fn cbor_head(b: &mut BytesMut, major: u8, len: u64) {
     let m = major << 5;
     match len {
@@ -156,6 +191,24 @@ mod tests {
         assert_eq!(inner[0].1, ciborium::Value::Integer(3.into()));
         assert_eq!(inner[1].1, ciborium::Value::Integer(7.into()));
         assert_eq!(inner[2].1, ciborium::Value::Bytes(vec![1, 2]));
+    }
+
+    #[test]
+    fn spliced_operations_decode_to_the_same_object() {
+        let fields = json!({"op": "call_service", "id": "c:1", "service": "/s"});
+        let j = op_json(&fields, "args", br#"{"a":[1,2]}"#);
+        let v: Value = serde_json::from_slice(&j).unwrap();
+        assert_eq!(
+            v,
+            json!({"op":"call_service","id":"c:1","service":"/s","args":{"a":[1,2]}})
+        );
+        let mut body = Vec::new();
+        ciborium::into_writer(&json!({"a": [1, 2]}), &mut body).unwrap();
+        let c = op_cbor(&fields, "args", &body);
+        let back: Value = ciborium::from_reader(&c[..]).unwrap();
+        assert_eq!(back, v);
+        let empty = op_json(&json!({}), "values", b"true");
+        assert_eq!(&empty[..], br#"{"values":true}"#);
     }
 
     #[test]

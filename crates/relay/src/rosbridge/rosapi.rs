@@ -7,6 +7,7 @@
 
 use serde_json::{Value, json};
 
+use crate::gate::Op;
 use crate::names::TopicName;
 use crate::router::{ClientKind, Router};
 use crate::unix_nanos;
@@ -33,6 +34,10 @@ pub const SERVICES: &[&str] = &[
     "get_ros_version",
     "nodes",
     "services",
+    "service_type",
+    "service_providers",
+    "service_node",
+    "action_servers",
 ];
 
 pub fn answer(
@@ -40,7 +45,7 @@ pub fn answer(
     node_name: &str,
     service: &str,
     args: &Value,
-    visible: &mut dyn FnMut(&str) -> bool,
+    visible: &mut dyn FnMut(&str, Op) -> bool,
 ) -> Answer {
     let name = service.trim_start_matches('/');
     let Some(call) = name.strip_prefix("rosapi/") else {
@@ -50,7 +55,7 @@ pub fn answer(
     let topics: Vec<_> = router
         .topics()
         .into_iter()
-        .filter(|t| visible(t.meta.name.as_str()))
+        .filter(|t| visible(t.meta.name.as_str(), Op::Subscribe))
         .collect();
     let arg_topic = || -> Result<TopicName, String> {
         let raw = args
@@ -118,9 +123,59 @@ pub fn answer(
             nodes.dedup();
             json!({"nodes": nodes})
         }
-        "services" => json!({
-            "services": SERVICES.iter().map(|s| format!("/rosapi/{s}")).collect::<Vec<_>>(),
+        "services" => {
+            let mut names: Vec<String> = SERVICES.iter().map(|s| format!("/rosapi/{s}")).collect();
+            names.extend(
+                router
+                    .calls
+                    .services()
+                    .iter()
+                    .filter(|s| !s.action && visible(s.name.as_str(), Op::CallService))
+                    .map(|s| s.name.to_string()),
+            );
+            json!({ "services": names })
+        }
+        "action_servers" => json!({
+            "action_servers": router
+                .calls
+                .services()
+                .iter()
+                .filter(|s| s.action && visible(s.name.as_str(), Op::SendActionGoal))
+                .map(|s| s.name.to_string())
+                .collect::<Vec<_>>(),
         }),
+        "service_type" | "service_providers" | "service_node" => {
+            let raw = args.get("service").and_then(Value::as_str);
+            let Some(name) = raw.and_then(|r| TopicName::parse(r).ok()) else {
+                return Answer::Failed(format!("{service}: missing string argument 'service'"));
+            };
+            let own = name
+                .as_str()
+                .strip_prefix("/rosapi/")
+                .is_some_and(|s| SERVICES.contains(&s));
+            let found = router.calls.service(&name).filter(|s| {
+                visible(
+                    s.name.as_str(),
+                    if s.action {
+                        Op::SendActionGoal
+                    } else {
+                        Op::CallService
+                    },
+                )
+            });
+            let provider = match (&found, own) {
+                (Some(s), _) => Some(client_node_name(router, s.provider)),
+                (None, true) => Some(node_name.to_owned()),
+                (None, false) => None,
+            };
+            match call {
+                "service_type" => json!({"type": found.as_ref().map_or(
+                    if own { "rosapi/srv/Service" } else { "" },
+                    |s| s.schema.type_name.as_str())}),
+                "service_node" => json!({"node": provider.unwrap_or_default()}),
+                _ => json!({"providers": provider.into_iter().collect::<Vec<_>>()}),
+            }
+        }
         other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
     };
     Answer::Values(values)

@@ -24,6 +24,7 @@ use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
+use crate::calls::ChannelPeer;
 use crate::gate::{Gate, Guard, Op as GateOp, SessionAuth};
 use crate::message::FrameKind;
 use crate::names::{ClientId, TopicName};
@@ -75,6 +76,8 @@ pub async fn serve<S>(
         + 'static,
 {
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
+    let (peer, mut peer_rx) = ChannelPeer::new();
+    router.calls.attach(client, peer);
     let (sink, mut stream) = ws.split();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
     let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
@@ -96,6 +99,7 @@ pub async fn serve<S>(
         gate: auth.gate,
         guard: auth.guard,
         writer_gate,
+        calls: super::calls::SessionCalls::default(),
     };
     loop {
         let frame = tokio::select! {
@@ -103,8 +107,17 @@ pub async fn serve<S>(
                 Some(f) => f,
                 None => break,
             },
+            m = peer_rx.recv() => {
+                if let Some(m) = m {
+                    session.on_peer(m).await;
+                }
+                continue;
+            }
             _ = shutdown.cancelled() => break,
         };
+        if matches!(frame, Ok(WsMessage::Binary(_))) {
+            session.calls.binary = true;
+        }
         let req = match frame {
             Ok(WsMessage::Text(t)) => Request::from_json(t.as_bytes()),
             Ok(WsMessage::Binary(b)) => Request::from_cbor(&b),
@@ -148,28 +161,30 @@ struct Published {
     seq: u64,
 }
 
-struct Session {
-    router: Arc<Router>,
-    client: ClientId,
-    cfg: Arc<SessionConfig>,
+pub(super) struct Session {
+    pub(super) router: Arc<Router>,
+    pub(super) client: ClientId,
+    pub(super) cfg: Arc<SessionConfig>,
     published: HashMap<TopicName, Published>,
     /// Subscriptions by the `topic` string the client used, with the `id` each came with.
     subs: HashMap<String, Vec<(Option<Value>, SubscriptionId)>>,
     /// What this client may do; `None` until it authenticates.
-    gate: Option<Box<dyn Gate>>,
+    pub(super) gate: Option<Box<dyn Gate>>,
     guard: Option<Arc<dyn Guard>>,
     /// The writer's copy, checked for every message it delivers. std Mutex: taken once per
     /// batch by the writer and on `auth` by the reader, never across an await.
     writer_gate: Arc<Mutex<Option<Box<dyn Gate>>>>,
     replies: mpsc::Sender<Reply>,
+    /// Services, actions and calls of this client.
+    pub(super) calls: super::calls::SessionCalls,
 }
 
 impl Session {
-    async fn send(&self, m: WsMessage) {
+    pub(super) async fn send(&self, m: WsMessage) {
         let _ = self.replies.send(Reply::Frame(m)).await;
     }
 
-    async fn status(&self, level: &str, msg: String, id: Option<&Value>) {
+    pub(super) async fn status(&self, level: &str, msg: String, id: Option<&Value>) {
         self.send(WsMessage::text(outbound::status(level, &msg, id)))
             .await;
     }
@@ -240,10 +255,57 @@ impl Session {
                 self.unsubscribe(&topic, id.as_ref());
                 Ok(())
             }
-            Op::CallService { service, args, .. } => {
-                self.call_service(&service, args, id.as_ref()).await;
+            Op::CallService {
+                service,
+                args,
+                timeout,
+                fragment_size,
+                compression,
+                ..
+            } => {
+                let how = super::calls::Answering {
+                    fragment_size,
+                    cbor: compression == Compression::Cbor || args.encoding == Encoding::Cbor,
+                };
+                self.call_service(&service, args, id.as_ref(), timeout, how)
+                    .await;
                 Ok(())
             }
+            Op::AdvertiseService { service, type_name } => {
+                self.advertise_service(&service, &type_name, false)
+            }
+            Op::UnadvertiseService { service } => self.unadvertise_service(&service, false),
+            Op::AdvertiseAction { action, type_name } => {
+                self.advertise_service(&action, &type_name, true)
+            }
+            Op::UnadvertiseAction { action } => self.unadvertise_service(&action, true),
+            Op::ServiceResponse { values, result, .. } => {
+                self.service_response(id.as_ref(), values, result)
+            }
+            Op::SendActionGoal {
+                action,
+                args,
+                feedback,
+                timeout,
+                compression,
+                ..
+            } => {
+                let how = super::calls::Answering {
+                    fragment_size: None,
+                    cbor: compression == Compression::Cbor || args.encoding == Encoding::Cbor,
+                };
+                self.send_action_goal(&action, args, id.as_ref(), feedback, timeout, how)
+                    .await;
+                Ok(())
+            }
+            Op::CancelActionGoal { .. } => self.cancel_action_goal(id.as_ref()),
+            Op::ActionFeedback { values, .. } => self.action_feedback(id.as_ref(), values),
+            Op::ActionResult {
+                values,
+                status,
+                result,
+                ..
+            } => self.action_result(id.as_ref(), values, status, result),
             Op::Auth { .. } => Ok(()), // handled above
             Op::Unknown { op } => Err(format!("unknown operation '{op}'")),
         };
@@ -268,7 +330,7 @@ impl Session {
     }
 
     /// Whether the client may do `op` on `name`; the refusal text names both.
-    fn check(&mut self, verb: &str, name: &str, op: GateOp) -> Result<(), String> {
+    pub(super) fn check(&mut self, verb: &str, name: &str, op: GateOp) -> Result<(), String> {
         let gate = self
             .gate
             .as_mut()
@@ -424,16 +486,14 @@ impl Session {
         }
     }
 
-    async fn call_service(&mut self, service: &str, args: Payload, id: Option<&Value>) {
-        let full = if service.starts_with('/') {
-            service.to_owned()
-        } else {
-            format!("/{service}")
-        };
-        if let Err(e) = self.check("call_service", &full, GateOp::CallService) {
-            let reply = outbound::service_response(service, id, Value::String(e), false);
-            return self.send(WsMessage::text(reply.to_string())).await;
-        }
+    /// The hub's own `/rosapi` services, answered from the router's tables.
+    pub(super) async fn call_rosapi(
+        &mut self,
+        service: &str,
+        args: &Payload,
+        id: Option<&Value>,
+        how: super::calls::Answering,
+    ) {
         let args_json: Value = match args.encoding {
             Encoding::Json => serde_json::from_slice(&args.bytes).unwrap_or(Value::Null),
             _ => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
@@ -441,8 +501,8 @@ impl Session {
                 .and_then(|j| serde_json::from_slice(&j).ok())
                 .unwrap_or(Value::Null),
         };
-        let gate = self.gate.as_mut().expect("checked above");
-        let mut visible = |name: &str| gate.allows(name, GateOp::Subscribe);
+        let gate = self.gate.as_mut().expect("checked by the caller");
+        let mut visible = |name: &str, op: GateOp| gate.allows(name, op);
         let answer = rosapi::answer(
             &self.router,
             &self.cfg.node_name,
@@ -450,9 +510,6 @@ impl Session {
             &args_json,
             &mut visible,
         );
-        if matches!(answer, Answer::NotRosapi) {
-            gate.done(&full, GateOp::CallService, args.len());
-        }
         let reply = match answer {
             Answer::Values(v) => outbound::service_response(service, id, v, true),
             Answer::Failed(e) => outbound::service_response(service, id, Value::String(e), false),
@@ -463,7 +520,7 @@ impl Session {
                 false,
             ),
         };
-        let frame = if args.encoding == Encoding::Cbor {
+        let frame = if how.cbor {
             let mut buf = Vec::new();
             match ciborium::into_writer(&reply, &mut buf) {
                 Ok(()) => WsMessage::Binary(Bytes::from(buf)),

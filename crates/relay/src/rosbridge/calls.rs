@@ -1,0 +1,752 @@
+//! Services and actions on a rosbridge session: the client as caller (`call_service`,
+//! `send_action_goal`, `cancel_action_goal`) and as provider (`advertise_service`,
+//! `advertise_action`, answering with `service_response`, `action_feedback`,
+//! `action_result`), both through the router's call table.
+//!
+//! Ids: a caller's own `id` is echoed in its answers; calls this client serves carry ids
+//! the session makes (`call:<n>` / `goal:<n>`, unique on the session), so two callers
+//! using the same id never collide at the provider.
+
+use std::collections::{HashMap, HashSet};
+use std::time::Duration;
+
+use bytes::Bytes;
+use fleetlink_proto::rosbridge::outbound;
+use fleetlink_proto::{Encoding, Payload, Schema};
+use serde_json::{Value, json};
+use tokio_tungstenite::tungstenite::{Message as WsMessage, Utf8Bytes};
+
+use super::session::Session;
+use crate::calls::{
+    CallEvent, CallId, CallOptions, CallRequest, CallStatus, PeerMsg, goal_id_text,
+};
+use crate::gate::Op as GateOp;
+use crate::link_calls::outcome_text;
+use crate::names::TopicName;
+
+/// How a caller wants its answers.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Answering {
+    /// Split a JSON answer into rosbridge fragments of at most this many characters.
+    pub fragment_size: Option<u32>,
+    /// Answer in a CBOR binary frame (the caller asked for `cbor` or spoke CBOR).
+    pub cbor: bool,
+}
+
+struct Made {
+    id: Option<Value>,
+    /// The name as the client wrote it, echoed in answers.
+    name: String,
+    type_name: String,
+    goal: bool,
+    feedback: bool,
+    how: Answering,
+    size: usize,
+}
+
+struct Serving {
+    call: CallId,
+    name: TopicName,
+    goal: bool,
+}
+
+/// One session's calls.
+#[derive(Default)]
+pub struct SessionCalls {
+    /// The client speaks CBOR binary frames: calls it serves are sent as CBOR.
+    pub binary: bool,
+    made: HashMap<CallId, Made>,
+    /// Pending goals by the id their caller gave them.
+    goals: HashMap<String, CallId>,
+    serving: HashMap<String, Serving>,
+    serving_by_call: HashMap<CallId, String>,
+    provided: HashSet<(TopicName, bool)>,
+}
+
+/// `action_msgs/GoalStatus` codes.
+const GOAL_SUCCEEDED: u32 = 4;
+const GOAL_CANCELED: u32 = 5;
+const GOAL_ABORTED: u32 = 6;
+
+fn goal_status(status: CallStatus) -> u32 {
+    match status {
+        CallStatus::Ok => GOAL_SUCCEEDED,
+        CallStatus::Cancelled => GOAL_CANCELED,
+        _ => GOAL_ABORTED,
+    }
+}
+
+fn id_key(id: &Value) -> String {
+    match id {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// Seconds from a client into a duration (0 = no deadline of its own).
+fn timeout_of(secs: Option<f64>) -> Option<Duration> {
+    secs.filter(|s| *s > 0.0)
+        .map(|s| Duration::from_secs_f64(s.min(1e9)))
+}
+
+/// The part of a service or action type a payload is: `pkg/srv/T` + `_Request`.
+fn part(type_name: &str, suffix: &str) -> String {
+    format!("{type_name}{suffix}")
+}
+
+impl Session {
+    /// A payload as the bytes of a JSON (or CBOR) value for this client.
+    fn body_for(&self, p: &Payload, type_name: &str, cbor: bool) -> Result<Bytes, String> {
+        let to = if cbor { Encoding::Cbor } else { Encoding::Json };
+        if p.encoding == to {
+            return Ok(p.bytes.clone());
+        }
+        let tc = self.router.transcoder();
+        let schema = tc
+            .schema_for(type_name)
+            .unwrap_or_else(|| Schema::named(type_name));
+        tc.convert(&schema, p, to).map_err(|e| e.to_string())
+    }
+
+    /// Sends an operation whose `body_key` is `body` (JSON or CBOR bytes).
+    async fn send_op(&self, fields: Value, body_key: &str, body: &Bytes, how: Answering) {
+        if how.cbor {
+            let b = outbound::op_cbor(&fields, body_key, body);
+            return self.send(WsMessage::Binary(b)).await;
+        }
+        let text = outbound::op_json(&fields, body_key, body);
+        let Ok(text) = Utf8Bytes::try_from(text) else {
+            let msg = format!("{body_key}: the answer is not valid UTF-8 JSON");
+            return self.status("error", msg, fields.get("id")).await;
+        };
+        match how.fragment_size.map(|s| s as usize).filter(|s| *s > 0) {
+            Some(size) if text.len() > size => {
+                let fid = fields.get("id").map_or_else(|| "answer".to_owned(), id_key);
+                for piece in outbound::fragments(&fid, text.as_str(), size) {
+                    self.send(WsMessage::text(piece)).await;
+                }
+            }
+            _ => self.send(WsMessage::Text(text)).await,
+        }
+    }
+
+    /// A failed `call_service`, answered as rosbridge does: `result: false` and a text.
+    async fn service_failed(&self, service: &str, id: Option<&Value>, text: String, cbor: bool) {
+        let body = Bytes::from(Value::String(text).to_string());
+        let mut fields = json!({"op": "service_response", "service": service, "result": false});
+        if let Some(id) = id {
+            fields["id"] = id.clone();
+        }
+        let body = if cbor { json_to_cbor(&body) } else { body };
+        self.send_op(
+            fields,
+            "values",
+            &body,
+            Answering {
+                fragment_size: None,
+                cbor,
+            },
+        )
+        .await;
+    }
+
+    async fn goal_failed(
+        &self,
+        action: &str,
+        id: Option<&Value>,
+        status: CallStatus,
+        text: String,
+        cbor: bool,
+    ) {
+        let body = Bytes::from(Value::String(text).to_string());
+        let mut fields = json!({"op": "action_result", "action": action,
+            "status": goal_status(status), "result": false});
+        if let Some(id) = id {
+            fields["id"] = id.clone();
+        }
+        let body = if cbor { json_to_cbor(&body) } else { body };
+        let how = Answering {
+            fragment_size: None,
+            cbor,
+        };
+        self.send_op(fields, "values", &body, how).await;
+    }
+
+    pub(super) async fn call_service(
+        &mut self,
+        service: &str,
+        args: Payload,
+        id: Option<&Value>,
+        timeout: Option<f64>,
+        how: Answering,
+    ) {
+        let name = match TopicName::parse(service) {
+            Ok(n) => n,
+            Err(e) => {
+                let text = format!("call_service: {e}");
+                return self.service_failed(service, id, text, how.cbor).await;
+            }
+        };
+        if let Err(e) = self.check("call_service", name.as_str(), GateOp::CallService) {
+            return self.service_failed(service, id, e, how.cbor).await;
+        }
+        if name.as_str().starts_with("/rosapi/") && self.router.calls.service(&name).is_none() {
+            return self.call_rosapi(service, &args, id, how).await;
+        }
+        if !matches!(args.encoding, Encoding::Json | Encoding::Cbor) || !is_map(&args) {
+            let text = format!("call_service {name}: field 'args' must be an object");
+            return self.service_failed(service, id, text, how.cbor).await;
+        }
+        let size = args.len();
+        let opts = CallOptions {
+            timeout: timeout_of(timeout),
+            goal: false,
+        };
+        match self.router.calls.call(self.client, &name, args, opts) {
+            Ok(call) => {
+                let type_name = self
+                    .router
+                    .calls
+                    .service(&name)
+                    .map(|s| s.schema.type_name.clone())
+                    .unwrap_or_default();
+                self.calls.made.insert(
+                    call,
+                    Made {
+                        id: id.cloned(),
+                        name: service.to_owned(),
+                        type_name,
+                        goal: false,
+                        feedback: false,
+                        how,
+                        size,
+                    },
+                );
+            }
+            Err(e) => {
+                if let Some(g) = self.gate.as_mut() {
+                    g.finished(
+                        name.as_str(),
+                        GateOp::CallService,
+                        size,
+                        &outcome_text(e.status, &e.text),
+                    );
+                }
+                let text = format!("call_service {name}: {}", e.text);
+                self.service_failed(service, id, text, how.cbor).await
+            }
+        }
+    }
+
+    pub(super) fn advertise_service(
+        &mut self,
+        raw: &str,
+        type_name: &str,
+        action: bool,
+    ) -> Result<(), String> {
+        let verb = if action {
+            "advertise_action"
+        } else {
+            "advertise_service"
+        };
+        let name = TopicName::parse(raw).map_err(|e| format!("{verb}: {e}"))?;
+        if name.as_str().starts_with("/rosapi/") {
+            return Err(format!(
+                "{verb} {name}: /rosapi/ services are the server's own"
+            ));
+        }
+        let op = if action {
+            GateOp::AdvertiseAction
+        } else {
+            GateOp::AdvertiseService
+        };
+        self.check(verb, name.as_str(), op)?;
+        let tc = self.router.transcoder();
+        let schema = tc
+            .schema_for(type_name)
+            .filter(|s| crate::router::same_type(&s.type_name, type_name))
+            .unwrap_or_else(|| Schema::named(type_name));
+        if let Some(prev) = self
+            .router
+            .calls
+            .advertise(self.client, name.clone(), schema, action)
+        {
+            tracing::info!(
+                "{name} is now provided by client {} (was {prev})",
+                self.client
+            );
+        }
+        if let Some(g) = self.gate.as_mut() {
+            g.done(name.as_str(), op, 0);
+        }
+        self.calls.provided.insert((name, action));
+        Ok(())
+    }
+
+    pub(super) fn unadvertise_service(&mut self, raw: &str, action: bool) -> Result<(), String> {
+        let verb = if action {
+            "unadvertise_action"
+        } else {
+            "unadvertise_service"
+        };
+        let name = TopicName::parse(raw).map_err(|e| format!("{verb}: {e}"))?;
+        if !self.calls.provided.remove(&(name.clone(), action)) {
+            let what = if action { "action" } else { "service" };
+            return Err(format!(
+                "{verb} {name}: this client has not advertised that {what}"
+            ));
+        }
+        self.router.calls.unadvertise(self.client, &name);
+        Ok(())
+    }
+
+    /// The `Serving` entry an answer's `id` names, removed when `end`.
+    fn serving(
+        &mut self,
+        op: &str,
+        id: Option<&Value>,
+        end: bool,
+    ) -> Result<(CallId, TopicName, bool), String> {
+        let Some(id) = id else {
+            return Err(format!(
+                "{op}: missing field 'id' (echo the id of the request you answer)"
+            ));
+        };
+        let key = id_key(id);
+        let found = if end {
+            self.calls.serving.remove(&key)
+        } else {
+            self.calls.serving.get(&key).map(|s| Serving {
+                call: s.call,
+                name: s.name.clone(),
+                goal: s.goal,
+            })
+        };
+        let Some(s) = found else {
+            return Err(format!(
+                "{op}: no request with id {key} is waiting for this client's answer \
+                 (answered already, timed out, cancelled, or never sent)"
+            ));
+        };
+        if end {
+            self.calls.serving_by_call.remove(&s.call);
+        }
+        Ok((s.call, s.name, s.goal))
+    }
+
+    pub(super) fn service_response(
+        &mut self,
+        id: Option<&Value>,
+        values: Option<Payload>,
+        result: bool,
+    ) -> Result<(), String> {
+        let (call, name, goal) = self.serving("service_response", id, true)?;
+        if goal {
+            return Err(format!(
+                "service_response: {name} is an action; answer goals with action_result"
+            ));
+        }
+        let (status, payload, text) = if result {
+            (CallStatus::Ok, values, String::new())
+        } else {
+            (
+                CallStatus::Failed,
+                None,
+                failure_text(values.as_ref(), &name),
+            )
+        };
+        self.router
+            .calls
+            .respond(self.client, call, status, payload, text);
+        Ok(())
+    }
+
+    pub(super) async fn send_action_goal(
+        &mut self,
+        action: &str,
+        args: Payload,
+        id: Option<&Value>,
+        feedback: bool,
+        timeout: Option<f64>,
+        how: Answering,
+    ) {
+        let name = match TopicName::parse(action) {
+            Ok(n) => n,
+            Err(e) => {
+                let text = format!("send_action_goal: {e}");
+                return self
+                    .goal_failed(action, id, CallStatus::Failed, text, how.cbor)
+                    .await;
+            }
+        };
+        if let Err(e) = self.check("send_action_goal", name.as_str(), GateOp::SendActionGoal) {
+            return self
+                .goal_failed(action, id, CallStatus::Forbidden, e, how.cbor)
+                .await;
+        }
+        if !is_map(&args) {
+            let text = format!("send_action_goal {name}: field 'args' must be an object");
+            return self
+                .goal_failed(action, id, CallStatus::Failed, text, how.cbor)
+                .await;
+        }
+        let key = id.map(id_key);
+        if let Some(k) = &key
+            && self.calls.goals.contains_key(k)
+        {
+            let text = format!(
+                "send_action_goal {name}: goal id {k} is already in use by a pending goal of \
+                 this client; give each goal its own id"
+            );
+            return self
+                .goal_failed(action, id, CallStatus::Failed, text, how.cbor)
+                .await;
+        }
+        let size = args.len();
+        let opts = CallOptions {
+            timeout: timeout_of(timeout),
+            goal: true,
+        };
+        match self.router.calls.call(self.client, &name, args, opts) {
+            Ok(call) => {
+                let type_name = self
+                    .router
+                    .calls
+                    .service(&name)
+                    .map(|s| s.schema.type_name.clone())
+                    .unwrap_or_default();
+                if let Some(k) = key {
+                    self.calls.goals.insert(k, call);
+                }
+                self.calls.made.insert(
+                    call,
+                    Made {
+                        id: id.cloned(),
+                        name: action.to_owned(),
+                        type_name,
+                        goal: true,
+                        feedback,
+                        how,
+                        size,
+                    },
+                );
+            }
+            Err(e) => {
+                if let Some(g) = self.gate.as_mut() {
+                    g.finished(
+                        name.as_str(),
+                        GateOp::SendActionGoal,
+                        size,
+                        &outcome_text(e.status, &e.text),
+                    );
+                }
+                let text = format!("send_action_goal {name}: {}", e.text);
+                self.goal_failed(action, id, e.status, text, how.cbor).await
+            }
+        }
+    }
+
+    pub(super) fn cancel_action_goal(&mut self, id: Option<&Value>) -> Result<(), String> {
+        let Some(id) = id else {
+            return Err(
+                "cancel_action_goal: missing field 'id' (the id of the goal to cancel)".into(),
+            );
+        };
+        let key = id_key(id);
+        let Some(call) = self.calls.goals.get(&key).copied() else {
+            return Err(format!(
+                "cancel_action_goal: this client has no pending goal with id {key}"
+            ));
+        };
+        let name = self
+            .calls
+            .made
+            .get(&call)
+            .map(|m| m.name.clone())
+            .unwrap_or_default();
+        self.check("cancel_action_goal", &name, GateOp::CancelActionGoal)?;
+        self.router.calls.cancel(self.client, call);
+        if let Some(g) = self.gate.as_mut() {
+            g.finished(&name, GateOp::CancelActionGoal, 0, "requested");
+        }
+        Ok(())
+    }
+
+    pub(super) fn action_feedback(
+        &mut self,
+        id: Option<&Value>,
+        values: Payload,
+    ) -> Result<(), String> {
+        let (call, name, goal) = self.serving("action_feedback", id, false)?;
+        if !goal {
+            return Err(format!(
+                "action_feedback: {name} is a service; answer it with service_response"
+            ));
+        }
+        self.router.calls.feedback(self.client, call, values);
+        Ok(())
+    }
+
+    pub(super) fn action_result(
+        &mut self,
+        id: Option<&Value>,
+        values: Option<Payload>,
+        status: Option<u32>,
+        result: bool,
+    ) -> Result<(), String> {
+        let (call, name, goal) = self.serving("action_result", id, true)?;
+        if !goal {
+            return Err(format!(
+                "action_result: {name} is a service; answer it with service_response"
+            ));
+        }
+        let st = match status {
+            Some(GOAL_SUCCEEDED) => CallStatus::Ok,
+            Some(GOAL_CANCELED) => CallStatus::Cancelled,
+            Some(GOAL_ABORTED) => CallStatus::Aborted,
+            None if result => CallStatus::Ok,
+            _ => CallStatus::Aborted,
+        };
+        let text = if st == CallStatus::Ok {
+            String::new()
+        } else {
+            format!(
+                "the goal ended with status {}",
+                status.unwrap_or(GOAL_ABORTED)
+            )
+        };
+        let values = values.filter(is_map);
+        self.router
+            .calls
+            .respond(self.client, call, st, values, text);
+        Ok(())
+    }
+
+    /// Something the call table queued for this client.
+    pub(super) async fn on_peer(&mut self, m: PeerMsg) {
+        match m {
+            PeerMsg::Call(req) => self.serve_call(req).await,
+            PeerMsg::Cancel(call) => {
+                let Some(key) = self.calls.serving_by_call.remove(&call) else {
+                    return;
+                };
+                let Some(s) = self.calls.serving.get(&key) else {
+                    return;
+                };
+                if s.goal {
+                    // The goal stays pending until the provider sends its result.
+                    self.calls.serving_by_call.insert(call, key.clone());
+                    let fields =
+                        json!({"op": "cancel_action_goal", "id": key, "action": s.name.as_str()});
+                    self.send(WsMessage::text(fields.to_string())).await;
+                } else {
+                    // rosbridge has no cancel for a service call: forget it, so a late
+                    // answer is reported as such.
+                    self.calls.serving.remove(&key);
+                }
+            }
+            PeerMsg::Event(ev) => self.call_event(ev).await,
+            PeerMsg::Changed(_) => {}
+        }
+    }
+
+    async fn serve_call(&mut self, req: CallRequest) {
+        let goal = req.goal_id.is_some();
+        let info = &req.service;
+        let suffix = if goal { "_Goal" } else { "_Request" };
+        let cbor = self.calls.binary;
+        let body = match self.body_for(&req.payload, &part(&info.schema.type_name, suffix), cbor) {
+            Ok(b) => b,
+            Err(e) => {
+                let text = format!(
+                    "{}: cannot hand the request to its provider: {e}",
+                    info.name
+                );
+                self.router
+                    .calls
+                    .respond(self.client, req.id, CallStatus::Failed, None, text);
+                return;
+            }
+        };
+        let key = if goal {
+            format!("goal:{}", req.id)
+        } else {
+            format!("call:{}", req.id)
+        };
+        let mut fields = if goal {
+            json!({"op": "send_action_goal", "id": key, "action": info.name.as_str(),
+                   "action_type": info.schema.type_name, "feedback": true,
+                   "goal_id": goal_id_text(&req.goal_id.unwrap_or_default())})
+        } else {
+            json!({"op": "call_service", "id": key, "service": info.name.as_str(),
+                   "type": info.schema.type_name})
+        };
+        if let Some(d) = req.deadline {
+            let left = d.saturating_duration_since(std::time::Instant::now());
+            fields["timeout"] = json!(left.as_secs_f64());
+        }
+        self.calls.serving.insert(
+            key.clone(),
+            Serving {
+                call: req.id,
+                name: info.name.clone(),
+                goal,
+            },
+        );
+        self.calls.serving_by_call.insert(req.id, key);
+        let how = Answering {
+            fragment_size: None,
+            cbor,
+        };
+        self.send_op(fields, "args", &body, how).await;
+    }
+
+    async fn call_event(&mut self, ev: CallEvent) {
+        match ev {
+            CallEvent::Feedback { id, payload } => {
+                let Some(m) = self.calls.made.get(&id) else {
+                    return;
+                };
+                if !m.feedback {
+                    return;
+                }
+                let (how, name) = (m.how, m.name.clone());
+                let mut fields = json!({"op": "action_feedback", "action": name});
+                if let Some(i) = &m.id {
+                    fields["id"] = i.clone();
+                }
+                match self.body_for(&payload, &part(&m.type_name, "_Feedback"), how.cbor) {
+                    Ok(body) => self.send_op(fields, "values", &body, how).await,
+                    Err(e) => tracing::debug!("feedback of {name} dropped: {e}"),
+                }
+            }
+            CallEvent::Done {
+                id,
+                status,
+                payload,
+                text,
+            } => {
+                let Some(m) = self.calls.made.remove(&id) else {
+                    return;
+                };
+                if let Some(key) = m.id.as_ref().map(id_key)
+                    && self.calls.goals.get(&key) == Some(&id)
+                {
+                    self.calls.goals.remove(&key);
+                }
+                let op = if m.goal {
+                    GateOp::SendActionGoal
+                } else {
+                    GateOp::CallService
+                };
+                let outcome = outcome_text(status, &text);
+                if let Some(g) = self.gate.as_mut() {
+                    g.finished(&m.name, op, m.size, &outcome);
+                }
+                self.answer_made(m, status, payload, text).await;
+            }
+        }
+    }
+
+    async fn answer_made(
+        &mut self,
+        m: Made,
+        status: CallStatus,
+        payload: Option<Payload>,
+        text: String,
+    ) {
+        let suffix = if m.goal { "_Result" } else { "_Response" };
+        let body = match payload {
+            Some(p) => match self.body_for(&p, &part(&m.type_name, suffix), m.how.cbor) {
+                Ok(b) => Some(b),
+                Err(e) => {
+                    let text = format!("{}: the answer could not be converted: {e}", m.name);
+                    return if m.goal {
+                        self.goal_failed(
+                            &m.name,
+                            m.id.as_ref(),
+                            CallStatus::Failed,
+                            text,
+                            m.how.cbor,
+                        )
+                        .await
+                    } else {
+                        self.service_failed(&m.name, m.id.as_ref(), text, m.how.cbor)
+                            .await
+                    };
+                }
+            },
+            None => None,
+        };
+        let ok = status == CallStatus::Ok;
+        if m.goal {
+            if !ok && body.is_none() {
+                let text = format!("{} {}: {text}", m.name, status.as_str());
+                return self
+                    .goal_failed(&m.name, m.id.as_ref(), status, text, m.how.cbor)
+                    .await;
+            }
+            let mut fields = json!({"op": "action_result", "action": m.name,
+                "status": goal_status(status), "result": status != CallStatus::Aborted});
+            if let Some(i) = &m.id {
+                fields["id"] = i.clone();
+            }
+            let body = body.unwrap_or_else(|| empty_map(m.how.cbor));
+            return self.send_op(fields, "values", &body, m.how).await;
+        }
+        if !ok {
+            let text = format!(
+                "service {} {}: {text}",
+                m.name,
+                status.as_str().replace('_', " ")
+            );
+            return self
+                .service_failed(&m.name, m.id.as_ref(), text, m.how.cbor)
+                .await;
+        }
+        let mut fields = json!({"op": "service_response", "service": m.name, "result": true});
+        if let Some(i) = &m.id {
+            fields["id"] = i.clone();
+        }
+        let body = body.unwrap_or_else(|| empty_map(m.how.cbor));
+        self.send_op(fields, "values", &body, m.how).await;
+    }
+}
+
+fn empty_map(cbor: bool) -> Bytes {
+    if cbor {
+        Bytes::from_static(&[0xa0])
+    } else {
+        Bytes::from_static(b"{}")
+    }
+}
+
+fn json_to_cbor(json: &Bytes) -> Bytes {
+    fleetlink_proto::rosbridge::convert::json_to_cbor(json)
+        .map(Bytes::from)
+        .unwrap_or_else(|_| Bytes::from_static(&[0xf6]))
+}
+
+/// An object (JSON object or CBOR map), as `args` and `values` must be.
+fn is_map(p: &Payload) -> bool {
+    match p.encoding {
+        Encoding::Json => p.bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{'),
+        Encoding::Cbor => p.bytes.first().is_some_and(|b| b >> 5 == 5),
+        _ => true,
+    }
+}
+
+/// What a provider's `result: false` says: its `values` when they are a text, else a
+/// generic line naming the service.
+fn failure_text(values: Option<&Payload>, name: &TopicName) -> String {
+    let parsed: Option<Value> = values.and_then(|v| match v.encoding {
+        Encoding::Json => serde_json::from_slice(&v.bytes).ok(),
+        Encoding::Cbor => ciborium::from_reader(&v.bytes[..]).ok(),
+        _ => None,
+    });
+    match parsed {
+        Some(Value::String(s)) if !s.is_empty() => s,
+        Some(v @ Value::Object(_)) => format!("the provider of {name} failed: {v}"),
+        _ => format!("the provider of {name} answered result: false"),
+    }
+}
