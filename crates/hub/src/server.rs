@@ -192,6 +192,7 @@ impl Hub {
             security: security.clone(),
             default_heartbeat_ms: cfg.heartbeat.as_millis() as u32,
             ledger: Arc::new(crate::delivery::DeliveryLedger::new(store.clone())),
+            rosout: crate::rosout::RosOut::start(router.clone()),
         });
         let rosbridge = Arc::new(SessionConfig {
             node_name: "/fleetlink_hub".into(),
@@ -238,6 +239,13 @@ impl Hub {
         let token = state.shutdown.clone();
         // Call deadlines: one timer task for the hub's call table.
         tokio::spawn(state.router.calls.clone().run_deadlines(token.clone()));
+        tokio::spawn(
+            state
+                .agents
+                .rosout
+                .clone()
+                .run(state.registry.clone(), token.clone()),
+        );
         let api = crate::api::routes()
             .route("/metrics", get(crate::metrics::handler))
             .route_layer(axum::middleware::from_fn_with_state(

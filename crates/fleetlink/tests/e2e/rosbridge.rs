@@ -308,5 +308,55 @@ async fn a_client_that_publishes_and_subscribes_on_one_connection_receives_its_o
         }
     }
     assert_eq!(counted.len(), 20, "{counted:?}");
-    assert!(counted.values().all(|n| *n == 1), "a message came back: {counted:?}");
+    assert!(
+        counted.values().all(|n| *n == 1),
+        "a message came back: {counted:?}"
+    );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rosout_carries_hub_events_and_the_robots_own_logs() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/rosout", "id": "r"}))
+        .await;
+    op.call("/rosapi/get_time", json!({}), "sync").await;
+    let agent = start_agent(&hub, "r7").await;
+    let line = within("the robot's arrival on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"].as_str().unwrap_or_default().contains("robot r7 connected") {
+                return m;
+            }
+        }
+    })
+    .await;
+    assert_eq!(line["msg"]["level"], 20);
+    assert_eq!(line["msg"]["name"], "fleetlink_hub");
+    // A log line the robot publishes on its /rosout joins the hub's /rosout unchanged.
+    let mut log = LocalPublisher::new(&agent.router, "/rosout", "rcl_interfaces/msg/Log");
+    within("the robot's own log on /rosout", async {
+        for i in 0..400u32 {
+            log.publish_json(&json!({"stamp": {"sec": 1, "nanosec": i}, "level": 40,
+                "name": "planner", "msg": "no path", "file": "", "function": "", "line": 0}));
+            if let Ok(Some(m)) = tokio::time::timeout(Duration::from_millis(25), op.try_recv()).await
+                && m["msg"]["name"] == "planner"
+            {
+                assert_eq!(m["msg"]["level"], 40);
+                return;
+            }
+        }
+        panic!("the robot's log never reached /rosout");
+    })
+    .await;
+    agent.shutdown().await;
+    within("the robot's departure on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"].as_str().unwrap_or_default().contains("robot r7 disconnected") {
+                return;
+            }
+        }
+    })
+    .await;
 }
