@@ -489,3 +489,46 @@ async fn protocol_odds_and_ends_fragments_set_level_png_and_plain_error_texts() 
         "the error sent at level none was not suppressed: {s}"
     );
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn json_publishes_are_checked_and_completed_against_their_type_once_at_the_hub() {
+    let hub = start_hub().await;
+    let mut sub = Rosbridge::connect(&hub.ws_url()).await;
+    for t in ["/typed_int", "/typed_pose"] {
+        sub.send(json!({"op": "subscribe", "topic": t, "id": t}))
+            .await;
+    }
+    let mut p = Rosbridge::connect(&hub.ws_url()).await;
+    p.send(json!({"op": "advertise", "topic": "/typed_int", "type": "std_msgs/msg/Int32"}))
+        .await;
+    p.send(
+        json!({"op": "advertise", "topic": "/typed_pose", "type": "geometry_msgs/msg/PoseStamped"}),
+    )
+    .await;
+    sub.call("/rosapi/get_time", json!({}), "sync").await;
+    p.send(
+        json!({"op": "publish", "topic": "/typed_int", "msg": {"data": "notanint"}, "id": "bad"}),
+    )
+    .await;
+    let s = p.recv_op("status").await;
+    let text = s["msg"].as_str().unwrap();
+    assert!(
+        text.contains("/typed_int") && text.contains("data"),
+        "{text}"
+    );
+    assert_eq!(s["id"], "bad");
+    // Missing fields are filled, integers in float fields become floats.
+    p.send(
+        json!({"op": "publish", "topic": "/typed_pose", "msg": {"pose": {"position": {"x": 1}}}}),
+    )
+    .await;
+    let m = sub.recv_op("publish").await;
+    assert_eq!(
+        m["topic"], "/typed_pose",
+        "the bad Int32 was not delivered: {m}"
+    );
+    assert_eq!(m["msg"]["header"]["frame_id"], "");
+    assert_eq!(m["msg"]["header"]["stamp"]["sec"], 0);
+    assert_eq!(m["msg"]["pose"]["orientation"]["w"], 1.0, "{m}");
+    assert!(m["msg"]["pose"]["position"]["x"].is_f64(), "{m}");
+}

@@ -562,6 +562,21 @@ impl Session {
                 .insert(name.clone(), Published { topic: t, seq: 0 });
         }
         let p = self.published.get_mut(&name).expect("inserted above");
+        // Checked and completed once here, for every subscriber.
+        let msg = match self
+            .router
+            .transcoder()
+            .normalize(&p.topic.meta().schema, &msg)
+        {
+            Ok(Some(normal)) => normal,
+            Ok(None) => msg,
+            Err(e) => {
+                return Err(format!(
+                    "publish {name}: the message does not fit its type: {}",
+                    e.cause_text()
+                ));
+            }
+        };
         p.seq += 1;
         let size = msg.len();
         p.topic.publish(self.client, p.seq, unix_nanos(), msg);
