@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Dashboard suite: the fleet dashboard (web/) as the hub serves it, in headless Chromium.
+#
+# 1. The committed bundle (crates/hub/assets/dashboard/) is what web/ builds now: a fresh
+#    build into a temp directory must be byte-identical, else the bundle is stale
+#    (fix: web/build.sh, commit the result).
+# 2. Unit tests of the page's message handling (node --test) on CBOR/JSON frames the hub
+#    produced (web/test/fixtures).
+# 3. `fleetlink demo` (hub + 3 simulated robots) with two extra credentials minted in its
+#    database first: a viewer (operator with no group, allowed to subscribe only) — the
+#    demo prints the admin operator token itself. Then dashboard_check.mjs drives Chromium
+#    through the fleet view, the robot view, a navigation goal and Cancel, a service form,
+#    the admin view, and the viewer's disabled tasking and refused forged publish.
+#
+# Screenshots are kept in the directory printed at the end (outside the suite's temp
+# directory, which is removed). Every process started here is stopped on exit. Bounded:
+# under 3 minutes. Env: FLEETLINK_BIN (default target/release/fleetlink),
+# DASHBOARD_SHOTS (default: a new directory under ${TMPDIR:-/tmp}).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+web="$root/web"
+started=$SECONDS
+
+[ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
+[ -x /usr/bin/chromium ] || { echo "FAIL: /usr/bin/chromium missing; run scripts/setup.d/60-browser.sh" >&2; exit 1; }
+[ -d "$web/node_modules/puppeteer-core" ] || { echo "FAIL: web/node_modules missing; run scripts/setup.d/55-web-packages.sh" >&2; exit 1; }
+
+# shellcheck source=../lib.sh
+. "$here/../lib.sh"
+interop_begin dashboard
+shots="${DASHBOARD_SHOTS:-$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-dashboard-shots.XXXXXX")}"
+failed=()
+
+echo "== committed bundle is up to date"
+(cd "$web" && timeout 120 node build.mjs --out "$tmp/bundle" >/dev/null)
+if diff -r "$tmp/bundle" "$root/crates/hub/assets/dashboard" >/dev/null; then
+    echo "ok   crates/hub/assets/dashboard matches a fresh build of web/"
+else
+    echo "FAIL the committed dashboard bundle is stale: run web/build.sh and commit crates/hub/assets/dashboard"
+    diff -rq "$tmp/bundle" "$root/crates/hub/assets/dashboard" || true
+    failed+=("stale bundle")
+fi
+
+echo "== unit tests (web/test, frames from the hub)"
+if (cd "$web" && timeout 120 node build.mjs --out "$tmp/bundle-tests" --tests >/dev/null && timeout 60 node --test test-build/); then
+    :
+else
+    failed+=("unit tests")
+fi
+
+echo "== fleetlink demo"
+data="$tmp/demo-data"
+admin() { timeout 30 "$bin" admin --data-dir "$data" "$@"; }
+viewer_token="$(admin token operator viewer)"
+admin rules import - >/dev/null <<'RULES'
+rules:
+  - subject: {user: viewer}
+    names: "/.*"
+    ops: [subscribe]
+    comment: "dashboard suite: a viewer may look, not task"
+RULES
+: >"$tmp/hub.log"
+"$bin" demo --listen 127.0.0.1:0 --data-dir "$data" >"$tmp/hub.log" 2>&1 &
+pids+=($!)
+addr="$(wait_for_line "$tmp/hub.log" '^  open http://([0-9.:]+)/ in a browser$' "demo start" "${pids[0]}")"
+op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \(full rights\): (.+)$' "operator token" "${pids[0]}")"
+echo "demo hub: http://$addr/"
+# Ready: three robots online (bounded, 15 s).
+for i in $(seq 150); do
+    n="$(curl -fsS -H "Authorization: Bearer $op_token" "http://$addr/api/v1/robots" 2>/dev/null | grep -o '"online":true' | wc -l || true)"
+    [ "$n" -ge 3 ] && break
+    [ "$i" -eq 150 ] && { echo "FAIL: 3 robots not online within 15 s" >&2; exit 1; }
+    sleep 0.1
+done
+
+echo "== headless Chromium"
+if ! timeout --kill-after=5 120 node "$here/dashboard_check.mjs" --url "http://$addr/" \
+        --op-token "$op_token" --viewer-token "$viewer_token" --shots "$shots"; then
+    failed+=("browser checks")
+fi
+kill -0 "${pids[0]}" 2>/dev/null || failed+=("demo process died")
+
+echo "screenshots: $shots"
+echo "dashboard suite: ${#failed[@]} failure(s), $((SECONDS - started)) s"
+if [ ${#failed[@]} -ne 0 ]; then
+    echo "FAIL: ${failed[*]}" >&2
+    exit 1
+fi
+echo "PASS: dashboard (bundle fresh, unit tests, Chromium against fleetlink demo)"
