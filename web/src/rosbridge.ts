@@ -241,6 +241,10 @@ export class Rosbridge {
     });
   }
 
+  unadvertise(topic: string) {
+    this.send({ op: "unadvertise", topic });
+  }
+
   /** Publishes; `onRefused` gets the hub's text if the publish is refused. */
   publish(topic: string, msg: unknown, onRefused?: (why: string) => void) {
     const id = `pub:${topic}:${this.nextId++}`;

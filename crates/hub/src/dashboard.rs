@@ -73,7 +73,10 @@ pub fn serve(path: &str, request: &HeaderMap) -> Option<Response> {
     } else {
         (
             headers,
-            [(header::CONTENT_TYPE, HeaderValue::from_static(asset.content_type))],
+            [(
+                header::CONTENT_TYPE,
+                HeaderValue::from_static(asset.content_type),
+            )],
             asset.body,
         )
             .into_response()
@@ -111,6 +114,9 @@ mod tests {
     fn the_page_loads_only_embedded_files() {
         let html = std::str::from_utf8(ASSETS[0].body).expect("utf-8 index.html");
         assert!(html.contains("src=\"app.js\"") && html.contains("href=\"app.css\""));
-        assert!(!html.contains("http://") && !html.contains("https://"), "no CDN");
+        assert!(
+            !html.contains("http://") && !html.contains("https://"),
+            "no CDN"
+        );
     }
 }

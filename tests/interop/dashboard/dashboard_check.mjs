@@ -19,6 +19,7 @@ const { values: o } = parseArgs({
     url: { type: "string" }, "op-token": { type: "string" }, "viewer-token": { type: "string" },
     shots: { type: "string" }, robot: { type: "string", default: "robot1" },
     browser: { type: "string", default: "/usr/bin/chromium" },
+    "offline-robot": { type: "string" }, "offline-pid": { type: "string" },
   },
 });
 mkdirSync(o.shots, { recursive: true });
@@ -47,9 +48,9 @@ const browser = await puppeteer.launch({
   args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist", "--window-size=1500,1000"],
   defaultViewport: { width: 1500, height: 1000 },
 });
-const shot = async (page, name) => {
+const shot = async (page, name, fullPage = false) => {
   const f = join(o.shots, `${name}.png`);
-  await page.screenshot({ path: f });
+  await page.screenshot({ path: f, fullPage });
   console.log(`     screenshot ${f}`);
 };
 
@@ -85,9 +86,17 @@ try {
     if (moved) ok(`fleet view: 3 robots on the map and moving after ${Date.now() - t0} ms`);
   }
   const cards = await page.$$eval(".robot.online", (e) => e.map((x) => x.dataset.robot));
-  check(cards.length === 3, `fleet list shows 3 online robots (${cards.join(", ")})`);
+  check(["robot1", "robot2", "robot3"].every((r) => cards.includes(r)), `fleet list shows the demo's robots online (${cards.join(", ")})`);
   const rtt = await page.$eval(".robot.online dl", (e) => e.textContent);
   check(/RTT/.test(rtt) && /msg\/s/.test(rtt), "fleet list shows RTT and msg/s");
+  // A robot whose agent stops: greyed in the list and on the map, with when it went.
+  if (o["offline-robot"]) {
+    const gone = o["offline-robot"];
+    await until(page, (r) => window.fleetlink.poses[r], gone, 5000, `${gone} on the map`);
+    process.kill(Number(o["offline-pid"]), "SIGTERM");
+    const text = await until(page, (r) => { const c = document.querySelector(`.robot.offline[data-robot=${r}]`); return c && c.textContent; }, gone, 8000, `${gone} shown offline`);
+    if (text) check(/gone/.test(text), `${gone} greyed as offline: "${text.slice(0, 60)}"`);
+  }
   await sleep(800); // trails of a few seconds in the picture
   await shot(page, "1-fleet");
 
@@ -113,7 +122,7 @@ try {
   check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
   const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
   check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
-  await shot(page, "2-robot");
+  await shot(page, "2-robot", true);
 
   // --- navigation goal clicked on the map: the robot drives there, feedback shown
   step = "navigate";
@@ -170,13 +179,13 @@ try {
   await page.click(".svcform button[type=submit]");
   const sm = await until(page, () => window.fleetlink.lastServiceResponse, null, 5000, "set_mode response");
   check(sm?.ok && sm.values.success === true, `set_mode(true) via the form: ${JSON.stringify(sm?.values)}`);
-  await shot(page, "5-service");
+  await shot(page, "5-service", true);
 
   // --- admin: audit log and rules
   step = "admin";
   await page.goto(`${o.url}#/admin`);
   await until(page, () => document.querySelectorAll("table.audit tbody tr").length > 0, null, 5000, "audit log rows");
-  await shot(page, "6-admin");
+  await shot(page, "6-admin", true);
   check(errors.length === 0, `no page errors (${errors.slice(0, 3).join(" | ")})`);
   check(external.length === 0, `no request outside the hub (${external.slice(0, 3).join(", ")})`);
   await page.close();

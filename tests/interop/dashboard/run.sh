@@ -6,9 +6,10 @@
 #    (fix: web/build.sh, commit the result).
 # 2. Unit tests of the page's message handling (node --test) on CBOR/JSON frames the hub
 #    produced (web/test/fixtures).
-# 3. `fleetlink demo` (hub + 3 simulated robots) with two extra credentials minted in its
-#    database first: a viewer (operator with no group, allowed to subscribe only) — the
-#    demo prints the admin operator token itself. Then dashboard_check.mjs drives Chromium
+# 3. `fleetlink demo` (hub + 3 simulated robots) with extra credentials minted in its
+#    database first: a viewer (operator with no group, allowed to subscribe only; the
+#    demo prints the admin operator token itself) and robot4, a separate agent that the
+#    browser check stops to see a robot go offline. Then dashboard_check.mjs drives Chromium
 #    through the fleet view, the robot view, a navigation goal and Cancel, a service form,
 #    the admin view, and the viewer's disabled tasking and refused forged publish.
 #
@@ -54,6 +55,8 @@ echo "== fleetlink demo"
 data="$tmp/demo-data"
 admin() { timeout 30 "$bin" admin --data-dir "$data" "$@"; }
 viewer_token="$(admin token operator viewer)"
+# A fourth robot outside the demo process, stopped mid-test to see it go offline.
+robot4_token="$(admin token robot robot4)"
 admin rules import - >/dev/null <<'RULES'
 rules:
   - subject: {user: viewer}
@@ -67,17 +70,31 @@ pids+=($!)
 addr="$(wait_for_line "$tmp/hub.log" '^  open http://([0-9.:]+)/ in a browser$' "demo start" "${pids[0]}")"
 op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \(full rights\): (.+)$' "operator token" "${pids[0]}")"
 echo "demo hub: http://$addr/"
-# Ready: three robots online (bounded, 15 s).
+: >"$tmp/agent.log"
+cat >"$tmp/robot4.yaml" <<EOF
+hub: ws://$addr/
+name: robot4
+token: $robot4_token
+local_rosbridge: null
+sim:
+  seed: 4
+  pose: { rate_hz: 10 }
+EOF
+"$bin" agent --name robot4 --config "$tmp/robot4.yaml" >"$tmp/agent.log" 2>&1 &
+pids+=($!)
+robot4_pid=$!
+# Ready: four robots online (bounded, 15 s).
 for i in $(seq 150); do
     n="$(curl -fsS -H "Authorization: Bearer $op_token" "http://$addr/api/v1/robots" 2>/dev/null | grep -o '"online":true' | wc -l || true)"
-    [ "$n" -ge 3 ] && break
-    [ "$i" -eq 150 ] && { echo "FAIL: 3 robots not online within 15 s" >&2; exit 1; }
+    [ "$n" -ge 4 ] && break
+    [ "$i" -eq 150 ] && { echo "FAIL: 4 robots not online within 15 s" >&2; exit 1; }
     sleep 0.1
 done
 
 echo "== headless Chromium"
 if ! timeout --kill-after=5 120 node "$here/dashboard_check.mjs" --url "http://$addr/" \
-        --op-token "$op_token" --viewer-token "$viewer_token" --shots "$shots"; then
+        --op-token "$op_token" --viewer-token "$viewer_token" --shots "$shots" \
+        --offline-robot robot4 --offline-pid "$robot4_pid"; then
     failed+=("browser checks")
 fi
 kill -0 "${pids[0]}" 2>/dev/null || failed+=("demo process died")

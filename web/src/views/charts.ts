@@ -5,13 +5,14 @@ import uPlot from "uplot";
 
 export class Series {
   readonly t: number[] = [];
-  readonly ys: number[][];
+  /** `null` marks a gap (uPlot skips it; NaN would spoil the axis range). */
+  readonly ys: (number | null)[][];
   constructor(n: number, private keep: number) {
     this.ys = Array.from({ length: n }, () => []);
   }
   push(t: number, ...v: (number | null)[]) {
     this.t.push(t);
-    v.forEach((x, i) => this.ys[i].push(x ?? NaN));
+    v.forEach((x, i) => this.ys[i].push(x != null && Number.isFinite(x) ? x : null));
     if (this.t.length > this.keep) {
       this.t.shift();
       for (const y of this.ys) y.shift();

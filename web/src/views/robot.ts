@@ -67,8 +67,8 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   const scanP = panel(grid, "Laser scan");
   const cloudP = panel(grid, "Point cloud (3D)");
   const camP = panel(grid, "Camera");
+  const topicsP = panel(grid, "Topics", "full");
   const inspP = panel(grid, "Inspector", "inspector");
-  const topicsP = panel(grid, "Topics", "wide");
   const linkP = panel(grid, "Link quality (last 5 minutes)", "wide");
 
   let pose: { x: number; y: number; yaw: number } | null = null;
@@ -223,10 +223,10 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     // Inspector: any topic, JSON tree, rate and latency.
     const sel = el("select");
     const tree = el("div", "tree");
-    inspP.box.querySelector("h2")!.appendChild(sel);
-    inspP.body.appendChild(tree);
+    inspP.body.append(sel, tree);
     const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic]);
-    const firstOther = own.find((t) => !shown.has(t.name)) ?? own[0];
+    // Start on a live topic the other panels do not show (odometry, in the demo).
+    const firstOther = own.find((t) => !shown.has(t.name) && t.rate_hz > 0) ?? own.find((t) => !shown.has(t.name)) ?? own[0];
     for (const t of own) sel.appendChild(new Option(`${t.name} (${t.type})`, t.name));
     if (firstOther) sel.value = firstOther.name;
     let unsubInsp: (() => void) | null = null, last: any = null, lastAt = 0, n = 0, t0 = performance.now();

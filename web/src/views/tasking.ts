@@ -157,12 +157,16 @@ export function taskingPanel(
       if (why) disable(cancel, "navigate", `the hub lists no navigation action you may use on ${robot}, and refused the goal topic: ${why}`, navHelp);
       else {
         goalTopicAllowed = true;
+        cleanups.push(() => rb.unadvertise(`${ns}goal_pose`));
         navHelp.textContent = `No navigation action listed for you; clicks publish a PoseStamped on ${ns}goal_pose.`;
       }
     }
     const whyInit = await rb.advertise(`${ns}initialpose`, "geometry_msgs/msg/PoseWithCovarianceStamped");
     if (whyInit) disable(initBtn, "initialpose", whyInit, initNote);
-    else initAllowed = true;
+    else {
+      initAllowed = true;
+      cleanups.push(() => rb.unadvertise(`${ns}initialpose`));
+    }
     const own = services.filter((s) => s.startsWith(ns));
     if (own.length === 0) {
       disable(svcSel, "services", `the hub lists no services of ${robot} you may call (/rosapi/services)`, svcNote);
