@@ -3,7 +3,7 @@
 // service form call, and a viewer without publish rights. Screenshots of each view go
 // to --shots. Exits non-zero when any check failed.
 //
-//   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --op-token T --viewer-token V --shots DIR
+//   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --user U --password P --viewer-token V --shots DIR
 import { mkdirSync } from "node:fs";
 import { createRequire } from "node:module";
 import { dirname, join } from "node:path";
@@ -16,7 +16,7 @@ const puppeteer = (await import(pathToFileURL(createRequire(join(web, "package.j
 
 const { values: o } = parseArgs({
   options: {
-    url: { type: "string" }, "op-token": { type: "string" }, "viewer-token": { type: "string" },
+    url: { type: "string" }, user: { type: "string" }, password: { type: "string" }, "viewer-token": { type: "string" },
     shots: { type: "string" }, robot: { type: "string", default: "robot1" },
     browser: { type: "string", default: "/usr/bin/chromium" },
     "offline-robot": { type: "string" }, "offline-pid": { type: "string" },
@@ -54,9 +54,13 @@ const shot = async (page, name, fullPage = false) => {
   console.log(`     screenshot ${f}`);
 };
 
-async function signIn(page, token) {
+async function signIn(page, token, user, password) {
   await page.click("#signin");
-  await page.type("#login-form input[name=token]", token);
+  if (token) await page.type("#login-form input[name=token]", token);
+  else {
+    await page.type("#login-form input[name=user]", user);
+    await page.type("#login-form input[name=password]", password);
+  }
   await page.click("#login-form button[type=submit]");
   await page.waitForFunction(() => document.querySelector("#who")?.textContent?.includes("signed in"), { timeout: 5000 });
 }
@@ -100,11 +104,14 @@ try {
   await sleep(800); // trails of a few seconds in the picture
   await shot(page, "1-fleet");
 
-  // --- sign in with the operator token (kept in sessionStorage only)
+  // --- sign in with user + password: a session token, kept in sessionStorage only
   step = "signin";
-  await signIn(page, o["op-token"]);
-  const stored = await page.evaluate(() => ({ s: sessionStorage.getItem("fleetlink.token"), l: Object.keys(localStorage).filter((k) => /token/.test(k)) }));
-  check(stored.s === o["op-token"] && stored.l.length === 0, "token kept in sessionStorage, not localStorage");
+  await signIn(page, null, o.user, o.password);
+  const who = await page.$eval("#who", (e) => e.textContent);
+  check(who.includes(`user:${o.user}`), `signed in with a password: "${who}"`);
+  const stored = await page.evaluate(() => ({ s: sessionStorage.getItem("fleetlink.token"), l: Object.keys(localStorage).filter((k) => /token/.test(k)), c: document.cookie }));
+  check(stored.s && stored.l.length === 0 && !stored.c, "session token kept in sessionStorage, not localStorage or a cookie");
+  const session = stored.s;
 
   // --- robot view: panels update
   step = "robot";
@@ -187,6 +194,12 @@ try {
   await until(page, () => document.querySelectorAll("table.audit tbody tr").length > 0, null, 5000, "audit log rows");
   await shot(page, "6-admin", true);
   check(errors.length === 0, `no page errors (${errors.slice(0, 3).join(" | ")})`);
+  // Sign out ends the session at the hub: the token no longer opens the API.
+  step = "signout";
+  await page.click("#signout");
+  await page.waitForFunction(() => /anonymous/.test(document.querySelector("#who").textContent), { timeout: 5000 });
+  const after = await page.evaluate(async (t) => ({ kept: sessionStorage.getItem("fleetlink.token"), status: (await fetch("/api/v1/robots", { headers: { Authorization: `Bearer ${t}` } })).status }), session);
+  check(after.kept === null && after.status === 401, `sign out: token forgotten and refused by the hub afterwards (HTTP ${after.status})`);
   check(external.length === 0, `no request outside the hub (${external.slice(0, 3).join(", ")})`);
   await page.close();
 

@@ -7,8 +7,8 @@
 # 2. Unit tests of the page's message handling (node --test) on CBOR/JSON frames the hub
 #    produced (web/test/fixtures).
 # 3. `fleetlink demo` (hub + 3 simulated robots) with extra credentials minted in its
-#    database first: a viewer (operator with no group, allowed to subscribe only; the
-#    demo prints the admin operator token itself) and robot4, a separate agent that the
+#    database first: alice (admin group, signs in with a password), a viewer (operator
+#    token with no group, allowed to subscribe only) and robot4, a separate agent that the
 #    browser check stops to see a robot go offline. Then dashboard_check.mjs drives Chromium
 #    through the fleet view, the robot view, a navigation goal and Cancel, a service form,
 #    the admin view, and the viewer's disabled tasking and refused forged publish.
@@ -55,6 +55,9 @@ echo "== fleetlink demo"
 data="$tmp/demo-data"
 admin() { timeout 30 "$bin" admin --data-dir "$data" "$@"; }
 viewer_token="$(admin token operator viewer)"
+# An admin who signs in with a password (the page's login form → POST /api/v1/login).
+alice_password="dashboard-$RANDOM-$RANDOM"
+printf '%s\n' "$alice_password" | admin users add alice --group admin >/dev/null
 # A fourth robot outside the demo process, stopped mid-test to see it go offline.
 robot4_token="$(admin token robot robot4)"
 admin rules import - >/dev/null <<'RULES'
@@ -93,7 +96,7 @@ done
 
 echo "== headless Chromium"
 if ! timeout --kill-after=5 120 node "$here/dashboard_check.mjs" --url "http://$addr/" \
-        --op-token "$op_token" --viewer-token "$viewer_token" --shots "$shots" \
+        --user alice --password "$alice_password" --viewer-token "$viewer_token" --shots "$shots" \
         --offline-robot robot4 --offline-pid "$robot4_pid"; then
     failed+=("browser checks")
 fi

@@ -23,7 +23,7 @@ export function bps(v: number | null | undefined): string {
 export function ago(ms: number | null | undefined): string {
   if (!ms) return "never";
   const s = Math.max(0, (Date.now() - ms) / 1000);
-  if (s < 2) return "now";
+  if (s < 2) return "just now";
   if (s < 90) return `${s.toFixed(0)} s ago`;
   if (s < 5400) return `${(s / 60).toFixed(0)} min ago`;
   return new Date(ms).toLocaleString();
