@@ -10,6 +10,8 @@ export interface Probe {
   disabled: Record<string, string>;
   renders: number;
   cloudAgesMs: number[];
+  /** Milliseconds spent, summed: decoding frames, unpacking clouds, drawing clouds. */
+  busyMs: { decode: number; cloudUnpack: number; cloudRender: number };
   /** Map coordinates → CSS pixels inside the robot view's map canvas (for click tests). */
   mapToScreen: ((x: number, y: number) => [number, number]) | null;
 }
@@ -23,6 +25,7 @@ export const probe: Probe = {
   disabled: {},
   renders: 0,
   cloudAgesMs: [],
+  busyMs: { decode: 0, cloudUnpack: 0, cloudRender: 0 },
   mapToScreen: null,
 };
 

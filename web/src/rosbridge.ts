@@ -9,6 +9,7 @@
 // explain what is disabled, it never guesses roles.
 
 import { Decoder } from "cbor-x";
+import { probe } from "./probe";
 
 const cbor = new Decoder({ int64AsNumber: true, mapsAsObjects: true, useRecords: false } as never);
 
@@ -112,6 +113,7 @@ export class Rosbridge {
         this.bytesIn += data.byteLength;
         m = decodeFrame(data);
       }
+      probe.busyMs.decode += performance.now() - now;
     } catch (e) {
       console.warn("undecodable frame from the hub", e);
       return;

@@ -33,7 +33,7 @@ try {
   await page.goto(`${o.url}#/robot/${o.robot}`);
   await page.waitForFunction(() => (window.fleetlink?.frames?.["cloud-rendered"] ?? 0) > 5, { timeout: 30000 });
   const heap = async () => { await page.evaluate(() => window.gc?.()); return (await page.metrics()).JSHeapUsedSize; };
-  const read = () => page.evaluate(() => ({ renders: window.fleetlink.renders, shown: window.fleetlink.frames["cloud-rendered"] ?? 0, ages: window.fleetlink.cloudAgesMs.splice(0), points: document.querySelector(".robot-grid section:nth-child(4) .info")?.textContent }));
+  const read = () => page.evaluate(() => ({ busy: { ...window.fleetlink.busyMs }, renders: window.fleetlink.renders, shown: window.fleetlink.frames["cloud-rendered"] ?? 0, ages: window.fleetlink.cloudAgesMs.splice(0), points: document.querySelector(".robot-grid section:nth-child(4) .info")?.textContent }));
   const start = Date.now();
   await read(); // drop the warm-up ages
   const a = await read();
@@ -46,6 +46,8 @@ try {
     clouds_shown_per_s: Number(((b.shown - a.shown) / secs).toFixed(2)),
     cloud_age_ms: { p50: pct(b.ages, 50), p99: pct(b.ages, 99), n: b.ages.length },
     panel: b.points,
+    // Share of wall time the page's main thread spent on each (summed ms / elapsed ms).
+    busy_share: Object.fromEntries(Object.keys(b.busy).map((k) => [k, Number(((b.busy[k] - a.busy[k]) / (secs * 1000)).toFixed(3))])),
   };
   if (o.shot) await page.screenshot({ path: o.shot });
   const minutes = Number(o.minutes);

@@ -6,8 +6,21 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { type Cloud, stampMs, unpackCloud } from "../messages";
+import { probe } from "../probe";
 
 export type ColourBy = "height" | "intensity";
+
+/** Blue (low) to red (high), precomputed: a table lookup per point, not a colour conversion. */
+const RAMP_STEPS = 256;
+const RAMP = (() => {
+  const t = new Float32Array(RAMP_STEPS * 3);
+  const c = new THREE.Color();
+  for (let i = 0; i < RAMP_STEPS; i++) {
+    c.setHSL(0.66 * (1 - i / (RAMP_STEPS - 1)), 0.9, 0.55);
+    t.set([c.r, c.g, c.b], i * 3);
+  }
+  return t;
+})();
 
 export class CloudView {
   private renderer: THREE.WebGLRenderer;
@@ -64,6 +77,7 @@ export class CloudView {
 
   /** Takes a decoded PointCloud2 message; returns the number of points. */
   show(msg: any): number {
+    const t0 = performance.now();
     this.cloud = unpackCloud(msg, this.cloud);
     const n = this.cloud.count;
     if (n > this.capacity) {
@@ -81,6 +95,7 @@ export class CloudView {
     this.lastCount = n;
     this.pending = true;
     this.pendingStamp = stampMs(msg.header);
+    probe.busyMs.cloudUnpack += performance.now() - t0;
     this.dirty = true;
     return n;
   }
@@ -93,20 +108,21 @@ export class CloudView {
       if (v < lo) lo = v;
       if (v > hi) hi = v;
     }
-    const span = hi > lo ? hi - lo : 1;
-    const tmp = new THREE.Color();
+    const k = (RAMP_STEPS - 1) / (hi > lo ? hi - lo : 1);
     for (let i = 0; i < n; i++) {
-      const v = ((byI ? c.intensity[i] : c.positions[i * 3 + 2]) - lo) / span;
-      tmp.setHSL(0.66 * (1 - v), 0.9, 0.55);
-      out[i * 3] = tmp.r;
-      out[i * 3 + 1] = tmp.g;
-      out[i * 3 + 2] = tmp.b;
+      const j = Math.round(((byI ? c.intensity[i] : c.positions[i * 3 + 2]) - lo) * k) * 3;
+      out[i * 3] = RAMP[j];
+      out[i * 3 + 1] = RAMP[j + 1];
+      out[i * 3 + 2] = RAMP[j + 2];
     }
   }
 
   private render() {
     this.dirty = false;
+    const t0 = performance.now();
     this.renderer.render(this.scene, this.camera);
+    // WebGL is asynchronous: this counts the CPU side of the draw (buffer uploads).
+    probe.busyMs.cloudRender += performance.now() - t0;
     if (this.pending && this.onShown) this.onShown(this.pendingStamp);
     this.pending = false;
   }
