@@ -32,7 +32,9 @@ try {
   await page.evaluateOnNewDocument((t) => { sessionStorage.setItem("fleetlink.token", t); sessionStorage.setItem("fleetlink.principal", "bench"); }, o.token);
   await page.goto(`${o.url}#/robot/${o.robot}`);
   await page.waitForFunction(() => (window.fleetlink?.frames?.["cloud-rendered"] ?? 0) > 5, { timeout: 30000 });
-  const heap = async () => { await page.evaluate(() => window.gc?.()); return (await page.metrics()).JSHeapUsedSize; };
+  // The heap after a full garbage collection, so garbage not yet collected is not counted.
+  const cdp = await page.createCDPSession();
+  const heap = async () => { await cdp.send("HeapProfiler.collectGarbage"); return (await page.metrics()).JSHeapUsedSize; };
   const read = () => page.evaluate(() => ({ busy: { ...window.fleetlink.busyMs }, renders: window.fleetlink.renders, shown: window.fleetlink.frames["cloud-rendered"] ?? 0, ages: window.fleetlink.cloudAgesMs.splice(0), points: document.querySelector(".robot-grid section:nth-child(4) .info")?.textContent }));
   const start = Date.now();
   await read(); // drop the warm-up ages
@@ -54,11 +56,13 @@ try {
   if (minutes > 0) {
     // Memory: after 1 minute and after `minutes`, the page left running.
     const wait = async (m) => { const left = start + m * 60000 - Date.now(); if (left > 0) await sleep(left); };
-    await wait(1);
-    out.heap_bytes_1min = await heap();
-    await wait(minutes);
-    out[`heap_bytes_${minutes}min`] = await heap();
-    out.heap_growth = Number((out[`heap_bytes_${minutes}min`] / out.heap_bytes_1min - 1).toFixed(3));
+    // One sample a minute shows a trend, not just two points.
+    out.heap_bytes_by_minute = {};
+    for (let m = 1; m <= minutes; m++) {
+      await wait(m);
+      out.heap_bytes_by_minute[m] = await heap();
+    }
+    out.heap_growth = Number((out.heap_bytes_by_minute[minutes] / out.heap_bytes_by_minute[1] - 1).toFixed(3));
     const c = await read();
     out.cloud_age_ms_last_minutes = { p50: pct(c.ages, 50), p99: pct(c.ages, 99), n: c.ages.length };
   }

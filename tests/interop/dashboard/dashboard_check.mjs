@@ -192,7 +192,17 @@ try {
   step = "admin";
   await page.goto(`${o.url}#/admin`);
   await until(page, () => document.querySelectorAll("table.audit tbody tr").length > 0, null, 5000, "audit log rows");
+  await until(page, () => /user:viewer/.test(document.querySelector("table.rules")?.textContent ?? ""), null, 5000, "rules listed");
   await shot(page, "6-admin", true);
+  // Paging with the hub's cursor, and a filter.
+  const firstRow = await page.$eval("table.audit tbody tr", (e) => e.textContent);
+  await page.click(".pager button:nth-child(2)");
+  const paged = await until(page, (f) => /page 2/.test(document.querySelector(".pager").textContent) && document.querySelector("table.audit tbody tr")?.textContent !== f, firstRow, 5000, "audit log page 2");
+  if (paged) ok("audit log: next page shows older records");
+  await page.type(".filters input[name=action]", "login");
+  await page.click(".filters button[type=submit]");
+  const logins = await until(page, () => { const rows = [...document.querySelectorAll("table.audit tbody tr")]; return /page 1/.test(document.querySelector(".pager").textContent) && rows.length > 0 && rows.every((r) => r.children[3].textContent === "login") && rows.map((r) => r.children[1].textContent); }, null, 5000, "audit log filtered by action");
+  if (logins) check(logins.includes(`user:${o.user}`), `audit filter action=login: ${logins.join(", ")}`);
   check(errors.length === 0, `no page errors (${errors.slice(0, 3).join(" | ")})`);
   // Sign out ends the session at the hub: the token no longer opens the API.
   step = "signout";

@@ -88,7 +88,9 @@ export function adminView(root: HTMLElement): () => void {
       for (const x of r.rules) {
         const rule = x.rule ?? x;
         const tr = el("tr");
-        for (const v of [x.id ?? "", rule.subject, rule.names, Array.isArray(rule.ops) ? rule.ops.join(", ") : rule.ops, rule.effect ?? "allow", rule.comment ?? ""]) tr.appendChild(el("td", "", typeof v === "string" || typeof v === "number" ? String(v) : JSON.stringify(v)));
+        // `{user: alice}` reads better as `user:alice`; the words (`anyone`, ...) stay.
+        const subject = rule.subject && typeof rule.subject === "object" ? Object.entries(rule.subject).map(([k, v]) => `${k}:${v}`).join(" ") : rule.subject;
+        for (const v of [x.id ?? "", subject, rule.names, Array.isArray(rule.ops) ? rule.ops.join(", ") : rule.ops, rule.effect ?? "allow", rule.comment ?? ""]) tr.appendChild(el("td", "", typeof v === "string" || typeof v === "number" ? String(v) : JSON.stringify(v)));
         tb.appendChild(tr);
       }
       t.appendChild(tb);

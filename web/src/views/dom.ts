@@ -12,9 +12,10 @@ export function num(v: number | null | undefined, digits = 1): string {
   return Math.abs(v) >= 100 ? v.toFixed(0) : v.toFixed(digits);
 }
 
+/** A rate in bytes per second (the hub's `*_bps` fields are bytes, not bits). */
 export function bps(v: number | null | undefined): string {
   if (v == null || !Number.isFinite(v) || v <= 0) return "–";
-  const units = ["bit/s", "kbit/s", "Mbit/s", "Gbit/s"];
+  const units = ["B/s", "kB/s", "MB/s", "GB/s"];
   let x = v, i = 0;
   while (x >= 1000 && i < units.length - 1) { x /= 1000; i++; }
   return `${x.toFixed(x >= 100 ? 0 : 1)} ${units[i]}`;

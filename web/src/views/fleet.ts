@@ -121,7 +121,7 @@ export function fleetView(root: HTMLElement, rb: Rosbridge, open: (robot: string
       row("last seen", ago(r.last_seen_ms));
       if (r.online) {
         row("RTT", r.rtt_ms != null ? `${num(r.rtt_ms)} ms` : "–");
-        row("goodput", bps(r.link_rate_bps), "link rate measured by the hub");
+        row("goodput", bps(r.link_rate_bps), "what the robot's link delivered (its link report)");
         row("msg/s", num(t.rate), `${bps(t.bw)} over ${r.topics.length} topics`);
         const drops = Object.entries(t.drops);
         row("drops", drops.length ? drops.map(([k, v]) => `${k} ${v}`).join(", ") : "none");

@@ -267,7 +267,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   const linkChart = new Chart(linkP.body, link, [
     { label: "RTT ms", colour: "#f2994a", scale: "ms" },
     { label: "latency ms", colour: "#eb5757", scale: "ms" },
-    { label: "link Mbit/s", colour: "#27ae60", scale: "r" },
+    { label: "link MB/s", colour: "#27ae60", scale: "r" },
   ], Math.max(400, linkP.body.clientWidth || 900), 180);
   cleanups.push(() => linkChart.destroy());
 
