@@ -4,7 +4,8 @@
 # 1. The committed bundle (crates/hub/assets/dashboard/) is what web/ builds now: a fresh
 #    build into a temp directory must be byte-identical, else the bundle is stale
 #    (fix: web/build.sh, commit the result).
-# 2. Unit tests of the page's message handling (node --test) on CBOR/JSON frames the hub
+# 2. The TypeScript type-checks (esbuild strips types without checking them), and unit
+#    tests of the page's message handling (node --test) on CBOR/JSON frames the hub
 #    produced (web/test/fixtures).
 # 3. `fleetlink demo` (hub + 3 simulated robots) with extra credentials minted in its
 #    database first: alice (admin group, signs in with a password), a viewer (operator
@@ -42,6 +43,13 @@ else
     echo "FAIL the committed dashboard bundle is stale: run web/build.sh and commit crates/hub/assets/dashboard"
     diff -rq "$tmp/bundle" "$root/crates/hub/assets/dashboard" || true
     failed+=("stale bundle")
+fi
+
+echo "== type check (tsc --noEmit)"
+if (cd "$web" && timeout 120 node node_modules/typescript/bin/tsc --noEmit); then
+    echo "ok   web/src type-checks"
+else
+    failed+=("type check")
 fi
 
 echo "== unit tests (web/test, frames from the hub)"
