@@ -198,6 +198,9 @@ pub struct Router {
     next_topic: AtomicU32,
     /// Queue length for subscriptions that do not ask for one.
     pub default_queue: usize,
+    /// And the most payload bytes such a queue holds: a burst of small messages arrives
+    /// whole, a slow subscriber of large ones keeps only the newest few.
+    pub default_queue_bytes: usize,
     pub started: Instant,
     /// Services and actions, and the calls in flight between this router's clients.
     pub calls: Arc<crate::calls::Calls>,
@@ -235,7 +238,8 @@ impl Router {
             next_client: AtomicU64::new(1),
             next_sub: AtomicU64::new(1),
             next_topic: AtomicU32::new(1),
-            default_queue: 100,
+            default_queue: 1000,
+            default_queue_bytes: 2 << 20,
             started: Instant::now(),
         }
     }
@@ -433,12 +437,28 @@ impl Router {
         if pattern.len() > MAX_PATTERN_LEN {
             return Err(bad(format!("longer than {MAX_PATTERN_LEN} bytes")));
         }
-        regex::RegexBuilder::new(&format!("^(?:{pattern})$"))
-            .size_limit(REGEX_SIZE_LIMIT)
-            .dfa_size_limit(REGEX_SIZE_LIMIT)
-            .nest_limit(64)
-            .build()
-            .map_err(|e| bad(e.to_string()))
+        // Errors speak of the client's pattern, not of the anchors added around it.
+        let why = |e: regex::Error| match e {
+            regex::Error::Syntax(text) => text
+                .lines()
+                .rev()
+                .find_map(|l| l.trim().strip_prefix("error: "))
+                .unwrap_or("not a valid regular expression")
+                .to_owned(),
+            regex::Error::CompiledTooBig(_) => {
+                format!("compiles to more than {} KiB", REGEX_SIZE_LIMIT >> 10)
+            }
+            _ => "not a valid regular expression".to_owned(),
+        };
+        let limits = |p: &str| {
+            regex::RegexBuilder::new(p)
+                .size_limit(REGEX_SIZE_LIMIT)
+                .dfa_size_limit(REGEX_SIZE_LIMIT)
+                .nest_limit(64)
+                .build()
+        };
+        limits(pattern).map_err(|e| bad(why(e)))?;
+        limits(&format!("^(?:{pattern})$")).map_err(|e| bad(why(e)))
     }
 
     /// Subscribes `client` to a topic or a pattern. Subscribing to a topic nobody
@@ -498,9 +518,16 @@ impl Router {
         let qos = opts.qos.clone().unwrap_or_else(|| {
             crate::queue::qos_for_options(opts.queue_length, opts.throttle_ms, self.default_queue)
         });
-        let slot = c
-            .outbox
-            .add_slot(&topic.meta(), &qos, topic.stats.clone(), opts.delivery);
+        // The byte bound applies where the subscriber did not choose its queue.
+        let max_bytes =
+            (opts.qos.is_none() && opts.queue_length == 0).then_some(self.default_queue_bytes);
+        let slot = c.outbox.add_slot(
+            &topic.meta(),
+            &qos,
+            topic.stats.clone(),
+            opts.delivery,
+            max_bytes,
+        );
         c.slots.insert(name, (slot, vec![sid]));
         let own = c.info.kind == ClientKind::Rosbridge;
         let r = SubscriberRef {

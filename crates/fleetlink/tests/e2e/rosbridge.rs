@@ -308,5 +308,184 @@ async fn a_client_that_publishes_and_subscribes_on_one_connection_receives_its_o
         }
     }
     assert_eq!(counted.len(), 20, "{counted:?}");
-    assert!(counted.values().all(|n| *n == 1), "a message came back: {counted:?}");
+    assert!(
+        counted.values().all(|n| *n == 1),
+        "a message came back: {counted:?}"
+    );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rosout_carries_hub_events_and_the_robots_own_logs() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/rosout", "id": "r"}))
+        .await;
+    op.call("/rosapi/get_time", json!({}), "sync").await;
+    let agent = start_agent(&hub, "r7").await;
+    let line = within("the robot's arrival on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"]
+                .as_str()
+                .unwrap_or_default()
+                .contains("robot r7 connected")
+            {
+                return m;
+            }
+        }
+    })
+    .await;
+    assert_eq!(line["msg"]["level"], 20);
+    assert_eq!(line["msg"]["name"], "fleetlink_hub");
+    // A log line the robot publishes on its /rosout joins the hub's /rosout unchanged.
+    let mut log = LocalPublisher::new(&agent.router, "/rosout", "rcl_interfaces/msg/Log");
+    within("the robot's own log on /rosout", async {
+        for i in 0..400u32 {
+            log.publish_json(&json!({"stamp": {"sec": 1, "nanosec": i}, "level": 40,
+                "name": "planner", "msg": "no path", "file": "", "function": "", "line": 0}));
+            if let Ok(Some(m)) =
+                tokio::time::timeout(Duration::from_millis(25), op.try_recv()).await
+                && m["msg"]["name"] == "planner"
+            {
+                assert_eq!(m["msg"]["level"], 40);
+                return;
+            }
+        }
+        panic!("the robot's log never reached /rosout");
+    })
+    .await;
+    agent.shutdown().await;
+    within("the robot's departure on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"]
+                .as_str()
+                .unwrap_or_default()
+                .contains("robot r7 disconnected")
+            {
+                return;
+            }
+        }
+    })
+    .await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_burst_of_small_messages_reaches_a_default_subscriber_whole() {
+    let hub = start_hub().await;
+    let mut sub = Rosbridge::connect(&hub.ws_url()).await;
+    sub.send(json!({"op": "subscribe", "topic": "/burst", "id": "b"}))
+        .await;
+    let mut pubr = Rosbridge::connect(&hub.ws_url()).await;
+    pubr.send(json!({"op": "advertise", "topic": "/burst", "type": "std_msgs/msg/Int32"}))
+        .await;
+    sub.call("/rosapi/get_time", json!({}), "sync").await;
+    // One WebSocket write with 1,000 publishes: the burst arrives at the hub at once.
+    for i in 0..1000 {
+        pubr.send(json!({"op": "publish", "topic": "/burst", "msg": {"data": i}}))
+            .await;
+    }
+    let mut seen = Vec::new();
+    let deadline = tokio::time::Instant::now() + Duration::from_secs(10);
+    while seen.len() < 1000 {
+        match tokio::time::timeout_at(deadline, sub.try_recv()).await {
+            Ok(Some(m)) if m["op"] == "publish" => seen.push(m["msg"]["data"].as_i64().unwrap()),
+            Ok(Some(_)) => {}
+            _ => break,
+        }
+    }
+    assert_eq!(
+        seen.len(),
+        1000,
+        "a burst of 1,000 small messages lost {}",
+        1000 - seen.len()
+    );
+    assert!(seen.windows(2).all(|w| w[0] < w[1]), "out of order");
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn protocol_odds_and_ends_fragments_set_level_png_and_plain_error_texts() {
+    use base64::Engine;
+    use tokio_tungstenite::tungstenite::Message as WsMessage;
+    let hub = start_hub().await;
+    let mut c = Rosbridge::connect(&hub.ws_url()).await;
+    // A client's operation cut into rosbridge fragments is put back together.
+    let op = json!({"op": "call_service", "service": "/rosapi/get_time", "id": "frag"}).to_string();
+    let pieces: Vec<String> = op
+        .as_bytes()
+        .chunks(10)
+        .map(|p| String::from_utf8(p.to_vec()).unwrap())
+        .collect();
+    let total = pieces.len();
+    for (num, data) in pieces.iter().enumerate().rev() {
+        c.send(json!({"op": "fragment", "id": "f1", "data": data, "num": num, "total": total}))
+            .await;
+    }
+    let r = c.recv_op("service_response").await;
+    assert_eq!(
+        (r["id"].clone(), r["result"].clone()),
+        (json!("frag"), json!(true)),
+        "{r}"
+    );
+    c.send(json!({"op": "fragment", "id": "f2", "data": "x", "num": 5, "total": 2}))
+        .await;
+    let s = c.recv_op("status").await;
+    assert!(
+        s["msg"]
+            .as_str()
+            .unwrap()
+            .contains("'num' 5 is not below 'total' 2"),
+        "{s}"
+    );
+    // png compression: the publish as the pixels of a PNG image.
+    c.send(json!({"op": "advertise", "topic": "/pngtest", "type": "std_msgs/msg/String"}))
+        .await;
+    c.send(json!({"op": "subscribe", "topic": "/pngtest", "compression": "png", "id": "p"}))
+        .await;
+    c.send(json!({"op": "publish", "topic": "/pngtest", "msg": {"data": "compressed"}}))
+        .await;
+    let p = c.recv_op("png").await;
+    let png_bytes = base64::engine::general_purpose::STANDARD
+        .decode(p["data"].as_str().unwrap())
+        .unwrap();
+    let mut reader = png::Decoder::new(std::io::Cursor::new(png_bytes))
+        .read_info()
+        .unwrap();
+    let mut px = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut px).unwrap();
+    px.truncate(info.buffer_size());
+    let inner: Value = serde_json::from_slice(px.trim_ascii_end()).unwrap();
+    assert_eq!(inner["op"], "publish");
+    assert_eq!(inner["msg"]["data"], "compressed");
+    // Errors name the problem in the client's terms.
+    c.send_raw(WsMessage::Binary(vec![0xa1, 0x62, 0x6f].into()))
+        .await
+        .unwrap();
+    let s = c.recv_op("status").await;
+    let msg = s["msg"].as_str().unwrap();
+    assert!(!msg.contains("Io(") && !msg.contains("Syntax("), "{msg}");
+    assert!(msg.contains("ends in the middle of a value"), "{msg}");
+    c.send(json!({"op": "subscribe", "topic": "/(unclosed", "regex": true, "id": "re"}))
+        .await;
+    let s = c.recv_op("status").await;
+    let msg = s["msg"].as_str().unwrap();
+    assert!(!msg.contains("^(?:"), "{msg}");
+    assert!(msg.contains("unclosed group"), "{msg}");
+    c.send(json!({"op": "x".repeat(5000), "id": "long"})).await;
+    let s = c.recv_op("status").await;
+    assert!(
+        s.to_string().len() < 300,
+        "{} bytes echoed",
+        s.to_string().len()
+    );
+    // set_level none: even errors stop; info: they come back.
+    c.send(json!({"op": "set_level", "level": "none"})).await;
+    c.send(json!({"op": "no_such_op", "id": "quiet"})).await;
+    c.send(json!({"op": "set_level", "level": "info"})).await;
+    c.send(json!({"op": "no_such_op", "id": "loud"})).await;
+    let s = c.recv_op("status").await;
+    assert_eq!(
+        s["id"], "loud",
+        "the error sent at level none was not suppressed: {s}"
+    );
 }
