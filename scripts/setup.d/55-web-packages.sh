@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# npm packages of the dashboard (web/: esbuild, TypeScript, three.js, uPlot, cbor-x and
+# npm packages of the dashboard (web/: esbuild, TypeScript, three.js, uPlot, cbor2 and
 # puppeteer-core for the browser suite), installed from the committed package-lock.json.
 # Idempotent: skips `npm ci` when node_modules already matches the lock file.
 set -euo pipefail

@@ -8,15 +8,16 @@
 // caller as rejected promises carrying the hub's text: the page shows *that* text to
 // explain what is disabled, it never guesses roles.
 
-import { Decoder } from "cbor-x";
+import { decode } from "cbor2";
 import { probe } from "./probe";
 
-const cbor = new Decoder({ int64AsNumber: true, mapsAsObjects: true, useRecords: false } as never);
+// cbor2 (pure JavaScript, no native add-on): maps as objects, RFC 8746 typed arrays as
+// TypedArrays, byte strings as Uint8Array, 64-bit integers as numbers while exact.
 
 /** Decodes one binary rosbridge frame (a CBOR map holding the op). */
 export function decodeFrame(data: ArrayBuffer | Uint8Array): Record<string, unknown> {
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
-  return cbor.decode(bytes) as Record<string, unknown>;
+  return decode(bytes) as Record<string, unknown>;
 }
 
 export interface SubOptions {

@@ -24,7 +24,7 @@ function open(compression, onFrame) {
   return ws;
 }
 
-const { decode } = await import("cbor-x");
+const { decode } = await import("cbor2");
 const cbor = new Map(); // `${topic} ${stamp}` -> bytes
 const json = new Map();
 const done = new Set();
