@@ -69,6 +69,11 @@ pub trait Transcoder: Send + Sync + 'static {
         Ok(None)
     }
 
+    /// Every message type this side knows (rosapi `interfaces`).
+    fn type_names(&self) -> Vec<String> {
+        Vec::new()
+    }
+
     /// rosapi's `typedefs` for a message type (the type and every type it uses): per
     /// type its field names, types, array lengths (-1 single, 0 unbounded, N fixed),
     /// example values, constant names and values. `None` for an unknown type.
@@ -202,6 +207,14 @@ impl Transcoder for RegistryTranscoder {
                 Payload::new(Encoding::Cbor, fleetlink_msg::to_cbor_bytes(&v))
             }
         }))
+    }
+
+    fn type_names(&self) -> Vec<String> {
+        self.registry
+            .message_names()
+            .iter()
+            .map(|n| n.to_string())
+            .collect()
     }
 
     fn typedefs(&self, type_name: &str) -> Option<Vec<serde_json::Value>> {

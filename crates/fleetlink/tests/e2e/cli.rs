@@ -87,7 +87,11 @@ async fn demo_fleet_comes_up_and_stops_on_sigterm() {
     })
     .await;
     let page = http_get(&addr, "/").await;
-    assert!(page.contains("fleetlink hub"));
+    // The dashboard is served at /.
+    assert!(
+        page.contains("<title>fleetlink</title>") && page.contains("app.js"),
+        "{page}"
+    );
     let metrics = http_get(&addr, "/metrics").await;
     assert!(
         metrics.contains("fleetlink_topic_messages_total{topic=\"/robot1/scan\"}"),

@@ -41,6 +41,8 @@ pub const SERVICES: &[&str] = &[
     "service_request_details",
     "service_response_details",
     "message_details",
+    "node_details",
+    "interfaces",
     "get_param",
     "set_param",
     "has_param",
@@ -164,6 +166,31 @@ pub fn answer(
                 .map(|s| s.name.to_string())
                 .collect::<Vec<_>>(),
         }),
+        "interfaces" => json!({ "interfaces": router.transcoder().type_names() }),
+        "node_details" => {
+            let Some(node) = args.get("node").and_then(Value::as_str) else {
+                return Answer::Failed(format!("{service}: missing string argument 'node'"));
+            };
+            let node = format!("/{}", node.trim_start_matches('/'));
+            let is = |id: &crate::ClientId| client_node_name(router, *id) == node;
+            let (mut publishing, mut subscribing) = (Vec::new(), Vec::new());
+            for t in &topics {
+                if t.publishers.iter().any(is) {
+                    publishing.push(t.meta.name.to_string());
+                }
+                if t.subscribers.iter().any(is) {
+                    subscribing.push(t.meta.name.to_string());
+                }
+            }
+            let services: Vec<String> = router
+                .calls
+                .services()
+                .iter()
+                .filter(|s| is(&s.provider) && visible(s.name.as_str(), Op::CallService))
+                .map(|s| s.name.to_string())
+                .collect();
+            json!({"publishing": publishing, "subscribing": subscribing, "services": services})
+        }
         "get_param" | "set_param" | "has_param" | "delete_param" | "get_param_names"
         | "search_param" => {
             return params(router, call, args, visible, changed).map_or_else(
