@@ -10,7 +10,7 @@ use std::time::Duration;
 
 use serde::Deserialize;
 
-/// Simulated robot: a seed and up to five sensors. See `docs/config.md`.
+/// Simulated robot: a seed, up to five sensors and the optional markers. See `docs/config.md`.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(from = "SimConfigYaml")]
 pub struct SimConfig {
