@@ -12,6 +12,8 @@ export interface Probe {
   cloudAgesMs: number[];
   /** Milliseconds spent, summed: decoding frames, unpacking clouds, drawing clouds. */
   busyMs: { decode: number; cloudUnpack: number; cloudRender: number };
+  /** The robot map's marker layer at its last drawing: markers per type and namespace. */
+  markers: { drawn: number; shapes: number; byType: Record<string, number>; byNs: Record<string, number> };
   /** Map coordinates → CSS pixels inside the robot view's map canvas (for click tests). */
   mapToScreen: ((x: number, y: number) => [number, number]) | null;
 }
@@ -26,6 +28,7 @@ export const probe: Probe = {
   renders: 0,
   cloudAgesMs: [],
   busyMs: { decode: 0, cloudUnpack: 0, cloudRender: 0 },
+  markers: { drawn: 0, shapes: 0, byType: {}, byNs: {} },
   mapToScreen: null,
 };
 

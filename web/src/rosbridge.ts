@@ -94,6 +94,9 @@ export class Rosbridge {
 
   close() {
     this.closed = true;
+    // A replaced connection (sign-in, sign-out) must not report its own close, which can
+    // arrive after the new one opened, as the page's state.
+    this.onState = () => {};
     this.ws?.close();
   }
 

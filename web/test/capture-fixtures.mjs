@@ -3,16 +3,20 @@
 // (compression "cbor") and once as JSON — matched by header stamp. The tests then check
 // that the page's CBOR handling gives what the JSON says, on frames the Rust side made.
 //
-//   node --experimental-websocket test/capture-fixtures.mjs ws://127.0.0.1:8080/ robot1
+//   node --experimental-websocket test/capture-fixtures.mjs ws://127.0.0.1:8080/ robot1 [NAME...]
+//
+// NAMEs (scan, points, odom, markers) limit the capture to those fixtures.
 import { writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 
-const [url, robot = "robot1"] = process.argv.slice(2);
-if (!url) throw new Error("usage: capture-fixtures.mjs WS_URL [ROBOT]");
+const [url, robot = "robot1", ...only] = process.argv.slice(2);
+if (!url) throw new Error("usage: capture-fixtures.mjs WS_URL [ROBOT] [NAME...]");
 const out = join(dirname(fileURLToPath(import.meta.url)), "fixtures");
-const topics = { scan: `/${robot}/scan`, points: `/${robot}/points`, odom: `/${robot}/odom` };
-const stampOf = (m) => JSON.stringify(m?.header?.stamp);
+const all = { scan: `/${robot}/scan`, points: `/${robot}/points`, odom: `/${robot}/odom`, markers: `/${robot}/markers` };
+const topics = Object.fromEntries(Object.entries(all).filter(([k]) => !only.length || only.includes(k)));
+// A MarkerArray has no header of its own: its markers' stamp identifies it.
+const stampOf = (m) => JSON.stringify(m?.header?.stamp ?? m?.markers?.[0]?.header?.stamp);
 
 function open(compression, onFrame) {
   const ws = new WebSocket(url);

@@ -1,5 +1,6 @@
 // The dashboard in real headless Chromium (Debian's package, driven by puppeteer-core)
-// against `fleetlink demo`: fleet view, robot panels, navigation goal + cancel, a
+// against `fleetlink demo`: fleet view, robot panels, the marker layer (the simulator's
+// pillars, walls and goal as visualization_msgs markers), navigation goal + cancel, a
 // service form call, and a viewer without publish rights. Screenshots of each view go
 // to --shots. Exits non-zero when any check failed.
 //
@@ -129,7 +130,29 @@ try {
   check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
   const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
   check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
+  // Signing in replaced the connection: the status shows the new one, not the old one's close.
+  const connText = await until(page, () => document.querySelector("#conn")?.textContent === "connected" && "connected", null, 3000, "status bar: connected after sign-in");
+  if (connText) ok("status bar: connected after sign-in");
   await shot(page, "2-robot", true);
+
+  // --- markers: the simulator's MarkerArray drawn on the map (five pillars, the walls)
+  step = "markers";
+  const mk = await until(page, () => { const m = window.fleetlink.markers; return m.byNs.pillars === 5 && m.byNs.walls === 1 && JSON.parse(JSON.stringify(m)); }, null, 5000, "markers: pillars and walls on the map");
+  if (mk) {
+    check(mk.byType.CYLINDER === 5 && mk.byType.LINE_STRIP === 1 && !mk.byNs.goal, `markers: ${JSON.stringify(mk.byType)} drawn, ${mk.shapes} shapes, no goal yet`);
+    check((await page.evaluate(() => window.fleetlink.frames.markers)) > 0, "markers: MarkerArray frames received");
+  }
+  // The map's pixels where a pillar is: the pillar's colour, not the floor's.
+  const px = await page.evaluate(() => {
+    const cv = document.querySelector("#robot-map");
+    const [x, y] = window.fleetlink.mapToScreen(0, 7); // the 0.8 m pillar
+    const d = devicePixelRatio || 1;
+    const p = cv.getContext("2d").getImageData(Math.round(x * d), Math.round(y * d), 1, 1).data;
+    return [p[0], p[1], p[2]];
+  });
+  check(px[2] > 120 && px[0] > 100, `markers: a pillar is painted at (0, 7) on the map (rgb ${px.join(",")})`);
+  await (await page.$("#robot-map")).screenshot({ path: join(o.shots, "2b-markers.png") });
+  console.log(`     screenshot ${join(o.shots, "2b-markers.png")}`);
 
   // --- navigation goal clicked on the map: the robot drives there, feedback shown
   step = "navigate";
@@ -145,12 +168,14 @@ try {
   const goal = { x: p0.x - (1.5 * p0.x) / toC, y: p0.y - (1.5 * p0.y) / toC };
   await clickAt(goal.x, goal.y);
   await until(page, () => window.fleetlink.feedback.length > 0 && /m to go/.test(document.querySelector(".navstate").textContent), null, 4000, "navigation feedback shown");
-  await sleep(600);
+  if (await until(page, () => window.fleetlink.markers.byNs.goal === 1 && window.fleetlink.markers.byType.SPHERE === 1, null, 3000, "markers: the goal sphere while navigating")) ok("markers: goal sphere drawn while navigating");
   await shot(page, "3-navigating");
   const reached = await until(page, (a) => { const r = window.fleetlink.lastResult; const p = window.fleetlink.poses[a.robot]; return r && r.status === 4 && Math.hypot(p.x - a.goal.x, p.y - a.goal.y) < 0.25 && { r, p }; }, { robot, goal }, 12000, "navigation goal reached");
   if (reached) ok(`goal (${goal.x.toFixed(2)}, ${goal.y.toFixed(2)}) reached: pose (${reached.p.x.toFixed(2)}, ${reached.p.y.toFixed(2)}), result ${JSON.stringify(reached.r.values)}`);
   const navText = await page.$eval(".navstate", (e) => e.textContent);
   check(/reached/.test(navText), `navigation state says: ${navText}`);
+  const gone = await until(page, () => !window.fleetlink.markers.byNs.goal && window.fleetlink.markers.byNs.pillars === 5, null, 3000, "markers: the goal sphere deleted once reached");
+  if (gone) ok("markers: goal sphere removed by the simulator's DELETE");
 
   // Cancel: a far goal, then Cancel mid-way; the robot stops.
   step = "cancel";

@@ -1,11 +1,14 @@
 // A top-down 2D map on a canvas: a metre grid, robots as arrows with their heading,
-// trails of the last minute, optional scan points and a goal marker. One drawing per
+// trails of the last minute, optional scan points, visualization_msgs markers and a goal
+// marker. One drawing per
 // animation frame at most, however many poses arrive (the data only updates state).
 //
 // The view fits the room (±10 m by default) and grows to keep every robot in sight;
 // clicks are reported in map coordinates so tasking can turn them into goals.
 
+import { type MarkerStore, type Shape, shapesOf, tally } from "../markers";
 import type { Pose2D } from "../messages";
+import { probe } from "../probe";
 
 export interface MapRobot {
   name: string;
@@ -28,6 +31,9 @@ export class MapView {
   /** Scan points in map coordinates (interleaved x,y), drawn under the robots. */
   scan: Float32Array | null = null;
   goal: { x: number; y: number } | null = null;
+  /** Marker topics drawn under the scan and the robots (see markers.ts). */
+  markers: MarkerStore[] = [];
+  private markerExpiry = Infinity;
   selected: string | null = null;
   onClick: ((x: number, y: number, ev: MouseEvent) => void) | null = null;
   // Half the side of the square in view, metres: the 20 m room and a margin, to start.
@@ -47,6 +53,7 @@ export class MapView {
       this.onClick(x, y, ev);
     });
     const loop = () => {
+      if (this.markerExpiry <= performance.now()) this.dirty = true;
       if (this.dirty) this.draw();
       this.raf = requestAnimationFrame(loop);
     };
@@ -124,6 +131,7 @@ export class MapView {
     c.fillStyle = "#5b6b7b";
     c.font = "11px sans-serif";
     c.fillText(`1 m grid · ${2 * this.half} m across`, 8, g.h - 8);
+    if (this.markers.length) this.drawMarkers(c, g.scale, S);
     if (this.scan) {
       c.fillStyle = "#f2c94c";
       for (let i = 0; i < this.scan.length; i += 2) {
@@ -175,5 +183,58 @@ export class MapView {
       c.font = "12px sans-serif";
       c.fillText(r.online ? r.name : `${r.name} (offline)`, x + size + 3, y - size * 0.5);
     }
+  }
+
+  private drawMarkers(c: CanvasRenderingContext2D, scale: number, S: (x: number, y: number) => readonly [number, number]) {
+    const now = performance.now();
+    const live = this.markers.flatMap((m) => m.live(now));
+    this.markerExpiry = Math.min(...this.markers.map((m) => m.nextExpiry()));
+    let shapes = 0;
+    const path = (pts: [number, number][]) => {
+      c.beginPath();
+      pts.forEach(([x, y], i) => {
+        const [a, b] = S(x, y);
+        if (i === 0) c.moveTo(a, b);
+        else c.lineTo(a, b);
+      });
+    };
+    const drawShape = (sh: Shape) => {
+      shapes++;
+      switch (sh.kind) {
+        case "polygon":
+          path(sh.pts); c.closePath();
+          c.fillStyle = sh.fill; c.fill();
+          break;
+        case "ellipse": {
+          const [x, y] = S(sh.x, sh.y);
+          c.beginPath();
+          c.ellipse(x, y, Math.max(1, sh.rx * scale), Math.max(1, sh.ry * scale), -sh.yaw, 0, Math.PI * 2);
+          c.fillStyle = sh.fill; c.fill();
+          if (sh.outline) { c.strokeStyle = "rgba(11,16,22,0.8)"; c.lineWidth = 1.5; c.stroke(); }
+          break;
+        }
+        case "polyline":
+          path(sh.pts);
+          c.strokeStyle = sh.stroke; c.lineWidth = Math.max(1, sh.width * scale); c.lineJoin = "round";
+          c.stroke();
+          break;
+        case "square": {
+          const [x, y] = S(sh.x, sh.y);
+          const w = Math.max(2, sh.w * scale), h = Math.max(2, sh.h * scale);
+          c.fillStyle = sh.fill; c.fillRect(x - w / 2, y - h / 2, w, h);
+          break;
+        }
+        case "text": {
+          const [x, y] = S(sh.x, sh.y);
+          c.font = `${Math.max(9, sh.height * scale)}px sans-serif`;
+          c.textAlign = "center"; c.textBaseline = "middle";
+          c.fillStyle = sh.fill; c.fillText(sh.text, x, y);
+          c.textAlign = "start"; c.textBaseline = "alphabetic";
+          break;
+        }
+      }
+    };
+    for (const m of live) shapesOf(m.msg).forEach(drawShape);
+    probe.markers = { ...tally(live), drawn: live.length, shapes };
   }
 }

@@ -8,6 +8,7 @@
 
 import { api, type RobotInfo, type TopicInfo } from "../api";
 import { bytesOf, imageKind, inspectable, pose2d, scanPoints, stampMs } from "../messages";
+import { MarkerStore } from "../markers";
 import { count, probe } from "../probe";
 import type { Rosbridge } from "../rosbridge";
 import { Chart, Series, Sparkline } from "./charts";
@@ -57,7 +58,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   root.appendChild(grid);
 
   // Map + tasking come first: they are what an operator acts on.
-  const mapP = panel(grid, "Map (odometry path, scan, goal)", "wide");
+  const mapP = panel(grid, "Map (odometry path, scan, markers, goal)", "wide");
   const map = new MapView(mapP.body);
   map.selected = name;
   map.canvas.id = "robot-map";
@@ -98,7 +99,21 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       }, { type: t.type, throttle_rate: 50, queue_length: 1, compression: "none" }));
     }
     if (!src) mapP.info.textContent = "no pose or odometry topic";
-    else mapP.info.textContent = src.topic;
+
+    // visualization_msgs markers → the map, one store per topic. Not latest-only: a
+    // dropped DELETE would leave a marker behind, so a short queue instead.
+    const markerTopics = [...byType("visualization_msgs/msg/MarkerArray"), ...byType("visualization_msgs/msg/Marker")];
+    for (const t of markerTopics) {
+      const store = new MarkerStore();
+      map.markers.push(store);
+      cleanups.push(rb.subscribe(t.name, (msg) => {
+        clock(t.name).note(Array.isArray(msg?.markers) ? msg.markers[0] : msg);
+        store.apply(msg, performance.now());
+        map.invalidate();
+        count("markers");
+      }, { type: t.type, queue_length: 10 }));
+    }
+    if (src) mapP.info.textContent = `${src.topic}${markerTopics.length ? ` · markers: ${markerTopics.map((t) => t.name).join(", ")}` : ""}`;
 
     // LaserScan → its own 2D panel and, placed at the robot's pose, the map.
     const scan = byType("sensor_msgs/msg/LaserScan")[0];
@@ -224,7 +239,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     const sel = el("select");
     const tree = el("div", "tree");
     inspP.body.append(sel, tree);
-    const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic]);
+    const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic, ...markerTopics.map((t) => t.name)]);
     // Start on a live topic the other panels do not show (odometry, in the demo).
     const firstOther = own.find((t) => !shown.has(t.name) && t.rate_hz > 0) ?? own.find((t) => !shown.has(t.name)) ?? own[0];
     for (const t of own) sel.appendChild(new Option(`${t.name} (${t.type})`, t.name));

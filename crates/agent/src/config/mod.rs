@@ -35,7 +35,9 @@ use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
 use locate::LocationTree;
-pub use sim::{ImageSim, LaserScanSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of};
+pub use sim::{
+    ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
+};
 
 /// The agent's configuration. See `docs/config.md` for every field.
 #[derive(Debug, Clone, PartialEq, Deserialize)]

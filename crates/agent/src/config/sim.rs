@@ -2,14 +2,15 @@
 //!
 //! A sensor that is omitted (or `null`) does not run; a sensor given as `{}` runs with the
 //! defaults below. `sim: {}` (no sensor named at all) is shorthand for "all five sensors with
-//! their defaults", which is what [`SimConfig::default`] returns too; as soon as one sensor is
-//! named, only the named ones run.
+//! their defaults" (the optional `markers` layer is not among them), which is what
+//! [`SimConfig::default`] returns too; as soon as one sensor is named, only the named ones
+//! run.
 
 use std::time::Duration;
 
 use serde::Deserialize;
 
-/// Simulated robot: a seed and up to five sensors. See `docs/config.md`.
+/// Simulated robot: a seed, up to five sensors and the optional markers. See `docs/config.md`.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(from = "SimConfigYaml")]
 pub struct SimConfig {
@@ -23,6 +24,9 @@ pub struct SimConfig {
     pub pose: Option<PoseSim>,
     pub point_cloud: Option<PointCloudSim>,
     pub image: Option<ImageSim>,
+    /// The room as `visualization_msgs` markers. Not among the default sensors: runs only
+    /// when named.
+    pub markers: Option<MarkersSim>,
 }
 
 impl Default for SimConfig {
@@ -36,6 +40,7 @@ impl Default for SimConfig {
             pose: Some(PoseSim::default()),
             point_cloud: Some(PointCloudSim::default()),
             image: Some(ImageSim::default()),
+            markers: None,
         }
     }
 }
@@ -58,6 +63,9 @@ impl SimConfig {
         }
         if let Some(s) = &self.image {
             out.push(("image", s.topic.as_str(), s.rate_hz));
+        }
+        if let Some(s) = &self.markers {
+            out.push(("markers", s.topic.as_str(), s.rate_hz));
         }
         out
     }
@@ -127,6 +135,11 @@ sensor!(
         /// Size of `data` before base64. Default 50000.
         bytes: u32 = 50_000 }
 );
+sensor!(
+    /// `visualization_msgs/msg/MarkerArray` in the pose's frame: the pillars (`CYLINDER`),
+    /// the walls (`LINE_STRIP`) and the navigation goal, if any (`SPHERE`, else `DELETE`).
+    MarkersSim { topic: "/markers", rate_hz: 1 }
+);
 
 /// The YAML shape, before "no sensor named means all sensors" is applied.
 #[derive(Deserialize)]
@@ -139,6 +152,7 @@ struct SimConfigYaml {
     pose: Option<PoseSim>,
     point_cloud: Option<PointCloudSim>,
     image: Option<ImageSim>,
+    markers: Option<MarkersSim>,
 }
 
 impl Default for SimConfigYaml {
@@ -151,6 +165,7 @@ impl Default for SimConfigYaml {
             pose: None,
             point_cloud: None,
             image: None,
+            markers: None,
         }
     }
 }
@@ -161,7 +176,8 @@ impl From<SimConfigYaml> for SimConfig {
             && y.odometry.is_none()
             && y.pose.is_none()
             && y.point_cloud.is_none()
-            && y.image.is_none();
+            && y.image.is_none()
+            && y.markers.is_none();
         if none_named {
             return Self {
                 seed: y.seed,
@@ -177,6 +193,7 @@ impl From<SimConfigYaml> for SimConfig {
             pose: y.pose,
             point_cloud: y.point_cloud,
             image: y.image,
+            markers: y.markers,
         }
     }
 }

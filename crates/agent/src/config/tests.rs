@@ -97,6 +97,22 @@ fn sim_without_sensors_means_all_sensors() {
 }
 
 #[test]
+fn sim_markers_are_opt_in() {
+    let cfg = AgentConfig::from_str("sim: { markers: { rate_hz: 1 } }\n", "a.yaml").expect("valid");
+    let sim = cfg.sim.expect("sim");
+    assert_eq!(sim.enabled_topics(), vec![("markers", "/markers", 1.0)]);
+    let cfg = AgentConfig::from_str("sim: { pose: {}, markers: { topic: /room } }\n", "a.yaml")
+        .expect("valid");
+    assert_eq!(
+        cfg.sim.expect("sim").enabled_topics(),
+        vec![("pose", "/pose", 10.0), ("markers", "/room", 1.0)]
+    );
+    let e =
+        AgentConfig::from_str("sim:\n  markers: { rate_hz: 0 }\n", "a.yaml").expect_err("rate 0");
+    assert_eq!(e.field(), Some("sim.markers.rate_hz"));
+}
+
+#[test]
 fn local_rosbridge_can_be_disabled_two_ways() {
     for text in [
         "local_rosbridge: null\n",

@@ -103,6 +103,7 @@ pub async fn drive(
             }
         }
         due.clear();
+        sim.set_goal_marker(state.goal.as_ref().map(|g| g.to));
         sim.poll_into(start.elapsed(), &mut due);
         for m in due.drain(..) {
             if let Some(Some((topic, seq))) = topics.get_mut(m.topic_index) {

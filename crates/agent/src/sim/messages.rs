@@ -397,3 +397,190 @@ pub(crate) fn compressed_image(
     };
     to_json(&msg, scratch.base64.len() + 256)
 }
+
+/// `std_msgs/msg/ColorRGBA`.
+#[derive(Serialize, Clone, Copy)]
+struct ColorRgba {
+    r: f32,
+    g: f32,
+    b: f32,
+    a: f32,
+}
+
+/// `builtin_interfaces/msg/Duration`.
+#[derive(Serialize)]
+struct RosDuration {
+    sec: i32,
+    nanosec: u32,
+}
+
+/// `visualization_msgs/msg/MeshFile`.
+#[derive(Serialize)]
+struct MeshFile {
+    filename: &'static str,
+    data: &'static str,
+}
+
+/// `visualization_msgs/msg/UVCoordinate` (never sent: the list is always empty).
+#[derive(Serialize)]
+struct UvCoordinate {
+    u: f32,
+    v: f32,
+}
+
+/// `visualization_msgs/msg/Marker`, every field (the unused texture and mesh ones empty).
+#[derive(Serialize)]
+struct Marker<'a> {
+    header: Header<'a>,
+    ns: &'static str,
+    id: i32,
+    #[serde(rename = "type")]
+    kind: i32,
+    action: i32,
+    pose: Pose,
+    scale: Vector3,
+    color: ColorRgba,
+    lifetime: RosDuration,
+    frame_locked: bool,
+    points: Vec<Point>,
+    colors: Vec<ColorRgba>,
+    texture_resource: &'static str,
+    texture: CompressedImage<'a>,
+    uv_coordinates: Vec<UvCoordinate>,
+    text: &'static str,
+    mesh_resource: &'static str,
+    mesh_file: MeshFile,
+    mesh_use_embedded_materials: bool,
+}
+
+/// `visualization_msgs/msg/MarkerArray`.
+#[derive(Serialize)]
+struct MarkerArray<'a> {
+    markers: Vec<Marker<'a>>,
+}
+
+/// `visualization_msgs/msg/Marker` type and action constants.
+pub(crate) mod marker {
+    pub(crate) const SPHERE: i32 = 2;
+    pub(crate) const CYLINDER: i32 = 3;
+    pub(crate) const LINE_STRIP: i32 = 4;
+    pub(crate) const ADD: i32 = 0;
+    pub(crate) const DELETE: i32 = 2;
+}
+
+/// Goal sphere diameter, m.
+const GOAL_DIAMETER: f64 = 0.4;
+/// Wall line width, m.
+const WALL_WIDTH: f64 = 0.1;
+
+impl<'a> Marker<'a> {
+    fn new(stamp_ns: u64, frame_id: &'a str, ns: &'static str, id: i32, kind: i32) -> Self {
+        Self {
+            header: Header::new(stamp_ns, frame_id),
+            ns,
+            id,
+            kind,
+            action: marker::ADD,
+            pose: Pose::planar(0.0, 0.0, 0.0),
+            scale: Vector3 {
+                x: 1.0,
+                y: 1.0,
+                z: 1.0,
+            },
+            color: ColorRgba {
+                r: 1.0,
+                g: 1.0,
+                b: 1.0,
+                a: 1.0,
+            },
+            lifetime: RosDuration { sec: 0, nanosec: 0 },
+            frame_locked: false,
+            points: Vec::new(),
+            colors: Vec::new(),
+            texture_resource: "",
+            texture: CompressedImage {
+                header: Header::new(0, ""),
+                format: "",
+                data: "",
+            },
+            uv_coordinates: Vec::new(),
+            text: "",
+            mesh_resource: "",
+            mesh_file: MeshFile {
+                filename: "",
+                data: "",
+            },
+            mesh_use_embedded_materials: false,
+        }
+    }
+}
+
+/// The room as markers, in the pose's frame: one `CYLINDER` per pillar (namespace
+/// `pillars`, ids 0..), the walls as one closed `LINE_STRIP` (`walls`/0), and the
+/// navigation goal as a `SPHERE` (`goal`/0) — or, with no goal, a `DELETE` of it, so a
+/// viewer drops the sphere of a goal that ended.
+pub(crate) fn markers(stamp_ns: u64, frame_id: &str, goal: Option<(f64, f64)>) -> Vec<u8> {
+    let mut list = Vec::with_capacity(world::PILLARS.len() + 2);
+    for (i, &(x, y, r)) in world::PILLARS.iter().enumerate() {
+        let mut m = Marker::new(stamp_ns, frame_id, "pillars", i as i32, marker::CYLINDER);
+        m.pose.position = Point {
+            x,
+            y,
+            z: world::PILLAR_HEIGHT / 2.0,
+        };
+        m.scale = Vector3 {
+            x: 2.0 * r,
+            y: 2.0 * r,
+            z: world::PILLAR_HEIGHT,
+        };
+        m.color = ColorRgba {
+            r: 0.55,
+            g: 0.6,
+            b: 0.7,
+            a: 1.0,
+        };
+        list.push(m);
+    }
+    let mut walls = Marker::new(stamp_ns, frame_id, "walls", 0, marker::LINE_STRIP);
+    let h = world::HALF_ROOM;
+    walls.points = [(-h, -h), (h, -h), (h, h), (-h, h), (-h, -h)]
+        .into_iter()
+        .map(|(x, y)| Point { x, y, z: 0.0 })
+        .collect();
+    walls.scale = Vector3 {
+        x: WALL_WIDTH,
+        y: 0.0,
+        z: 0.0,
+    };
+    walls.color = ColorRgba {
+        r: 0.85,
+        g: 0.85,
+        b: 0.9,
+        a: 1.0,
+    };
+    list.push(walls);
+    let mut g = Marker::new(stamp_ns, frame_id, "goal", 0, marker::SPHERE);
+    match goal {
+        Some((x, y)) => {
+            g.pose.position = Point {
+                x,
+                y,
+                z: GOAL_DIAMETER / 2.0,
+            };
+            g.scale = Vector3 {
+                x: GOAL_DIAMETER,
+                y: GOAL_DIAMETER,
+                z: GOAL_DIAMETER,
+            };
+            g.color = ColorRgba {
+                r: 0.44,
+                g: 0.81,
+                b: 0.59,
+                a: 0.9,
+            };
+        }
+        None => g.action = marker::DELETE,
+    }
+    list.push(g);
+    to_json(&MarkerArray { markers: list }, 8192)
+}

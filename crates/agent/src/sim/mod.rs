@@ -2,7 +2,8 @@
 //!
 //! The robot drives a figure-eight through a 20 m room with five round pillars
 //! ([`world`]); it publishes a 360° laser scan and a 3D point cloud ray-cast against that
-//! room, odometry, a pose, and JPEG-sized compressed images ([`messages`]).
+//! room, odometry, a pose, and JPEG-sized compressed images ([`messages`]); optionally the
+//! room itself (pillars, walls, the navigation goal) as `visualization_msgs` markers.
 //!
 //! Design: sans-IO, in the quinn style. The driver owns the clock: it calls
 //! [`Sim::poll`] with the time since start and sleeps until [`Sim::next_due`]. Each topic
@@ -55,6 +56,7 @@ enum Sensor {
     Pose,
     PointCloud { points: u32 },
     Image { bytes: u32 },
+    Markers,
 }
 
 impl Sensor {
@@ -65,6 +67,7 @@ impl Sensor {
             Self::Pose => "geometry_msgs/msg/PoseStamped",
             Self::PointCloud { .. } => "sensor_msgs/msg/PointCloud2",
             Self::Image { .. } => "sensor_msgs/msg/CompressedImage",
+            Self::Markers => "visualization_msgs/msg/MarkerArray",
         }
     }
 }
@@ -131,6 +134,8 @@ pub struct Sim {
     frames: Frames,
     scratch: Scratch,
     motion: Motion,
+    /// The navigation goal the markers show (set by the driver, which knows the goal).
+    goal_marker: Option<(f64, f64)>,
 }
 
 impl Sim {
@@ -174,6 +179,9 @@ impl Sim {
         if let Some(s) = &cfg.image {
             add(&s.topic, s.rate_hz, Sensor::Image { bytes: s.bytes });
         }
+        if let Some(s) = &cfg.markers {
+            add(&s.topic, s.rate_hz, Sensor::Markers);
+        }
         let period_ns = topics
             .iter()
             .map(|t| {
@@ -195,6 +203,7 @@ impl Sim {
             frames: Frames::new(&cfg.frame_prefix),
             scratch: Scratch::default(),
             motion: Motion::Patrol,
+            goal_marker: None,
         }
     }
 
@@ -273,6 +282,12 @@ impl Sim {
     /// Back to the figure-eight patrol.
     pub fn patrol(&mut self) {
         self.motion = Motion::Patrol;
+    }
+
+    /// The navigation goal shown on the markers topic from now on (`None`: no goal, the
+    /// goal marker is deleted). Messages stay a pure function of their slot and this.
+    pub fn set_goal_marker(&mut self, goal: Option<(f64, f64)>) {
+        self.goal_marker = goal;
     }
 
     /// The simulated topics; [`SimMessage::topic_index`] indexes this.
@@ -365,6 +380,8 @@ impl Sim {
                 &mut noise,
                 Header::new(stamp_ns, &frames.camera),
             ),
+            // Same frame as the pose, so the markers line up with the robot on a map.
+            Sensor::Markers => messages::markers(stamp_ns, &frames.map, self.goal_marker),
         };
         SimMessage {
             topic_index: i,

@@ -8,7 +8,7 @@ use base64::engine::general_purpose::STANDARD as BASE64;
 use serde_json::Value;
 
 use super::*;
-use crate::config::{ImageSim, LaserScanSim, OdometrySim, PointCloudSim, PoseSim};
+use crate::config::{ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim};
 
 const EPOCH_NS: u64 = 1_700_000_000_123_000_000;
 
@@ -100,6 +100,7 @@ fn topics_follow_the_config() {
         pose: None,
         point_cloud: None,
         image: None,
+        markers: None,
         ..SimConfig::default()
     };
     let sim = Sim::new(&none, "r", 0);
@@ -150,6 +151,7 @@ fn no_sensors() -> SimConfig {
         pose: None,
         point_cloud: None,
         image: None,
+        markers: None,
         ..SimConfig::default()
     }
 }
@@ -378,4 +380,178 @@ fn compressed_image_shape() {
     }
     assert_ne!(frames[0], frames[1]);
     assert_ne!(frames[1], frames[2]);
+}
+
+/// Checks `v` against the registry's definition of `type_name`, recursively: exactly the
+/// fields the `.msg` has (the registry's rosapi typedefs), and arrays of messages checked
+/// element by element.
+fn check_fields(v: &Value, type_name: &str, defs: &[Value]) {
+    let def = defs
+        .iter()
+        .find(|d| d["type"] == type_name)
+        .unwrap_or_else(|| panic!("no typedef for {type_name}"));
+    let names: Vec<&str> = def["fieldnames"]
+        .as_array()
+        .expect("fieldnames")
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
+    assert_eq!(
+        keys(v),
+        names.iter().copied().collect::<BTreeSet<_>>(),
+        "fields of {type_name}"
+    );
+    for (i, name) in names.iter().enumerate() {
+        let ty = def["fieldtypes"][i].as_str().expect("field type");
+        if !ty.contains('/') {
+            continue;
+        }
+        if def["fieldarraylen"][i] == -1 {
+            check_fields(&v[*name], ty, defs);
+        } else {
+            for e in v[*name].as_array().expect("array") {
+                check_fields(e, ty, defs);
+            }
+        }
+    }
+}
+
+/// The value of a `Marker` constant, from the registry.
+fn marker_const(defs: &[Value], name: &str) -> i64 {
+    let def = defs
+        .iter()
+        .find(|d| d["type"] == "visualization_msgs/msg/Marker")
+        .expect("Marker typedef");
+    let i = def["constnames"]
+        .as_array()
+        .expect("constnames")
+        .iter()
+        .position(|c| c == name)
+        .unwrap_or_else(|| panic!("no constant {name}"));
+    def["constvalues"][i]
+        .as_str()
+        .expect("value text")
+        .parse()
+        .expect("integer")
+}
+
+fn markers_only() -> Sim {
+    let cfg = SimConfig {
+        markers: Some(MarkersSim::default()),
+        frame_prefix: "r1/".into(),
+        ..no_sensors()
+    };
+    Sim::new(&cfg, "r1", EPOCH_NS)
+}
+
+#[test]
+fn markers_config_topic_and_rate() {
+    assert_eq!(SimConfig::default().markers, None, "markers are opt-in");
+    let mut sim = markers_only();
+    assert_eq!(sim.topics().len(), 1);
+    assert_eq!(sim.topics()[0].name, "/markers");
+    assert_eq!(
+        sim.topics()[0].type_name,
+        "visualization_msgs/msg/MarkerArray"
+    );
+    assert_eq!(sim.topics()[0].period, Duration::from_secs(1));
+    assert_eq!(run(&mut sim, Duration::from_secs(10)).len(), 10);
+}
+
+#[test]
+fn markers_parse_against_the_registry_type() {
+    use fleetlink_proto::{Encoding, Payload, Schema};
+    use fleetlink_relay::Transcoder;
+    use fleetlink_relay::transcode::RegistryTranscoder;
+
+    let tc = RegistryTranscoder::bundled();
+    let defs = tc
+        .typedefs("visualization_msgs/msg/MarkerArray")
+        .expect("MarkerArray is bundled");
+    let schema = Schema::named("visualization_msgs/msg/MarkerArray");
+    let mut sim = markers_only();
+    for goal in [None, Some((3.0, -2.5))] {
+        sim.set_goal_marker(goal);
+        let m = sim.generate(0, Duration::from_secs(2));
+        let v = parse(&m);
+        check_fields(&v, "visualization_msgs/msg/MarkerArray", &defs);
+        // The hub's check (wrong types refused) passes, and the message survives CDR.
+        let json = Payload::json(m.json.to_vec());
+        tc.normalize(&schema, &json).expect("valid MarkerArray");
+        let cdr = tc
+            .convert(&schema, &json, Encoding::Cdr)
+            .expect("JSON → CDR");
+        let back: Value = serde_json::from_slice(
+            &tc.convert(&schema, &Payload::new(Encoding::Cdr, cdr), Encoding::Json)
+                .expect("CDR → JSON"),
+        )
+        .expect("JSON");
+        let list = v["markers"].as_array().expect("markers");
+        assert_eq!(back["markers"].as_array().map(Vec::len), Some(list.len()));
+
+        let of = |ns: &str| -> Vec<&Value> { list.iter().filter(|m| m["ns"] == ns).collect() };
+        let f = |v: &Value| v.as_f64().expect("number");
+        for m in list {
+            check_header(&m["header"], m_stamp(&m["header"]), "r1/map");
+            assert_eq!(m["header"]["stamp"], v["markers"][0]["header"]["stamp"]);
+        }
+        // Five pillars: cylinders where the world has them, as wide and tall.
+        let pillars = of("pillars");
+        assert_eq!(pillars.len(), world::PILLARS.len());
+        for (p, (x, y, r)) in pillars.iter().zip(world::PILLARS) {
+            assert_eq!(p["type"], marker_const(&defs, "CYLINDER"));
+            assert_eq!(p["action"], marker_const(&defs, "ADD"));
+            let pos = &p["pose"]["position"];
+            assert_eq!((f(&pos["x"]), f(&pos["y"])), (x, y));
+            assert_eq!(f(&p["scale"]["x"]), 2.0 * r);
+            assert_eq!(f(&p["scale"]["z"]), world::PILLAR_HEIGHT);
+            assert!(f(&p["color"]["a"]) > 0.0);
+        }
+        let ids: BTreeSet<i64> = pillars.iter().filter_map(|p| p["id"].as_i64()).collect();
+        assert_eq!(ids.len(), 5, "unique ids in the namespace");
+        // The walls: a closed strip around the room.
+        let walls = of("walls");
+        assert_eq!(walls.len(), 1);
+        assert_eq!(walls[0]["type"], marker_const(&defs, "LINE_STRIP"));
+        let pts = walls[0]["points"].as_array().expect("points");
+        assert_eq!(pts.len(), 5);
+        assert_eq!(pts[0], pts[4]);
+        for p in pts {
+            assert_eq!(f(&p["x"]).abs(), world::HALF_ROOM);
+            assert_eq!(f(&p["y"]).abs(), world::HALF_ROOM);
+        }
+        assert!(f(&walls[0]["scale"]["x"]) > 0.0);
+        // The goal: a sphere at the goal, or the sphere deleted.
+        let g = of("goal");
+        assert_eq!(g.len(), 1);
+        assert_eq!(g[0]["type"], marker_const(&defs, "SPHERE"));
+        match goal {
+            Some((x, y)) => {
+                assert_eq!(g[0]["action"], marker_const(&defs, "ADD"));
+                let pos = &g[0]["pose"]["position"];
+                assert_eq!((f(&pos["x"]), f(&pos["y"])), (x, y));
+                assert!(f(&g[0]["scale"]["x"]) > 0.0);
+            }
+            None => assert_eq!(g[0]["action"], marker_const(&defs, "DELETE")),
+        }
+    }
+}
+
+fn m_stamp(h: &Value) -> u64 {
+    h["stamp"]["sec"].as_u64().expect("sec") * 1_000_000_000
+        + h["stamp"]["nanosec"].as_u64().expect("nanosec")
+}
+
+#[test]
+fn markers_are_deterministic_and_follow_the_goal() {
+    let a = run(&mut markers_only(), Duration::from_secs(3));
+    let b = run(&mut markers_only(), Duration::from_secs(3));
+    assert_eq!(a, b);
+    let mut sim = markers_only();
+    sim.set_goal_marker(Some((1.0, 2.0)));
+    let with_goal = sim.generate(0, Duration::from_secs(1));
+    sim.set_goal_marker(None);
+    let without = sim.generate(0, Duration::from_secs(1));
+    assert_ne!(with_goal.json, without.json);
+    assert_eq!(without, a[1]);
 }
