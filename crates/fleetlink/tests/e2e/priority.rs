@@ -15,6 +15,11 @@ use crate::util::*;
 async fn priority_topic_overtakes_a_2mb_point_cloud() {
     let hub = start_hub().await;
     let mut cfg = uplink_config(&hub, "robot_p");
+    // The tests' short heartbeat (200 ms: a link silent for 400 ms is dead) is about
+    // noticing outages quickly; on a starved machine this one thread can be silent that
+    // long while it encodes 2 MB, and a link declared dead loses the cloud. What is tested
+    // here is the order, so the link gets the default heartbeat.
+    cfg.heartbeat = std::time::Duration::from_secs(1);
     let spec = |p: f32| fleetlink_qos::TopicQosSpec {
         priority: Some(p),
         ..Default::default()
