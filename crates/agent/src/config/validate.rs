@@ -198,9 +198,13 @@ fn validate_ros1(r: &super::Ros1Config) -> Result<(), Problem> {
     for (path, list) in lists {
         for (i, p) in list.iter().enumerate() {
             if let Err(e) = regex::Regex::new(&format!("^(?:{p})$")) {
+                // The regex error draws a caret diagram over several lines; its last line
+                // says what is wrong.
+                let text = e.to_string();
+                let reason = text.lines().last().unwrap_or(&text).trim();
                 return Err(problem(
                     path.index(i),
-                    format!("is not a valid pattern ({e}): {p:?}"),
+                    format!("is not a valid pattern ({reason}): {p:?}"),
                 ));
             }
         }
