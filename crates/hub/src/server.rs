@@ -56,6 +56,8 @@ pub struct HubConfig {
     pub jwks: Option<crate::jwks::JwksSource>,
     /// Timeouts and connection limits at the front door.
     pub door: crate::limits::FrontDoor,
+    /// Service and action calls: default deadline, pending-call bounds.
+    pub calls: fleetlink_relay::calls::CallLimits,
 }
 
 /// Robots behind one access link (a site uplink, a cell) and its capacity.
@@ -109,6 +111,7 @@ impl Default for HubConfig {
             sites: Vec::new(),
             jwks: None,
             door: crate::limits::FrontDoor::default(),
+            calls: fleetlink_relay::calls::CallLimits::default(),
         }
     }
 }
@@ -176,7 +179,7 @@ impl Hub {
             )?)),
             None => None,
         };
-        let mut router = Router::new(transcoder);
+        let mut router = Router::with_call_limits(transcoder, cfg.calls.clone());
         router.default_queue = cfg.default_queue;
         let router = Arc::new(router);
         let registry = Arc::new(Registry::default());

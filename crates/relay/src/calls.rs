@@ -185,6 +185,9 @@ pub struct CallOptions {
     pub timeout: Option<Duration>,
     /// A goal of an action rather than a service call.
     pub goal: bool,
+    /// The goal's UUID when it already has one (a goal arriving over a link keeps the id
+    /// its first table gave it); `None` makes a new one.
+    pub goal_id: Option<[u8; 16]>,
 }
 
 struct Pending {
@@ -525,7 +528,7 @@ impl Calls {
                 caller,
                 payload,
                 deadline,
-                goal_id: opts.goal.then(new_goal_id),
+                goal_id: opts.goal.then(|| opts.goal_id.unwrap_or_else(new_goal_id)),
             };
             (provider, request)
         };

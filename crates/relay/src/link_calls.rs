@@ -511,6 +511,7 @@ impl LinkCalls {
         let opts = CallOptions {
             timeout: (deadline_ms > 0).then(|| Duration::from_millis(deadline_ms)),
             goal,
+            goal_id,
         };
         match self
             .calls

@@ -88,6 +88,10 @@ struct SubscriberRef {
     client: ClientId,
     outbox: Arc<Outbox>,
     slot: SlotId,
+    /// Receives its own publishes: rosbridge clients do, as rosbridge delivers to the
+    /// publishing connection when it subscribed. Link peers (agents, an agent's uplink)
+    /// and in-process participants do not: that is the loop guard between robot and hub.
+    own: bool,
 }
 
 pub struct Topic {
@@ -132,7 +136,8 @@ impl Topic {
         self.subscribers.load().len()
     }
 
-    /// Fans `payload` out to every subscriber except its origin. The hot path: one
+    /// Fans `payload` out to every subscriber (its origin only if that is a rosbridge
+    /// client, see `SubscriberRef::own`). The hot path: one
     /// allocation for the message, one queue push per subscriber.
     pub fn publish(
         &self,
@@ -161,7 +166,7 @@ impl Topic {
             .record_publish(msg.payload.len(), crate::instant_to_unix_nanos(now));
         let mut pushed = 0u64;
         for s in self.subscribers.load().iter() {
-            if s.client != msg.origin {
+            if s.client != msg.origin || s.own {
                 s.outbox.push(s.slot, msg.clone(), now);
                 pushed += 1;
             }
@@ -513,10 +518,12 @@ impl Router {
             .outbox
             .add_slot(&topic.meta(), &qos, topic.stats.clone(), opts.delivery);
         c.slots.insert(name, (slot, vec![sid]));
+        let own = c.info.kind == ClientKind::Rosbridge;
         let r = SubscriberRef {
             client,
             outbox: c.outbox.clone(),
             slot,
+            own,
         };
         let mut list = Vec::clone(&topic.subscribers.load());
         list.push(r);
@@ -527,7 +534,7 @@ impl Router {
             .unwrap_or_else(|p| p.into_inner())
             .clone();
         if let Some(m) = latched
-            && m.origin != client
+            && (m.origin != client || own)
         {
             c.outbox.push(slot, m, Instant::now());
         }

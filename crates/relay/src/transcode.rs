@@ -52,6 +52,13 @@ pub trait Transcoder: Send + Sync + 'static {
     fn ros1_identity(&self, _type_name: &str) -> Option<Ros1Identity> {
         None
     }
+
+    /// rosapi's `typedefs` for a message type (the type and every type it uses): per
+    /// type its field names, types, array lengths (-1 single, 0 unbounded, N fixed),
+    /// example values, constant names and values. `None` for an unknown type.
+    fn typedefs(&self, _type_name: &str) -> Option<Vec<serde_json::Value>> {
+        None
+    }
 }
 
 /// What a ROS 1 connection header says about a type.
@@ -174,6 +181,74 @@ impl Transcoder for RegistryTranscoder {
             md5sum,
             definition,
         })
+    }
+
+    fn typedefs(&self, type_name: &str) -> Option<Vec<serde_json::Value>> {
+        use fleetlink_msg::spec::{ArrayKind, Element};
+        let reg = &self.registry;
+        let dialect = fleetlink_msg::Dialect::Ros2;
+        let first = reg.resolve_name(type_name, dialect).ok()?;
+        let mut out = Vec::new();
+        let mut todo = vec![first.to_string()];
+        let mut seen = std::collections::HashSet::new();
+        while let Some(name) = todo.pop() {
+            if !seen.insert(name.clone()) {
+                continue;
+            }
+            let Ok(spec) = reg.message(&name, dialect) else {
+                continue;
+            };
+            let (mut names, mut types, mut lens, mut examples) =
+                (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+            for f in &spec.fields {
+                let (ty, example) = match &f.ty.element {
+                    Element::Primitive(p) => {
+                        let k = p.keyword();
+                        let ex = match k {
+                            "string" | "wstring" => "",
+                            "bool" => "False",
+                            "time" | "duration" => "{}",
+                            _ => "0",
+                        };
+                        (k.to_owned(), ex)
+                    }
+                    Element::Named { package, name: n } => {
+                        let pkg = package.clone().unwrap_or_else(|| {
+                            if n == "Header" {
+                                "std_msgs".to_owned()
+                            } else {
+                                spec.name.package().to_owned()
+                            }
+                        });
+                        let full = reg
+                            .resolve_name(&format!("{pkg}/{n}"), dialect)
+                            .map(|t| t.to_string())
+                            .unwrap_or_else(|_| format!("{pkg}/msg/{n}"));
+                        todo.push(full.clone());
+                        (full, "{}")
+                    }
+                };
+                let len = match f.ty.array {
+                    ArrayKind::Single => -1,
+                    ArrayKind::Fixed(n) => i64::from(n),
+                    ArrayKind::Bounded(_) | ArrayKind::Unbounded => 0,
+                };
+                names.push(f.name.clone());
+                types.push(ty);
+                lens.push(len);
+                examples.push(if len >= 0 { "[]" } else { example }.to_owned());
+            }
+            out.push(serde_json::json!({
+                "type": spec.name.to_string(),
+                "fieldnames": names,
+                "fieldtypes": types,
+                "fieldarraylen": lens,
+                "examples": examples,
+                "constnames": spec.constants.iter().map(|c| c.name.clone()).collect::<Vec<_>>(),
+                "constvalues": spec.constants.iter().map(|c| c.value_text.clone()).collect::<Vec<_>>(),
+            }));
+        }
+        Some(out)
     }
 
     fn schema_for(&self, type_name: &str) -> Option<Schema> {

@@ -215,7 +215,7 @@ async fn call_fleet(
 ) -> Result<bytes::Bytes, String> {
     let opts = CallOptions {
         timeout: Some(node.opts.call_timeout),
-        goal: false,
+        ..CallOptions::default()
     };
     let calls = &node.router.calls;
     let id = calls

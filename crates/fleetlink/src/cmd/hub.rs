@@ -90,6 +90,17 @@ pub struct Args {
     /// 503 with a Retry-After of a few seconds.
     #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..))]
     pub max_handshakes: u32,
+    /// Seconds a service call waits for its answer when the caller gives no `timeout`.
+    #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
+    pub call_timeout_secs: f64,
+    /// Service calls and action goals one client may have waiting at once; more are
+    /// answered "busy" at once.
+    #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_pending_calls_per_caller: u32,
+    /// Calls and goals waiting on one provider (a robot, a client offering services) at
+    /// once; more are answered "busy" at once.
+    #[arg(long, default_value_t = 1024, value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_pending_calls_per_provider: u32,
 }
 
 impl Args {
@@ -125,6 +136,12 @@ impl Args {
                 max_connections: self.max_connections as usize,
                 max_connections_per_ip: self.max_connections_per_ip as usize,
                 max_handshakes: self.max_handshakes as usize,
+            },
+            calls: fleetlink_relay::calls::CallLimits {
+                default_timeout: Duration::from_secs_f64(self.call_timeout_secs),
+                max_pending_per_caller: self.max_pending_calls_per_caller as usize,
+                max_pending_per_provider: self.max_pending_calls_per_provider as usize,
+                ..fleetlink_relay::calls::CallLimits::default()
             },
             tls: self
                 .tls_cert

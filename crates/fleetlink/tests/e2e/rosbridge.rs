@@ -250,3 +250,66 @@ async fn remapped_topic_appears_under_its_configured_hub_name() {
     agent.shutdown().await;
     hub.shutdown().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_client_that_publishes_and_subscribes_on_one_connection_receives_its_own_messages() {
+    let hub = start_hub().await;
+    let agent = start_agent(&hub, "r1").await;
+    for url in [hub.ws_url(), agent.local_url()] {
+        let mut c = Rosbridge::connect(&url).await;
+        c.send(json!({"op": "advertise", "topic": "/selfie", "type": "std_msgs/msg/String"}))
+            .await;
+        c.send(json!({"op": "subscribe", "topic": "/selfie", "id": "s"}))
+            .await;
+        c.send(json!({"op": "publish", "topic": "/selfie", "msg": {"data": "me"}}))
+            .await;
+        let m = c.recv_op("publish").await;
+        assert_eq!(m["msg"]["data"], "me", "{url}: {m}");
+    }
+    // The loop guard stays for link peers: a robot's message goes up to the hub, whose
+    // agent session (subscribed to /r1/.*) never sends it back down; a local client that
+    // publishes and subscribes sees each of its messages exactly once.
+    let mut on_hub = Rosbridge::connect(&hub.ws_url()).await;
+    on_hub
+        .send(json!({"op": "subscribe", "topic": "/r1/echoes", "id": "h"}))
+        .await;
+    let mut local = Rosbridge::connect(&agent.local_url()).await;
+    local
+        .send(json!({"op": "advertise", "topic": "/echoes", "type": "std_msgs/msg/String"}))
+        .await;
+    local
+        .send(json!({"op": "subscribe", "topic": "/echoes", "id": "l"}))
+        .await;
+    // Until the hub has the topic, messages may not reach it; then send 20 counted ones.
+    within("the robot's topic on the hub", async {
+        for i in 0.. {
+            local
+                .send(json!({"op": "publish", "topic": "/echoes", "msg": {"data": format!("warm{i}")}}))
+                .await;
+            if let Ok(Some(_)) =
+                tokio::time::timeout(Duration::from_millis(20), on_hub.try_recv()).await
+            {
+                return;
+            }
+        }
+    })
+    .await;
+    for i in 0..20 {
+        local
+            .send(json!({"op": "publish", "topic": "/echoes", "msg": {"data": format!("n{i}")}}))
+            .await;
+    }
+    let mut counted = std::collections::BTreeMap::<String, usize>::new();
+    let deadline = tokio::time::Instant::now() + Duration::from_millis(800);
+    while let Ok(Some(m)) = tokio::time::timeout_at(deadline, local.try_recv()).await {
+        let d = m["msg"]["data"].as_str().unwrap_or_default().to_owned();
+        if d.starts_with('n') {
+            *counted.entry(d).or_default() += 1;
+        }
+    }
+    assert_eq!(counted.len(), 20, "{counted:?}");
+    assert!(
+        counted.values().all(|n| *n == 1),
+        "a message came back: {counted:?}"
+    );
+}

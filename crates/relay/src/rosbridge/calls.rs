@@ -201,6 +201,7 @@ impl Session {
         let opts = CallOptions {
             timeout: timeout_of(timeout),
             goal: false,
+            goal_id: None,
         };
         match self.router.calls.call(self.client, &name, args, opts) {
             Ok(call) => {
@@ -406,6 +407,7 @@ impl Session {
         let opts = CallOptions {
             timeout: timeout_of(timeout),
             goal: true,
+            goal_id: None,
         };
         match self.router.calls.call(self.client, &name, args, opts) {
             Ok(call) => {

@@ -38,6 +38,9 @@ pub const SERVICES: &[&str] = &[
     "service_providers",
     "service_node",
     "action_servers",
+    "service_request_details",
+    "service_response_details",
+    "message_details",
 ];
 
 pub fn answer(
@@ -144,6 +147,25 @@ pub fn answer(
                 .map(|s| s.name.to_string())
                 .collect::<Vec<_>>(),
         }),
+        "service_request_details" | "service_response_details" | "message_details" => {
+            let Some(ty) = args.get("type").and_then(Value::as_str) else {
+                return Answer::Failed(format!("{service}: missing string argument 'type'"));
+            };
+            let part = match call {
+                "service_request_details" => format!("{}_Request", srv_name(ty)),
+                "service_response_details" => format!("{}_Response", srv_name(ty)),
+                _ => ty.to_owned(),
+            };
+            match router.transcoder().typedefs(&part) {
+                Some(defs) => json!({ "typedefs": defs }),
+                None => {
+                    return Answer::Failed(format!(
+                        "{service}: type {ty} is not known to this server (it learns types \
+                         from advertisements and from --msg-path packages)"
+                    ));
+                }
+            }
+        }
         "service_type" | "service_providers" | "service_node" => {
             let raw = args.get("service").and_then(Value::as_str);
             let Some(name) = raw.and_then(|r| TopicName::parse(r).ok()) else {
@@ -179,6 +201,14 @@ pub fn answer(
         other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
     };
     Answer::Values(values)
+}
+
+/// `pkg/T` or `pkg/srv/T` as the service's `pkg/srv/T`.
+fn srv_name(ty: &str) -> String {
+    match ty.split('/').collect::<Vec<_>>()[..] {
+        [pkg, name] => format!("{pkg}/srv/{name}"),
+        _ => ty.to_owned(),
+    }
 }
 
 /// How a client appears as a node in `nodes`, `publishers` and `subscribers`.

@@ -4,12 +4,14 @@
 //!
 //! - [`relay`]: the `relay` subcommand: options, the run's order of events and what is
 //!   counted.
+//! - [`calls`]: the `calls` subcommand: service round trips through a hub and an agent.
 //! - [`conn`]: a bench client's `fleetlink.v1` connection and setup handshake.
 //! - [`publisher`], [`subscriber`]: the two kinds of client and their hot loops.
 //! - [`report`]: the progress line and the final summary.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
 
+mod calls;
 mod conn;
 mod publisher;
 mod reconnect;
@@ -31,11 +33,15 @@ enum Command {
     /// A fleet of agents against a hub that is stopped and restarted: how fast and how
     /// spread out the robots come back (backoff, jitter, handshake admission).
     Reconnect(reconnect::Args),
+    /// Service calls from rosbridge clients on the hub to a provider on an agent's local
+    /// listener: round-trip percentiles, calls/s, servers' CPU per call and memory.
+    Calls(calls::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     match args.command {
         Command::Relay(a) => relay::run(a),
         Command::Reconnect(a) => reconnect::run(a),
+        Command::Calls(a) => calls::run(a),
     }
 }
