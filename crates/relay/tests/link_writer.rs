@@ -293,7 +293,10 @@ async fn latched_topics_are_announced_latched() {
     let mut flags = std::collections::HashMap::new();
     while flags.len() < 2 {
         for f in next_frames(&mut rx).await {
-            if let Frame::Advertise { topic, flags: f, .. } = f {
+            if let Frame::Advertise {
+                topic, flags: f, ..
+            } = f
+            {
                 flags.insert(topic, f);
             }
         }

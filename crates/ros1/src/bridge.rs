@@ -113,6 +113,11 @@ pub async fn run(
     for t in tasks {
         let _ = t.await;
     }
+    for sub in node.lock().subs.values() {
+        for c in sub.conns.values() {
+            c.abort.abort();
+        }
+    }
     unregister_all(&node).await;
     router.disconnect(client);
     Ok(())
