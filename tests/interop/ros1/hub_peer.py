@@ -119,7 +119,7 @@ def check_up(args):
 def check_after(args):
     ros = connect(args.hub_url)
     m = first(ros, f"/{args.robot}/after_restart", "std_msgs/String", wait=25)
-    check(m is not None and m["data"].startswith("after-"), f"/after_restart arrived after the master restart: {m}")
+    check(m is not None and m["data"].startswith("after-"), f"/after_restart arrived at the hub: {m}")
 
 
 def serve(args):

@@ -8,6 +8,8 @@ Modes:
               (example_interfaces/AddTwoInts). Writes what it received to OUT (JSON) every
               0.2 s.
   after       a node started after roscore restarted: publishes /after_restart.
+  wrongtype   a node that subscribes /cmd_vel with the wrong type (std_msgs/String) for
+              3 s: the agent must refuse it and keep serving the right subscribers.
 
 Every published value is a pure function of its index, so the hub side checks equality
 without talking to this process (expected values: hub_peer.py builds the same ones).
@@ -120,10 +122,19 @@ def after():
         rate.sleep()
 
 
+def wrongtype():
+    rospy.init_node("wrong_type", disable_signals=True)
+    rospy.Subscriber("/cmd_vel", String, lambda m: print(f"unexpected: {m}", flush=True))
+    print("wrongtype ready", flush=True)
+    rospy.sleep(3.0)
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "graph":
         graph(sys.argv[2])
     elif sys.argv[1] == "after":
         after()
+    elif sys.argv[1] == "wrongtype":
+        wrongtype()
     else:
         sys.exit(f"unknown mode {sys.argv[1]}")

@@ -12,8 +12,11 @@
 #      service advertised on the hub;
 #   3. /chatter bridged both ways: every message is seen exactly once on each side (no
 #      loop), counted on both sides;
-#   4. roscore killed and restarted under the running agent: a publisher started afterwards
-#      reaches the hub, and the agent's publication is registered again (`rostopic echo`).
+#   4. a local subscriber asking for another type than the hub topic's is refused, the
+#      agent's log names the topic and both types, and /cmd_vel keeps flowing;
+#   5. roscore killed and restarted under the running agent: a publisher started afterwards
+#      reaches the hub, and the agent's publication is registered again (`rostopic echo`);
+#   6. that publisher restarted: the agent follows it (publisherUpdate) and data flows again.
 # Every step runs under `timeout`; every process started here is stopped on exit (trap).
 # The whole suite stays under 3 minutes.
 #
@@ -145,6 +148,13 @@ grep -q 'hello from the fleet' <<<"$call_out" && echo "ok: rosservice call /clou
 info_out="$(timeout 20 rostopic info /announce 2>&1 || true)"
 grep -q "fleetlink_$robot" <<<"$info_out" && echo "ok: rostopic info lists the agent as a publisher" \
     || fail "rostopic info /announce: $info_out"
+node_out="$(timeout 20 rosnode info "/fleetlink_$robot" 2>&1 || true)"
+grep -q '/cmd_vel' <<<"$node_out" && grep -q '/scan' <<<"$node_out" \
+    && echo "ok: rosnode info shows the agent's publications and subscriptions" \
+    || fail "rosnode info: $node_out"
+hz_out="$(timeout 6 rostopic hz -w 5 /cmd_vel 2>&1 || true)"
+grep -q 'average rate' <<<"$hz_out" && echo "ok: rostopic hz /cmd_vel: $(grep -m1 'average rate' <<<"$hz_out")" \
+    || fail "rostopic hz /cmd_vel: $hz_out"
 
 step "3. /chatter both ways: no loop"
 sleep 2 # both sides have been publishing for a while; the counters are written every 0.2 s
@@ -165,16 +175,39 @@ EOF
 )"
 case "$loop_report" in ok:*) echo "$loop_report" ;; *) fail "loop check: $loop_report" ;; esac
 
-step "4. roscore restart"
+cmd_count() { "$rospython" -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["cmd_vel"]))' "$tmp/ros_got.json" 2>/dev/null || echo 0; }
+
+step "4. type mismatch on one topic"
+before="$(cmd_count)"
+timeout 20 "$rospython" "$here/ros_peer.py" wrongtype >"$tmp/wrongtype.log" 2>&1 || fail "wrongtype node: $(tail -n 3 "$tmp/wrongtype.log")"
+mismatch="$(grep -m1 'type mismatch on /cmd_vel' "$tmp/agent.log" || true)"
+if grep -q 'geometry_msgs/Twist' <<<"$mismatch" && grep -q 'std_msgs/String' <<<"$mismatch"; then
+    echo "ok: the agent reported the mismatch naming both types"
+else
+    fail "no log line naming /cmd_vel and both types: '$mismatch'"
+fi
+grep -q unexpected "$tmp/wrongtype.log" && fail "the wrong-type subscriber received messages"
+after="$(cmd_count)"
+[ "$after" -gt "$before" ] && echo "ok: /cmd_vel kept flowing ($before -> $after messages)" \
+    || fail "/cmd_vel stopped during the mismatch ($before -> $after)"
+
+step "5. roscore restart"
 kill -TERM "$roscore_pid"; wait "$roscore_pid" 2>/dev/null || true
 sleep 1
 start_roscore
 "$rospython" "$here/ros_peer.py" after >"$tmp/after.log" 2>&1 &
 pids+=($!)
+after_pid=${pids[-1]}
 timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-after --hub-url "$hub_url" --robot "$robot" || fail "check-after"
 echo_out="$(timeout 20 rostopic echo -n 1 /announce 2>&1 || true)"
 grep -q 'hello fleet' <<<"$echo_out" && echo "ok: the agent's publication is registered with the new master" \
     || fail "rostopic echo /announce after the restart: $echo_out"
+
+step "6. publisher restart"
+kill -TERM "$after_pid"; wait "$after_pid" 2>/dev/null || true
+"$rospython" "$here/ros_peer.py" after >"$tmp/after2.log" 2>&1 &
+pids+=($!)
+timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-after --hub-url "$hub_url" --robot "$robot" || fail "check-after (restarted publisher)"
 
 kill -0 "$agent_pid" 2>/dev/null || fail "the agent died"
 echo "ros1 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"
