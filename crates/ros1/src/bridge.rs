@@ -362,13 +362,22 @@ async fn serve_call(node: &Node, req: CallRequest) {
             return;
         }
     };
-    match call_service(node, name, &md5sum, &request).await {
-        Ok(body) => respond(
+    // A provider that never answers must not hold this task past the caller's deadline.
+    let limit = req.deadline.map_or(node.opts.call_timeout, |d| {
+        d.saturating_duration_since(Instant::now())
+    });
+    match tokio::time::timeout(limit, call_service(node, name, &md5sum, &request)).await {
+        Ok(Ok(body)) => respond(
             CallStatus::Ok,
             Some(Payload::new(Encoding::Ros1, body)),
             String::new(),
         ),
-        Err(text) => respond(CallStatus::Failed, None, text),
+        Ok(Err(text)) => respond(CallStatus::Failed, None, text),
+        Err(_) => respond(
+            CallStatus::Timeout,
+            None,
+            format!("{name} did not answer within {limit:?}"),
+        ),
     }
 }
 
