@@ -35,6 +35,8 @@ struct Graph {
     subscribers: HashMap<String, Vec<(String, String)>>,
     /// how many registerPublisher calls each topic saw
     registrations: HashMap<String, usize>,
+    /// service → (node, rosrpc uri)
+    services: HashMap<String, (String, String)>,
 }
 
 type Shared = Arc<Mutex<Graph>>;
@@ -73,6 +75,15 @@ fn master_call(g: &Shared, method: &str, p: &[Value]) -> Value {
                 pubs.into_iter().map(|(_, a, _)| a.into()).collect(),
             ))
         }
+        "registerService" => {
+            let (node, service, uri) = (s(0), s(1), s(2));
+            g.services.insert(service, (node, uri));
+            ok(Value::Int(1))
+        }
+        "lookupService" => match g.services.get(&s(1)) {
+            Some((_, uri)) => ok(uri.as_str().into()),
+            None => Value::Array(vec![Value::Int(-1), "no provider".into(), "".into()]),
+        },
         "getSystemState" => {
             let pubs = g
                 .publishers
@@ -84,10 +95,20 @@ fn master_call(g: &Shared, method: &str, p: &[Value]) -> Value {
                     ])
                 })
                 .collect();
+            let services = g
+                .services
+                .iter()
+                .map(|(name, (node, _))| {
+                    Value::Array(vec![
+                        name.as_str().into(),
+                        Value::Array(vec![node.as_str().into()]),
+                    ])
+                })
+                .collect();
             ok(Value::Array(vec![
                 Value::Array(pubs),
                 Value::Array(vec![]),
-                Value::Array(vec![]),
+                Value::Array(services),
             ]))
         }
         "getTopicTypes" => ok(Value::Array(
@@ -362,6 +383,181 @@ async fn bridges_both_ways_and_registers_again_after_a_master_restart() {
     })
     .await;
     assert!(graph.lock().unwrap().registrations["/cmd_vel"] >= 2);
+
+    shutdown.cancel();
+    tokio::time::timeout(Duration::from_secs(10), bridge)
+        .await
+        .expect("the bridge stops")
+        .unwrap()
+        .unwrap();
+}
+
+const ADD_MD5: &str = "6a2e34150c00229791cc89ff309fff21";
+
+/// A local service provider `/adder` of `/add_two_ints` (example_interfaces/AddTwoInts),
+/// answering probes as rospy does; returns its `rosrpc://` URI.
+async fn adder() -> String {
+    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let uri = format!("rosrpc://{}", listener.local_addr().unwrap());
+    tokio::spawn(async move {
+        loop {
+            let (mut s, _) = listener.accept().await.unwrap();
+            tokio::spawn(async move {
+                let h = read_header(&mut s).await.unwrap();
+                let reply = Header::new()
+                    .with("callerid", "/adder")
+                    .with("type", "example_interfaces/AddTwoInts")
+                    .with("md5sum", ADD_MD5)
+                    .with("request_type", "example_interfaces/AddTwoIntsRequest")
+                    .with("response_type", "example_interfaces/AddTwoIntsResponse");
+                write_header(&mut s, &reply).await.unwrap();
+                if h.flag("probe") {
+                    return;
+                }
+                assert_eq!(
+                    h.text("md5sum"),
+                    ADD_MD5,
+                    "the bridge calls with the probed md5sum"
+                );
+                let req = read_message(&mut s).await.unwrap();
+                let a = i64::from_le_bytes(req[..8].try_into().unwrap());
+                let b = i64::from_le_bytes(req[8..16].try_into().unwrap());
+                fleetlink_ros1::tcpros::write_service_response(&mut s, Ok(&(a + b).to_le_bytes()))
+                    .await
+                    .unwrap();
+            });
+        }
+    });
+    uri
+}
+
+#[tokio::test]
+async fn services_cross_both_ways() {
+    use fleetlink_relay::calls::{CallEvent, CallOptions, CallStatus, ChannelPeer, PeerMsg};
+
+    let graph: Shared = Arc::new(Mutex::new(Graph {
+        pid: 7,
+        ..Graph::default()
+    }));
+    let g = graph.clone();
+    let master = xmlrpc_server(Arc::new(move |m, p| master_call(&g, m, p))).await;
+    let adder_uri = adder().await;
+    graph
+        .lock()
+        .unwrap()
+        .services
+        .insert("/add_two_ints".into(), ("/adder".into(), adder_uri));
+
+    let router = Arc::new(Router::new(Arc::new(RegistryTranscoder::bundled())));
+    // The fleet: a client that calls robot services and provides /cloud/greet.
+    let (fleet, _) = router.connect(
+        ClientKind::Internal {
+            role: "fleet".into(),
+        },
+        None,
+    );
+    let (peer, mut fleet_rx) = ChannelPeer::new();
+    router.calls.attach(fleet, peer);
+    router.calls.advertise(
+        fleet,
+        TopicName::parse("/cloud/greet").unwrap(),
+        Schema::named("std_srvs/srv/Trigger"),
+        false,
+    );
+    let opts = Ros1Options {
+        publish: NameFilter::default(),
+        subscribe: Vec::new(),
+        expose: NameFilter::new(&["/add_two_ints".into()], &[]).unwrap(),
+        offer: NameFilter::new(&["/cloud/.*".into()], &[]).unwrap(),
+        ..options(&master)
+    };
+    let shutdown = CancellationToken::new();
+    let bridge = tokio::spawn(fleetlink_ros1::run(opts, router.clone(), shutdown.clone()));
+
+    // Fleet → local service: a JSON request, a ROS 1 answer from the local provider.
+    let add = TopicName::parse("/add_two_ints").unwrap();
+    eventually("/add_two_ints exposed in the call table", || {
+        router.calls.service(&add).map(|_| ())
+    })
+    .await;
+    let id = router
+        .calls
+        .call(
+            fleet,
+            &add,
+            Payload::json(Bytes::from_static(br#"{"a": 2, "b": 40}"#)),
+            CallOptions::default(),
+        )
+        .unwrap();
+    let done = tokio::time::timeout(Duration::from_secs(10), fleet_rx.recv())
+        .await
+        .expect("an answer")
+        .expect("open");
+    match done {
+        PeerMsg::Event(CallEvent::Done {
+            id: got,
+            status: CallStatus::Ok,
+            payload: Some(p),
+            ..
+        }) => {
+            assert_eq!(got, id);
+            assert_eq!(p.encoding, Encoding::Ros1);
+            assert_eq!(&p.bytes[..], &42i64.to_le_bytes());
+        }
+        other => panic!("{other:?}"),
+    }
+
+    // Local caller → fleet service: registered with the master, answered by the fleet.
+    let uri = eventually("/cloud/greet registered with the master", || {
+        graph
+            .lock()
+            .unwrap()
+            .services
+            .get("/cloud/greet")
+            .map(|(_, u)| u.clone())
+    })
+    .await;
+    let addr = uri.trim_start_matches("rosrpc://").to_owned();
+    let caller = tokio::spawn(async move {
+        let mut s = TcpStream::connect(&addr).await.unwrap();
+        let hello = Header::new()
+            .with("callerid", "/rosservice")
+            .with("service", "/cloud/greet")
+            .with("md5sum", "*");
+        write_header(&mut s, &hello).await.unwrap();
+        let h = read_header(&mut s).await.unwrap();
+        assert_eq!(h.text("type"), "std_srvs/Trigger");
+        s.write_all(&frame(b"")).await.unwrap();
+        fleetlink_ros1::tcpros::read_service_response(&mut s)
+            .await
+            .unwrap()
+    });
+    let call = loop {
+        match tokio::time::timeout(Duration::from_secs(10), fleet_rx.recv())
+            .await
+            .expect("a call")
+            .expect("open")
+        {
+            PeerMsg::Call(c) => break c,
+            _ => continue,
+        }
+    };
+    assert_eq!(call.service.name.as_str(), "/cloud/greet");
+    router.calls.respond(
+        fleet,
+        call.id,
+        CallStatus::Ok,
+        Some(Payload::json(Bytes::from_static(
+            br#"{"success": true, "message": "hi"}"#,
+        ))),
+        String::new(),
+    );
+    let answer = tokio::time::timeout(Duration::from_secs(10), caller)
+        .await
+        .expect("the caller gets its answer")
+        .unwrap()
+        .expect("ok");
+    assert_eq!(&answer[..], b"\x01\x02\0\0\0hi", "bool true, string \"hi\"");
 
     shutdown.cancel();
     tokio::time::timeout(Duration::from_secs(10), bridge)
