@@ -144,6 +144,8 @@ pub struct AgentContext {
     pub default_heartbeat_ms: u32,
     /// How far each robot's no-drop topics were delivered.
     pub ledger: Arc<DeliveryLedger>,
+    /// The hub's `/rosout`: robots connecting, leaving, refused.
+    pub rosout: Arc<crate::rosout::RosOut>,
 }
 
 /// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
@@ -198,17 +200,19 @@ pub async fn serve_agent<S>(
         Err("connection closed before HELLO".to_owned())
     })
     .await;
+    let who = addr.map_or_else(|| "(unknown address)".to_owned(), |a| a.to_string());
     let (robot, heartbeat_ms, identity, outbox_epoch) = match hello {
         Ok(Ok((version, robot, token, hb, epoch))) => {
             if version != VERSION {
-                return refuse(
-                    sink,
-                    format!("unsupported protocol version {version}; this hub speaks {VERSION}"),
-                )
-                .await;
+                let reason =
+                    format!("unsupported protocol version {version}; this hub speaks {VERSION}");
+                return refuse(sink, reason, &who, &ctx.rosout).await;
             }
             if !valid_robot_name(&robot) {
-                return refuse(sink, format!("invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)")).await;
+                let reason = format!(
+                    "invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)"
+                );
+                return refuse(sink, reason, &who, &ctx.rosout).await;
             }
             let hb = if hb == 0 {
                 ctx.default_heartbeat_ms
@@ -243,23 +247,23 @@ pub async fn serve_agent<S>(
                             .access(identity.clone())
                             .allows(&format!("/{robot}"), fleetlink_auth::Operation::Publish) =>
                 {
-                    return refuse(
-                        sink,
-                        format!(
-                            "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
-                            identity.principal()
-                        ),
-                    )
-                    .await;
+                    let reason = format!(
+                        "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
+                        identity.principal()
+                    );
+                    return refuse(sink, reason, &format!("{robot} from {who}"), &ctx.rosout).await;
                 }
                 Ok(identity) => (robot, hb, identity, epoch),
                 // The public message alone ("authentication failed", "authentication
                 // required", a rate limit): the agent turns it into advice.
-                Err(e) => return refuse(sink, e.public_message()).await,
+                Err(e) => {
+                    let who = format!("{robot} from {who}");
+                    return refuse(sink, e.public_message(), &who, &ctx.rosout).await;
+                }
             }
         }
-        Ok(Err(reason)) => return refuse(sink, reason).await,
-        Err(_) => return refuse(sink, "no HELLO within 10 s".into()).await,
+        Ok(Err(reason)) => return refuse(sink, reason, &who, &ctx.rosout).await,
+        Err(_) => return refuse(sink, "no HELLO within 10 s".into(), &who, &ctx.rosout).await,
     };
     let namespace = format!("/{robot}");
     let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(1024);
@@ -293,10 +297,20 @@ pub async fn serve_agent<S>(
     });
     if let Some(old) = ctx.registry.insert(live.clone()) {
         tracing::info!(robot = %robot, "robot reconnected; replacing its previous connection");
+        ctx.rosout.log(
+            crate::rosout::Level::Info,
+            "connected",
+            format!("robot {robot} reconnected from {who}; its previous connection is closed"),
+        );
         let _ = old.control.try_send(Control::Close);
         ctx.router.disconnect(old.client);
     }
     tracing::info!(robot = %robot, ?addr, "robot connected");
+    ctx.rosout.log(
+        crate::rosout::Level::Info,
+        "connected",
+        format!("robot {robot} connected from {who}"),
+    );
     let store = ctx.store.clone();
     let (r, a) = (
         robot.clone(),
@@ -346,9 +360,9 @@ pub async fn serve_agent<S>(
         calls: LinkCalls::new(ctx.router.calls.clone(), client, Box::new(SameNames)),
     };
     let dead_after = heartbeat * 2;
-    loop {
+    let gone = loop {
         let next = tokio::select! {
-            _ = ctx.shutdown.cancelled() => break,
+            _ = ctx.shutdown.cancelled() => break (crate::rosout::Level::Info, "the hub is shutting down".to_owned()),
             n = tokio::time::timeout(dead_after, stream.next()) => n,
             m = peer_rx.recv() => {
                 if let Some(m) = m {
@@ -360,9 +374,21 @@ pub async fn serve_agent<S>(
         let msg = match next {
             Err(_) => {
                 tracing::warn!(robot = %robot, "no traffic for {dead_after:?}; declaring the link dead");
-                break;
+                break (
+                    crate::rosout::Level::Warn,
+                    format!(
+                        "no traffic for {} ms: link declared dead",
+                        dead_after.as_millis()
+                    ),
+                );
             }
-            Ok(None) | Ok(Some(Err(_))) | Ok(Some(Ok(WsMessage::Close(_)))) => break,
+            Ok(None) | Ok(Some(Ok(WsMessage::Close(_)))) => {
+                break (
+                    crate::rosout::Level::Info,
+                    "the robot closed the connection".to_owned(),
+                );
+            }
+            Ok(Some(Err(e))) => break (crate::rosout::Level::Warn, format!("link error: {e}")),
             Ok(Some(Ok(m))) => m,
         };
         live.last_seen_ns
@@ -388,9 +414,14 @@ pub async fn serve_agent<S>(
             }
             _ => {}
         }
-    }
+    };
     ctx.router.disconnect(client);
     ctx.registry.remove_if_session(&robot, session);
+    ctx.rosout.log(
+        gone.0,
+        "disconnected",
+        format!("robot {robot} disconnected: {}", gone.1),
+    );
     let _ = ctrl_tx.try_send(Control::Close);
     drop(st);
     drop(ctrl_tx);
@@ -401,11 +432,16 @@ pub async fn serve_agent<S>(
 }
 
 /// Tells a connection why it is not accepted, then closes it.
-async fn refuse<K>(mut sink: K, reason: String)
+async fn refuse<K>(mut sink: K, reason: String, who: &str, rosout: &crate::rosout::RosOut)
 where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
     tracing::warn!("refusing agent: {reason}");
+    rosout.log(
+        crate::rosout::Level::Warn,
+        "refused",
+        format!("refused agent {who}: {reason}"),
+    );
     let status = Frame::Status {
         level: Level::Error,
         code: 401,

@@ -23,6 +23,8 @@
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
+//! - [`rosout`]: `/rosout` as `rcl_interfaces/msg/Log`: the hub's events (robots coming,
+//!   going, refused; links degrading; drops) and the robots' own logs.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
 //! - [`store`]: the SQLite database in the data directory (robots seen so far, delivery
@@ -38,6 +40,7 @@ pub mod http_guards;
 pub mod jwks;
 pub mod limits;
 pub mod metrics;
+pub mod rosout;
 pub mod security;
 pub mod server;
 pub mod store;

@@ -44,6 +44,8 @@ pub struct HubConfig {
     pub max_message_size: usize,
     /// Queue length of subscriptions that do not set `queue_length`.
     pub default_queue: usize,
+    /// And the payload bytes such a queue holds at most.
+    pub default_queue_bytes: usize,
     /// Who may connect: anonymous access, trusted proxies, robot networks, OIDC.
     pub auth: fleetlink_auth::AuthPolicy,
     /// Built-in grants (admin group, robots in their namespace, anonymous read).
@@ -104,7 +106,8 @@ impl Default for HubConfig {
             data_dir: PathBuf::from("fleetlink-data"),
             heartbeat: Duration::from_secs(1),
             max_message_size: 16 << 20,
-            default_queue: 100,
+            default_queue: 1000,
+            default_queue_bytes: 2 << 20,
             auth: fleetlink_auth::AuthPolicy::default(),
             acl: fleetlink_auth::AclDefaults::default(),
             tls: None,
@@ -181,6 +184,7 @@ impl Hub {
         };
         let mut router = Router::with_call_limits(transcoder, cfg.calls.clone());
         router.default_queue = cfg.default_queue;
+        router.default_queue_bytes = cfg.default_queue_bytes;
         let router = Arc::new(router);
         let registry = Arc::new(Registry::default());
         let shutdown = CancellationToken::new();
@@ -192,6 +196,7 @@ impl Hub {
             security: security.clone(),
             default_heartbeat_ms: cfg.heartbeat.as_millis() as u32,
             ledger: Arc::new(crate::delivery::DeliveryLedger::new(store.clone())),
+            rosout: crate::rosout::RosOut::start(router.clone()),
         });
         let rosbridge = Arc::new(SessionConfig {
             node_name: "/fleetlink_hub".into(),
@@ -238,6 +243,13 @@ impl Hub {
         let token = state.shutdown.clone();
         // Call deadlines: one timer task for the hub's call table.
         tokio::spawn(state.router.calls.clone().run_deadlines(token.clone()));
+        tokio::spawn(
+            state
+                .agents
+                .rosout
+                .clone()
+                .run(state.registry.clone(), token.clone()),
+        );
         let api = crate::api::routes()
             .route("/metrics", get(crate::metrics::handler))
             .route_layer(axum::middleware::from_fn_with_state(

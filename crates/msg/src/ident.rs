@@ -110,8 +110,12 @@ fn ros1_type_text(registry: &Registry, spec: &MsgSpec, f: &FieldSpec) -> Option<
 }
 
 /// The definition of `type_name` with all its dependencies, in the concatenated form
-/// peers exchange: ROS 1 `message_definition` (`MSG: pkg/T`) or ROS 2 / rosbag2
-/// (`MSG: pkg/msg/T`).
+/// peers exchange (ROS 1 `message_definition`, rosbridge's `typedefs_full_text`, MCAP
+/// `ros1msg`/`ros2msg` schemas). Dependency sections are headed `MSG: pkg/T` in both
+/// dialects: that is how the definitions' own fields name them (`std_msgs/Header`), and
+/// parsers such as `@foxglove/rosmsg` (Foxglove, Lichtblick) match the two spellings
+/// exactly. Parts of services and actions keep `pkg/srv/…` / `pkg/action/…`, the only
+/// name that says what they are.
 pub fn full_text(
     registry: &Registry,
     type_name: &str,
@@ -126,9 +130,10 @@ pub fn full_text(
     for dep in &order {
         out.push_str(&"=".repeat(80));
         out.push('\n');
-        let shown = match dialect {
-            Dialect::Ros1 => dep.name.short(),
-            Dialect::Ros2 => dep.name.to_string(),
+        // Service and action parts keep their kind: `pkg/T_Feedback` would name a message.
+        let shown = match dep.name.kind() {
+            crate::InterfaceKind::Msg => dep.name.short(),
+            _ => dep.name.to_string(),
         };
         let _ = writeln!(out, "MSG: {shown}");
         out.push_str(&own_text(registry, dep, dialect));

@@ -215,7 +215,9 @@ fn full_text_has_the_separator_and_dependency_lines_peers_expect() {
     let text = reg
         .full_text("geometry_msgs/PoseStamped", Dialect::Ros2)
         .expect("text");
-    assert!(text.contains("MSG: builtin_interfaces/msg/Time"), "{text}");
+    // Headed as the fields spell them, so @foxglove/rosmsg matches them (Lichtblick).
+    assert!(text.contains("MSG: builtin_interfaces/Time\n"), "{text}");
+    assert!(text.contains("MSG: std_msgs/Header\n"), "{text}");
     assert!(!text.contains("seq"), "{text}");
 }
 

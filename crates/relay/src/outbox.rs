@@ -193,12 +193,14 @@ impl Outbox {
 
     /// Adds a subscription's slot. `qos` shapes its queue; a scheduled outbox asks its
     /// own `qos_for` instead, so the agent's per-topic configuration wins.
+    /// `max_bytes` bounds a round-robin slot's queue in payload bytes as well.
     pub fn add_slot(
         &self,
         topic: &TopicMeta,
         qos: &TopicQos,
         stats: Arc<TopicStats>,
         delivery: Delivery,
+        max_bytes: Option<usize>,
     ) -> SlotId {
         let mut st = self.lock();
         let st = &mut *st;
@@ -206,9 +208,10 @@ impl Outbox {
         let id = SlotId(st.next_slot);
         let tid = topic.id.0;
         let queue = match &mut st.service {
-            Service::RoundRobin { .. } => {
-                Some(Box::new(QosQueue::new(qos)) as Box<dyn OutboundQueue>)
-            }
+            Service::RoundRobin { .. } => Some(Box::new(QosQueue::with_max_bytes(
+                qos,
+                max_bytes.unwrap_or(usize::MAX),
+            )) as Box<dyn OutboundQueue>),
             Service::Scheduled {
                 sched,
                 qos_for,
@@ -278,6 +281,13 @@ impl Outbox {
                 let q = s.queue.as_mut().expect("round-robin slots own a queue");
                 let before = q.len();
                 let dropped = q.push(msg, now);
+                let evicted = q.take_evicted();
+                if evicted > 0 {
+                    for _ in 0..evicted {
+                        s.stats.record_drop(DropReason::Policy);
+                    }
+                    self.dropped.fetch_add(evicted, Relaxed);
+                }
                 let after = q.len();
                 st.queued = st.queued + after - before;
                 let wake = !s.in_ready && after > 0;

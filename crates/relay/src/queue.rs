@@ -77,19 +77,39 @@ pub trait OutboundQueue: Send {
     }
     /// When the oldest queued message arrived (for lag reporting).
     fn oldest(&self) -> Option<Instant>;
+    /// Messages evicted since the last call to keep a byte bound (beyond what `push`
+    /// returned), counted as policy drops.
+    fn take_evicted(&mut self) -> u64 {
+        0
+    }
 }
 
 /// A QoS-engine queue behind the relay's queue seam.
 pub struct QosQueue {
     queue: TopicQueue<Arc<Message>>,
     origin: Instant,
+    /// Payload bytes queued, and the most allowed (the oldest messages go first; the
+    /// newest one always stays).
+    bytes: usize,
+    max_bytes: usize,
+    evicted: u64,
 }
 
 impl QosQueue {
     pub fn new(qos: &TopicQos) -> QosQueue {
+        QosQueue::with_max_bytes(qos, usize::MAX)
+    }
+
+    /// A queue bounded in bytes as well as in messages: a burst of small messages fits
+    /// whole, while a subscriber of large ones that falls behind keeps only the newest
+    /// few.
+    pub fn with_max_bytes(qos: &TopicQos, max_bytes: usize) -> QosQueue {
         QosQueue {
             queue: TopicQueue::new(qos),
             origin: Instant::now(),
+            bytes: 0,
+            max_bytes,
+            evicted: 0,
         }
     }
 
@@ -101,16 +121,42 @@ impl QosQueue {
 impl OutboundQueue for QosQueue {
     fn push(&mut self, msg: Arc<Message>, now: Instant) -> Option<(Arc<Message>, DropReason)> {
         let t = self.nanos(now);
-        match self.queue.push(msg, t) {
-            Push::Queued => None,
-            Push::Dropped { item, reason } => Some((item, DropReason::from_qos(reason))),
+        let len = msg.payload.len();
+        let out = match self.queue.push(msg, t) {
+            Push::Queued => {
+                self.bytes += len;
+                None
+            }
+            Push::Dropped { item, reason } => {
+                // The queue made room: either this message was refused, or it went in
+                // and an older one came out.
+                let gone = item.payload.len();
+                self.bytes = self.bytes + len - gone;
+                Some((item, DropReason::from_qos(reason)))
+            }
             Push::Backpressure(item) => Some((item, DropReason::Backpressure)),
+        };
+        while self.bytes > self.max_bytes && self.queue.len() > 1 {
+            match self.queue.pop(t) {
+                Some(old) => {
+                    self.bytes -= old.payload.len().min(self.bytes);
+                    self.evicted += 1;
+                }
+                None => break,
+            }
         }
+        out
     }
 
     fn pop(&mut self, now: Instant) -> Option<Arc<Message>> {
         let t = self.nanos(now);
-        self.queue.pop(t)
+        let m = self.queue.pop(t)?;
+        self.bytes -= m.payload.len().min(self.bytes);
+        Some(m)
+    }
+
+    fn take_evicted(&mut self) -> u64 {
+        std::mem::take(&mut self.evicted)
     }
 
     fn len(&self) -> usize {
@@ -135,5 +181,61 @@ pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: us
             default_capacity.max(1)
         },
         no_drop: false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::message::TopicMeta;
+    use crate::names::{ClientId, TopicId, TopicName};
+    use fleetlink_proto::{Encoding, Payload, Schema};
+
+    fn msg(size: usize, seq: u64) -> Arc<Message> {
+        let meta = Arc::new(TopicMeta {
+            id: TopicId(1),
+            name: TopicName::parse("/t").unwrap(),
+            schema: Schema::default(),
+            latched: false,
+        });
+        let body = bytes::Bytes::from(vec![b'x'; size]);
+        Arc::new(Message::new(
+            meta,
+            seq,
+            0,
+            ClientId(1),
+            Payload::new(Encoding::Json, body),
+        ))
+    }
+
+    #[test]
+    fn the_default_queue_takes_a_burst_of_small_messages_whole() {
+        let mut q = QosQueue::with_max_bytes(&qos_for_options(0, 0, 1000), 2 << 20);
+        let now = Instant::now();
+        for i in 0..1000 {
+            assert!(q.push(msg(64, i), now).is_none());
+        }
+        assert_eq!((q.len(), q.take_evicted()), (1000, 0));
+        // The 1,001st evicts the oldest, by count.
+        assert!(q.push(msg(64, 1000), now).is_some());
+        assert_eq!(q.pop(now).unwrap().seq, 1);
+    }
+
+    #[test]
+    fn a_slow_subscriber_of_large_messages_keeps_only_the_newest_few() {
+        let mut q = QosQueue::with_max_bytes(&qos_for_options(0, 0, 1000), 2 << 20);
+        let now = Instant::now();
+        for i in 0..10 {
+            q.push(msg(1 << 20, i), now);
+        }
+        assert_eq!(q.len(), 2);
+        assert_eq!(q.take_evicted(), 8);
+        assert_eq!(q.pop(now).unwrap().seq, 8);
+        assert_eq!(q.pop(now).unwrap().seq, 9);
+        // One message larger than the bound is still delivered.
+        q.push(msg(5 << 20, 10), now);
+        assert_eq!(q.len(), 1);
+        assert_eq!(q.pop(now).unwrap().seq, 10);
+        assert_eq!(q.bytes, 0);
     }
 }

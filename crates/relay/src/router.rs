@@ -204,6 +204,9 @@ pub struct Router {
     next_topic: AtomicU32,
     /// Queue length for subscriptions that do not ask for one.
     pub default_queue: usize,
+    /// And the most payload bytes such a queue holds: a burst of small messages arrives
+    /// whole, a slow subscriber of large ones keeps only the newest few.
+    pub default_queue_bytes: usize,
     pub started: Instant,
     /// Services and actions, and the calls in flight between this router's clients.
     pub calls: Arc<crate::calls::Calls>,
@@ -241,7 +244,8 @@ impl Router {
             next_client: AtomicU64::new(1),
             next_sub: AtomicU64::new(1),
             next_topic: AtomicU32::new(1),
-            default_queue: 100,
+            default_queue: 1000,
+            default_queue_bytes: 2 << 20,
             started: Instant::now(),
         }
     }
@@ -514,9 +518,16 @@ impl Router {
         let qos = opts.qos.clone().unwrap_or_else(|| {
             crate::queue::qos_for_options(opts.queue_length, opts.throttle_ms, self.default_queue)
         });
-        let slot = c
-            .outbox
-            .add_slot(&topic.meta(), &qos, topic.stats.clone(), opts.delivery);
+        // The byte bound applies where the subscriber did not choose its queue.
+        let max_bytes =
+            (opts.qos.is_none() && opts.queue_length == 0).then_some(self.default_queue_bytes);
+        let slot = c.outbox.add_slot(
+            &topic.meta(),
+            &qos,
+            topic.stats.clone(),
+            opts.delivery,
+            max_bytes,
+        );
         c.slots.insert(name, (slot, vec![sid]));
         let own = c.info.kind == ClientKind::Rosbridge;
         let r = SubscriberRef {

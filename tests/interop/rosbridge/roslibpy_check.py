@@ -133,11 +133,12 @@ def check_topics(ros, ns):
     check(ty == "nav_msgs/msg/Odometry", f"/rosapi/topic_type {ns}/odom = {ty!r}")
     ok(f"/rosapi/topic_type {ns}/odom = {ty}")
     # Definitions travel with topics: the full text is listed for viewers that decode
-    # custom types (rosbag2/MCAP concatenated form).
+    # custom types (rosbag2/MCAP concatenated form), dependencies headed as the fields
+    # spell them (what @foxglove/rosmsg matches).
     res = call(ros, "/rosapi/topics_and_raw_types", stype="rosapi/TopicsAndRawTypes")
     defs = dict(zip(res["topics"], res["typedefs_full_text"]))
     scan = defs.get(f"{ns}/scan", "")
-    check("float32[] ranges" in scan and "MSG: std_msgs/msg/Header" in scan,
+    check("float32[] ranges" in scan and "\nMSG: std_msgs/Header\n" in scan,
           f"/rosapi/topics_and_raw_types: definition of {ns}/scan is {scan[:200]!r}")
     ok(f"/rosapi/topics_and_raw_types: {ns}/scan carries its full definition ({len(scan)} chars)")
 

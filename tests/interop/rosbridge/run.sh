@@ -51,6 +51,8 @@ sim:
   laser_scan:  { rate_hz: 10, ranges: $scan_ranges }
   odometry:    { rate_hz: 20 }
   point_cloud: { rate_hz: 2, points: $points }
+  pose:        { rate_hz: 5 }
+  image:       { rate_hz: 2 }
 EOF
 "$bin" agent --name "$robot" --config "$tmp/agent.yaml" --local-listen 127.0.0.1:0 >"$tmp/agent.log" 2>&1 &
 pids+=($!)
@@ -96,13 +98,14 @@ run_check "roslibpy hub" "$python" "$here/roslibpy_check.py" --url "$hub_url" --
 run_check "roslibpy local" "$python" "$here/roslibpy_check.py" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
 run_check "roslib hub" node "$here/roslib_check.mjs" --url "$hub_url" --mode hub --peer-url "$local_url" "${common[@]}"
 run_check "roslib local" node "$here/roslib_check.mjs" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
+run_check "foxglove parsers" node "$here/foxglove_check.mjs" --url "$hub_url" --bin "$bin" --robot "$robot"
 
 # Both servers must have survived everything the clients did.
 for pid in "${pids[@]}"; do
     kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
 done
 
-echo "rosbridge interop: ${#failed[@]} failure(s) in 4 client runs, $((SECONDS - started)) s"
+echo "rosbridge interop: ${#failed[@]} failure(s) in 5 client runs, $((SECONDS - started)) s"
 if [ ${#failed[@]} -ne 0 ]; then
     echo "FAIL: ${failed[*]}" >&2
     exit 1

@@ -21,9 +21,12 @@ pub struct Args {
     /// Largest WebSocket message accepted from a client (bytes).
     #[arg(long, default_value_t = 16 << 20)]
     pub max_message_size: usize,
-    /// Queue length of subscriptions that do not ask for one.
-    #[arg(long, default_value_t = 100)]
+    /// Queue length (messages) of subscriptions that do not ask for one.
+    #[arg(long, default_value_t = 1000)]
     pub queue_length: usize,
+    /// Payload bytes such a queue holds at most (its oldest messages go first).
+    #[arg(long, default_value_t = 2 << 20)]
+    pub queue_bytes: usize,
     /// TLS certificate chain (PEM): serve wss:// and https://. Reloaded when it changes.
     #[arg(long, requires = "tls_key")]
     pub tls_cert: Option<PathBuf>,
@@ -111,6 +114,7 @@ impl Args {
             heartbeat: Duration::from_millis(self.heartbeat_ms.max(10)),
             max_message_size: self.max_message_size,
             default_queue: self.queue_length.max(1),
+            default_queue_bytes: self.queue_bytes.max(1),
             auth: fleetlink_auth::AuthPolicy {
                 trusted_proxies: fleetlink_auth::TrustedProxies::new(self.trusted_proxies.clone()),
                 robot_networks: self.robot_networks.clone(),

@@ -45,6 +45,14 @@ enum Command {
     },
     /// Print a type's identities: ROS 1 md5sum, DDS name, REP-2016 type hash.
     Ids { type_name: String },
+    /// List every known message type (bundled and `--msg-path`), one per line; with
+    /// `--full-texts`, a JSON object of each type's full definition in `--dialect`.
+    List {
+        #[arg(long)]
+        full_texts: bool,
+        #[arg(long, value_enum, default_value_t = DialectArg::Ros2)]
+        dialect: DialectArg,
+    },
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -57,6 +65,15 @@ enum Format {
 enum DialectArg {
     Ros1,
     Ros2,
+}
+
+impl From<DialectArg> for Dialect {
+    fn from(d: DialectArg) -> Self {
+        match d {
+            DialectArg::Ros1 => Dialect::Ros1,
+            DialectArg::Ros2 => Dialect::Ros2,
+        }
+    }
 }
 
 impl From<Format> for Wire {
@@ -78,11 +95,33 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let mut stdout = std::io::stdout().lock();
     match args.command {
         Command::Show { type_name, dialect } => {
-            let dialect = match dialect {
-                DialectArg::Ros1 => Dialect::Ros1,
-                DialectArg::Ros2 => Dialect::Ros2,
-            };
-            writeln!(stdout, "{}", show(&registry, &type_name, dialect)?)?;
+            writeln!(stdout, "{}", show(&registry, &type_name, dialect.into())?)?;
+        }
+        Command::List {
+            full_texts,
+            dialect,
+        } => {
+            let mut names: Vec<String> = registry
+                .message_names()
+                .iter()
+                .map(|n| n.to_string())
+                .collect();
+            names.sort();
+            if full_texts {
+                let mut map = serde_json::Map::new();
+                for n in names {
+                    // Parts only some dialect has (ROS 2's action wrappers) are skipped.
+                    if let Ok(t) = fleetlink_msg::full_text(&registry, &n, dialect.into()) {
+                        map.insert(n, serde_json::Value::String(t));
+                    }
+                }
+                serde_json::to_writer_pretty(&mut stdout, &map)?;
+                writeln!(stdout)?;
+            } else {
+                for n in names {
+                    writeln!(stdout, "{n}")?;
+                }
+            }
         }
         Command::Decode { type_name, format } => {
             let input = read_stdin()?;

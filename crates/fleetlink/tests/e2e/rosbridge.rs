@@ -313,3 +313,92 @@ async fn a_client_that_publishes_and_subscribes_on_one_connection_receives_its_o
         "a message came back: {counted:?}"
     );
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn rosout_carries_hub_events_and_the_robots_own_logs() {
+    let hub = start_hub().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/rosout", "id": "r"}))
+        .await;
+    op.call("/rosapi/get_time", json!({}), "sync").await;
+    let agent = start_agent(&hub, "r7").await;
+    let line = within("the robot's arrival on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"]
+                .as_str()
+                .unwrap_or_default()
+                .contains("robot r7 connected")
+            {
+                return m;
+            }
+        }
+    })
+    .await;
+    assert_eq!(line["msg"]["level"], 20);
+    assert_eq!(line["msg"]["name"], "fleetlink_hub");
+    // A log line the robot publishes on its /rosout joins the hub's /rosout unchanged.
+    let mut log = LocalPublisher::new(&agent.router, "/rosout", "rcl_interfaces/msg/Log");
+    within("the robot's own log on /rosout", async {
+        for i in 0..400u32 {
+            log.publish_json(&json!({"stamp": {"sec": 1, "nanosec": i}, "level": 40,
+                "name": "planner", "msg": "no path", "file": "", "function": "", "line": 0}));
+            if let Ok(Some(m)) =
+                tokio::time::timeout(Duration::from_millis(25), op.try_recv()).await
+                && m["msg"]["name"] == "planner"
+            {
+                assert_eq!(m["msg"]["level"], 40);
+                return;
+            }
+        }
+        panic!("the robot's log never reached /rosout");
+    })
+    .await;
+    agent.shutdown().await;
+    within("the robot's departure on /rosout", async {
+        loop {
+            let m = op.recv_op("publish").await;
+            if m["msg"]["msg"]
+                .as_str()
+                .unwrap_or_default()
+                .contains("robot r7 disconnected")
+            {
+                return;
+            }
+        }
+    })
+    .await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_burst_of_small_messages_reaches_a_default_subscriber_whole() {
+    let hub = start_hub().await;
+    let mut sub = Rosbridge::connect(&hub.ws_url()).await;
+    sub.send(json!({"op": "subscribe", "topic": "/burst", "id": "b"}))
+        .await;
+    let mut pubr = Rosbridge::connect(&hub.ws_url()).await;
+    pubr.send(json!({"op": "advertise", "topic": "/burst", "type": "std_msgs/msg/Int32"}))
+        .await;
+    sub.call("/rosapi/get_time", json!({}), "sync").await;
+    // One WebSocket write with 1,000 publishes: the burst arrives at the hub at once.
+    for i in 0..1000 {
+        pubr.send(json!({"op": "publish", "topic": "/burst", "msg": {"data": i}}))
+            .await;
+    }
+    let mut seen = Vec::new();
+    let deadline = tokio::time::Instant::now() + Duration::from_secs(10);
+    while seen.len() < 1000 {
+        match tokio::time::timeout_at(deadline, sub.try_recv()).await {
+            Ok(Some(m)) if m["op"] == "publish" => seen.push(m["msg"]["data"].as_i64().unwrap()),
+            Ok(Some(_)) => {}
+            _ => break,
+        }
+    }
+    assert_eq!(
+        seen.len(),
+        1000,
+        "a burst of 1,000 small messages lost {}",
+        1000 - seen.len()
+    );
+    assert!(seen.windows(2).all(|w| w[0] < w[1]), "out of order");
+}

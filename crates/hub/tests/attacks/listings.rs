@@ -180,7 +180,8 @@ async fn anonymous_local_viewer_of_the_demo_still_sees_the_fleet() {
     assert_eq!(names(&robots, "robots"), ["robot1"], "{robots}");
     assert!(robots["robots"][0]["addr"].is_null(), "{robots}");
     let topics = http(fx.addr, "GET", "/api/v1/topics", &[], "").await.json();
-    assert_eq!(names(&topics, "topics"), ["/robot1/scan"]);
+    // The hub's own /rosout is there for every reader, as rosbridge's is.
+    assert_eq!(names(&topics, "topics"), ["/robot1/scan", "/rosout"]);
     let metrics = http(fx.addr, "GET", "/metrics", &[], "").await;
     assert_eq!(metrics.status, 200, "{}", metrics.body);
     assert_eq!(

@@ -108,9 +108,10 @@ async fn regex_subscription_only_reaches_visible_topics() {
     )
     .await;
     let all = next_op(&mut admin, "service_response").await;
+    // Both topics, and the hub's /rosout.
     assert_eq!(
         all["values"]["topics"].as_array().map(Vec::len),
-        Some(2),
+        Some(3),
         "{all}"
     );
     let mut v = rosbridge(&fx.ws_url(&viewer)).await;

@@ -75,7 +75,17 @@ pub fn answer(
         "topics_and_raw_types" => json!({
             "topics": topics.iter().map(|t| t.meta.name.as_str()).collect::<Vec<_>>(),
             "types": topics.iter().map(|t| t.meta.schema.type_name.as_str()).collect::<Vec<_>>(),
-            "typedefs_full_text": topics.iter().map(|t| t.meta.schema.text.as_str()).collect::<Vec<_>>(),
+            // In the ROS 2 grammar the hub announces (`get_ros_version`), from the registry
+            // where it knows the type (a ROS 1 robot's definitions included), else as sent.
+            "typedefs_full_text": topics.iter().map(|t| {
+                let s = &t.meta.schema;
+                if (s.encoding != "ros2msg" || s.text.is_empty())
+                    && let Some(full) = router.transcoder().schema_for(&s.type_name)
+                {
+                    return full.text;
+                }
+                s.text.clone()
+            }).collect::<Vec<_>>(),
         }),
         "topic_type" => match arg_topic() {
             Ok(n) => {
