@@ -102,10 +102,13 @@ pub struct State {
     pub mismatched: std::collections::HashSet<String>,
 }
 
-/// A call to a fleet service: its answer may arrive before the waiter is registered.
+/// A call to a fleet service: its answer may arrive before the waiter is registered, or
+/// after the waiter gave up (the table always ends a call, at its deadline at the latest,
+/// so every entry is removed eventually).
 enum Waiter {
     Waiting(oneshot::Sender<CallEvent>),
     Arrived(CallEvent),
+    Abandoned,
 }
 
 /// Counters shown in logs and tests.
@@ -193,18 +196,19 @@ impl Node {
             Some(Waiter::Waiting(tx)) => {
                 let _ = tx.send(ev);
             }
-            _ => {
+            Some(Waiter::Abandoned) => {}
+            Some(Waiter::Arrived(_)) | None => {
                 w.insert(ev.id(), Waiter::Arrived(ev));
             }
         }
     }
 
-    /// A waiter that gave up (timeout) is forgotten.
+    /// A waiter that gave up (timeout): its answer, if one still comes, is dropped.
     pub fn forget(&self, id: CallId) {
-        self.waiters
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .remove(&id);
+        let mut w = self.waiters.lock().unwrap_or_else(|p| p.into_inner());
+        if !matches!(w.remove(&id), Some(Waiter::Arrived(_))) {
+            w.insert(id, Waiter::Abandoned);
+        }
     }
 
     /// The router topic of a subscription, once its first publisher said its type.
@@ -373,6 +377,70 @@ async fn slave_connection(node: &Node, stream: tokio::net::TcpStream) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn done(id: CallId) -> CallEvent {
+        CallEvent::Done {
+            id,
+            status: fleetlink_relay::calls::CallStatus::Ok,
+            payload: None,
+            text: String::new(),
+        }
+    }
+
+    fn node() -> Node {
+        let router = Arc::new(Router::default());
+        let (client, _) = router.connect(
+            fleetlink_relay::ClientKind::Internal { role: "t".into() },
+            None,
+        );
+        let opts = Ros1Options {
+            master_uri: "http://127.0.0.1:1".into(),
+            node_name: "/n".into(),
+            host: "127.0.0.1".into(),
+            publish: Default::default(),
+            subscribe: Vec::new(),
+            expose: Default::default(),
+            offer: Default::default(),
+            discovery_period: std::time::Duration::from_secs(1),
+            call_timeout: std::time::Duration::from_secs(1),
+        };
+        Node::new(opts, router, client, 1, 2, mpsc::unbounded_channel().0)
+    }
+
+    #[tokio::test]
+    async fn answers_reach_waiters_registered_before_or_after_them() {
+        let n = node();
+        let rx = n.wait_for(1);
+        n.answer(done(1));
+        assert_eq!(rx.await.unwrap().id(), 1);
+        n.answer(done(2));
+        assert_eq!(n.wait_for(2).await.unwrap().id(), 2);
+        assert!(n.waiters.lock().unwrap().is_empty());
+    }
+
+    #[test]
+    fn late_answers_to_abandoned_calls_are_not_kept() {
+        let n = node();
+        drop(n.wait_for(3));
+        n.forget(3);
+        n.answer(done(3));
+        assert!(n.waiters.lock().unwrap().is_empty());
+    }
+
+    #[test]
+    fn request_topic_offers_tcpros_only_for_own_publications() {
+        let n = node();
+        let tcpros = Value::Array(vec![Value::Array(vec!["TCPROS".into()])]);
+        let r = n.handle_slave("requestTopic", &["/x".into(), "/nope".into(), tcpros]);
+        assert_eq!(r.as_array().unwrap()[0], Value::Int(-1));
+        let r = n.handle_slave("getPid", &["/x".into()]);
+        assert_eq!(
+            r.as_array().unwrap()[2],
+            Value::Int(std::process::id() as i32)
+        );
+        let r = n.handle_slave("noSuchMethod", &[]);
+        assert_eq!(r.as_array().unwrap()[0], Value::Int(-1));
+    }
 
     #[test]
     fn service_types_gain_their_srv_part() {
