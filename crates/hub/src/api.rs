@@ -1,4 +1,4 @@
-//! The JSON API (`/api/v1/*`) and the status page at `/`.
+//! The JSON API (`/api/v1/*`).
 //!
 //! Everything here is read from live state at request time: the router's tables and
 //! counters, the registry of online robots, and the database for robots seen before.
@@ -14,7 +14,6 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use axum::extract::State;
-use axum::response::Html;
 use axum::routing::get;
 use axum::{Extension, Json};
 use fleetlink_auth::{Access, Operation};
@@ -256,11 +255,6 @@ fn ms(t: std::time::SystemTime) -> u64 {
     t.duration_since(std::time::UNIX_EPOCH)
         .map(|d| d.as_millis() as u64)
         .unwrap_or(0)
-}
-
-/// The minimal status page: robots and topics with rates, refreshed every second.
-pub fn page() -> Html<&'static str> {
-    Html(include_str!("page.html"))
 }
 
 /// The identity behind an API request, put in the request by [`require_identity`].

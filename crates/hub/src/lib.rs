@@ -1,7 +1,7 @@
 //! The fleetlink hub: the relay every robot connects out to.
 //!
 //! One TCP port serves WebSocket agents (`fleetlink.v1`), rosbridge v2 clients (any
-//! other WebSocket), and HTTP (health, metrics, JSON API, a status page). Routing is the
+//! other WebSocket), and HTTP (health, metrics, JSON API, the dashboard). Routing is the
 //! shared [`fleetlink_relay::Router`]; this crate adds the listener, the agent side of
 //! the link, durable state and the HTTP surface.
 //!
@@ -15,7 +15,8 @@
 //! - [`http_guards`]: idle and request-body bounds hyper does not enforce itself.
 //! - [`agents`]: one agent's `fleetlink.v1` session on the hub, and the registry of live
 //!   robots.
-//! - [`api`]: `/api/v1/*` JSON, the `/` page and `/healthz`.
+//! - [`api`]: `/api/v1/*` JSON.
+//! - [`dashboard`]: the fleet dashboard (`web/`) at `/`, embedded in the binary.
 //! - [`admin_api`]: `/api/v1/` login/logout, rules, tokens, users and the audit log,
 //!   every change through the security core.
 //! - [`delivery`]: each message of a robot's no-drop topics delivered once, across
@@ -35,6 +36,7 @@ pub mod agents;
 pub mod api;
 pub mod capacity;
 pub mod connection;
+pub mod dashboard;
 pub mod delivery;
 pub mod http_guards;
 pub mod jwks;

@@ -328,7 +328,7 @@ async fn housekeeping(st: Arc<HubState>) {
     }
 }
 
-/// `/`: the status page, or a WebSocket session when the request is an upgrade.
+/// `/`: a WebSocket session when the request is an upgrade, else the dashboard's files.
 async fn root(
     State(st): State<Arc<HubState>>,
     ConnectInfo(addr): ConnectInfo<SocketAddr>,
@@ -337,8 +337,8 @@ async fn root(
     if is_upgrade(req.headers()) {
         return upgrade(st, addr, req).await;
     }
-    if req.uri().path() == "/" {
-        return crate::api::page().into_response();
+    if let Some(page) = crate::dashboard::serve(req.uri().path(), req.headers()) {
+        return page;
     }
     (
         StatusCode::NOT_FOUND,

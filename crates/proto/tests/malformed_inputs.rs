@@ -600,7 +600,7 @@ fn op_of_wrong_type_is_refused_and_keeps_the_id() {
 
 #[test]
 fn unknown_op_parses_to_op_unknown() {
-    let text = r#"{"op":"set_level","id":"x","level":"info"}"#;
+    let text = r#"{"op":"teleport","id":"x","level":"info"}"#;
     for r in [
         Request::from_json(text.as_bytes()).unwrap(),
         Request::from_cbor(&util::cbor_of(text)).unwrap(),
@@ -608,11 +608,22 @@ fn unknown_op_parses_to_op_unknown() {
         assert_eq!(
             r.op,
             Op::Unknown {
-                op: "set_level".into()
+                op: "teleport".into()
             }
         );
         assert_eq!(r.id, Some(json!("x")));
     }
+}
+
+#[test]
+fn an_unknown_op_name_is_kept_only_as_a_short_preview() {
+    let long = "x".repeat(5000);
+    let r = Request::from_json(json!({"op": long}).to_string().as_bytes()).unwrap();
+    let Op::Unknown { op } = r.op else {
+        panic!("not unknown")
+    };
+    assert!(op.len() < 120, "{} bytes echoed", op.len());
+    assert!(op.contains("5000 bytes"), "{op}");
 }
 
 /// Requests missing a required field or carrying one of the wrong type, with the field

@@ -11,6 +11,7 @@
 //! - [`message`]: [`Message`], one published message shared by every subscriber, with a
 //!   cache of its ready-to-send frames (each target encoding built at most once).
 //! - [`transcode`]: converting a message between encodings ([`Transcoder`]).
+//! - [`png`]: rosbridge's `png` compression of outgoing operations.
 //! - [`queue`]: the per-subscription outbound queue seam ([`OutboundQueue`]) and the
 //!   default drop-oldest queue.
 //! - [`outbox`]: one client's outbound side: its subscriptions' queues, served round-robin
@@ -41,6 +42,7 @@ pub mod link_control;
 pub mod message;
 pub mod names;
 pub mod outbox;
+pub mod png;
 pub mod queue;
 pub mod reliable;
 pub mod rosbridge;

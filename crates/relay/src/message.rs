@@ -35,6 +35,9 @@ pub enum FrameKind {
     RosbridgeJson,
     RosbridgeCbor,
     RosbridgeCborRaw,
+    /// rosbridge's `png` compression: the JSON publish as the pixels of a PNG image,
+    /// sent as `{"op": "png", "data": <base64>}` (roslibjs asks for it for big messages).
+    RosbridgePng,
 }
 
 #[derive(Debug)]
@@ -52,6 +55,7 @@ pub struct Message {
     json: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor_raw: OnceLock<Result<WsMessage, TranscodeError>>,
+    png: OnceLock<Result<WsMessage, TranscodeError>>,
     link: OnceLock<Arc<[Bytes]>>,
 }
 
@@ -73,6 +77,7 @@ impl Message {
             json: OnceLock::new(),
             cbor: OnceLock::new(),
             cbor_raw: OnceLock::new(),
+            png: OnceLock::new(),
             link: OnceLock::new(),
         }
     }
@@ -109,6 +114,7 @@ impl Message {
             FrameKind::RosbridgeJson => &self.json,
             FrameKind::RosbridgeCbor => &self.cbor,
             FrameKind::RosbridgeCborRaw => &self.cbor_raw,
+            FrameKind::RosbridgePng => &self.png,
         };
         cell.get_or_init(|| match kind {
             FrameKind::RosbridgeJson => {
@@ -141,6 +147,11 @@ impl Message {
                     self.stamp_ns,
                     &raw,
                 )))
+            }
+            FrameKind::RosbridgePng => {
+                let json = self.rosbridge_frame(FrameKind::RosbridgeJson, tc)?;
+                let png = crate::png::op(&json.into_data());
+                Ok(WsMessage::Text(Utf8Bytes::from(png)))
             }
         })
         .clone()

@@ -453,12 +453,28 @@ impl Router {
         if pattern.len() > MAX_PATTERN_LEN {
             return Err(bad(format!("longer than {MAX_PATTERN_LEN} bytes")));
         }
-        regex::RegexBuilder::new(&format!("^(?:{pattern})$"))
-            .size_limit(REGEX_SIZE_LIMIT)
-            .dfa_size_limit(REGEX_SIZE_LIMIT)
-            .nest_limit(64)
-            .build()
-            .map_err(|e| bad(e.to_string()))
+        // Errors speak of the client's pattern, not of the anchors added around it.
+        let why = |e: regex::Error| match e {
+            regex::Error::Syntax(text) => text
+                .lines()
+                .rev()
+                .find_map(|l| l.trim().strip_prefix("error: "))
+                .unwrap_or("not a valid regular expression")
+                .to_owned(),
+            regex::Error::CompiledTooBig(_) => {
+                format!("compiles to more than {} KiB", REGEX_SIZE_LIMIT >> 10)
+            }
+            _ => "not a valid regular expression".to_owned(),
+        };
+        let limits = |p: &str| {
+            regex::RegexBuilder::new(p)
+                .size_limit(REGEX_SIZE_LIMIT)
+                .dfa_size_limit(REGEX_SIZE_LIMIT)
+                .nest_limit(64)
+                .build()
+        };
+        limits(pattern).map_err(|e| bad(why(e)))?;
+        limits(&format!("^(?:{pattern})$")).map_err(|e| bad(why(e)))
     }
 
     /// Subscribes `client` to a topic or a pattern. Subscribing to a topic nobody

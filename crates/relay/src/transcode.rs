@@ -28,6 +28,16 @@ pub enum TranscodeError {
     },
 }
 
+impl TranscodeError {
+    /// Why, without the conversion's endpoints (for messages about one message).
+    pub fn cause_text(&self) -> String {
+        match self {
+            TranscodeError::Unsupported { reason, .. } => reason.clone(),
+            TranscodeError::Invalid { cause, .. } => cause.clone(),
+        }
+    }
+}
+
 pub trait Transcoder: Send + Sync + 'static {
     /// The message object of `payload` in encoding `to`. Called at most once per message
     /// and target encoding.
@@ -51,6 +61,18 @@ pub trait Transcoder: Send + Sync + 'static {
     /// the md5sum and, for topics, the full `message_definition`).
     fn ros1_identity(&self, _type_name: &str) -> Option<Ros1Identity> {
         None
+    }
+
+    /// A rosbridge publish checked and completed against its type, once at the hub:
+    /// missing fields filled with their defaults, integers in float fields made floats,
+    /// a wrong type refused naming the field. `Ok(None)` when the type is not known here
+    /// (the message goes on as sent).
+    fn normalize(
+        &self,
+        _schema: &Schema,
+        _payload: &Payload,
+    ) -> Result<Option<Payload>, TranscodeError> {
+        Ok(None)
     }
 
     /// rosapi's `typedefs` for a message type (the type and every type it uses): per
@@ -181,6 +203,38 @@ impl Transcoder for RegistryTranscoder {
             md5sum,
             definition,
         })
+    }
+
+    fn normalize(
+        &self,
+        schema: &Schema,
+        payload: &Payload,
+    ) -> Result<Option<Payload>, TranscodeError> {
+        let ty = schema.type_name.as_str();
+        let from = payload.encoding;
+        if !matches!(from, Encoding::Json | Encoding::Cbor) || !self.registry.contains(ty) {
+            return Ok(None);
+        }
+        let reg = &self.registry;
+        let dialect = dialect_of(schema, from);
+        let invalid = |e: fleetlink_msg::CodecError| TranscodeError::Invalid {
+            type_name: ty.to_owned(),
+            from,
+            to: from,
+            cause: e.to_string(),
+        };
+        Ok(Some(match from {
+            Encoding::Json => {
+                let v = fleetlink_msg::from_json_bytes(reg, ty, dialect, &payload.bytes)
+                    .map_err(invalid)?;
+                Payload::json(fleetlink_msg::to_json_bytes(&v))
+            }
+            _ => {
+                let v =
+                    fleetlink_msg::from_cbor(reg, ty, dialect, &payload.bytes).map_err(invalid)?;
+                Payload::new(Encoding::Cbor, fleetlink_msg::to_cbor_bytes(&v))
+            }
+        }))
     }
 
     fn typedefs(&self, type_name: &str) -> Option<Vec<serde_json::Value>> {

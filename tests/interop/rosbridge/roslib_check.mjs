@@ -218,6 +218,44 @@ async function checkPoints(ros, compression) {
   ok(`PointCloud2 on ${ns}/points (${compression}): data ${data.length} bytes = ${m.width} x ${m.point_step} as ${form}`);
 }
 
+// A program that publishes and listens on one connection hears itself (as with rosbridge).
+async function checkOwnMessages(ros) {
+  const name = `/interop_js/self_${args.mode}`;
+  const topic = new Topic({ ros, name, messageType: "std_msgs/msg/String" });
+  topic.advertise();
+  const got = within(TIMEOUT_MS, `own message on ${name}`, (resolve) => topic.subscribe((m) => resolve(m)));
+  await new Promise((r) => setTimeout(r, 200));
+  topic.publish({ data: "self" });
+  const m = await got;
+  topic.unsubscribe();
+  check(m.data === "self", `own message: ${JSON.stringify(m)}`);
+  ok(`a client publishing and subscribing ${name} on one connection received its own message`);
+}
+
+// A burst of 1,000 small messages reaches a subscriber with the default queue whole.
+async function checkBurst(ros) {
+  const name = `/interop_js/burst_${args.mode}`;
+  const other = await connect(args.url);
+  const sub = new Topic({ ros: other, name, messageType: "std_msgs/msg/Int32" });
+  const seen = [];
+  const all = within(TIMEOUT_MS, `1000 messages of a burst on ${name}`, (resolve) =>
+    sub.subscribe((m) => {
+      seen.push(m.data);
+      if (seen.length === 1000) resolve();
+    }),
+  ).catch((e) => {
+    throw new CheckFailed(`${e.message} (got ${seen.length})`);
+  });
+  const pub = new Topic({ ros, name, messageType: "std_msgs/msg/Int32" });
+  pub.advertise();
+  await new Promise((r) => setTimeout(r, 300));
+  for (let i = 0; i < 1000; i++) pub.publish({ data: i });
+  await all;
+  sub.unsubscribe();
+  check(seen.every((v, i) => v === i), "burst arrived out of order");
+  ok(`a burst of 1000 messages on ${name} arrived whole and in order`);
+}
+
 async function checkInvalidOp(ros) {
   const id = "bad-op-1";
   const st = await within(TIMEOUT_MS, "status reply to op 'no_such_op'", (resolve) => {
@@ -290,6 +328,9 @@ async function main() {
   await checkOdom(ros);
   await checkPoints(ros, "none");
   await checkPoints(ros, "cbor");
+  await checkPoints(ros, "png");
+  await checkOwnMessages(ros);
+  await checkBurst(ros);
   await checkInvalidOp(ros);
   if (args.mode === "hub") await checkPublishHub(ros);
   else await checkPublishLocal(ros);

@@ -402,3 +402,133 @@ async fn a_burst_of_small_messages_reaches_a_default_subscriber_whole() {
     );
     assert!(seen.windows(2).all(|w| w[0] < w[1]), "out of order");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn protocol_odds_and_ends_fragments_set_level_png_and_plain_error_texts() {
+    use base64::Engine;
+    use tokio_tungstenite::tungstenite::Message as WsMessage;
+    let hub = start_hub().await;
+    let mut c = Rosbridge::connect(&hub.ws_url()).await;
+    // A client's operation cut into rosbridge fragments is put back together.
+    let op = json!({"op": "call_service", "service": "/rosapi/get_time", "id": "frag"}).to_string();
+    let pieces: Vec<String> = op
+        .as_bytes()
+        .chunks(10)
+        .map(|p| String::from_utf8(p.to_vec()).unwrap())
+        .collect();
+    let total = pieces.len();
+    for (num, data) in pieces.iter().enumerate().rev() {
+        c.send(json!({"op": "fragment", "id": "f1", "data": data, "num": num, "total": total}))
+            .await;
+    }
+    let r = c.recv_op("service_response").await;
+    assert_eq!(
+        (r["id"].clone(), r["result"].clone()),
+        (json!("frag"), json!(true)),
+        "{r}"
+    );
+    c.send(json!({"op": "fragment", "id": "f2", "data": "x", "num": 5, "total": 2}))
+        .await;
+    let s = c.recv_op("status").await;
+    assert!(
+        s["msg"]
+            .as_str()
+            .unwrap()
+            .contains("'num' 5 is not below 'total' 2"),
+        "{s}"
+    );
+    // png compression: the publish as the pixels of a PNG image.
+    c.send(json!({"op": "advertise", "topic": "/pngtest", "type": "std_msgs/msg/String"}))
+        .await;
+    c.send(json!({"op": "subscribe", "topic": "/pngtest", "compression": "png", "id": "p"}))
+        .await;
+    c.send(json!({"op": "publish", "topic": "/pngtest", "msg": {"data": "compressed"}}))
+        .await;
+    let p = c.recv_op("png").await;
+    let png_bytes = base64::engine::general_purpose::STANDARD
+        .decode(p["data"].as_str().unwrap())
+        .unwrap();
+    let mut reader = png::Decoder::new(std::io::Cursor::new(png_bytes))
+        .read_info()
+        .unwrap();
+    let mut px = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut px).unwrap();
+    px.truncate(info.buffer_size());
+    let inner: Value = serde_json::from_slice(px.trim_ascii_end()).unwrap();
+    assert_eq!(inner["op"], "publish");
+    assert_eq!(inner["msg"]["data"], "compressed");
+    // Errors name the problem in the client's terms.
+    c.send_raw(WsMessage::Binary(vec![0xa1, 0x62, 0x6f].into()))
+        .await
+        .unwrap();
+    let s = c.recv_op("status").await;
+    let msg = s["msg"].as_str().unwrap();
+    assert!(!msg.contains("Io(") && !msg.contains("Syntax("), "{msg}");
+    assert!(msg.contains("ends in the middle of a value"), "{msg}");
+    c.send(json!({"op": "subscribe", "topic": "/(unclosed", "regex": true, "id": "re"}))
+        .await;
+    let s = c.recv_op("status").await;
+    let msg = s["msg"].as_str().unwrap();
+    assert!(!msg.contains("^(?:"), "{msg}");
+    assert!(msg.contains("unclosed group"), "{msg}");
+    c.send(json!({"op": "x".repeat(5000), "id": "long"})).await;
+    let s = c.recv_op("status").await;
+    assert!(
+        s.to_string().len() < 300,
+        "{} bytes echoed",
+        s.to_string().len()
+    );
+    // set_level none: even errors stop; info: they come back.
+    c.send(json!({"op": "set_level", "level": "none"})).await;
+    c.send(json!({"op": "no_such_op", "id": "quiet"})).await;
+    c.send(json!({"op": "set_level", "level": "info"})).await;
+    c.send(json!({"op": "no_such_op", "id": "loud"})).await;
+    let s = c.recv_op("status").await;
+    assert_eq!(
+        s["id"], "loud",
+        "the error sent at level none was not suppressed: {s}"
+    );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn json_publishes_are_checked_and_completed_against_their_type_once_at_the_hub() {
+    let hub = start_hub().await;
+    let mut sub = Rosbridge::connect(&hub.ws_url()).await;
+    for t in ["/typed_int", "/typed_pose"] {
+        sub.send(json!({"op": "subscribe", "topic": t, "id": t}))
+            .await;
+    }
+    let mut p = Rosbridge::connect(&hub.ws_url()).await;
+    p.send(json!({"op": "advertise", "topic": "/typed_int", "type": "std_msgs/msg/Int32"}))
+        .await;
+    p.send(
+        json!({"op": "advertise", "topic": "/typed_pose", "type": "geometry_msgs/msg/PoseStamped"}),
+    )
+    .await;
+    sub.call("/rosapi/get_time", json!({}), "sync").await;
+    p.send(
+        json!({"op": "publish", "topic": "/typed_int", "msg": {"data": "notanint"}, "id": "bad"}),
+    )
+    .await;
+    let s = p.recv_op("status").await;
+    let text = s["msg"].as_str().unwrap();
+    assert!(
+        text.contains("/typed_int") && text.contains("data"),
+        "{text}"
+    );
+    assert_eq!(s["id"], "bad");
+    // Missing fields are filled, integers in float fields become floats.
+    p.send(
+        json!({"op": "publish", "topic": "/typed_pose", "msg": {"pose": {"position": {"x": 1}}}}),
+    )
+    .await;
+    let m = sub.recv_op("publish").await;
+    assert_eq!(
+        m["topic"], "/typed_pose",
+        "the bad Int32 was not delivered: {m}"
+    );
+    assert_eq!(m["msg"]["header"]["frame_id"], "");
+    assert_eq!(m["msg"]["header"]["stamp"]["sec"], 0);
+    assert_eq!(m["msg"]["pose"]["orientation"]["w"], 1.0, "{m}");
+    assert!(m["msg"]["pose"]["position"]["x"].is_f64(), "{m}");
+}

@@ -19,8 +19,22 @@ pub const MAX_DEPTH: usize = 127;
 
 /// Parses one CBOR value, refusing nesting deeper than [`MAX_DEPTH`].
 pub fn parse_cbor(bytes: &[u8]) -> Result<ciborium::Value, ConvertError> {
-    ciborium::de::from_reader_with_recursion_limit(bytes, MAX_DEPTH)
-        .map_err(|e| ConvertError::Cbor(e.to_string()))
+    use ciborium::de::Error;
+    ciborium::de::from_reader_with_recursion_limit(bytes, MAX_DEPTH).map_err(|e| {
+        // In words a client can act on, without the decoder's internal names.
+        ConvertError::Cbor(match e {
+            Error::Io(_) => format!(
+                "the data ends in the middle of a value ({} bytes received)",
+                bytes.len()
+            ),
+            Error::Syntax(at) => format!("malformed CBOR at byte {at}"),
+            Error::Semantic(Some(at), msg) => format!("at byte {at}: {msg}"),
+            Error::Semantic(None, msg) => msg,
+            Error::RecursionLimitExceeded => {
+                format!("values nested deeper than {MAX_DEPTH} levels")
+            }
+        })
+    })
 }
 
 /// Why a conversion failed.

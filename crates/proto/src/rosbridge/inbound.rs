@@ -138,6 +138,18 @@ pub enum Op {
     Auth {
         fields: Map<String, Value>,
     },
+    /// One piece of a larger operation the client cut with rosbridge's fragmentation;
+    /// the request's `id` names the operation the pieces make up.
+    Fragment {
+        data: String,
+        num: u32,
+        total: u32,
+    },
+    /// Which `status` messages the client wants: `none`, `error` (the default),
+    /// `warning` or `info`.
+    SetLevel {
+        level: String,
+    },
     /// Valid envelope, operation name we do not serve.
     Unknown {
         op: String,
@@ -162,6 +174,8 @@ impl Op {
             Op::CancelActionGoal { .. } => "cancel_action_goal",
             Op::ActionFeedback { .. } => "action_feedback",
             Op::ActionResult { .. } => "action_result",
+            Op::Fragment { .. } => "fragment",
+            Op::SetLevel { .. } => "set_level",
             Op::Auth { .. } => "auth",
             Op::Unknown { op } => op,
         }
@@ -398,7 +412,16 @@ fn parse_envelope(
             "auth" => Op::Auth {
                 fields: obj.clone(),
             },
-            _ => Op::Unknown { op: op.clone() },
+            "fragment" => Op::Fragment {
+                data: fields.req_str("data")?,
+                num: fields.req_u32("num")?,
+                total: fields.req_u32("total")?,
+            },
+            "set_level" => Op::SetLevel {
+                level: fields.req_str("level")?,
+            },
+            // The name is echoed in the error: at most a preview of it.
+            _ => Op::Unknown { op: preview(&op) },
         })
     })();
     match result {
@@ -510,6 +533,11 @@ impl Fields<'_> {
                 json_kind(other)
             )),
         }
+    }
+
+    fn req_u32(&self, key: &str) -> Result<u32, String> {
+        self.opt_u32(key)?
+            .ok_or_else(|| format!("{}: missing field '{key}'", self.op))
     }
 
     fn opt_u32(&self, key: &str) -> Result<Option<u32>, String> {

@@ -81,6 +81,7 @@ pub async fn serve<S>(
     let (sink, mut stream) = ws.split();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
     let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
+    let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
     let writer = tokio::spawn(write_loop(
         sink,
         outbox.clone(),
@@ -88,6 +89,7 @@ pub async fn serve<S>(
         router.clone(),
         cfg.batch,
         writer_gate.clone(),
+        level.clone(),
     ));
     let mut session = Session {
         router: router.clone(),
@@ -100,6 +102,8 @@ pub async fn serve<S>(
         guard: auth.guard,
         writer_gate,
         calls: super::calls::SessionCalls::default(),
+        level,
+        fragments: Fragments::default(),
     };
     loop {
         let frame = tokio::select! {
@@ -119,7 +123,13 @@ pub async fn serve<S>(
             session.calls.binary = true;
         }
         let req = match frame {
-            Ok(WsMessage::Text(t)) => Request::from_json(t.as_bytes()),
+            Ok(WsMessage::Text(t)) => match Request::from_json(t.as_bytes()) {
+                Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
+                    Some(whole) => whole,
+                    None => continue,
+                },
+                other => other,
+            },
             Ok(WsMessage::Binary(b)) => Request::from_cbor(&b),
             Ok(WsMessage::Close(_)) => break,
             Ok(_) => continue,
@@ -177,6 +187,91 @@ pub(super) struct Session {
     replies: mpsc::Sender<Reply>,
     /// Services, actions and calls of this client.
     pub(super) calls: super::calls::SessionCalls,
+    /// The least severe `status` the client wants (`set_level`; shared with the writer).
+    level: Arc<std::sync::atomic::AtomicU8>,
+    /// Operations the client sent in `fragment`s, being put back together.
+    fragments: Fragments,
+}
+
+/// Severity of `status` levels, as `set_level` names them.
+fn severity(level: &str) -> Option<u8> {
+    Some(match level {
+        "info" => 0,
+        "warning" => 1,
+        "error" => 2,
+        "none" => 3,
+        _ => return None,
+    })
+}
+
+/// rosbridge's default: errors only, until the client asks for more.
+const DEFAULT_LEVEL: u8 = 2;
+
+/// Fragmented operations in progress, bounded: a client cannot make the session hold more
+/// than a few partial operations, nor more bytes than one whole message may have.
+#[derive(Default)]
+struct Fragments {
+    parts: HashMap<String, (Vec<Option<String>>, usize)>,
+}
+
+/// Partial operations one session may have at once.
+const MAX_FRAGMENTED: usize = 16;
+/// Pieces one operation may be cut into.
+const MAX_PIECES: u32 = 100_000;
+
+impl Fragments {
+    /// Adds a piece; returns the whole operation's text once every piece arrived.
+    fn add(
+        &mut self,
+        id: String,
+        data: String,
+        num: u32,
+        total: u32,
+        max_bytes: usize,
+    ) -> Result<Option<String>, String> {
+        if total == 0 || total > MAX_PIECES {
+            self.parts.remove(&id);
+            return Err(format!(
+                "fragment: 'total' must be 1 to {MAX_PIECES}, got {total}"
+            ));
+        }
+        if num >= total {
+            return Err(format!(
+                "fragment: 'num' {num} is not below 'total' {total}"
+            ));
+        }
+        if !self.parts.contains_key(&id) && self.parts.len() >= MAX_FRAGMENTED {
+            return Err(format!(
+                "fragment: {MAX_FRAGMENTED} fragmented operations are already in progress; \
+                 finish one first"
+            ));
+        }
+        let entry = self
+            .parts
+            .entry(id.clone())
+            .or_insert_with(|| (vec![None; total as usize], 0));
+        if entry.0.len() != total as usize {
+            self.parts.remove(&id);
+            return Err(format!(
+                "fragment {id}: 'total' changed between pieces; the operation is dropped"
+            ));
+        }
+        let slot = &mut entry.0[num as usize];
+        let old = slot.as_ref().map_or(0, String::len);
+        entry.1 = entry.1 - old + data.len();
+        *slot = Some(data);
+        if entry.1 > max_bytes {
+            self.parts.remove(&id);
+            return Err(format!(
+                "fragment {id}: the operation is larger than {max_bytes} bytes; it is dropped"
+            ));
+        }
+        if entry.0.iter().all(Option::is_some) {
+            let (pieces, _) = self.parts.remove(&id).expect("present above");
+            return Ok(Some(pieces.into_iter().flatten().collect()));
+        }
+        Ok(None)
+    }
 }
 
 impl Session {
@@ -185,8 +280,57 @@ impl Session {
     }
 
     pub(super) async fn status(&self, level: &str, msg: String, id: Option<&Value>) {
+        let wanted = self.level.load(std::sync::atomic::Ordering::Relaxed);
+        if severity(level).unwrap_or(2) < wanted {
+            return;
+        }
         self.send(WsMessage::text(outbound::status(level, &msg, id)))
             .await;
+    }
+
+    fn set_level(&mut self, level: &str) -> Result<(), String> {
+        let Some(v) = severity(level) else {
+            return Err(format!(
+                "set_level: unknown level '{}' (use none, error, warning or info)",
+                level.chars().take(32).collect::<String>()
+            ));
+        };
+        self.level.store(v, std::sync::atomic::Ordering::Relaxed);
+        Ok(())
+    }
+
+    /// A `fragment` op: kept until its operation is whole, which is then parsed.
+    fn fragment(&mut self, req: Request) -> Option<Result<Request, ParseError>> {
+        let id = req.id.clone();
+        let Op::Fragment { data, num, total } = req.op else {
+            return Some(Ok(req));
+        };
+        let fid = match &id {
+            Some(Value::String(s)) => s.clone(),
+            Some(other) => other.to_string(),
+            None => {
+                return Some(Err(ParseError {
+                    id: None,
+                    op: Some("fragment".into()),
+                    message: "fragment: missing field 'id' (it names the operation the pieces \
+                              make up)"
+                        .into(),
+                }));
+            }
+        };
+        let err = |message: String| ParseError {
+            id: id.clone(),
+            op: Some("fragment".into()),
+            message,
+        };
+        match self
+            .fragments
+            .add(fid, data, num, total, self.cfg.max_message_size)
+        {
+            Ok(None) => None,
+            Ok(Some(text)) => Some(Request::from_json(text.as_bytes())),
+            Err(e) => Some(Err(err(e))),
+        }
     }
 
     async fn parse_error(&self, e: ParseError) {
@@ -231,9 +375,6 @@ impl Session {
                 regex,
                 qos,
             } => {
-                if compression == Compression::Png {
-                    self.status("warning", format!("subscribe {topic}: png compression is not supported; sending uncompressed"), id.as_ref()).await;
-                }
                 match subscription_qos(qos, queue_length, throttle_rate, self.router.default_queue)
                 {
                     Ok(qos) => {
@@ -307,6 +448,9 @@ impl Session {
                 ..
             } => self.action_result(id.as_ref(), values, status, result),
             Op::Auth { .. } => Ok(()), // handled above
+            // Reassembled before `handle` (see `serve`); a stray one is an error.
+            Op::Fragment { .. } => Err("fragment: handled before this point".into()),
+            Op::SetLevel { level } => self.set_level(&level),
             Op::Unknown { op } => Err(format!("unknown operation '{op}'")),
         };
         if let Err(msg) = result {
@@ -418,6 +562,21 @@ impl Session {
                 .insert(name.clone(), Published { topic: t, seq: 0 });
         }
         let p = self.published.get_mut(&name).expect("inserted above");
+        // Checked and completed once here, for every subscriber.
+        let msg = match self
+            .router
+            .transcoder()
+            .normalize(&p.topic.meta().schema, &msg)
+        {
+            Ok(Some(normal)) => normal,
+            Ok(None) => msg,
+            Err(e) => {
+                return Err(format!(
+                    "publish {name}: the message does not fit its type: {}",
+                    e.cause_text()
+                ));
+            }
+        };
         p.seq += 1;
         let size = msg.len();
         p.topic.publish(self.client, p.seq, unix_nanos(), msg);
@@ -566,6 +725,7 @@ async fn write_loop<K>(
     router: Arc<Router>,
     batch: usize,
     gate: Arc<Mutex<Option<Box<dyn Gate>>>>,
+    level: Arc<std::sync::atomic::AtomicU8>,
 ) where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
@@ -603,7 +763,8 @@ async fn write_loop<K>(
             let kind = match delivery.compression {
                 Compression::Cbor => FrameKind::RosbridgeCbor,
                 Compression::CborRaw => FrameKind::RosbridgeCborRaw,
-                Compression::None | Compression::Png => FrameKind::RosbridgeJson,
+                Compression::Png => FrameKind::RosbridgePng,
+                Compression::None => FrameKind::RosbridgeJson,
             };
             let mut frame = msg.rosbridge_frame(kind, router.transcoder());
             if frame.is_err() && kind == FrameKind::RosbridgeCborRaw {
@@ -614,7 +775,8 @@ async fn write_loop<K>(
                 Ok(f) => f,
                 Err(e) => {
                     outbox.record_drop(*slot, DropReason::Encode);
-                    if warned.insert(msg.topic.name.clone(), ()).is_none() {
+                    let wants = level.load(std::sync::atomic::Ordering::Relaxed) <= 1;
+                    if wants && warned.insert(msg.topic.name.clone(), ()).is_none() {
                         let text = outbound::status("warning", &e.to_string(), None);
                         if sink.feed(WsMessage::text(text)).await.is_err() {
                             return;

@@ -1,0 +1,243 @@
+// The dashboard in real headless Chromium (Debian's package, driven by puppeteer-core)
+// against `fleetlink demo`: fleet view, robot panels, navigation goal + cancel, a
+// service form call, and a viewer without publish rights. Screenshots of each view go
+// to --shots. Exits non-zero when any check failed.
+//
+//   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --user U --password P --viewer-token V --shots DIR
+import { mkdirSync } from "node:fs";
+import { createRequire } from "node:module";
+import { dirname, join } from "node:path";
+import { fileURLToPath, pathToFileURL } from "node:url";
+import { parseArgs } from "node:util";
+
+// puppeteer-core is one of the dashboard's dev packages (web/node_modules).
+const web = join(dirname(fileURLToPath(import.meta.url)), "..", "..", "..", "web");
+const puppeteer = (await import(pathToFileURL(createRequire(join(web, "package.json")).resolve("puppeteer-core")).href)).default;
+
+const { values: o } = parseArgs({
+  options: {
+    url: { type: "string" }, user: { type: "string" }, password: { type: "string" }, "viewer-token": { type: "string" },
+    shots: { type: "string" }, robot: { type: "string", default: "robot1" },
+    browser: { type: "string", default: "/usr/bin/chromium" },
+    "offline-robot": { type: "string" }, "offline-pid": { type: "string" },
+  },
+});
+mkdirSync(o.shots, { recursive: true });
+const robot = o.robot;
+const failures = [];
+let step = "start";
+const ok = (what) => console.log(`ok   ${what}`);
+const fail = (what) => { console.log(`FAIL ${what}`); failures.push(what); };
+const check = (cond, what) => (cond ? ok(what) : fail(what));
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+/** Polls `fn` in the page until it returns truthy (bounded); returns the value or null. */
+async function until(page, fn, arg, ms, what) {
+  try {
+    const h = await page.waitForFunction(fn, { timeout: ms, polling: 100 }, arg);
+    return await h.jsonValue();
+  } catch {
+    fail(`${what} (not within ${ms} ms)`);
+    return null;
+  }
+}
+
+const browser = await puppeteer.launch({
+  executablePath: o.browser,
+  headless: true,
+  args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist", "--window-size=1500,1000"],
+  defaultViewport: { width: 1500, height: 1000 },
+});
+const shot = async (page, name, fullPage = false) => {
+  const f = join(o.shots, `${name}.png`);
+  await page.screenshot({ path: f, fullPage });
+  console.log(`     screenshot ${f}`);
+};
+
+async function signIn(page, token, user, password) {
+  await page.click("#signin");
+  if (token) await page.type("#login-form input[name=token]", token);
+  else {
+    await page.type("#login-form input[name=user]", user);
+    await page.type("#login-form input[name=password]", password);
+  }
+  await page.click("#login-form button[type=submit]");
+  await page.waitForFunction(() => document.querySelector("#who")?.textContent?.includes("signed in"), { timeout: 5000 });
+}
+
+try {
+  const page = await browser.newPage();
+  const errors = [];
+  page.on("pageerror", (e) => errors.push(String(e)));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
+
+  // --- served by the hub: the page and its assets, nothing from elsewhere
+  step = "load";
+  const external = [];
+  page.on("request", (r) => { if (!r.url().startsWith(o.url) && !r.url().startsWith("ws://") && !r.url().startsWith("blob:") && !r.url().startsWith("data:")) external.push(r.url()); });
+  const resp = await page.goto(o.url, { waitUntil: "load" });
+  check(resp.status() === 200 && resp.headers()["content-type"]?.startsWith("text/html"), "GET / serves the dashboard (text/html)");
+
+  // --- fleet view: three robots, all moving, within 5 s
+  step = "fleet";
+  const t0 = Date.now();
+  const first = await until(page, () => { const p = window.fleetlink?.poses ?? {}; return ["robot1", "robot2", "robot3"].every((r) => p[r]) && JSON.parse(JSON.stringify(p)); }, null, 5000, "fleet view: poses of robot1..3");
+  if (first) {
+    const moved = await until(page, (f) => {
+      const p = window.fleetlink.poses;
+      return Object.keys(f).every((r) => Math.hypot(p[r].x - f[r].x, p[r].y - f[r].y) > 0.1) && true;
+    }, first, Math.max(500, 5000 - (Date.now() - t0)), "fleet view: all three robots move");
+    if (moved) ok(`fleet view: 3 robots on the map and moving after ${Date.now() - t0} ms`);
+  }
+  const cards = await page.$$eval(".robot.online", (e) => e.map((x) => x.dataset.robot));
+  check(["robot1", "robot2", "robot3"].every((r) => cards.includes(r)), `fleet list shows the demo's robots online (${cards.join(", ")})`);
+  const rtt = await page.$eval(".robot.online dl", (e) => e.textContent);
+  check(/RTT/.test(rtt) && /msg\/s/.test(rtt), "fleet list shows RTT and msg/s");
+  // A robot whose agent stops: greyed in the list and on the map, with when it went.
+  if (o["offline-robot"]) {
+    const gone = o["offline-robot"];
+    await until(page, (r) => window.fleetlink.poses[r], gone, 5000, `${gone} on the map`);
+    process.kill(Number(o["offline-pid"]), "SIGTERM");
+    const text = await until(page, (r) => { const c = document.querySelector(`.robot.offline[data-robot=${r}]`); return c && c.textContent; }, gone, 8000, `${gone} shown offline`);
+    if (text) check(/gone/.test(text), `${gone} greyed as offline: "${text.slice(0, 60)}"`);
+  }
+  await sleep(800); // trails of a few seconds in the picture
+  await shot(page, "1-fleet");
+
+  // --- sign in with user + password: a session token, kept in sessionStorage only
+  step = "signin";
+  await signIn(page, null, o.user, o.password);
+  const who = await page.$eval("#who", (e) => e.textContent);
+  check(who.includes(`user:${o.user}`), `signed in with a password: "${who}"`);
+  const stored = await page.evaluate(() => ({ s: sessionStorage.getItem("fleetlink.token"), l: Object.keys(localStorage).filter((k) => /token/.test(k)), c: document.cookie }));
+  check(stored.s && stored.l.length === 0 && !stored.c, "session token kept in sessionStorage, not localStorage or a cookie");
+  const session = stored.s;
+
+  // --- robot view: panels update
+  step = "robot";
+  await page.waitForSelector(`.robot[data-robot=${robot}]`, { timeout: 5000 });
+  await page.click(`.robot[data-robot=${robot}]`);
+  await until(page, () => ["scan", "cloud", "camera", "odom", "inspector"].every((k) => window.fleetlink.frames[k] > 0), null, 8000, "robot view: every panel got a frame");
+  const f1 = await page.evaluate(() => ({ ...window.fleetlink.frames }));
+  await sleep(2000);
+  const f2 = await page.evaluate(() => ({ ...window.fleetlink.frames }));
+  for (const k of ["scan", "cloud", "cloud-rendered", "camera", "odom", "pose", "inspector"]) {
+    const d = (f2[k] ?? 0) - (f1[k] ?? 0);
+    check(d > 0, `robot view: ${k} panel updating (${d} frames in 2 s)`);
+  }
+  const insp = await page.$eval(".inspector .tree", (e) => e.textContent);
+  check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
+  const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
+  check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
+  await shot(page, "2-robot", true);
+
+  // --- navigation goal clicked on the map: the robot drives there, feedback shown
+  step = "navigate";
+  await until(page, () => /Click on the map/.test(document.querySelector(".task.nav")?.textContent ?? ""), null, 5000, "navigation action found");
+  const clickAt = async (x, y) => {
+    const [px, py] = await page.evaluate((x, y) => window.fleetlink.mapToScreen(x, y), x, y);
+    const box = await (await page.$("#robot-map")).boundingBox();
+    await page.mouse.click(box.x + px, box.y + py);
+  };
+  const p0 = await page.evaluate((r) => window.fleetlink.poses[r], robot);
+  // 1.5 m towards the room's centre: a short, clear drive.
+  const toC = Math.hypot(p0.x, p0.y) || 1;
+  const goal = { x: p0.x - (1.5 * p0.x) / toC, y: p0.y - (1.5 * p0.y) / toC };
+  await clickAt(goal.x, goal.y);
+  await until(page, () => window.fleetlink.feedback.length > 0 && /m to go/.test(document.querySelector(".navstate").textContent), null, 4000, "navigation feedback shown");
+  await sleep(600);
+  await shot(page, "3-navigating");
+  const reached = await until(page, (a) => { const r = window.fleetlink.lastResult; const p = window.fleetlink.poses[a.robot]; return r && r.status === 4 && Math.hypot(p.x - a.goal.x, p.y - a.goal.y) < 0.25 && { r, p }; }, { robot, goal }, 12000, "navigation goal reached");
+  if (reached) ok(`goal (${goal.x.toFixed(2)}, ${goal.y.toFixed(2)}) reached: pose (${reached.p.x.toFixed(2)}, ${reached.p.y.toFixed(2)}), result ${JSON.stringify(reached.r.values)}`);
+  const navText = await page.$eval(".navstate", (e) => e.textContent);
+  check(/reached/.test(navText), `navigation state says: ${navText}`);
+
+  // Cancel: a far goal, then Cancel mid-way; the robot stops.
+  step = "cancel";
+  await page.evaluate(() => { window.fleetlink.lastResult = null; window.fleetlink.feedback.length = 0; });
+  const far = { x: goal.x > 0 ? goal.x - 4 : goal.x + 4, y: goal.y };
+  await clickAt(far.x, far.y);
+  await until(page, () => window.fleetlink.feedback.length > 2, null, 4000, "feedback for the far goal");
+  await page.click(".task.nav button.danger");
+  const canceled = await until(page, () => window.fleetlink.lastResult?.status === 5 && window.fleetlink.lastResult, null, 6000, "Cancel ends the goal (status 5)");
+  if (canceled) ok("Cancel: goal ended canceled");
+  const c1 = await page.evaluate((r) => window.fleetlink.poses[r], robot);
+  await sleep(1500);
+  const c2 = await page.evaluate((r) => window.fleetlink.poses[r], robot);
+  const drift = Math.hypot(c2.x - c1.x, c2.y - c1.y);
+  check(drift < 0.05 && Math.hypot(c2.x - far.x, c2.y - far.y) > 0.5, `after Cancel the robot stands still (moved ${drift.toFixed(3)} m in 1.5 s, short of the goal)`);
+  await shot(page, "4-canceled");
+
+  // --- a service form call returns a result
+  step = "service";
+  await until(page, () => document.querySelectorAll(".task.svc select option").length > 0, null, 5000, "services listed");
+  await page.select(".task.svc select", `/${robot}/get_status`);
+  await until(page, () => document.querySelector(".svcform button[type=submit]"), null, 5000, "service form generated");
+  await page.click(".svcform button[type=submit]");
+  const sr = await until(page, () => window.fleetlink.lastServiceResponse, null, 5000, "service response");
+  let status = null;
+  try { status = JSON.parse(sr?.values?.message); } catch { /* checked below */ }
+  check(sr?.ok && sr.values.success === true && status && "mode" in status && "x" in status, `get_status via the form: ${sr?.values?.message}`);
+  // SetBool form (a bool checkbox): patrol again, true.
+  await page.select(".task.svc select", `/${robot}/set_mode`);
+  await until(page, () => document.querySelector(".svcform input[name=data]"), null, 5000, "SetBool form generated");
+  await page.click(".svcform input[name=data]");
+  await page.evaluate(() => (window.fleetlink.lastServiceResponse = null));
+  await page.click(".svcform button[type=submit]");
+  const sm = await until(page, () => window.fleetlink.lastServiceResponse, null, 5000, "set_mode response");
+  check(sm?.ok && sm.values.success === true, `set_mode(true) via the form: ${JSON.stringify(sm?.values)}`);
+  await shot(page, "5-service", true);
+
+  // --- admin: audit log and rules
+  step = "admin";
+  await page.goto(`${o.url}#/admin`);
+  await until(page, () => document.querySelectorAll("table.audit tbody tr").length > 0, null, 5000, "audit log rows");
+  await until(page, () => /user:viewer/.test(document.querySelector("table.rules")?.textContent ?? ""), null, 5000, "rules listed");
+  await shot(page, "6-admin", true);
+  // Paging with the hub's cursor, and a filter.
+  const firstRow = await page.$eval("table.audit tbody tr", (e) => e.textContent);
+  await page.click(".pager button:nth-child(2)");
+  const paged = await until(page, (f) => /page 2/.test(document.querySelector(".pager").textContent) && document.querySelector("table.audit tbody tr")?.textContent !== f, firstRow, 5000, "audit log page 2");
+  if (paged) ok("audit log: next page shows older records");
+  await page.type(".filters input[name=action]", "login");
+  await page.click(".filters button[type=submit]");
+  const logins = await until(page, () => { const rows = [...document.querySelectorAll("table.audit tbody tr")]; return /page 1/.test(document.querySelector(".pager").textContent) && rows.length > 0 && rows.every((r) => r.children[3].textContent === "login") && rows.map((r) => r.children[1].textContent); }, null, 5000, "audit log filtered by action");
+  if (logins) check(logins.includes(`user:${o.user}`), `audit filter action=login: ${logins.join(", ")}`);
+  check(errors.length === 0, `no page errors (${errors.slice(0, 3).join(" | ")})`);
+  // Sign out ends the session at the hub: the token no longer opens the API.
+  step = "signout";
+  await page.click("#signout");
+  await page.waitForFunction(() => /anonymous/.test(document.querySelector("#who").textContent), { timeout: 5000 });
+  const after = await page.evaluate(async (t) => ({ kept: sessionStorage.getItem("fleetlink.token"), status: (await fetch("/api/v1/robots", { headers: { Authorization: `Bearer ${t}` } })).status }), session);
+  check(after.kept === null && after.status === 401, `sign out: token forgotten and refused by the hub afterwards (HTTP ${after.status})`);
+  check(external.length === 0, `no request outside the hub (${external.slice(0, 3).join(", ")})`);
+  await page.close();
+
+  // --- a viewer without publish rights: tasking disabled with the hub's reason, and a
+  // forged publish (straight on the page's rosbridge connection) refused by the hub.
+  step = "viewer";
+  const ctx = await browser.createBrowserContext();
+  const v = await ctx.newPage();
+  await v.goto(o.url);
+  await signIn(v, o["viewer-token"]);
+  await v.goto(`${o.url}#/robot/${robot}`);
+  const dis = await until(v, () => { const d = window.fleetlink.disabled; return d.estop && d.initialpose && d.services && d.navigate && { ...d }; }, null, 10000, "viewer: tasking disabled");
+  if (dis) ok(`viewer sees tasking disabled: ${JSON.stringify(dis).slice(0, 300)}`);
+  const btns = await v.evaluate(() => ({ estop: document.querySelector("#estop").disabled, init: [...document.querySelectorAll(".task.init button")].every((b) => b.disabled), svc: document.querySelector(".task.svc select").disabled }));
+  check(btns.estop && btns.init && btns.svc, `viewer: e-stop, initial pose and service controls disabled ${JSON.stringify(btns)}`);
+  check(/not allowed/.test(dis?.estop ?? ""), "viewer: the reason is the hub's refusal text");
+  await until(v, () => window.fleetlink.frames.scan > 0, null, 5000, "viewer still sees the robot's data");
+  await shot(v, "7-viewer");
+  const forged = await v.evaluate((r) => new Promise((resolve) => {
+    window.fleetlinkRosbridge.publish(`/${r}/cmd_vel`, { linear: { x: 1, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }, (why) => resolve(why));
+    setTimeout(() => resolve(null), 3000);
+  }), robot);
+  check(/not allowed/.test(forged ?? ""), `viewer: forged publish refused by the hub: ${forged}`);
+  await ctx.close();
+} catch (e) {
+  fail(`${step}: ${e?.stack ?? e}`);
+} finally {
+  await browser.close();
+}
+console.log(failures.length ? `dashboard checks: ${failures.length} failure(s)` : "dashboard checks: all passed");
+process.exit(failures.length ? 1 : 0);

@@ -1,0 +1,53 @@
+// The hub's REST API (`/api/v1/*`), authenticated with the session's token when there
+// is one (anonymous otherwise: the demo hub lets loopback clients read).
+
+import { session } from "./session";
+
+export class ApiError extends Error {
+  constructor(public status: number, message: string) {
+    super(message);
+  }
+}
+
+export async function api<T = any>(path: string, init: RequestInit = {}): Promise<T> {
+  const headers = new Headers(init.headers);
+  const token = session.token();
+  if (token) headers.set("Authorization", `Bearer ${token}`);
+  if (init.body) headers.set("Content-Type", "application/json");
+  const r = await fetch(path, { ...init, headers, cache: "no-store" });
+  const text = await r.text();
+  let body: any = null;
+  try {
+    body = text ? JSON.parse(text) : null;
+  } catch {
+    body = text;
+  }
+  if (!r.ok) throw new ApiError(r.status, (body && body.error) || text || `HTTP ${r.status}`);
+  return body as T;
+}
+
+export interface RobotInfo {
+  name: string;
+  online: boolean;
+  namespace: string;
+  connected_at_ms?: number;
+  last_seen_ms?: number;
+  rtt_ms?: number;
+  latency_ms?: number;
+  link_rate_bps?: number;
+  share_bps?: number | null;
+  demand_bps?: number;
+  clock_offset_ms?: number | null;
+  topics: string[];
+}
+
+export interface TopicInfo {
+  name: string;
+  type: string;
+  rate_hz: number;
+  bandwidth_bps: number;
+  messages: number;
+  bytes: number;
+  last_message_ms: number | null;
+  drops?: Record<string, number>;
+}

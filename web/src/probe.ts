@@ -1,0 +1,36 @@
+// Counters the page exposes on `window.fleetlink` so tests (and curious operators in the
+// devtools console) can see what was drawn: frames per panel, last poses, last results.
+
+export interface Probe {
+  frames: Record<string, number>;
+  poses: Record<string, { x: number; y: number; yaw: number; at: number }>;
+  feedback: number[];
+  lastResult: unknown;
+  lastServiceResponse: unknown;
+  disabled: Record<string, string>;
+  renders: number;
+  cloudAgesMs: number[];
+  /** Milliseconds spent, summed: decoding frames, unpacking clouds, drawing clouds. */
+  busyMs: { decode: number; cloudUnpack: number; cloudRender: number };
+  /** Map coordinates → CSS pixels inside the robot view's map canvas (for click tests). */
+  mapToScreen: ((x: number, y: number) => [number, number]) | null;
+}
+
+export const probe: Probe = {
+  frames: {},
+  poses: {},
+  feedback: [],
+  lastResult: null,
+  lastServiceResponse: null,
+  disabled: {},
+  renders: 0,
+  cloudAgesMs: [],
+  busyMs: { decode: 0, cloudUnpack: 0, cloudRender: 0 },
+  mapToScreen: null,
+};
+
+export function count(panel: string) {
+  probe.frames[panel] = (probe.frames[panel] ?? 0) + 1;
+}
+
+(globalThis as any).fleetlink = probe;
