@@ -24,6 +24,7 @@
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
+//! - [`params`]: the parameter store behind `/rosapi/get_param` ..., kept in SQLite.
 //! - [`rosout`]: `/rosout` as `rcl_interfaces/msg/Log`: the hub's events (robots coming,
 //!   going, refused; links degrading; drops) and the robots' own logs.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
@@ -42,6 +43,7 @@ pub mod http_guards;
 pub mod jwks;
 pub mod limits;
 pub mod metrics;
+pub mod params;
 pub mod rosout;
 pub mod security;
 pub mod server;

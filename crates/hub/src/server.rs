@@ -185,6 +185,7 @@ impl Hub {
         let mut router = Router::with_call_limits(transcoder, cfg.calls.clone());
         router.default_queue = cfg.default_queue;
         router.default_queue_bytes = cfg.default_queue_bytes;
+        router.params = Arc::new(crate::params::DurableParams::open(store.clone())?);
         let router = Arc::new(router);
         let registry = Arc::new(Registry::default());
         let shutdown = CancellationToken::new();

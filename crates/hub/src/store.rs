@@ -24,6 +24,8 @@ pub enum StoreError {
     },
     #[error("database error: {0}")]
     Sql(#[from] rusqlite::Error),
+    #[error("cannot start the database writer thread: {0}")]
+    Thread(std::io::Error),
 }
 
 /// A robot as remembered by the database.
@@ -62,6 +64,10 @@ impl Store {
                  last_seen_ms INTEGER NOT NULL,
                  last_addr TEXT NOT NULL,
                  connects INTEGER NOT NULL DEFAULT 0
+             );
+             CREATE TABLE IF NOT EXISTS params (
+                 name TEXT PRIMARY KEY,
+                 value TEXT NOT NULL
              );
              CREATE TABLE IF NOT EXISTS delivered (
                  robot TEXT NOT NULL,
@@ -137,6 +143,38 @@ impl Store {
         }
         tx.commit()?;
         Ok(())
+    }
+
+    /// Every parameter (name → JSON text).
+    pub fn params(&self) -> Result<std::collections::BTreeMap<String, String>, StoreError> {
+        self.with(|c| {
+            let mut st = c.prepare("SELECT name, value FROM params")?;
+            let rows = st.query_map([], |r| Ok((r.get(0)?, r.get(1)?)))?;
+            rows.collect()
+        })
+    }
+
+    pub fn set_param(&self, name: &str, value: &str) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute(
+                "INSERT INTO params (name, value) VALUES (?1, ?2)
+                 ON CONFLICT(name) DO UPDATE SET value = excluded.value",
+                params![name, value],
+            )
+            .map(|_| ())
+        })
+    }
+
+    /// Deletes `name` and every parameter under it.
+    pub fn delete_params(&self, name: &str) -> Result<(), StoreError> {
+        let below = format!("{name}/%");
+        self.with(|c| {
+            c.execute(
+                "DELETE FROM params WHERE name = ?1 OR name LIKE ?2",
+                params![name, below],
+            )
+            .map(|_| ())
+        })
     }
 
     pub fn robots(&self) -> Result<Vec<RobotRecord>, StoreError> {

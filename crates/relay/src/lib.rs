@@ -11,6 +11,7 @@
 //! - [`message`]: [`Message`], one published message shared by every subscriber, with a
 //!   cache of its ready-to-send frames (each target encoding built at most once).
 //! - [`transcode`]: converting a message between encodings ([`Transcoder`]).
+//! - [`params`]: the parameter store behind `/rosapi/get_param` and friends.
 //! - [`png`]: rosbridge's `png` compression of outgoing operations.
 //! - [`queue`]: the per-subscription outbound queue seam ([`OutboundQueue`]) and the
 //!   default drop-oldest queue.
@@ -42,6 +43,7 @@ pub mod link_control;
 pub mod message;
 pub mod names;
 pub mod outbox;
+pub mod params;
 pub mod png;
 pub mod queue;
 pub mod reliable;

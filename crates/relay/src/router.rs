@@ -210,6 +210,9 @@ pub struct Router {
     pub started: Instant,
     /// Services and actions, and the calls in flight between this router's clients.
     pub calls: Arc<crate::calls::Calls>,
+    /// Parameters (`/rosapi/get_param` ...); in memory unless the owner supplies a
+    /// durable store.
+    pub params: Arc<dyn crate::params::ParamStore>,
 }
 
 /// A read-only view of one topic for listings.
@@ -239,6 +242,7 @@ impl Router {
     ) -> Router {
         Router {
             calls: Arc::new(crate::calls::Calls::new(limits)),
+            params: Arc::new(crate::params::MemoryParams::default()),
             state: Mutex::new(State::default()),
             transcoder,
             next_client: AtomicU64::new(1),

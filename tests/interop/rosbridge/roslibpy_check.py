@@ -259,6 +259,23 @@ def check_points_cbor(url, ns, points):
     raise CheckFailed(f"points (cbor): no CBOR publish on {topic} within {TIMEOUT}s")
 
 
+def check_params(ros, mode):
+    """roslibpy's Param: set, get (a tree read by its prefix), delete."""
+    base = f"/interop_py_{mode}"
+    roslibpy.Param(ros, f"{base}/speed").set(1.25, timeout=TIMEOUT)
+    roslibpy.Param(ros, f"{base}/names").set(["a", "b"], timeout=TIMEOUT)
+    got = roslibpy.Param(ros, f"{base}/speed").get(timeout=TIMEOUT)
+    check(got == 1.25, f"param {base}/speed read back as {got!r}")
+    tree = roslibpy.Param(ros, base).get(timeout=TIMEOUT)
+    check(tree == {"speed": 1.25, "names": ["a", "b"]}, f"param tree {base} = {tree!r}")
+    names = ros.get_params()
+    check(f"{base}/speed" in names, f"get_param_names lacks {base}/speed: {names!r}")
+    roslibpy.Param(ros, base).delete(timeout=TIMEOUT)
+    gone = roslibpy.Param(ros, f"{base}/speed").get(timeout=TIMEOUT)
+    check(gone in (None, ""), f"deleted param still reads {gone!r}")
+    ok(f"roslibpy Param set/get/delete on {base} (tree read by prefix)")
+
+
 def check_invalid_op(ros):
     """An unknown op gets a status error with our id, and the connection keeps working."""
     statuses = Inbox()
@@ -355,6 +372,7 @@ def main():
         check_odom(ros, ns)
         check_points_json(ros, ns, a.points)
         check_points_cbor(a.url, ns, a.points)
+        check_params(ros, a.mode)
         check_invalid_op(ros)
         if a.mode == "hub":
             check_publish_hub(ros, a.peer_url, a.robot)

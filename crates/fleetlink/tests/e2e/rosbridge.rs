@@ -532,3 +532,107 @@ async fn json_publishes_are_checked_and_completed_against_their_type_once_at_the
     assert_eq!(m["msg"]["pose"]["orientation"]["w"], 1.0, "{m}");
     assert!(m["msg"]["pose"]["position"]["x"].is_f64(), "{m}");
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn parameters_are_kept_by_the_hub_across_restarts_checked_and_audited() {
+    let dir = temp_dir("params");
+    let addr = {
+        let hub = start_hub_at(
+            "127.0.0.1:0".parse().unwrap(),
+            dir.clone(),
+            Duration::from_millis(500),
+        )
+        .await;
+        let mut c = Rosbridge::connect(&hub.ws_url()).await;
+        let r = c
+            .call(
+                "/rosapi/set_param",
+                json!({"name": "/r1/max_speed", "value": "1.5"}),
+                "s",
+            )
+            .await;
+        assert_eq!(r["result"], true, "{r}");
+        let r = c
+            .call(
+                "/rosapi/set_param",
+                json!({"name": "r1/nav", "value": "{\"planner\": \"dwa\", \"rate\": 5}"}),
+                "t",
+            )
+            .await;
+        assert_eq!(r["result"], true, "{r}");
+        let r = c
+            .call("/rosapi/get_param", json!({"name": "/r1"}), "g")
+            .await;
+        let tree: Value = serde_json::from_str(r["values"]["value"].as_str().unwrap()).unwrap();
+        assert_eq!(
+            tree,
+            json!({"max_speed": 1.5, "nav": {"planner": "dwa", "rate": 5}})
+        );
+        let r = c
+            .call(
+                "/rosapi/set_param",
+                json!({"name": "/x", "value": "not json"}),
+                "bad",
+            )
+            .await;
+        assert_eq!(r["result"], false);
+        assert!(
+            r["values"].as_str().unwrap().contains("not a JSON text"),
+            "{r}"
+        );
+        let r = c
+            .call(
+                "/rosapi/get_param",
+                json!({"name": "/missing", "default": "7"}),
+                "d",
+            )
+            .await;
+        assert_eq!(r["values"]["value"], "7");
+        let addr = hub.addr;
+        hub.shutdown().await;
+        addr
+    };
+    let _ = addr;
+    // A restarted hub on the same data directory still has them.
+    let hub = start_hub_at(
+        "127.0.0.1:0".parse().unwrap(),
+        dir,
+        Duration::from_millis(500),
+    )
+    .await;
+    let mut c = Rosbridge::connect(&hub.ws_url()).await;
+    let r = c.call("/rosapi/get_param_names", json!({}), "n").await;
+    assert_eq!(
+        r["values"]["names"],
+        json!(["/r1/max_speed", "/r1/nav/planner", "/r1/nav/rate"])
+    );
+    let r = c
+        .call("/rosapi/has_param", json!({"name": "/r1/nav/rate"}), "h")
+        .await;
+    assert_eq!(r["values"]["exists"], true);
+    let r = c
+        .call("/rosapi/delete_param", json!({"name": "/r1/nav"}), "del")
+        .await;
+    assert_eq!(r["result"], true, "{r}");
+    let r = c.call("/rosapi/get_param_names", json!({}), "n2").await;
+    assert_eq!(r["values"]["names"], json!(["/r1/max_speed"]));
+    // The changes are in the audit log.
+    hub.state.security.audit.flush();
+    let page = hub
+        .state
+        .security
+        .store
+        .query_audit(&fleetlink_auth::audit::AuditQuery {
+            name_prefix: Some("/r1".into()),
+            ..Default::default()
+        })
+        .unwrap();
+    assert!(
+        page.records
+            .iter()
+            .any(|r| r.record.name == "/r1/nav"
+                && r.record.detail.as_deref() == Some("delete_param")),
+        "{:?}",
+        page.records
+    );
+}

@@ -41,6 +41,12 @@ pub const SERVICES: &[&str] = &[
     "service_request_details",
     "service_response_details",
     "message_details",
+    "get_param",
+    "set_param",
+    "has_param",
+    "delete_param",
+    "get_param_names",
+    "search_param",
 ];
 
 pub fn answer(
@@ -49,6 +55,7 @@ pub fn answer(
     service: &str,
     args: &Value,
     visible: &mut dyn FnMut(&str, Op) -> bool,
+    changed: &mut dyn FnMut(&str, &str, usize),
 ) -> Answer {
     let name = service.trim_start_matches('/');
     let Some(call) = name.strip_prefix("rosapi/") else {
@@ -157,6 +164,13 @@ pub fn answer(
                 .map(|s| s.name.to_string())
                 .collect::<Vec<_>>(),
         }),
+        "get_param" | "set_param" | "has_param" | "delete_param" | "get_param_names"
+        | "search_param" => {
+            return params(router, call, args, visible, changed).map_or_else(
+                |e| Answer::Failed(format!("{service}: {e}")),
+                Answer::Values,
+            );
+        }
         "service_request_details" | "service_response_details" | "message_details" => {
             let Some(ty) = args.get("type").and_then(Value::as_str) else {
                 return Answer::Failed(format!("{service}: missing string argument 'type'"));
@@ -211,6 +225,112 @@ pub fn answer(
         other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
     };
     Answer::Values(values)
+}
+
+/// The parameter services. Reading a parameter needs `subscribe` on its name, changing it
+/// `publish` (the ACL's operations, so one rule grants a robot's topics and parameters).
+fn params(
+    router: &Router,
+    call: &str,
+    args: &Value,
+    visible: &mut dyn FnMut(&str, Op) -> bool,
+    changed: &mut dyn FnMut(&str, &str, usize),
+) -> Result<Value, String> {
+    use crate::params::{lookup, param_name};
+    let store = &router.params;
+    let name = || -> Result<String, String> {
+        param_name(args.get("name").and_then(Value::as_str).unwrap_or_default())
+    };
+    let may = |n: &str, op: Op, visible: &mut dyn FnMut(&str, Op) -> bool| {
+        if visible(n, op) {
+            Ok(())
+        } else {
+            let verb = if op == Op::Publish { "change" } else { "read" };
+            Err(format!("not allowed to {verb} parameter {n}"))
+        }
+    };
+    Ok(match call {
+        "get_param" => {
+            let n = name()?;
+            may(&n, Op::Subscribe, visible)?;
+            match lookup(&store.snapshot(), &n) {
+                Some(v) => json!({"value": v.to_string()}),
+                None => {
+                    // rosapi answers the caller's default (a JSON text) for a missing one,
+                    // `null` without one.
+                    let default = args
+                        .get("default")
+                        .and_then(Value::as_str)
+                        .filter(|d| !d.is_empty())
+                        .unwrap_or("null");
+                    json!({"value": default})
+                }
+            }
+        }
+        "has_param" => {
+            let n = name()?;
+            may(&n, Op::Subscribe, visible)?;
+            json!({"exists": lookup(&store.snapshot(), &n).is_some()})
+        }
+        "search_param" => {
+            let n = name()?;
+            may(&n, Op::Subscribe, visible)?;
+            let found = lookup(&store.snapshot(), &n).is_some();
+            json!({"global_name": if found { n } else { String::new() }})
+        }
+        "get_param_names" => json!({
+            "names": store
+                .snapshot()
+                .into_keys()
+                .filter(|k| visible(k, Op::Subscribe))
+                .collect::<Vec<_>>(),
+        }),
+        "set_param" => {
+            let n = name()?;
+            may(&n, Op::Publish, visible)?;
+            let text = match args.get("value") {
+                Some(Value::String(s)) => s.clone(),
+                Some(other) => other.to_string(),
+                None => return Err("missing argument 'value' (a JSON text)".into()),
+            };
+            let v: Value = serde_json::from_str(&text)
+                .map_err(|e| format!("value of {n} is not a JSON text: {e}"))?;
+            if text.len() > 1 << 20 {
+                return Err(format!("value of {n} is larger than 1 MiB"));
+            }
+            // An object sets the tree under the name, as rosparam does.
+            let mut flat = Vec::new();
+            flatten(&n, &v, &mut flat);
+            store.delete(&n);
+            for (k, val) in flat {
+                store.set(&k, val);
+            }
+            changed(&n, "set_param", text.len());
+            json!({})
+        }
+        "delete_param" => {
+            let n = name()?;
+            may(&n, Op::Publish, visible)?;
+            if !store.delete(&n) {
+                return Err(format!("parameter {n} is not set"));
+            }
+            changed(&n, "delete_param", 0);
+            json!({})
+        }
+        _ => unreachable!("listed in the caller"),
+    })
+}
+
+/// `name` = `value`, with objects spread into one parameter per leaf.
+fn flatten(name: &str, value: &Value, out: &mut Vec<(String, String)>) {
+    match value {
+        Value::Object(m) if !m.is_empty() => {
+            for (k, v) in m {
+                flatten(&format!("{name}/{k}"), v, out);
+            }
+        }
+        other => out.push((name.to_owned(), other.to_string())),
+    }
 }
 
 /// `pkg/T` or `pkg/srv/T` as the service's `pkg/srv/T`.

@@ -661,14 +661,25 @@ impl Session {
                 .unwrap_or(Value::Null),
         };
         let gate = self.gate.as_mut().expect("checked by the caller");
-        let mut visible = |name: &str, op: GateOp| gate.allows(name, op);
-        let answer = rosapi::answer(
-            &self.router,
-            &self.cfg.node_name,
-            service,
-            &args_json,
-            &mut visible,
-        );
+        let mut changes = Vec::new();
+        let answer = {
+            let mut visible = |name: &str, op: GateOp| gate.allows(name, op);
+            let mut changed = |name: &str, what: &str, size: usize| {
+                changes.push((name.to_owned(), what.to_owned(), size))
+            };
+            rosapi::answer(
+                &self.router,
+                &self.cfg.node_name,
+                service,
+                &args_json,
+                &mut visible,
+                &mut changed,
+            )
+        };
+        // Parameter changes are audited like publishes, with what was done.
+        for (name, what, size) in changes {
+            gate.finished(&name, GateOp::Publish, size, &what);
+        }
         let reply = match answer {
             Answer::Values(v) => outbound::service_response(service, id, v, true),
             Answer::Failed(e) => outbound::service_response(service, id, Value::String(e), false),

@@ -1,0 +1,62 @@
+//! The hub's parameters: served from memory, written through to the database so they
+//! survive a restart. Writes go to one writer thread in order, so a `set_param` never
+//! waits for the disk on the session's task; a failed write is logged.
+
+use std::collections::BTreeMap;
+use std::sync::mpsc::{Sender, channel};
+
+use fleetlink_relay::params::{MemoryParams, ParamStore};
+
+use crate::store::{Store, StoreError};
+
+enum Write {
+    Set(String, String),
+    Delete(String),
+}
+
+pub struct DurableParams {
+    mem: MemoryParams,
+    tx: Sender<Write>,
+}
+
+impl DurableParams {
+    /// Loads the stored parameters and starts the writer thread.
+    pub fn open(store: Store) -> Result<DurableParams, StoreError> {
+        let mem = MemoryParams::with(store.params()?);
+        let (tx, rx) = channel::<Write>();
+        std::thread::Builder::new()
+            .name("fleetlink-params".into())
+            .spawn(move || {
+                for w in rx {
+                    let r = match &w {
+                        Write::Set(n, v) => store.set_param(n, v),
+                        Write::Delete(n) => store.delete_params(n),
+                    };
+                    if let Err(e) = r {
+                        tracing::error!("parameters: cannot write to the database: {e}");
+                    }
+                }
+            })
+            .map_err(StoreError::Thread)?;
+        Ok(DurableParams { mem, tx })
+    }
+}
+
+impl ParamStore for DurableParams {
+    fn snapshot(&self) -> BTreeMap<String, String> {
+        self.mem.snapshot()
+    }
+    fn get(&self, name: &str) -> Option<String> {
+        self.mem.get(name)
+    }
+    fn set(&self, name: &str, value_json: String) {
+        let _ = self
+            .tx
+            .send(Write::Set(name.to_owned(), value_json.clone()));
+        self.mem.set(name, value_json);
+    }
+    fn delete(&self, name: &str) -> bool {
+        let _ = self.tx.send(Write::Delete(name.to_owned()));
+        self.mem.delete(name)
+    }
+}

@@ -1,0 +1,146 @@
+//! Parameters: the `/rosapi` parameter services (`get_param`, `set_param`, `has_param`,
+//! `delete_param`, `get_param_names`, `search_param`) answered from a store the hub
+//! keeps.
+//!
+//! Values are JSON texts, as rosapi exchanges them (`set_param` sends
+//! `value: "<json>"`). Names are ROS names; a parameter whose name is a prefix (`/robot1`)
+//! stands for the tree under it, as on a ROS 1 parameter server: `get_param /robot1`
+//! answers an object of everything below.
+//!
+//! The relay knows the [`ParamStore`] seam only; the hub supplies a durable one.
+
+use std::collections::BTreeMap;
+use std::sync::Mutex;
+
+use serde_json::{Map, Value};
+
+/// Where parameters live. Reads and writes are quick (in memory); a durable store writes
+/// through to disk without blocking the caller for long.
+pub trait ParamStore: Send + Sync {
+    /// Every parameter with its JSON text, by name.
+    fn snapshot(&self) -> BTreeMap<String, String>;
+    fn get(&self, name: &str) -> Option<String>;
+    fn set(&self, name: &str, value_json: String);
+    /// Deletes `name` and everything under it; false if nothing was there.
+    fn delete(&self, name: &str) -> bool;
+}
+
+/// Parameters in memory only (an agent, tests).
+#[derive(Default)]
+pub struct MemoryParams(Mutex<BTreeMap<String, String>>);
+
+impl MemoryParams {
+    pub fn with(values: BTreeMap<String, String>) -> MemoryParams {
+        MemoryParams(Mutex::new(values))
+    }
+}
+
+impl ParamStore for MemoryParams {
+    fn snapshot(&self) -> BTreeMap<String, String> {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).clone()
+    }
+    fn get(&self, name: &str) -> Option<String> {
+        self.0
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .get(name)
+            .cloned()
+    }
+    fn set(&self, name: &str, value_json: String) {
+        self.0
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(name.to_owned(), value_json);
+    }
+    fn delete(&self, name: &str) -> bool {
+        let mut m = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        let prefix = format!("{name}/");
+        let before = m.len();
+        m.retain(|k, _| k != name && !k.starts_with(&prefix));
+        m.len() != before
+    }
+}
+
+/// A parameter name as rosapi clients send it: leading `/` added, trailing `/` dropped.
+pub fn param_name(raw: &str) -> Result<String, String> {
+    let t = raw.trim();
+    if t.is_empty() || t == "/" {
+        return Err("missing parameter name".into());
+    }
+    if t.len() > 1024 || t.chars().any(|c| c.is_whitespace() || c.is_control()) || t.contains("//")
+    {
+        return Err(format!(
+            "invalid parameter name {:?}",
+            t.chars().take(64).collect::<String>()
+        ));
+    }
+    let n = if t.starts_with('/') {
+        t.to_owned()
+    } else {
+        format!("/{t}")
+    };
+    Ok(n.trim_end_matches('/').to_owned())
+}
+
+/// The value of `name`: the parameter itself, or the tree of parameters under it as an
+/// object (`/a/b/c` = 1 gives `get /a` = `{"b": {"c": 1}}`).
+pub fn lookup(all: &BTreeMap<String, String>, name: &str) -> Option<Value> {
+    if let Some(v) = all.get(name) {
+        return serde_json::from_str(v).ok();
+    }
+    let prefix = format!("{name}/");
+    let mut tree = Map::new();
+    let mut any = false;
+    for (k, v) in all.range(prefix.clone()..) {
+        let Some(rest) = k.strip_prefix(&prefix) else {
+            break;
+        };
+        any = true;
+        let value: Value = serde_json::from_str(v).unwrap_or(Value::Null);
+        let mut node = &mut tree;
+        let parts: Vec<&str> = rest.split('/').collect();
+        for (i, p) in parts.iter().enumerate() {
+            if i + 1 == parts.len() {
+                node.insert((*p).to_owned(), value.clone());
+            } else {
+                let next = node
+                    .entry((*p).to_owned())
+                    .or_insert_with(|| Value::Object(Map::new()));
+                if !next.is_object() {
+                    *next = Value::Object(Map::new());
+                }
+                node = next.as_object_mut().expect("made an object above");
+            }
+        }
+    }
+    any.then_some(Value::Object(tree))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_prefix_reads_the_tree_below_it_and_delete_takes_the_tree() {
+        let p = MemoryParams::default();
+        p.set("/r1/max_speed", "1.5".into());
+        p.set("/r1/nav/planner", "\"dwa\"".into());
+        p.set("/r10/x", "1".into());
+        let all = p.snapshot();
+        assert_eq!(
+            lookup(&all, "/r1"),
+            Some(serde_json::json!({"max_speed": 1.5, "nav": {"planner": "dwa"}}))
+        );
+        assert_eq!(lookup(&all, "/r1/max_speed"), Some(serde_json::json!(1.5)));
+        assert_eq!(lookup(&all, "/nope"), None);
+        assert!(p.delete("/r1"));
+        assert_eq!(p.snapshot().len(), 1, "/r10 is not under /r1");
+    }
+
+    #[test]
+    fn names_are_normalised_and_bad_ones_refused() {
+        assert_eq!(param_name("r1/speed/").unwrap(), "/r1/speed");
+        assert!(param_name("a b").is_err());
+        assert!(param_name("").is_err());
+    }
+}
