@@ -1,4 +1,5 @@
-//! Assembling an agent: local router, hub link, local listener and simulator.
+//! Assembling an agent: local router, hub link, local listener, simulator and ROS 1
+//! bridge.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -22,6 +23,8 @@ pub struct AgentOptions {
     pub local_listen: Option<SocketAddr>,
     /// The simulated robot to run, if any.
     pub sim: Option<SimConfig>,
+    /// The native ROS 1 bridge, if any.
+    pub ros1: Option<fleetlink_ros1::Ros1Options>,
 }
 
 impl AgentOptions {
@@ -58,8 +61,47 @@ impl AgentOptions {
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),
+            ros1: cfg
+                .ros1
+                .as_ref()
+                .map(|r| ros1_options(r, &cfg.name))
+                .transpose()?,
         })
     }
+}
+
+/// The ROS 1 bridge's options from the `ros1:` section (patterns were checked already).
+fn ros1_options(
+    r: &crate::config::Ros1Config,
+    robot: &str,
+) -> Result<fleetlink_ros1::Ros1Options, OptionsError> {
+    use fleetlink_ros1::{NameFilter, Ros1Options};
+    let node_name = r
+        .node_name
+        .clone()
+        .unwrap_or_else(|| format!("/fleetlink_{robot}"));
+    Ok(Ros1Options {
+        master_uri: r
+            .master_uri
+            .clone()
+            .unwrap_or_else(Ros1Options::default_master_uri),
+        node_name: if node_name.starts_with('/') {
+            node_name
+        } else {
+            format!("/{node_name}")
+        },
+        host: r.host.clone().unwrap_or_else(Ros1Options::default_host),
+        publish: NameFilter::new(&r.publish.include, &r.publish.exclude)?,
+        subscribe: r
+            .subscribe
+            .iter()
+            .map(|t| TopicName::parse(t))
+            .collect::<Result<_, _>>()?,
+        expose: NameFilter::new(&r.services.expose, &r.services.exclude)?,
+        offer: NameFilter::new(&r.services.offer, &[])?,
+        discovery_period: r.discovery(),
+        call_timeout: r.call_timeout(),
+    })
 }
 
 /// A configuration that checks out field by field but cannot be turned into options.
@@ -69,6 +111,8 @@ pub enum OptionsError {
     Name(#[from] fleetlink_relay::NameError),
     #[error("tls: {0}")]
     Tls(#[from] fleetlink_auth::tls::TlsError),
+    #[error("ros1: invalid pattern: {0}")]
+    Pattern(#[from] regex::Error),
 }
 
 /// The TLS client config for a `wss://` hub: the `tls:` files, else the system's roots.
@@ -91,6 +135,7 @@ pub struct Agent {
     uplink: Uplink,
     local: Option<TcpListener>,
     sim: Option<SimConfig>,
+    ros1: Option<fleetlink_ros1::Ros1Options>,
     robot: String,
 }
 
@@ -126,6 +171,7 @@ impl Agent {
             uplink,
             local,
             sim: opts.sim,
+            ros1: opts.ros1,
             robot,
         })
     }
@@ -170,8 +216,16 @@ impl Agent {
                 shutdown.clone(),
             ))
         });
+        let ros1 = self.ros1.map(|opts| {
+            let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            tokio::spawn(async move {
+                if let Err(e) = fleetlink_ros1::run(opts, router, shutdown).await {
+                    tracing::error!("{e}");
+                }
+            })
+        });
         self.uplink.run(shutdown.clone()).await;
-        for t in [local, sim].into_iter().flatten() {
+        for t in [local, sim, ros1].into_iter().flatten() {
             let _ = t.await;
         }
         let _ = deadlines.await;

@@ -10,6 +10,8 @@
 //! - [`config`]: the agent's YAML configuration, with errors that name file, line and field.
 //! - [`local`]: the local rosbridge-compatible listener.
 //! - [`outbox_store`]: the durable outbox: no-drop messages on disk until the hub has them.
+//! - ROS 1 graphs are bridged by the `fleetlink-ros1` crate, started from [`agent`]
+//!   when the configuration has a `ros1:` section.
 //! - [`sim`]: a simulated robot producing plausible sensor data at configured rates.
 //! - [`uplink`]: the `fleetlink.v1` link to the hub: reconnects, heartbeat, name mapping.
 

@@ -38,6 +38,7 @@ fn meta(name: &str) -> TopicMeta {
             encoding: "ros2msg".into(),
             text: "string data".into(),
         },
+        latched: false,
     }
 }
 

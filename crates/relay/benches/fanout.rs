@@ -82,6 +82,7 @@ fn message(payload: &Bytes) -> Message {
         id: TopicId(7),
         name: TopicName::parse("/bench/topic").expect("valid name"),
         schema: Schema::named("geometry_msgs/msg/Twist"),
+        latched: false,
     });
     Message::new(
         meta,

@@ -286,6 +286,13 @@ impl Lane {
 /// [`crate::link_control`]); its topic is held in the scheduler until the lane is done, so
 /// the next large message of that topic is chosen by the topic's drop policy when the link
 /// can take it.
+/// `ADVERTISE` flags of a topic on this link: reliable (the outbox's no-drop streams) and
+/// latched (the topic's own).
+fn advertise_flags(outbox: &Outbox, meta: &TopicMeta) -> u8 {
+    let latched = if meta.latched { ADVERTISE_LATCHED } else { 0 };
+    outbox.advertise_flags(meta.id.0) | latched
+}
+
 pub async fn write_link<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -307,7 +314,7 @@ pub async fn write_link<K>(
                 topic: name,
                 schema: meta.schema.clone(),
                 encoding: enc,
-                flags: outbox.advertise_flags(meta.id.0),
+                flags: advertise_flags(&outbox, &meta),
             }
             .encode(&mut buf);
             advertised.insert(meta.id, enc);
@@ -493,7 +500,7 @@ fn announce(
         topic: name,
         schema: msg.topic.schema.clone(),
         encoding: enc,
-        flags: outbox.advertise_flags(msg.topic.id.0),
+        flags: advertise_flags(outbox, &msg.topic),
     }
     .encode(buf);
     advertised.insert(msg.topic.id, enc);

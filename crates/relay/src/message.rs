@@ -24,6 +24,9 @@ pub struct TopicMeta {
     pub id: TopicId,
     pub name: TopicName,
     pub schema: Schema,
+    /// A publisher advertised the topic latched: links announce it so (`ADVERTISE_LATCHED`),
+    /// and the far side latches it too.
+    pub latched: bool,
 }
 
 /// The frame kinds a message can be delivered as.

@@ -196,6 +196,7 @@ mod tests {
             id: TopicId(1),
             name: TopicName::parse("/t").unwrap(),
             schema: Schema::default(),
+            latched: false,
         });
         let body = bytes::Bytes::from(vec![b'x'; size]);
         Arc::new(Message::new(

@@ -169,6 +169,7 @@ mod tests {
             id: TopicId(id),
             name: TopicName::parse(name).unwrap(),
             schema: Schema::default(),
+            latched: false,
         })
     }
 

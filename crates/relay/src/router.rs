@@ -126,6 +126,12 @@ impl Topic {
         self.meta.load().id
     }
 
+    /// True if a publisher advertised the topic latched (new subscribers get the last
+    /// message).
+    pub fn is_latched(&self) -> bool {
+        self.latch.load(Relaxed)
+    }
+
     pub fn subscriber_count(&self) -> usize {
         self.subscribers.load().len()
     }
@@ -364,6 +370,7 @@ impl Router {
                         id: meta.id,
                         name: name.clone(),
                         schema,
+                        latched: meta.latched,
                     }));
                 }
                 t
@@ -372,6 +379,14 @@ impl Router {
         };
         if latch {
             topic.latch.store(true, Relaxed);
+            // Messages carry the flag from now on, so links announce the topic latched.
+            let meta = topic.meta();
+            if !meta.latched {
+                topic.meta.store(Arc::new(TopicMeta {
+                    latched: true,
+                    ..TopicMeta::clone(&meta)
+                }));
+            }
         }
         let pubs = st.publishers.entry(name.clone()).or_default();
         if !pubs.contains(&client) {
@@ -406,6 +421,7 @@ impl Router {
                 id,
                 name: name.clone(),
                 schema,
+                latched: false,
             }),
             stats: Arc::new(TopicStats::default()),
             subscribers: ArcSwap::from_pointee(Vec::new()),

@@ -57,6 +57,12 @@ pub trait Transcoder: Send + Sync + 'static {
         None
     }
 
+    /// The ROS 1 identity of a known message or service type (a native ROS 1 peer needs
+    /// the md5sum and, for topics, the full `message_definition`).
+    fn ros1_identity(&self, _type_name: &str) -> Option<Ros1Identity> {
+        None
+    }
+
     /// A rosbridge publish checked and completed against its type, once at the hub:
     /// missing fields filled with their defaults, integers in float fields made floats,
     /// a wrong type refused naming the field. `Ok(None)` when the type is not known here
@@ -80,6 +86,16 @@ pub trait Transcoder: Send + Sync + 'static {
     fn typedefs(&self, _type_name: &str) -> Option<Vec<serde_json::Value>> {
         None
     }
+}
+
+/// What a ROS 1 connection header says about a type.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Ros1Identity {
+    /// `pkg/T` (ROS 1 spelling, no `msg/` or `srv/`).
+    pub type_name: String,
+    pub md5sum: String,
+    /// The concatenated definition (`MSG: pkg/T` sections); empty for services.
+    pub definition: String,
 }
 
 /// Type-aware conversion through the message registry (`crates/msg`): CDR and ROS 1 to
@@ -175,6 +191,23 @@ impl Transcoder for RegistryTranscoder {
                 schema.type_name
             );
         }
+    }
+
+    fn ros1_identity(&self, type_name: &str) -> Option<Ros1Identity> {
+        let name = fleetlink_msg::TypeName::parse(type_name).ok()?;
+        let md5sum = fleetlink_msg::md5sum(&self.registry, type_name).ok()?;
+        let definition = match name.kind() {
+            fleetlink_msg::InterfaceKind::Msg => self
+                .registry
+                .full_text(type_name, fleetlink_msg::Dialect::Ros1)
+                .ok()?,
+            _ => String::new(),
+        };
+        Some(Ros1Identity {
+            type_name: format!("{}/{}", name.package(), name.name()),
+            md5sum,
+            definition,
+        })
     }
 
     fn normalize(

@@ -241,3 +241,67 @@ async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
     assert!(chunks.windows(2).all(|w| w[0] < w[1]), "{chunks:?}");
     writer.abort();
 }
+
+/// Issue 10: a latched topic is announced latched on the link, so the far side latches it
+/// too (a hub topic published latched reaches a late ROS 1 subscriber on the robot).
+#[tokio::test]
+async fn latched_topics_are_announced_latched() {
+    let router = Arc::new(Router::default());
+    let (link, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "link".into(),
+        },
+        None,
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let mut topics = Vec::new();
+    for (name, latch) in [("/announce", true), ("/plain", false)] {
+        let t = router
+            .advertise(
+                publisher,
+                &TopicName::parse(name).unwrap(),
+                Schema::named("std_msgs/String"),
+                latch,
+            )
+            .unwrap();
+        assert_eq!(t.meta().latched, latch, "{name}");
+        assert_eq!(t.is_latched(), latch, "{name}");
+        topics.push(t);
+    }
+    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(8);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+    ));
+    for t in &topics {
+        t.publish(publisher, 1, 0, Payload::json(Bytes::from_static(b"{}")));
+    }
+    let mut flags = std::collections::HashMap::new();
+    while flags.len() < 2 {
+        for f in next_frames(&mut rx).await {
+            if let Frame::Advertise {
+                topic, flags: f, ..
+            } = f
+            {
+                flags.insert(topic, f);
+            }
+        }
+    }
+    assert_ne!(flags["/announce"] & frame::ADVERTISE_LATCHED, 0);
+    assert_eq!(flags["/plain"] & frame::ADVERTISE_LATCHED, 0);
+    writer.abort();
+}

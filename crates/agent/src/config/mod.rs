@@ -22,6 +22,7 @@
 //! field.
 
 mod locate;
+mod ros1;
 mod sim;
 mod validate;
 
@@ -35,6 +36,7 @@ use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
 use locate::LocationTree;
+pub use ros1::{Ros1Config, Ros1Publish, Ros1Services};
 pub use sim::{
     ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
 };
@@ -66,6 +68,8 @@ pub struct AgentConfig {
     pub subscribe: Vec<Subscription>,
     /// Simulated robot; `None` (the default) runs no simulator.
     pub sim: Option<SimConfig>,
+    /// The native ROS 1 bridge; `None` (the default) runs none. See docs/ros1.md.
+    pub ros1: Option<Ros1Config>,
     /// Per-topic QoS of the uplink, by local topic name (see docs/qos.md); topics not
     /// listed get the defaults for their type.
     pub topics: BTreeMap<String, fleetlink_qos::TopicQosSpec>,
@@ -87,6 +91,7 @@ impl Default for AgentConfig {
             remap: BTreeMap::new(),
             subscribe: Vec::new(),
             sim: None,
+            ros1: None,
             topics: BTreeMap::new(),
             outbox: None,
         }

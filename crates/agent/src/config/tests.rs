@@ -372,3 +372,63 @@ fn command_line_overrides_are_checked_together_with_the_file() {
     assert!(e.to_string().starts_with("--name: "), "{e}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// Issue 10: the `ros1:` section, from the commented example and the reference's snippet.
+#[test]
+fn ros1_examples_parse_and_become_options() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let cfg = AgentConfig::load(&root.join("examples/ros1-robot.yaml"))
+        .expect("examples/ros1-robot.yaml");
+    let r = cfg.ros1.clone().expect("a ros1 section");
+    assert_eq!(r.master_uri.as_deref(), Some("http://localhost:11311"));
+    assert_eq!(r.subscribe, ["/cmd_vel", "/announcements"]);
+    let opts = crate::AgentOptions::from_config(&cfg).expect("options");
+    let ros1 = opts.ros1.expect("ros1 options");
+    assert_eq!(ros1.node_name, "/fleetlink_robot7");
+    assert!(ros1.publish.matches("/scan"));
+    assert!(!ros1.publish.matches("/camera/raw"));
+    assert!(ros1.expose.matches("/set_mode"));
+    assert!(!ros1.expose.matches("/node/set_logger_level"));
+    assert!(ros1.offer.matches("/cloud/plan"));
+
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\nros1:")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("the ros1 block in docs/config.md");
+    let cfg = AgentConfig::from_str(&format!("ros1:{block}"), "docs/config.md")
+        .expect("docs ros1 example is valid");
+    let opts = crate::AgentOptions::from_config(&cfg).expect("options");
+    let ros1 = opts.ros1.expect("ros1 options");
+    assert_eq!(ros1.node_name, "/fleetlink_robot1");
+    assert!(ros1.publish.matches("/odom") && !ros1.publish.matches("/camera/raw"));
+}
+
+#[test]
+fn ros1_errors_name_the_field() {
+    assert_err(
+        "ros1: { master_uri: 'localhost:11311' }\n",
+        "robot.yaml:1:21: ros1.master_uri: must be http://HOST:PORT such as http://localhost:11311, got \"localhost:11311\"",
+    );
+    assert_err(
+        "ros1:\n  publish: { include: ['/scan(' ] }\n",
+        "robot.yaml:2:24: ros1.publish.include[0]: is not a valid pattern (error: unclosed group): \"/scan(\"",
+    );
+    assert_err(
+        "ros1: { subscribe: [cmd_vel] }\n",
+        "robot.yaml:1:21: ros1.subscribe[0]: must start with '/', got \"cmd_vel\"",
+    );
+    assert_err(
+        "ros1: { node_name: '9lives' }\n",
+        "robot.yaml:1:20: ros1.node_name: must be a ROS name such as /fleetlink_agent, got \"9lives\"",
+    );
+    assert_err(
+        "ros1: { discovery_ms: 0 }\n",
+        "robot.yaml:1:23: ros1.discovery_ms: must be > 0, got 0",
+    );
+    assert_err(
+        "ros1: { publish: { names: [/a] } }\n",
+        "robot.yaml:1:20: ros1.publish.names: unknown field `names`, expected one of include, exclude",
+    );
+}

@@ -134,6 +134,9 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(sim) = &cfg.sim {
         validate_sim(sim)?;
     }
+    if let Some(r) = &cfg.ros1 {
+        validate_ros1(r)?;
+    }
     let topics = FieldPath::from("topics");
     for (name, spec) in &cfg.topics {
         check_topic(name).map_err(|m| Problem {
@@ -149,6 +152,71 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
             };
             return Err(problem(path, e.to_string()));
         }
+    }
+    Ok(())
+}
+
+fn validate_ros1(r: &super::Ros1Config) -> Result<(), Problem> {
+    let at = FieldPath::from("ros1");
+    if let Some(uri) = &r.master_uri {
+        let ok = uri
+            .strip_prefix("http://")
+            .and_then(|rest| rest.split('/').next())
+            .and_then(|hp| hp.rsplit_once(':'))
+            .is_some_and(|(h, p)| !h.is_empty() && p.parse::<u16>().is_ok());
+        if !ok {
+            return Err(problem(
+                at.key("master_uri"),
+                format!("must be http://HOST:PORT such as http://localhost:11311, got {uri:?}"),
+            ));
+        }
+    }
+    if let Some(name) = &r.node_name {
+        let bare = name.strip_prefix('/').unwrap_or(name);
+        let valid = !bare.is_empty()
+            && bare.split('/').all(|part| {
+                part.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
+                    && part.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            });
+        if !valid {
+            return Err(problem(
+                at.key("node_name"),
+                format!("must be a ROS name such as /fleetlink_agent, got {name:?}"),
+            ));
+        }
+    }
+    if r.host.as_deref().is_some_and(|h| h.trim().is_empty()) {
+        return Err(problem(at.key("host"), "must not be empty"));
+    }
+    let lists = [
+        (at.key("publish").key("include"), &r.publish.include),
+        (at.key("publish").key("exclude"), &r.publish.exclude),
+        (at.key("services").key("expose"), &r.services.expose),
+        (at.key("services").key("exclude"), &r.services.exclude),
+        (at.key("services").key("offer"), &r.services.offer),
+    ];
+    for (path, list) in lists {
+        for (i, p) in list.iter().enumerate() {
+            if let Err(e) = regex::Regex::new(&format!("^(?:{p})$")) {
+                // The regex error draws a caret diagram over several lines; its last line
+                // says what is wrong.
+                let text = e.to_string();
+                let reason = text.lines().last().unwrap_or(&text).trim();
+                return Err(problem(
+                    path.index(i),
+                    format!("is not a valid pattern ({reason}): {p:?}"),
+                ));
+            }
+        }
+    }
+    for (i, t) in r.subscribe.iter().enumerate() {
+        check_topic(t).map_err(|m| problem(at.key("subscribe").index(i), m))?;
+    }
+    if r.discovery_ms == 0 {
+        return Err(problem(at.key("discovery_ms"), "must be > 0, got 0"));
+    }
+    if r.call_timeout_ms == 0 {
+        return Err(problem(at.key("call_timeout_ms"), "must be > 0, got 0"));
     }
     Ok(())
 }

@@ -125,6 +125,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             uplink,
             local_listen: None,
             sim: None,
+            ros1: None,
         };
         let agent = Agent::bind(opts, crate::transcoder()).await?;
         states.push(agent.link_state());

@@ -1,0 +1,450 @@
+//! The agent's node in the ROS graph: what it publishes, subscribes and serves, shared by
+//! the tasks that drive it, and its slave XML-RPC API.
+//!
+//! State lives behind one `std::sync::Mutex` ([`Node::state`]): every critical section is
+//! a few map operations, never held across an `.await`.
+
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+
+use bytes::Bytes;
+use fleetlink_relay::calls::{CallEvent, CallId};
+use fleetlink_relay::transcode::Ros1Identity;
+use fleetlink_relay::{ClientId, Router, Topic};
+use tokio::net::TcpListener;
+use tokio::sync::{mpsc, oneshot};
+use tokio::task::AbortHandle;
+use tokio_util::sync::CancellationToken;
+
+use crate::http::{Reader, write_response};
+use crate::master::Master;
+use crate::options::Ros1Options;
+use crate::xmlrpc::{Value, decode_call, encode_fault, encode_response};
+
+/// Frames queued per local subscriber before newer ones are dropped (a subscriber that
+/// stops reading must not hold memory without bound).
+pub const SUBSCRIBER_QUEUE: usize = 64;
+
+/// A topic this node publishes into the graph (hub → robot).
+pub struct Publication {
+    pub topic: String,
+    pub identity: Ros1Identity,
+    pub latched: bool,
+    /// Connections of local subscribers and the latched frame. std Mutex: pushes only.
+    pub out: Mutex<PubOut>,
+    /// Frames dropped because a local subscriber's queue was full.
+    pub dropped: AtomicU64,
+}
+
+#[derive(Default)]
+pub struct PubOut {
+    pub conns: Vec<(u64, mpsc::Sender<Bytes>)>,
+    pub last: Option<Bytes>,
+}
+
+impl Publication {
+    /// Queues a framed message for every connected subscriber (never waits).
+    pub fn publish(&self, frame: Bytes) {
+        let mut out = self.out.lock().unwrap_or_else(|p| p.into_inner());
+        out.conns
+            .retain(|(_, tx)| match tx.try_send(frame.clone()) {
+                Ok(()) => true,
+                Err(mpsc::error::TrySendError::Full(_)) => {
+                    self.dropped.fetch_add(1, Relaxed);
+                    true
+                }
+                Err(mpsc::error::TrySendError::Closed(_)) => false,
+            });
+        if self.latched {
+            out.last = Some(frame);
+        }
+    }
+}
+
+/// A topic this node subscribes to in the graph (robot → hub).
+pub struct Subscription {
+    pub ros_type: String,
+    /// Open connections by publisher API URI.
+    pub conns: HashMap<String, Conn>,
+    /// Sequence numbers of messages published into the router, shared by connections.
+    pub seq: Arc<AtomicU64>,
+}
+
+pub struct Conn {
+    pub id: u64,
+    pub abort: AbortHandle,
+}
+
+/// A fleet service this node serves to local callers.
+pub struct Offered {
+    /// `pkg/srv/T` as the call table names it.
+    pub srv_type: String,
+    pub identity: Ros1Identity,
+}
+
+/// A local ROS service this node offers to the fleet.
+pub struct Exposed {
+    pub srv_type: String,
+    pub md5sum: String,
+}
+
+#[derive(Default)]
+pub struct State {
+    pub pubs: HashMap<String, Arc<Publication>>,
+    pub subs: HashMap<String, Subscription>,
+    pub offered: HashMap<String, Offered>,
+    pub exposed: HashMap<String, Exposed>,
+    /// What is registered with the current master (cleared when it restarts).
+    pub registered_pubs: std::collections::HashSet<String>,
+    pub registered_services: std::collections::HashSet<String>,
+    /// Topics whose type conflicts (local vs hub), reported once each.
+    pub mismatched: std::collections::HashSet<String>,
+}
+
+/// A call to a fleet service: its answer may arrive before the waiter is registered, or
+/// after the waiter gave up (the table always ends a call, at its deadline at the latest,
+/// so every entry is removed eventually).
+enum Waiter {
+    Waiting(oneshot::Sender<CallEvent>),
+    Arrived(CallEvent),
+    Abandoned,
+}
+
+/// Counters shown in logs and tests.
+#[derive(Default, Debug)]
+pub struct Ros1Stats {
+    pub messages_up: AtomicU64,
+    pub messages_down: AtomicU64,
+    pub type_mismatches: AtomicU64,
+    pub master_registrations: AtomicU64,
+}
+
+pub struct Node {
+    pub opts: Ros1Options,
+    pub router: Arc<Router>,
+    pub client: ClientId,
+    pub master: Master,
+    /// `rosrpc://host:port` of this node's TCPROS listener (services).
+    pub service_api: String,
+    pub tcpros_port: u16,
+    pub state: Mutex<State>,
+    waiters: Mutex<HashMap<CallId, Waiter>>,
+    pub stats: Ros1Stats,
+    next_conn: AtomicU64,
+    /// Wakes the bridge loop when a publisher list changed (publisherUpdate).
+    pub updates: mpsc::UnboundedSender<(String, Vec<String>)>,
+}
+
+impl Node {
+    pub fn new(
+        opts: Ros1Options,
+        router: Arc<Router>,
+        client: ClientId,
+        slave_port: u16,
+        tcpros_port: u16,
+        updates: mpsc::UnboundedSender<(String, Vec<String>)>,
+    ) -> Node {
+        let caller_api = format!("http://{}:{slave_port}/", opts.host);
+        let master = Master {
+            uri: opts.master_uri.clone(),
+            caller_id: opts.node_name.clone(),
+            caller_api,
+        };
+        Node {
+            service_api: format!("rosrpc://{}:{tcpros_port}", opts.host),
+            tcpros_port,
+            opts,
+            router,
+            client,
+            master,
+            state: Mutex::new(State::default()),
+            waiters: Mutex::new(HashMap::new()),
+            stats: Ros1Stats::default(),
+            next_conn: AtomicU64::new(1),
+            updates,
+        }
+    }
+
+    pub fn lock(&self) -> std::sync::MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    pub fn next_conn_id(&self) -> u64 {
+        self.next_conn.fetch_add(1, Relaxed)
+    }
+
+    /// The answer to call `id`, whenever it arrives.
+    pub fn wait_for(&self, id: CallId) -> oneshot::Receiver<CallEvent> {
+        let (tx, rx) = oneshot::channel();
+        let mut w = self.waiters.lock().unwrap_or_else(|p| p.into_inner());
+        match w.remove(&id) {
+            Some(Waiter::Arrived(ev)) => {
+                let _ = tx.send(ev);
+            }
+            _ => {
+                w.insert(id, Waiter::Waiting(tx));
+            }
+        }
+        rx
+    }
+
+    /// Hands a call's final event to its waiter (or keeps it until one comes).
+    pub fn answer(&self, ev: CallEvent) {
+        let mut w = self.waiters.lock().unwrap_or_else(|p| p.into_inner());
+        match w.remove(&ev.id()) {
+            Some(Waiter::Waiting(tx)) => {
+                let _ = tx.send(ev);
+            }
+            Some(Waiter::Abandoned) => {}
+            Some(Waiter::Arrived(_)) | None => {
+                w.insert(ev.id(), Waiter::Arrived(ev));
+            }
+        }
+    }
+
+    /// A waiter that gave up (timeout): its answer, if one still comes, is dropped.
+    pub fn forget(&self, id: CallId) {
+        let mut w = self.waiters.lock().unwrap_or_else(|p| p.into_inner());
+        if !matches!(w.remove(&id), Some(Waiter::Arrived(_))) {
+            w.insert(id, Waiter::Abandoned);
+        }
+    }
+
+    /// The router topic of a subscription, once its first publisher said its type.
+    pub fn router_topic(&self, name: &str) -> Option<Arc<Topic>> {
+        fleetlink_relay::TopicName::parse(name)
+            .ok()
+            .and_then(|n| self.router.topic(&n))
+    }
+
+    /// One slave API call.
+    fn handle_slave(&self, method: &str, params: &[Value]) -> Value {
+        let ok = |v: Value| Value::Array(vec![Value::Int(1), Value::from(""), v]);
+        let fail =
+            |text: String| Value::Array(vec![Value::Int(-1), Value::from(text), Value::Int(0)]);
+        let param = |i: usize| params.get(i).and_then(|v| v.as_str()).unwrap_or("");
+        match method {
+            "getPid" => ok(Value::Int(std::process::id() as i32)),
+            "getMasterUri" => ok(Value::from(self.opts.master_uri.as_str())),
+            "getBusStats" => ok(Value::Array(vec![
+                Value::Array(vec![]),
+                Value::Array(vec![]),
+                Value::Array(vec![]),
+            ])),
+            "getBusInfo" => ok(Value::Array(vec![])),
+            "shutdown" => {
+                tracing::warn!(
+                    "ros1: {} asked this node to shut down ({}); the agent keeps running",
+                    param(0),
+                    param(1)
+                );
+                ok(Value::Int(0))
+            }
+            "paramUpdate" => ok(Value::Int(0)),
+            "getPublications" => {
+                let st = self.lock();
+                ok(Value::Array(
+                    st.pubs
+                        .values()
+                        .map(|p| {
+                            Value::Array(vec![
+                                p.topic.as_str().into(),
+                                p.identity.type_name.as_str().into(),
+                            ])
+                        })
+                        .collect(),
+                ))
+            }
+            "getSubscriptions" => {
+                let st = self.lock();
+                ok(Value::Array(
+                    st.subs
+                        .iter()
+                        .map(|(t, s)| {
+                            Value::Array(vec![t.as_str().into(), s.ros_type.as_str().into()])
+                        })
+                        .collect(),
+                ))
+            }
+            "publisherUpdate" => {
+                let topic = param(1).to_owned();
+                let list = params
+                    .get(2)
+                    .and_then(|v| v.as_str_list())
+                    .unwrap_or_default();
+                let _ = self.updates.send((topic, list));
+                ok(Value::Int(0))
+            }
+            "requestTopic" => {
+                let topic = param(1);
+                let tcpros = params.get(2).and_then(|v| v.as_array()).is_some_and(|ps| {
+                    ps.iter().any(|p| {
+                        p.as_array()
+                            .and_then(|a| a.first())
+                            .and_then(|v| v.as_str())
+                            == Some("TCPROS")
+                    })
+                });
+                if !tcpros {
+                    return fail("only TCPROS is supported".into());
+                }
+                if !self.lock().pubs.contains_key(topic) {
+                    return fail(format!("{} does not publish {topic}", self.opts.node_name));
+                }
+                ok(Value::Array(vec![
+                    "TCPROS".into(),
+                    self.opts.host.as_str().into(),
+                    Value::Int(i32::from(self.tcpros_port)),
+                ]))
+            }
+            m => fail(format!("unknown method {m}")),
+        }
+    }
+}
+
+/// `pkg/T` (a ROS 1 service type) as the call table names it: `pkg/srv/T`.
+pub fn srv_type_of(ros_type: &str) -> String {
+    match ros_type.split_once('/') {
+        Some((pkg, t)) if !t.contains('/') => format!("{pkg}/srv/{t}"),
+        _ => ros_type.to_owned(),
+    }
+}
+
+/// Serves the slave XML-RPC API until `shutdown`.
+pub async fn serve_slave(node: Arc<Node>, listener: TcpListener, shutdown: CancellationToken) {
+    loop {
+        let (stream, _) = tokio::select! {
+            r = listener.accept() => match r {
+                Ok(s) => s,
+                Err(e) => {
+                    tracing::warn!("ros1: slave API accept: {e}");
+                    tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+                    continue;
+                }
+            },
+            _ = shutdown.cancelled() => return,
+        };
+        let node = node.clone();
+        let shutdown = shutdown.clone();
+        tokio::spawn(async move {
+            tokio::select! {
+                _ = slave_connection(&node, stream) => {}
+                _ = shutdown.cancelled() => {}
+            }
+        });
+    }
+}
+
+async fn slave_connection(node: &Node, stream: tokio::net::TcpStream) {
+    let mut reader = Reader::new(stream);
+    loop {
+        let head = match reader.head().await {
+            Ok(Some(h)) => h,
+            Ok(None) => return,
+            Err(e) => {
+                tracing::debug!("ros1: slave API request: {e}");
+                return;
+            }
+        };
+        let Some(len) = head.content_length else {
+            return;
+        };
+        let body = match reader.body(len).await {
+            Ok(b) => b,
+            Err(e) => {
+                tracing::debug!("ros1: slave API body: {e}");
+                return;
+            }
+        };
+        let reply = match std::str::from_utf8(&body)
+            .map_err(|e| e.to_string())
+            .and_then(|t| decode_call(t).map_err(|e| e.to_string()))
+        {
+            Ok(call) => encode_response(&node.handle_slave(&call.method, &call.params)),
+            Err(e) => encode_fault(-1, &e),
+        };
+        if write_response(reader.get_mut(), &reply, head.close)
+            .await
+            .is_err()
+            || head.close
+        {
+            return;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn done(id: CallId) -> CallEvent {
+        CallEvent::Done {
+            id,
+            status: fleetlink_relay::calls::CallStatus::Ok,
+            payload: None,
+            text: String::new(),
+        }
+    }
+
+    fn node() -> Node {
+        let router = Arc::new(Router::default());
+        let (client, _) = router.connect(
+            fleetlink_relay::ClientKind::Internal { role: "t".into() },
+            None,
+        );
+        let opts = Ros1Options {
+            master_uri: "http://127.0.0.1:1".into(),
+            node_name: "/n".into(),
+            host: "127.0.0.1".into(),
+            publish: Default::default(),
+            subscribe: Vec::new(),
+            expose: Default::default(),
+            offer: Default::default(),
+            discovery_period: std::time::Duration::from_secs(1),
+            call_timeout: std::time::Duration::from_secs(1),
+        };
+        Node::new(opts, router, client, 1, 2, mpsc::unbounded_channel().0)
+    }
+
+    #[tokio::test]
+    async fn answers_reach_waiters_registered_before_or_after_them() {
+        let n = node();
+        let rx = n.wait_for(1);
+        n.answer(done(1));
+        assert_eq!(rx.await.unwrap().id(), 1);
+        n.answer(done(2));
+        assert_eq!(n.wait_for(2).await.unwrap().id(), 2);
+        assert!(n.waiters.lock().unwrap().is_empty());
+    }
+
+    #[test]
+    fn late_answers_to_abandoned_calls_are_not_kept() {
+        let n = node();
+        drop(n.wait_for(3));
+        n.forget(3);
+        n.answer(done(3));
+        assert!(n.waiters.lock().unwrap().is_empty());
+    }
+
+    #[test]
+    fn request_topic_offers_tcpros_only_for_own_publications() {
+        let n = node();
+        let tcpros = Value::Array(vec![Value::Array(vec!["TCPROS".into()])]);
+        let r = n.handle_slave("requestTopic", &["/x".into(), "/nope".into(), tcpros]);
+        assert_eq!(r.as_array().unwrap()[0], Value::Int(-1));
+        let r = n.handle_slave("getPid", &["/x".into()]);
+        assert_eq!(
+            r.as_array().unwrap()[2],
+            Value::Int(std::process::id() as i32)
+        );
+        let r = n.handle_slave("noSuchMethod", &[]);
+        assert_eq!(r.as_array().unwrap()[0], Value::Int(-1));
+    }
+
+    #[test]
+    fn service_types_gain_their_srv_part() {
+        assert_eq!(srv_type_of("std_srvs/SetBool"), "std_srvs/srv/SetBool");
+        assert_eq!(srv_type_of("std_srvs/srv/SetBool"), "std_srvs/srv/SetBool");
+    }
+}

@@ -1,0 +1,170 @@
+"""The hub's side of the ros1 interop suite: roslibpy clients on the hub (run with the
+project venv's python).
+
+Modes (all take --hub-url URL --robot NAME):
+  serve OUT     stays running: advertises the fleet service /cloud/greet
+                (std_srvs/Trigger), publishes a latched /<robot>/announce once, publishes
+                /<robot>/cmd_vel and /<robot>/chatter ("hub-N") at 5 Hz, and counts what a
+                second client receives on /<robot>/chatter; writes the counts to OUT.
+  check-up      /<robot>/scan, /<robot>/points and /<robot>/custom arrive with exactly the
+                values ros_peer.py published (the custom type decoded by the hub from the
+                definition it learned); /<robot>/set_enabled and /<robot>/add_two_ints
+                answer calls.
+  check-after   /<robot>/after_restart (a publisher started after roscore restarted)
+                arrives.
+Exit status 0 when every check passed; each failure is printed as "FAIL: ...".
+"""
+import argparse
+import base64
+import json
+import math
+import os
+import queue
+import struct
+import sys
+import threading
+import time
+import urllib.parse
+
+import roslibpy
+
+WAIT = 20.0
+POINTS = 100_000
+
+
+def connect(url):
+    u = urllib.parse.urlparse(url)
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers=headers)
+    ros.run(timeout=10)
+    return ros
+
+
+def first(ros, name, ty, wait=WAIT, want=lambda m: True):
+    q = queue.Queue()
+    t = roslibpy.Topic(ros, name, ty)
+    t.subscribe(lambda m: want(m) and q.put(m))
+    try:
+        return q.get(timeout=wait)
+    except queue.Empty:
+        return None
+    finally:
+        t.unsubscribe()
+
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok: " if ok else "FAIL: ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def close_enough(a, b):
+    return len(a) == len(b) and all(math.isclose(x, y, rel_tol=1e-6, abs_tol=1e-6) for x, y in zip(a, b))
+
+
+def check_up(args):
+    ros = connect(args.hub_url)
+    r = f"/{args.robot}"
+    scan = first(ros, f"{r}/scan", "sensor_msgs/LaserScan")
+    check(scan is not None, f"{r}/scan arrives")
+    if scan:
+        check(scan["header"]["frame_id"] == "laser", f"scan frame_id {scan['header']['frame_id']!r}")
+        check(scan["header"]["stamp"] == {"secs": 1700000000, "nsecs": 250}
+              or scan["header"]["stamp"] == {"sec": 1700000000, "nanosec": 250},
+              f"scan stamp {scan['header']['stamp']}")
+        check(close_enough(scan["ranges"], [1.0 + 0.25 * (i % 40) for i in range(360)]), "scan ranges equal")
+        check(close_enough(scan["intensities"], [float(i % 7) for i in range(360)]), "scan intensities equal")
+        check(math.isclose(scan["angle_min"], -1.5) and math.isclose(scan["range_max"], 30.0), "scan limits equal")
+    cloud = first(ros, f"{r}/points", "sensor_msgs/PointCloud2")
+    check(cloud is not None, f"{r}/points arrives")
+    if cloud:
+        expect = b"".join(struct.pack("<fff", i * 0.5, -i * 0.25, 2.0) for i in range(POINTS))
+        data = cloud["data"]
+        got = base64.b64decode(data) if isinstance(data, str) else bytes(data)
+        check(cloud["width"] == POINTS and cloud["point_step"] == 12, f"cloud width {cloud['width']}")
+        check([f["name"] for f in cloud["fields"]] == ["x", "y", "z"], "cloud fields")
+        check(got == expect, f"cloud data equal ({len(got)} bytes)")
+    custom = first(ros, f"{r}/custom", "fltest_msgs/Custom")
+    check(custom is not None, f"{r}/custom arrives (custom type)")
+    if custom:
+        n = int(custom["label"].split("-")[1])
+        check(custom["values"] == [n, -n, 7], f"custom values {custom['values']}")
+        check(custom["inner"] == {"weight": 0.5, "ok": True}, f"custom inner {custom['inner']}")
+        check(custom["more"] == [{"weight": 1.5, "ok": False}, {"weight": 2.5, "ok": True}], "custom more")
+        check(custom["stamp"] in ({"secs": 12, "nsecs": 34}, {"sec": 12, "nanosec": 34}), f"custom stamp {custom['stamp']}")
+    deadline = time.time() + WAIT
+    while True:
+        try:
+            res = roslibpy.Service(ros, f"{r}/set_enabled", "std_srvs/SetBool").call(
+                roslibpy.ServiceRequest({"data": True}), timeout=5)
+            break
+        except Exception as e:
+            if time.time() > deadline:
+                res = {"error": str(e)}
+                break
+            time.sleep(0.3)
+    check(dict(res) == {"success": True, "message": "enabled=True"}, f"{r}/set_enabled answered {dict(res)}")
+    try:
+        res = dict(roslibpy.Service(ros, f"{r}/add_two_ints", "example_interfaces/AddTwoInts").call(
+            roslibpy.ServiceRequest({"a": 2, "b": 40}), timeout=5))
+    except Exception as e:
+        res = {"error": str(e)}
+    check(res == {"sum": 42}, f"{r}/add_two_ints answered {res}")
+
+
+def check_after(args):
+    ros = connect(args.hub_url)
+    m = first(ros, f"/{args.robot}/after_restart", "std_msgs/String", wait=25)
+    check(m is not None and m["data"].startswith("after-"), f"/after_restart arrived at the hub: {m}")
+
+
+def serve(args):
+    r = f"/{args.robot}"
+    ros = connect(args.hub_url)
+    watcher = connect(args.hub_url)
+    counts = {}
+    lock = threading.Lock()
+
+    def on_chatter(m):
+        with lock:
+            counts[m["data"]] = counts.get(m["data"], 0) + 1
+
+    roslibpy.Topic(watcher, f"{r}/chatter", "std_msgs/String").subscribe(on_chatter)
+    greet = roslibpy.Service(ros, "/cloud/greet", "std_srvs/Trigger")
+    greet.advertise(lambda req, res: res.update(success=True, message="hello from the fleet") or True)
+    announce = roslibpy.Topic(ros, f"{r}/announce", "std_msgs/String", latch=True)
+    announce.publish(roslibpy.Message({"data": "hello fleet"}))
+    cmd = roslibpy.Topic(ros, f"{r}/cmd_vel", "geometry_msgs/Twist")
+    chatter = roslibpy.Topic(ros, f"{r}/chatter", "std_msgs/String")
+    print("serve ready", flush=True)
+    n = 0
+    while True:
+        n += 1
+        cmd.publish(roslibpy.Message({"linear": {"x": 0.5, "y": 0.0, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 0.25}}))
+        chatter.publish(roslibpy.Message({"data": f"hub-{n}"}))
+        with lock:
+            text = json.dumps(counts)
+        with open(args.out + ".tmp", "w") as f:
+            f.write(text)
+        os.replace(args.out + ".tmp", args.out)
+        time.sleep(0.2)
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("mode")
+    p.add_argument("out", nargs="?")
+    p.add_argument("--hub-url", required=True)
+    p.add_argument("--robot", required=True)
+    args = p.parse_args()
+    {"serve": serve, "check-up": check_up, "check-after": check_after}[args.mode](args)
+    print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
+    os._exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

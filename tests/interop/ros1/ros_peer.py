@@ -1,0 +1,140 @@
+"""The robot's ROS 1 side of the ros1 interop suite (run with Debian's /usr/bin/python3).
+
+Modes:
+  graph OUT   the robot's node /robot_graph: publishes /scan (LaserScan), /points
+              (PointCloud2, 100k points), /custom (fltest_msgs/Custom, a type that exists
+              only in the suite's temporary package) and /chatter; subscribes /cmd_vel and
+              /chatter; serves /set_enabled (std_srvs/SetBool) and /add_two_ints
+              (example_interfaces/AddTwoInts). Writes what it received to OUT (JSON) every
+              0.2 s.
+  after       a node started after roscore restarted: publishes /after_restart.
+  wrongtype   a node that subscribes /cmd_vel with the wrong type (std_msgs/String) for
+              3 s: the agent must refuse it and keep serving the right subscribers.
+
+Every published value is a pure function of its index, so the hub side checks equality
+without talking to this process (expected values: hub_peer.py builds the same ones).
+"""
+import json
+import os
+import struct
+import sys
+import threading
+
+import rospy
+from geometry_msgs.msg import Twist
+from sensor_msgs.msg import LaserScan, PointCloud2, PointField
+from std_msgs.msg import String
+from std_srvs.srv import SetBool, SetBoolResponse
+
+POINTS = 100_000
+
+
+def scan_msg():
+    m = LaserScan()
+    m.header.frame_id = "laser"
+    m.header.stamp = rospy.Time(1700000000, 250)
+    m.angle_min, m.angle_max, m.angle_increment = -1.5, 1.5, 3.0 / 359
+    m.range_min, m.range_max = 0.1, 30.0
+    m.ranges = [1.0 + 0.25 * (i % 40) for i in range(360)]
+    m.intensities = [float(i % 7) for i in range(360)]
+    return m
+
+
+def cloud_msg():
+    m = PointCloud2()
+    m.header.frame_id = "lidar"
+    m.height, m.width = 1, POINTS
+    m.fields = [PointField(n, 4 * i, PointField.FLOAT32, 1) for i, n in enumerate("xyz")]
+    m.is_bigendian, m.point_step, m.row_step, m.is_dense = False, 12, 12 * POINTS, True
+    m.data = b"".join(struct.pack("<fff", i * 0.5, -i * 0.25, 2.0) for i in range(POINTS))
+    return m
+
+
+def custom_msg(n):
+    from fltest_msgs.msg import Custom, Inner
+
+    m = Custom()
+    m.label = f"custom-{n}"
+    m.values = [n, -n, 7]
+    m.stamp = rospy.Time(12, 34)
+    m.inner = Inner(weight=0.5, ok=True)
+    m.more = [Inner(weight=1.5, ok=False), Inner(weight=2.5, ok=True)]
+    return m
+
+
+def graph(out_path):
+    from example_interfaces.srv import AddTwoInts, AddTwoIntsResponse
+
+    rospy.init_node("robot_graph", disable_signals=True)
+    got = {"cmd_vel": [], "chatter": {}, "set_enabled": []}
+    lock = threading.Lock()
+
+    def on_cmd(m):
+        with lock:
+            got["cmd_vel"].append(m.linear.x)
+
+    def on_chatter(m):
+        with lock:
+            got["chatter"][m.data] = got["chatter"].get(m.data, 0) + 1
+
+    def on_set(req):
+        with lock:
+            got["set_enabled"].append(req.data)
+        return SetBoolResponse(success=req.data, message=f"enabled={req.data}")
+
+    rospy.Subscriber("/cmd_vel", Twist, on_cmd)
+    rospy.Subscriber("/chatter", String, on_chatter)
+    rospy.Service("/set_enabled", SetBool, on_set)
+    rospy.Service("/add_two_ints", AddTwoInts, lambda r: AddTwoIntsResponse(sum=r.a + r.b))
+    scan = rospy.Publisher("/scan", LaserScan, queue_size=5)
+    cloud = rospy.Publisher("/points", PointCloud2, queue_size=2)
+    custom = rospy.Publisher("/custom", __import__("fltest_msgs.msg", fromlist=["Custom"]).Custom, queue_size=5)
+    chatter = rospy.Publisher("/chatter", String, queue_size=50)
+    scan_m, cloud_m = scan_msg(), cloud_msg()
+    print("graph ready", flush=True)
+    rate = rospy.Rate(5)
+    n = 0
+    while not rospy.is_shutdown():
+        n += 1
+        scan.publish(scan_m)
+        custom.publish(custom_msg(n))
+        chatter.publish(String(data=f"robot-{n}"))
+        if n % 3 == 0:
+            cloud.publish(cloud_m)
+        with lock:
+            text = json.dumps(got)
+        tmp = out_path + ".tmp"
+        with open(tmp, "w") as f:
+            f.write(text)
+        os.replace(tmp, out_path)
+        rate.sleep()
+
+
+def after():
+    rospy.init_node("after_restart", disable_signals=True)
+    pub = rospy.Publisher("/after_restart", String, queue_size=5)
+    print("after ready", flush=True)
+    rate = rospy.Rate(5)
+    n = 0
+    while not rospy.is_shutdown():
+        n += 1
+        pub.publish(String(data=f"after-{n}"))
+        rate.sleep()
+
+
+def wrongtype():
+    rospy.init_node("wrong_type", disable_signals=True)
+    rospy.Subscriber("/cmd_vel", String, lambda m: print(f"unexpected: {m}", flush=True))
+    print("wrongtype ready", flush=True)
+    rospy.sleep(3.0)
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "graph":
+        graph(sys.argv[2])
+    elif sys.argv[1] == "after":
+        after()
+    elif sys.argv[1] == "wrongtype":
+        wrongtype()
+    else:
+        sys.exit(f"unknown mode {sys.argv[1]}")
