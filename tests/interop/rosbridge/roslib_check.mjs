@@ -218,13 +218,20 @@ async function checkPoints(ros, compression) {
   ok(`PointCloud2 on ${ns}/points (${compression}): data ${data.length} bytes = ${m.width} x ${m.point_step} as ${form}`);
 }
 
+/** Resolves once the server answered a request sent after everything before it. */
+function barrier(ros) {
+  return call(ros, "/rosapi/get_time", {}, "rosapi/GetTime");
+}
+
 // A program that publishes and listens on one connection hears itself (as with rosbridge).
 async function checkOwnMessages(ros) {
   const name = `/interop_js/self_${args.mode}`;
   const topic = new Topic({ ros, name, messageType: "std_msgs/msg/String" });
   topic.advertise();
   const got = within(TIMEOUT_MS, `own message on ${name}`, (resolve) => topic.subscribe((m) => resolve(m)));
-  await new Promise((r) => setTimeout(r, 200));
+  // A connection's operations are handled in order: once this answer is back, the
+  // advertise and the subscription are in place.
+  await barrier(ros);
   topic.publish({ data: "self" });
   const m = await got;
   topic.unsubscribe();
@@ -248,7 +255,8 @@ async function checkBurst(ros) {
   });
   const pub = new Topic({ ros, name, messageType: "std_msgs/msg/Int32" });
   pub.advertise();
-  await new Promise((r) => setTimeout(r, 300));
+  await barrier(other);
+  await barrier(ros);
   for (let i = 0; i < 1000; i++) pub.publish({ data: i });
   await all;
   sub.unsubscribe();

@@ -132,22 +132,8 @@ impl Session {
 
     /// A failed `call_service`, answered as rosbridge does: `result: false` and a text.
     async fn service_failed(&self, service: &str, id: Option<&Value>, text: String, cbor: bool) {
-        let body = Bytes::from(Value::String(text).to_string());
-        let mut fields = json!({"op": "service_response", "service": service, "result": false});
-        if let Some(id) = id {
-            fields["id"] = id.clone();
-        }
-        let body = if cbor { json_to_cbor(&body) } else { body };
-        self.send_op(
-            fields,
-            "values",
-            &body,
-            Answering {
-                fragment_size: None,
-                cbor,
-            },
-        )
-        .await;
+        let fields = json!({"op": "service_response", "service": service, "result": false});
+        self.refuse(fields, id, text, cbor).await;
     }
 
     async fn goal_failed(
@@ -158,18 +144,29 @@ impl Session {
         text: String,
         cbor: bool,
     ) {
-        let body = Bytes::from(Value::String(text).to_string());
-        let mut fields = json!({"op": "action_result", "action": action,
+        let fields = json!({"op": "action_result", "action": action,
             "status": goal_status(status), "result": false});
+        self.refuse(fields, id, text, cbor).await;
+    }
+
+    /// Sends `fields` with the caller's `id` and `values` = `text`, as JSON or CBOR.
+    async fn refuse(&self, mut fields: Value, id: Option<&Value>, text: String, cbor: bool) {
         if let Some(id) = id {
             fields["id"] = id.clone();
         }
-        let body = if cbor { json_to_cbor(&body) } else { body };
-        let how = Answering {
-            fragment_size: None,
-            cbor,
+        fields["values"] = Value::String(text);
+        self.send_value(&fields, cbor).await;
+    }
+
+    /// One whole operation, as a CBOR binary frame or JSON text.
+    pub(super) async fn send_value(&self, v: &Value, cbor: bool) {
+        let mut buf = Vec::new();
+        let frame = if cbor && ciborium::into_writer(v, &mut buf).is_ok() {
+            WsMessage::Binary(Bytes::from(buf))
+        } else {
+            WsMessage::text(v.to_string())
         };
-        self.send_op(fields, "values", &body, how).await;
+        self.send(frame).await;
     }
 
     pub(super) async fn call_service(
@@ -203,38 +200,56 @@ impl Session {
             goal: false,
             goal_id: None,
         };
-        match self.router.calls.call(self.client, &name, args, opts) {
+        let made = Made {
+            id: id.cloned(),
+            name: service.to_owned(),
+            type_name: String::new(),
+            goal: false,
+            feedback: false,
+            how,
+            size,
+        };
+        if let Err(e) = self.start(&name, args, opts, made) {
+            let text = format!("call_service {name}: {}", e.text);
+            self.service_failed(service, id, text, how.cbor).await
+        }
+    }
+
+    /// Starts a call or goal of this client; a refusal is audited and returned for the
+    /// caller's answer.
+    fn start(
+        &mut self,
+        name: &TopicName,
+        args: Payload,
+        opts: CallOptions,
+        mut made: Made,
+    ) -> Result<CallId, crate::calls::CallRefused> {
+        let op = if opts.goal {
+            GateOp::SendActionGoal
+        } else {
+            GateOp::CallService
+        };
+        match self.router.calls.call(self.client, name, args, opts) {
             Ok(call) => {
-                let type_name = self
+                made.type_name = self
                     .router
                     .calls
-                    .service(&name)
+                    .service(name)
                     .map(|s| s.schema.type_name.clone())
                     .unwrap_or_default();
-                self.calls.made.insert(
-                    call,
-                    Made {
-                        id: id.cloned(),
-                        name: service.to_owned(),
-                        type_name,
-                        goal: false,
-                        feedback: false,
-                        how,
-                        size,
-                    },
-                );
+                self.calls.made.insert(call, made);
+                Ok(call)
             }
             Err(e) => {
                 if let Some(g) = self.gate.as_mut() {
                     g.finished(
                         name.as_str(),
-                        GateOp::CallService,
-                        size,
+                        op,
+                        made.size,
                         &outcome_text(e.status, &e.text),
                     );
                 }
-                let text = format!("call_service {name}: {}", e.text);
-                self.service_failed(service, id, text, how.cbor).await
+                Err(e)
             }
         }
     }
@@ -409,39 +424,22 @@ impl Session {
             goal: true,
             goal_id: None,
         };
-        match self.router.calls.call(self.client, &name, args, opts) {
+        let made = Made {
+            id: id.cloned(),
+            name: action.to_owned(),
+            type_name: String::new(),
+            goal: true,
+            feedback,
+            how,
+            size,
+        };
+        match self.start(&name, args, opts, made) {
             Ok(call) => {
-                let type_name = self
-                    .router
-                    .calls
-                    .service(&name)
-                    .map(|s| s.schema.type_name.clone())
-                    .unwrap_or_default();
                 if let Some(k) = key {
                     self.calls.goals.insert(k, call);
                 }
-                self.calls.made.insert(
-                    call,
-                    Made {
-                        id: id.cloned(),
-                        name: action.to_owned(),
-                        type_name,
-                        goal: true,
-                        feedback,
-                        how,
-                        size,
-                    },
-                );
             }
             Err(e) => {
-                if let Some(g) = self.gate.as_mut() {
-                    g.finished(
-                        name.as_str(),
-                        GateOp::SendActionGoal,
-                        size,
-                        &outcome_text(e.status, &e.text),
-                    );
-                }
                 let text = format!("send_action_goal {name}: {}", e.text);
                 self.goal_failed(action, id, e.status, text, how.cbor).await
             }
@@ -721,12 +719,6 @@ fn empty_map(cbor: bool) -> Bytes {
     } else {
         Bytes::from_static(b"{}")
     }
-}
-
-fn json_to_cbor(json: &Bytes) -> Bytes {
-    fleetlink_proto::rosbridge::convert::json_to_cbor(json)
-        .map(Bytes::from)
-        .unwrap_or_else(|_| Bytes::from_static(&[0xf6]))
 }
 
 /// An object (JSON object or CBOR map), as `args` and `values` must be.

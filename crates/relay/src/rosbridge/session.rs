@@ -11,7 +11,6 @@ use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Instant;
 
-use bytes::Bytes;
 use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Request, outbound};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
@@ -690,16 +689,7 @@ impl Session {
                 false,
             ),
         };
-        let frame = if how.cbor {
-            let mut buf = Vec::new();
-            match ciborium::into_writer(&reply, &mut buf) {
-                Ok(()) => WsMessage::Binary(Bytes::from(buf)),
-                Err(_) => WsMessage::text(reply.to_string()),
-            }
-        } else {
-            WsMessage::text(reply.to_string())
-        };
-        self.send(frame).await;
+        self.send_value(&reply, how.cbor).await;
     }
 }
 
