@@ -1,5 +1,5 @@
-//! Assembling an agent: local router, hub link, local listener, simulator and ROS 1
-//! bridge.
+//! Assembling an agent: local router, hub link, local listener, simulator and the ROS 1
+//! and ROS 2 bridges.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -25,6 +25,8 @@ pub struct AgentOptions {
     pub sim: Option<SimConfig>,
     /// The native ROS 1 bridge, if any.
     pub ros1: Option<fleetlink_ros1::Ros1Options>,
+    /// The native ROS 2 bridge, if any.
+    pub ros2: Option<fleetlink_ros2::Ros2Options>,
 }
 
 impl AgentOptions {
@@ -66,6 +68,7 @@ impl AgentOptions {
                 .as_ref()
                 .map(|r| ros1_options(r, &cfg.name))
                 .transpose()?,
+            ros2: cfg.ros2.as_ref().map(ros2_options).transpose()?,
         })
     }
 }
@@ -104,6 +107,32 @@ fn ros1_options(
     })
 }
 
+/// The ROS 2 bridge's options from the `ros2:` section (patterns were checked already).
+fn ros2_options(
+    r: &crate::config::Ros2Config,
+) -> Result<fleetlink_ros2::Ros2Options, OptionsError> {
+    use fleetlink_relay::names::NameFilter;
+    use fleetlink_ros2::Ros2Options;
+    let domain_id = match r.domain_id {
+        Some(d) => d,
+        None => Ros2Options::default_domain_id().map_err(OptionsError::Env)?,
+    };
+    Ok(Ros2Options {
+        domain_id,
+        publish: NameFilter::new(&r.publish.include, &r.publish.exclude)?,
+        subscribe: r
+            .subscribe
+            .iter()
+            .map(|t| TopicName::parse(t))
+            .collect::<Result<_, _>>()?,
+        expose: NameFilter::new(&r.services.expose, &r.services.exclude)?,
+        offer: NameFilter::new(&r.services.offer, &[])?,
+        expose_actions: NameFilter::new(&r.actions.expose, &r.actions.exclude)?,
+        discovery_period: r.discovery(),
+        call_timeout: r.call_timeout(),
+    })
+}
+
 /// A configuration that checks out field by field but cannot be turned into options.
 #[derive(Debug, thiserror::Error)]
 pub enum OptionsError {
@@ -111,8 +140,10 @@ pub enum OptionsError {
     Name(#[from] fleetlink_relay::NameError),
     #[error("tls: {0}")]
     Tls(#[from] fleetlink_auth::tls::TlsError),
-    #[error("ros1: invalid pattern: {0}")]
+    #[error("invalid pattern: {0}")]
     Pattern(#[from] regex::Error),
+    #[error("ros2: {0}")]
+    Env(String),
 }
 
 /// The TLS client config for a `wss://` hub: the `tls:` files, else the system's roots.
@@ -136,6 +167,7 @@ pub struct Agent {
     local: Option<TcpListener>,
     sim: Option<SimConfig>,
     ros1: Option<fleetlink_ros1::Ros1Options>,
+    ros2: Option<fleetlink_ros2::Ros2Options>,
     robot: String,
 }
 
@@ -172,6 +204,7 @@ impl Agent {
             local,
             sim: opts.sim,
             ros1: opts.ros1,
+            ros2: opts.ros2,
             robot,
         })
     }
@@ -224,8 +257,16 @@ impl Agent {
                 }
             })
         });
+        let ros2 = self.ros2.map(|opts| {
+            let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            tokio::spawn(async move {
+                if let Err(e) = fleetlink_ros2::run(opts, router, shutdown).await {
+                    tracing::error!("{e}");
+                }
+            })
+        });
         self.uplink.run(shutdown.clone()).await;
-        for t in [local, sim, ros1].into_iter().flatten() {
+        for t in [local, sim, ros1, ros2].into_iter().flatten() {
             let _ = t.await;
         }
         let _ = deadlines.await;

@@ -53,7 +53,22 @@ fn main() -> anyhow::Result<()> {
     }
 }
 
-/// How messages are converted between encodings in this binary.
-pub fn transcoder() -> Arc<dyn fleetlink_relay::Transcoder> {
-    Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled())
+/// How messages are converted between encodings in this binary: the bundled
+/// definitions plus the packages under each `--msg-path` directory.
+pub fn transcoder(
+    msg_path: &[std::path::PathBuf],
+) -> anyhow::Result<Arc<dyn fleetlink_relay::Transcoder>> {
+    use anyhow::Context;
+    let registry = fleetlink_msg::Registry::bundled();
+    for dir in msg_path {
+        registry.add_package_dir(dir).with_context(|| {
+            format!(
+                "loading --msg-path {} (a directory of ROS packages: DIR/<package>/msg/<Type>.msg)",
+                dir.display()
+            )
+        })?;
+    }
+    Ok(Arc::new(
+        fleetlink_relay::transcode::RegistryTranscoder::new(registry),
+    ))
 }

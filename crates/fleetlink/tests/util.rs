@@ -210,6 +210,7 @@ pub async fn start_agent_sim(
         local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
         sim,
         ros1: None,
+        ros2: None,
     };
     let agent = Agent::bind(
         opts,

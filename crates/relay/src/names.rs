@@ -91,6 +91,37 @@ impl fmt::Display for ClientId {
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, PartialOrd, Ord)]
 pub struct TopicId(pub u32);
 
+/// Whole-name include/exclude patterns (a plain name is a pattern matching itself).
+#[derive(Debug, Clone, Default)]
+pub struct NameFilter {
+    pub include: Vec<regex::Regex>,
+    pub exclude: Vec<regex::Regex>,
+}
+
+impl NameFilter {
+    /// Compiles patterns as whole-name regexes (`^(?:p)$`).
+    pub fn new(include: &[String], exclude: &[String]) -> Result<NameFilter, regex::Error> {
+        let compile = |ps: &[String]| {
+            ps.iter()
+                .map(|p| regex::Regex::new(&format!("^(?:{p})$")))
+                .collect::<Result<Vec<_>, _>>()
+        };
+        Ok(NameFilter {
+            include: compile(include)?,
+            exclude: compile(exclude)?,
+        })
+    }
+
+    pub fn matches(&self, name: &str) -> bool {
+        self.include.iter().any(|r| r.is_match(name))
+            && !self.exclude.iter().any(|r| r.is_match(name))
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.include.is_empty()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,5 +146,17 @@ mod tests {
         assert_eq!(full.as_str(), "/robot1/scan");
         assert_eq!(full.strip_namespace("/robot1").unwrap(), scan);
         assert!(full.strip_namespace("/robot").is_none());
+    }
+
+    #[test]
+    fn filter_includes_then_excludes_whole_names() {
+        let f = NameFilter::new(&[".*".into()], &["/camera/raw".into()]).unwrap();
+        assert!(f.matches("/scan"));
+        assert!(!f.matches("/camera/raw"));
+        assert!(f.matches("/camera/raw/compressed"));
+        let f = NameFilter::new(&["/scan".into()], &[]).unwrap();
+        assert!(!f.matches("/scan2"));
+        assert!(NameFilter::default().is_empty());
+        assert!(!NameFilter::default().matches("/x"));
     }
 }

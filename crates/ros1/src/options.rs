@@ -3,38 +3,7 @@
 use std::time::Duration;
 
 use fleetlink_relay::TopicName;
-use regex::Regex;
-
-/// Whole-name include/exclude patterns (a plain name is a pattern matching itself).
-#[derive(Debug, Clone, Default)]
-pub struct NameFilter {
-    pub include: Vec<Regex>,
-    pub exclude: Vec<Regex>,
-}
-
-impl NameFilter {
-    /// Compiles patterns as whole-name regexes (`^(?:p)$`).
-    pub fn new(include: &[String], exclude: &[String]) -> Result<NameFilter, regex::Error> {
-        let compile = |ps: &[String]| {
-            ps.iter()
-                .map(|p| Regex::new(&format!("^(?:{p})$")))
-                .collect::<Result<Vec<_>, _>>()
-        };
-        Ok(NameFilter {
-            include: compile(include)?,
-            exclude: compile(exclude)?,
-        })
-    }
-
-    pub fn matches(&self, name: &str) -> bool {
-        self.include.iter().any(|r| r.is_match(name))
-            && !self.exclude.iter().any(|r| r.is_match(name))
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.include.is_empty()
-    }
-}
+pub use fleetlink_relay::names::NameFilter;
 
 #[derive(Debug, Clone)]
 pub struct Ros1Options {
@@ -81,22 +50,5 @@ impl Ros1Options {
                     .filter(|s| !s.is_empty())
             })
             .unwrap_or_else(|| "localhost".to_owned())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn filter_includes_then_excludes_whole_names() {
-        let f = NameFilter::new(&[".*".into()], &["/camera/raw".into()]).unwrap();
-        assert!(f.matches("/scan"));
-        assert!(!f.matches("/camera/raw"));
-        assert!(f.matches("/camera/raw/compressed"));
-        let f = NameFilter::new(&["/scan".into()], &[]).unwrap();
-        assert!(!f.matches("/scan2"));
-        assert!(NameFilter::default().is_empty());
-        assert!(!NameFilter::default().matches("/x"));
     }
 }

@@ -23,6 +23,7 @@
 
 mod locate;
 mod ros1;
+mod ros2;
 mod sim;
 mod validate;
 
@@ -37,6 +38,7 @@ use serde_saphyr::MessageFormatter;
 
 use locate::LocationTree;
 pub use ros1::{Ros1Config, Ros1Publish, Ros1Services};
+pub use ros2::{Ros2Actions, Ros2Config};
 pub use sim::{
     ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
 };
@@ -70,6 +72,8 @@ pub struct AgentConfig {
     pub sim: Option<SimConfig>,
     /// The native ROS 1 bridge; `None` (the default) runs none. See docs/ros1.md.
     pub ros1: Option<Ros1Config>,
+    /// The native ROS 2 bridge; `None` (the default) runs none. See docs/ros2.md.
+    pub ros2: Option<Ros2Config>,
     /// Per-topic QoS of the uplink, by local topic name (see docs/qos.md); topics not
     /// listed get the defaults for their type.
     pub topics: BTreeMap<String, fleetlink_qos::TopicQosSpec>,
@@ -92,6 +96,7 @@ impl Default for AgentConfig {
             subscribe: Vec::new(),
             sim: None,
             ros1: None,
+            ros2: None,
             topics: BTreeMap::new(),
             outbox: None,
         }

@@ -432,3 +432,43 @@ fn ros1_errors_name_the_field() {
         "robot.yaml:1:20: ros1.publish.names: unknown field `names`, expected one of include, exclude",
     );
 }
+
+#[test]
+fn ros2_section_becomes_bridge_options() {
+    let cfg = AgentConfig::from_str(
+        "ros2:\n  domain_id: 7\n  publish: { include: ['.*'], exclude: [/camera/raw] }\n  subscribe: [/cmd_vel]\n  services: { expose: [/add_two_ints], offer: ['/cloud/.*'] }\n  actions: { expose: [/fibonacci] }\n",
+        "robot.yaml",
+    )
+    .expect("valid ros2 section");
+    let ros2 = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .ros2
+        .expect("ros2 options");
+    assert_eq!(ros2.domain_id, 7);
+    assert!(ros2.publish.matches("/scan") && !ros2.publish.matches("/camera/raw"));
+    assert!(ros2.expose.matches("/add_two_ints") && !ros2.expose.matches("/other"));
+    assert!(ros2.offer.matches("/cloud/greet"));
+    assert!(ros2.expose_actions.matches("/fibonacci"));
+    assert_eq!(ros2.subscribe.len(), 1);
+    assert_eq!(ros2.discovery_period, std::time::Duration::from_millis(250));
+}
+
+#[test]
+fn ros2_errors_name_the_field() {
+    assert_err(
+        "ros2: { domain_id: 300 }\n",
+        "robot.yaml:1:20: ros2.domain_id: must be a DDS domain id 0..=232 (ROS 2's usable range), got 300",
+    );
+    assert_err(
+        "ros2:\n  actions: { expose: ['/fib('] }\n",
+        "robot.yaml:2:23: ros2.actions.expose[0]: is not a valid pattern (error: unclosed group): \"/fib(\"",
+    );
+    assert_err(
+        "ros2: { subscribe: [cmd_vel] }\n",
+        "robot.yaml:1:21: ros2.subscribe[0]: must start with '/', got \"cmd_vel\"",
+    );
+    assert_err(
+        "ros2: { qos: 1 }\n",
+        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms",
+    );
+}

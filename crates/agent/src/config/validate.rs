@@ -137,6 +137,9 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(r) = &cfg.ros1 {
         validate_ros1(r)?;
     }
+    if let Some(r) = &cfg.ros2 {
+        validate_ros2(r)?;
+    }
     let topics = FieldPath::from("topics");
     for (name, spec) in &cfg.topics {
         check_topic(name).map_err(|m| Problem {
@@ -195,6 +198,37 @@ fn validate_ros1(r: &super::Ros1Config) -> Result<(), Problem> {
         (at.key("services").key("exclude"), &r.services.exclude),
         (at.key("services").key("offer"), &r.services.offer),
     ];
+    check_patterns(lists)?;
+    check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
+}
+
+fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
+    let at = FieldPath::from("ros2");
+    if let Some(d) = r.domain_id
+        && d > 232
+    {
+        return Err(problem(
+            at.key("domain_id"),
+            format!("must be a DDS domain id 0..=232 (ROS 2's usable range), got {d}"),
+        ));
+    }
+    let lists = [
+        (at.key("publish").key("include"), &r.publish.include),
+        (at.key("publish").key("exclude"), &r.publish.exclude),
+        (at.key("services").key("expose"), &r.services.expose),
+        (at.key("services").key("exclude"), &r.services.exclude),
+        (at.key("services").key("offer"), &r.services.offer),
+        (at.key("actions").key("expose"), &r.actions.expose),
+        (at.key("actions").key("exclude"), &r.actions.exclude),
+    ];
+    check_patterns(lists)?;
+    check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
+}
+
+/// Every entry of each list is a whole-name regular expression.
+fn check_patterns<'a>(
+    lists: impl IntoIterator<Item = (FieldPath, &'a Vec<String>)>,
+) -> Result<(), Problem> {
     for (path, list) in lists {
         for (i, p) in list.iter().enumerate() {
             if let Err(e) = regex::Regex::new(&format!("^(?:{p})$")) {
@@ -209,13 +243,23 @@ fn validate_ros1(r: &super::Ros1Config) -> Result<(), Problem> {
             }
         }
     }
-    for (i, t) in r.subscribe.iter().enumerate() {
+    Ok(())
+}
+
+/// What the ROS 1 and ROS 2 sections share: topics to subscribe, periods > 0.
+fn check_bridge_common(
+    at: &FieldPath,
+    subscribe: &[String],
+    discovery_ms: u64,
+    call_timeout_ms: u64,
+) -> Result<(), Problem> {
+    for (i, t) in subscribe.iter().enumerate() {
         check_topic(t).map_err(|m| problem(at.key("subscribe").index(i), m))?;
     }
-    if r.discovery_ms == 0 {
+    if discovery_ms == 0 {
         return Err(problem(at.key("discovery_ms"), "must be > 0, got 0"));
     }
-    if r.call_timeout_ms == 0 {
+    if call_timeout_ms == 0 {
         return Err(problem(at.key("call_timeout_ms"), "must be > 0, got 0"));
     }
     Ok(())

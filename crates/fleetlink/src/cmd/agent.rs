@@ -25,6 +25,10 @@ pub struct Args {
     /// Run without the local rosbridge listener.
     #[arg(long, conflicts_with = "local_listen")]
     pub no_local: bool,
+    /// A directory of ROS message packages (DIR/<package>/msg/<Type>.msg, srv/, action/)
+    /// whose types the agent should know besides the bundled ones; repeatable.
+    #[arg(long = "msg-path", value_name = "DIR")]
+    pub msg_path: Vec<PathBuf>,
 }
 
 /// Loads the file (if any) and applies the command-line overrides.
@@ -49,9 +53,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
     let cfg = load(&args)?;
     let opts = AgentOptions::from_config(&cfg).context("configuration")?;
+    let transcoder = crate::transcoder(&args.msg_path)?;
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(async {
-        let agent = Agent::bind(opts, crate::transcoder()).await?;
+        let agent = Agent::bind(opts, transcoder).await?;
         println!("fleetlink agent {} → {}", cfg.name, cfg.hub);
         if let Some(a) = agent.local_addr() {
             println!("  local rosbridge: ws://{a}/");

@@ -47,7 +47,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             acl: fleetlink_auth::AclDefaults::demo(),
             ..fleetlink_hub::HubConfig::default()
         };
-        let hub = Hub::bind(cfg, crate::transcoder()).await?;
+        let hub = Hub::bind(cfg, crate::transcoder(&[])?).await?;
         let security = hub.state().security.clone();
         let now = fleetlink_auth::UnixTime::now();
         let addr = hub.local_addr();
@@ -64,7 +64,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 .add_robot_token(&robot, None, now)?
                 .expose()
                 .to_owned();
-            let agent = Agent::bind(AgentOptions::from_config(&cfg)?, crate::transcoder()).await?;
+            let agent =
+                Agent::bind(AgentOptions::from_config(&cfg)?, crate::transcoder(&[])?).await?;
             robots.push(tokio::spawn(agent.run(stop.clone())));
         }
         println!("fleetlink demo: hub with {} simulated robots", args.robots);

@@ -9,6 +9,11 @@ use fleetlink_hub::{Hub, HubConfig};
 
 #[derive(clap::Args)]
 pub struct Args {
+    /// A directory of ROS message packages (DIR/<package>/msg/<Type>.msg, srv/, action/)
+    /// whose types the hub should know besides the bundled ones and those robots
+    /// advertise; repeatable.
+    #[arg(long = "msg-path", value_name = "DIR")]
+    pub msg_path: Vec<std::path::PathBuf>,
     /// Address and port for agents, rosbridge clients and HTTP.
     #[arg(long, default_value = "127.0.0.1:8080")]
     pub listen: SocketAddr,
@@ -172,8 +177,9 @@ impl Args {
 pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
+    let transcoder = crate::transcoder(&args.msg_path)?;
     rt.block_on(async {
-        let hub = Hub::bind(args.config(), crate::transcoder()).await?;
+        let hub = Hub::bind(args.config(), transcoder).await?;
         let addr = hub.local_addr();
         let (ws, http) = if args.tls_cert.is_some() {
             ("wss", "https")

@@ -34,8 +34,9 @@ pub async fn shutdown_signal() {
 
 /// Logs to stderr; `RUST_LOG` overrides the default level.
 pub fn init_logging(default: &str) {
+    // rustdds narrates every socket and match at info; only its warnings are ours to show.
     let filter = tracing_subscriber::EnvFilter::try_from_default_env()
-        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(default));
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(format!("{default},rustdds=warn")));
     let _ = tracing_subscriber::fmt()
         .with_env_filter(filter)
         .with_writer(std::io::stderr)

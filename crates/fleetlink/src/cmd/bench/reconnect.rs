@@ -90,7 +90,7 @@ struct RunningHub {
 }
 
 async fn start_hub(cfg: HubConfig) -> anyhow::Result<RunningHub> {
-    let hub = Hub::bind(cfg, crate::transcoder()).await?;
+    let hub = Hub::bind(cfg, crate::transcoder(&[])?).await?;
     let addr = hub.local_addr();
     let limits = hub.state().limits.clone();
     let stop = CancellationToken::new();
@@ -126,8 +126,9 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             local_listen: None,
             sim: None,
             ros1: None,
+            ros2: None,
         };
-        let agent = Agent::bind(opts, crate::transcoder()).await?;
+        let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;
         states.push(agent.link_state());
         tokio::spawn(agent.run(stop.clone()));
     }

@@ -1,0 +1,62 @@
+//! `ros2:` — the native ROS 2 bridge (crates/ros2): which DDS domain, and what crosses
+//! between the robot's ROS 2 graph and the fleet. Reference in docs/config.md.
+
+use std::time::Duration;
+
+use serde::Deserialize;
+
+use super::{Ros1Publish, Ros1Services};
+
+/// The agent as a DDS participant of the robot's ROS 2 graph.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Ros2Config {
+    /// The DDS domain. Default: `ROS_DOMAIN_ID`, else 0.
+    pub domain_id: Option<u16>,
+    /// Local topics sent up to the hub (same shape as `ros1.publish`).
+    pub publish: Ros1Publish,
+    /// Topics of the agent's router written into the graph.
+    pub subscribe: Vec<String>,
+    /// Services both ways (same shape as `ros1.services`).
+    pub services: Ros1Services,
+    /// Actions.
+    pub actions: Ros2Actions,
+    /// How often discovered endpoints are looked at. Default 250.
+    pub discovery_ms: u64,
+    /// How long a local caller of a fleet service may wait. Default 10000.
+    pub call_timeout_ms: u64,
+}
+
+impl Default for Ros2Config {
+    fn default() -> Self {
+        Self {
+            domain_id: None,
+            publish: Ros1Publish::default(),
+            subscribe: Vec::new(),
+            services: Ros1Services::default(),
+            actions: Ros2Actions::default(),
+            discovery_ms: 250,
+            call_timeout_ms: 10_000,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Ros2Actions {
+    /// Local action servers (names or patterns) offered to the fleet, under the robot's
+    /// namespace on the hub.
+    pub expose: Vec<String>,
+    /// Local action servers never exposed.
+    pub exclude: Vec<String>,
+}
+
+impl Ros2Config {
+    pub fn discovery(&self) -> Duration {
+        Duration::from_millis(self.discovery_ms)
+    }
+
+    pub fn call_timeout(&self) -> Duration {
+        Duration::from_millis(self.call_timeout_ms)
+    }
+}

@@ -1,0 +1,511 @@
+//! The participant and its loop: discovery, topics up and down, the call table's side.
+//!
+//! One task ([`run`]) owns the router client's outbox, the call-table channel and the
+//! discovery tick; each bridged-up topic has a task reading its DDS reader, each exposed
+//! service or action a task reading its replies ([`crate::services`]). rustdds runs its
+//! own network threads; its readers are polled as async streams here, its writers are
+//! written without waiting (keep-last history never blocks).
+
+use std::collections::{HashMap, HashSet};
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::Instant;
+
+use bytes::Bytes;
+use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::calls::ChannelPeer;
+use fleetlink_relay::names::ClientId;
+use fleetlink_relay::router::{RouteError, SubOptions, Target};
+use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
+use futures::StreamExt;
+use rustdds::no_key::{DataReader, DataWriter};
+use rustdds::{DomainParticipant, GUID, Publisher, QosPolicies, RTPSEntity, Subscriber, TopicKind};
+use tokio::task::AbortHandle;
+use tokio_util::sync::CancellationToken;
+
+use crate::names::{self, DdsName};
+use crate::options::Ros2Options;
+use crate::raw::{RawAdapter, RawCdr};
+use crate::services::{self, Offered, Remote};
+
+pub type RawReader = DataReader<RawCdr, RawAdapter>;
+pub type RawWriter = DataWriter<RawCdr, RawAdapter>;
+
+#[derive(Debug, thiserror::Error)]
+pub enum Ros2Error {
+    #[error(
+        "ros2: cannot join DDS domain {domain}: {cause} (is another program holding the \
+         ports, or is there no network interface up?)"
+    )]
+    Participant { domain: u16, cause: String },
+    #[error("ros2: cannot create a DDS publisher or subscriber: {0}")]
+    Endpoint(String),
+}
+
+/// Counters of the bridge (logged at exit; tests read them).
+#[derive(Debug, Default)]
+pub struct Stats {
+    pub messages_up: AtomicU64,
+    pub messages_down: AtomicU64,
+    pub dropped_down: AtomicU64,
+    pub unknown_types: AtomicU64,
+    pub type_mismatches: AtomicU64,
+}
+
+/// A local topic sent up: its router topic, the writers feeding it, its reader task.
+struct Up {
+    writers: HashSet<GUID>,
+    task: AbortHandle,
+}
+
+/// A router topic written into the graph.
+struct Down {
+    writer: RawWriter,
+    type_name: String,
+}
+
+#[derive(Default)]
+pub(crate) struct State {
+    up: HashMap<String, Up>,
+    down: HashMap<String, Option<Down>>,
+    /// Topics and services already reported (unknown type, mismatch): once each.
+    reported: HashSet<String>,
+    pub(crate) remotes: HashMap<String, Arc<Remote>>,
+    pub(crate) offered: HashMap<String, Arc<Offered>>,
+    /// Local callers' calls of fleet services, by call id: where the answer goes.
+    pub(crate) local_calls: HashMap<u64, services::LocalCall>,
+    /// Fleet goals sent to local action servers, by call id.
+    pub(crate) goals: HashMap<u64, (Arc<Remote>, [u8; 16])>,
+}
+
+/// The bridge's shared half: the participant, the router client and the state.
+pub struct Bridge {
+    pub opts: Ros2Options,
+    pub router: Arc<Router>,
+    pub client: ClientId,
+    pub stats: Stats,
+    pub(crate) dp: DomainParticipant,
+    pub(crate) publisher: Publisher,
+    pub(crate) subscriber: Subscriber,
+    /// This participant's GUID prefix: endpoints and samples of its own are never bridged.
+    pub(crate) own: GUID,
+    state: Mutex<State>,
+}
+
+impl Bridge {
+    pub(crate) fn lock(&self) -> MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    pub(crate) fn is_own(&self, guid: GUID) -> bool {
+        guid.prefix == self.own.prefix
+    }
+
+    /// A DDS reader of raw samples on `dds_topic`.
+    pub(crate) fn reader(
+        &self,
+        dds_topic: &str,
+        dds_type: &str,
+        qos: QosPolicies,
+    ) -> Result<RawReader, String> {
+        let topic = self
+            .dp
+            .create_topic(
+                dds_topic.to_owned(),
+                dds_type.to_owned(),
+                &qos,
+                TopicKind::NoKey,
+            )
+            .map_err(|e| format!("topic {dds_topic}: {e}"))?;
+        self.subscriber
+            .create_datareader_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
+            .map_err(|e| format!("reader of {dds_topic}: {e}"))
+    }
+
+    /// A DDS writer of raw samples on `dds_topic`.
+    pub(crate) fn writer(
+        &self,
+        dds_topic: &str,
+        dds_type: &str,
+        qos: QosPolicies,
+    ) -> Result<RawWriter, String> {
+        let topic = self
+            .dp
+            .create_topic(
+                dds_topic.to_owned(),
+                dds_type.to_owned(),
+                &qos,
+                TopicKind::NoKey,
+            )
+            .map_err(|e| format!("topic {dds_topic}: {e}"))?;
+        self.publisher
+            .create_datawriter_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
+            .map_err(|e| format!("writer of {dds_topic}: {e}"))
+    }
+
+    /// `payload` as little-endian CDR of `type_name`: as it is when it already is, else
+    /// converted once by the registry.
+    pub(crate) fn to_cdr(&self, type_name: &str, payload: &Payload) -> Result<Bytes, String> {
+        if payload.encoding == Encoding::Cdr && RawCdr::is_le(&payload.bytes) {
+            return Ok(payload.bytes.clone());
+        }
+        let schema = Schema {
+            type_name: type_name.to_owned(),
+            encoding: "ros2msg".into(),
+            text: String::new(),
+        };
+        let t = self.router.transcoder();
+        let converted = if payload.encoding == Encoding::Cdr {
+            // Big-endian CDR (rare): through JSON, since writers here are little-endian.
+            t.convert(&schema, payload, Encoding::Json)
+                .and_then(|j| t.convert(&schema, &Payload::new(Encoding::Json, j), Encoding::Cdr))
+        } else {
+            t.convert(&schema, payload, Encoding::Cdr)
+        };
+        converted.map_err(|e| e.to_string())
+    }
+
+    /// Logs `text` once per `key` (unknown types, mismatches): a robot left running
+    /// must not repeat the same line every discovery period.
+    pub(crate) fn report_once(
+        &self,
+        key: &str,
+        counter: &AtomicU64,
+        text: impl FnOnce() -> String,
+    ) {
+        if self.lock().reported.insert(key.to_owned()) {
+            counter.fetch_add(1, Relaxed);
+            tracing::warn!("{}", text());
+        }
+    }
+
+    /// The full ROS 2 definition of `ros_type`, if the registry knows it.
+    pub(crate) fn schema(&self, ros_type: &str) -> Option<Schema> {
+        self.router.transcoder().schema_for(ros_type)
+    }
+}
+
+/// Bridges the ROS 2 graph of `opts.domain_id` with `router` until `shutdown`.
+pub async fn run(
+    opts: Ros2Options,
+    router: Arc<Router>,
+    shutdown: CancellationToken,
+) -> Result<(), Ros2Error> {
+    let domain = opts.domain_id;
+    let dp = DomainParticipant::new(domain).map_err(|e| Ros2Error::Participant {
+        domain,
+        cause: e.to_string(),
+    })?;
+    let defaults = QosPolicies::qos_none();
+    let publisher = dp
+        .create_publisher(&defaults)
+        .map_err(|e| Ros2Error::Endpoint(e.to_string()))?;
+    let subscriber = dp
+        .create_subscriber(&defaults)
+        .map_err(|e| Ros2Error::Endpoint(e.to_string()))?;
+    let (client, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "ros2".into(),
+        },
+        None,
+    );
+    let (peer, mut peer_rx) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    let own = dp.guid();
+    let bridge = Arc::new(Bridge {
+        opts,
+        router: router.clone(),
+        client,
+        stats: Stats::default(),
+        dp,
+        publisher,
+        subscriber,
+        own,
+        state: Mutex::new(State::default()),
+    });
+    tracing::info!(
+        "ros2: joined DDS domain {domain} as participant {:?}",
+        bridge.dp.guid().prefix
+    );
+    for re in &bridge.opts.offer.include {
+        router.calls.watch(client, re.clone());
+    }
+    for name in &bridge.opts.subscribe {
+        if let Err(e) = router.subscribe(client, Target::Exact(name.clone()), SubOptions::default())
+        {
+            tracing::warn!("ros2: cannot subscribe to {name}: {e}");
+        }
+    }
+    let mut tick = tokio::time::interval(bridge.opts.discovery_period);
+    tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    loop {
+        tokio::select! {
+            _ = shutdown.cancelled() => break,
+            _ = tick.tick() => discover(&bridge),
+            _ = outbox.ready() => loop {
+                let batch = outbox.take(64, 8 << 20, Instant::now());
+                if batch.items.is_empty() {
+                    break;
+                }
+                for (_, _, msg) in batch.items {
+                    down(&bridge, &msg);
+                }
+            },
+            Some(m) = peer_rx.recv() => services::on_peer(&bridge, m),
+        }
+    }
+    let st = std::mem::take(&mut *bridge.lock());
+    for up in st.up.values() {
+        up.task.abort();
+    }
+    for r in st.remotes.values() {
+        r.abort();
+    }
+    for o in st.offered.values() {
+        o.task.abort();
+    }
+    router.disconnect(client);
+    let s = &bridge.stats;
+    tracing::info!(
+        "ros2: left domain {domain}: {} messages up, {} down ({} dropped)",
+        s.messages_up.load(Relaxed),
+        s.messages_down.load(Relaxed),
+        s.dropped_down.load(Relaxed)
+    );
+    Ok(())
+}
+
+/// One look at what discovery knows: starts and stops bridged topics, exposed services
+/// and actions.
+fn discover(bridge: &Arc<Bridge>) {
+    let mut writers: HashMap<String, Vec<rustdds::discovery::DiscoveredWriterData>> =
+        HashMap::new();
+    for w in bridge.dp.discovered_writers() {
+        let p = &w.publication_topic_data;
+        if bridge.is_own(p.key) {
+            continue;
+        }
+        if let Some(DdsName::Topic(ros)) = DdsName::parse(&p.topic_name)
+            && !names::is_hidden(&ros)
+            && bridge.opts.publish.matches(&ros)
+        {
+            writers.entry(ros).or_default().push(w);
+        }
+    }
+    let gone: Vec<String> = {
+        let mut st = bridge.lock();
+        for (ros, ws) in &writers {
+            if let Some(up) = st.up.get_mut(ros) {
+                up.writers = ws.iter().map(|w| w.publication_topic_data.key).collect();
+            }
+        }
+        st.up
+            .keys()
+            .filter(|k| !writers.contains_key(*k))
+            .cloned()
+            .collect()
+    };
+    for ros in gone {
+        stop_up(bridge, &ros);
+    }
+    for (ros, ws) in writers {
+        if !bridge.lock().up.contains_key(&ros) {
+            start_up(bridge, &ros, &ws);
+        }
+    }
+    services::discover(bridge);
+}
+
+/// Starts bridging local topic `ros` up, with a reader matching its first writer.
+fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::DiscoveredWriterData]) {
+    let p = &writers[0].publication_topic_data;
+    let Some(ros_type) = names::ros_type(&p.type_name) else {
+        bridge.report_once(ros, &bridge.stats.unknown_types, || {
+            format!(
+                "ros2: not bridging {ros}: its DDS type {:?} is not a ROS 2 type name (pkg::msg::dds_::T_)",
+                p.type_name
+            )
+        });
+        return;
+    };
+    let Some(schema) = bridge.schema(&ros_type) else {
+        bridge.report_once(ros, &bridge.stats.unknown_types, || {
+            format!(
+                "ros2: not bridging {ros}: type {ros_type} is unknown to the agent's registry; \
+                 give the agent its package with --msg-path DIR (DIR/<package>/msg/<Type>.msg)"
+            )
+        });
+        return;
+    };
+    let Ok(name) = TopicName::parse(ros) else {
+        return;
+    };
+    // Latched when any writer keeps its last message for late readers.
+    let latched = writers.iter().any(|w| {
+        matches!(
+            w.publication_topic_data.durability,
+            Some(rustdds::policy::Durability::TransientLocal)
+        )
+    });
+    let reliable = writers.iter().all(|w| {
+        !matches!(
+            w.publication_topic_data.reliability,
+            Some(rustdds::policy::Reliability::BestEffort)
+        )
+    });
+    let qos = crate::qos::reader_for(
+        Some(if reliable {
+            rustdds::policy::Reliability::Reliable {
+                max_blocking_time: rustdds::Duration::from_millis(100),
+            }
+        } else {
+            rustdds::policy::Reliability::BestEffort
+        }),
+        latched.then_some(rustdds::policy::Durability::TransientLocal),
+    );
+    let topic = match bridge
+        .router
+        .advertise(bridge.client, &name, schema, latched)
+    {
+        Ok(t) => t,
+        Err(RouteError::TypeConflict { existing, .. }) => {
+            bridge.report_once(ros, &bridge.stats.type_mismatches, || {
+                format!(
+                    "ros2: type mismatch on {ros}: the agent's topic is {existing}, local writers send {ros_type}; \
+                     {ros} is not bridged, other topics are unaffected"
+                )
+            });
+            return;
+        }
+        Err(e) => {
+            tracing::warn!("ros2: cannot bridge {ros}: {e}");
+            return;
+        }
+    };
+    let reader = match bridge.reader(&p.topic_name, &p.type_name, qos) {
+        Ok(r) => r,
+        Err(e) => {
+            tracing::warn!("ros2: cannot bridge {ros}: {e}");
+            bridge.router.unadvertise(bridge.client, &name);
+            return;
+        }
+    };
+    tracing::info!(
+        "ros2: receiving {ros} ({ros_type}{}{})",
+        if latched { ", latched" } else { "" },
+        if reliable { "" } else { ", best effort" }
+    );
+    let task = tokio::spawn(pump_up(bridge.clone(), topic, reader)).abort_handle();
+    bridge.lock().up.insert(
+        ros.to_owned(),
+        Up {
+            writers: writers
+                .iter()
+                .map(|w| w.publication_topic_data.key)
+                .collect(),
+            task,
+        },
+    );
+}
+
+/// Every local writer of `ros` is gone: stop reading it and unadvertise it.
+fn stop_up(bridge: &Bridge, ros: &str) {
+    let Some(up) = bridge.lock().up.remove(ros) else {
+        return;
+    };
+    up.task.abort();
+    if let Ok(name) = TopicName::parse(ros) {
+        bridge.router.unadvertise(bridge.client, &name);
+    }
+    tracing::info!("ros2: {ros} has no local writers any more: unadvertised");
+}
+
+/// Forwards a reader's samples to the router as they arrived.
+async fn pump_up(bridge: Arc<Bridge>, topic: Arc<Topic>, reader: RawReader) {
+    let mut samples = reader.async_sample_stream();
+    let mut seq = 0u64;
+    while let Some(r) = samples.next().await {
+        match r {
+            Ok(sample) => {
+                // Our own writer on the same topic (bridged both ways): never back up.
+                if bridge.is_own(sample.sample_info().writer_guid()) {
+                    continue;
+                }
+                seq += 1;
+                topic.publish(
+                    bridge.client,
+                    seq,
+                    fleetlink_relay::unix_nanos(),
+                    Payload::new(Encoding::Cdr, sample.into_value().0),
+                );
+                bridge.stats.messages_up.fetch_add(1, Relaxed);
+            }
+            Err(e) => tracing::debug!("ros2: reading {}: {e}", topic.name()),
+        }
+    }
+}
+
+/// A router message for the graph, written by the topic's writer (created on the first
+/// message, with the topic's type and latching).
+fn down(bridge: &Bridge, msg: &Message) {
+    let name = msg.topic.name.as_str();
+    let mut st = bridge.lock();
+    let entry = st
+        .down
+        .entry(name.to_owned())
+        .or_insert_with(|| create_down(bridge, msg));
+    let Some(d) = entry else {
+        bridge.stats.dropped_down.fetch_add(1, Relaxed);
+        return;
+    };
+    let body = match bridge.to_cdr(&d.type_name, &msg.payload) {
+        Ok(b) => b,
+        Err(e) => {
+            bridge.stats.dropped_down.fetch_add(1, Relaxed);
+            tracing::debug!("ros2: dropping a message of {name}: {e}");
+            return;
+        }
+    };
+    match d.writer.write(RawCdr(body), None) {
+        Ok(()) => {
+            bridge.stats.messages_down.fetch_add(1, Relaxed);
+        }
+        Err(e) => {
+            bridge.stats.dropped_down.fetch_add(1, Relaxed);
+            tracing::debug!("ros2: writing {name}: {e:?}");
+        }
+    }
+}
+
+/// The writer of a router topic; `None` (remembered, reported once) when its type cannot
+/// be written.
+fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
+    let name = msg.topic.name.as_str();
+    let type_name = &msg.topic.schema.type_name;
+    let Some(dds_type) = names::dds_type(type_name) else {
+        tracing::warn!(
+            "ros2: cannot write {name} into the graph: {type_name:?} is not a ROS type name"
+        );
+        return None;
+    };
+    let latched = bridge
+        .router
+        .topic(&msg.topic.name)
+        .is_some_and(|t| t.is_latched());
+    match bridge.writer(&names::topic(name), &dds_type, crate::qos::writer(latched)) {
+        Ok(writer) => {
+            tracing::info!(
+                "ros2: writing {name} ({type_name}{}) into the graph",
+                if latched { ", transient local" } else { "" }
+            );
+            Some(Down {
+                writer,
+                type_name: type_name.clone(),
+            })
+        }
+        Err(e) => {
+            tracing::warn!("ros2: cannot write {name} into the graph: {e}");
+            None
+        }
+    }
+}

@@ -1,0 +1,30 @@
+//! The agent's native ROS 2 adapter: a DDS participant in the robot's ROS 2 graph that
+//! bridges its topics, services and actions with the agent's local
+//! [`Router`](fleetlink_relay::Router), like the simulator and the ROS 1 bridge do.
+//!
+//! Up (robot → hub), it follows DDS discovery and reads the graph's writers of bridged
+//! topics as the CDR bytes that arrived (encapsulation header included), typed by their
+//! ROS 2 name; the definition comes from the agent's registry. Down (hub → robot), it
+//! writes router topics into the graph, converting once when a message is not CDR.
+//! Services use the request/reply topics of ROS 2's Cyclone DDS middleware (a 16-byte
+//! request header in the sample); actions are their three services and two topics.
+//! docs/ros2.md has the design, the QoS table and the limits.
+//!
+//! # Layout
+//!
+//! - [`options`]: what to bridge ([`Ros2Options`]).
+//! - [`raw`]: the raw-CDR sample type and its rustdds adapters.
+//! - [`names`]: ROS 2 names ⇄ DDS topic and type names.
+//! - [`qos`]: DDS QoS for the readers and writers the bridge creates.
+//! - [`bridge`]: the participant, discovery, topics both ways ([`run`]).
+//! - [`services`]: services and actions both ways.
+
+pub mod bridge;
+pub mod names;
+pub mod options;
+pub mod qos;
+pub mod raw;
+pub mod services;
+
+pub use bridge::{Ros2Error, run};
+pub use options::Ros2Options;

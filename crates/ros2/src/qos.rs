@@ -1,0 +1,94 @@
+//! The QoS of the readers and writers the bridge creates (docs/ros2.md has the table).
+//!
+//! Readers take what the local writer offers, so every local publisher is matched:
+//! reliable only from a reliable writer, transient-local (latched on the hub) only from
+//! a transient-local writer. Writers are reliable (a best-effort reader matches a
+//! reliable writer, not the reverse) and transient-local for latched router topics, so a
+//! late local subscriber asking for transient-local gets the last message.
+
+use rustdds::policy::{Durability, History, Reliability};
+use rustdds::{Duration, QosPolicies, QosPolicyBuilder};
+
+/// How many samples a reader or a volatile writer keeps (the ROS 2 default depth).
+pub const DEPTH: i32 = 10;
+
+fn reliable() -> Reliability {
+    Reliability::Reliable {
+        max_blocking_time: Duration::from_millis(100),
+    }
+}
+
+/// A reader matching a writer that offers `reliability` and `durability` (either
+/// unknown: DDS's defaults for writers, reliable and volatile).
+pub fn reader_for(reliability: Option<Reliability>, durability: Option<Durability>) -> QosPolicies {
+    let reliable_writer = !matches!(reliability, Some(Reliability::BestEffort));
+    let latched = matches!(
+        durability,
+        Some(Durability::TransientLocal | Durability::Transient | Durability::Persistent)
+    );
+    QosPolicyBuilder::new()
+        .reliability(if reliable_writer {
+            reliable()
+        } else {
+            Reliability::BestEffort
+        })
+        .durability(if latched {
+            Durability::TransientLocal
+        } else {
+            Durability::Volatile
+        })
+        .history(History::KeepLast { depth: DEPTH })
+        .build()
+}
+
+/// A writer of a router topic; `latched` topics keep their last message for late readers.
+pub fn writer(latched: bool) -> QosPolicies {
+    QosPolicyBuilder::new()
+        .reliability(reliable())
+        .durability(if latched {
+            Durability::TransientLocal
+        } else {
+            Durability::Volatile
+        })
+        .history(History::KeepLast {
+            depth: if latched { 1 } else { DEPTH },
+        })
+        .build()
+}
+
+/// Request and reply topics: what ROS 2 uses for services (reliable, volatile, depth 10).
+pub fn service() -> QosPolicies {
+    QosPolicyBuilder::new()
+        .reliability(reliable())
+        .durability(Durability::Volatile)
+        .history(History::KeepLast { depth: DEPTH })
+        .build()
+}
+
+/// An action's status topic: transient-local, reliable, depth 1, as ROS 2 publishes it.
+pub fn action_status() -> QosPolicies {
+    QosPolicyBuilder::new()
+        .reliability(reliable())
+        .durability(Durability::TransientLocal)
+        .history(History::KeepLast { depth: 1 })
+        .build()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn readers_follow_what_the_writer_offers() {
+        let q = reader_for(Some(Reliability::BestEffort), Some(Durability::Volatile));
+        assert!(!q.is_reliable());
+        assert!(q.is_volatile());
+        let q = reader_for(Some(reliable()), Some(Durability::TransientLocal));
+        assert!(q.is_reliable());
+        assert_eq!(q.durability(), Some(Durability::TransientLocal));
+        let q = reader_for(None, None);
+        assert!(q.is_reliable() && q.is_volatile());
+        assert_eq!(writer(true).durability(), Some(Durability::TransientLocal));
+        assert!(writer(false).is_volatile());
+    }
+}

@@ -1,0 +1,701 @@
+//! Services and actions both ways, over the request/reply topics of ROS 2's Cyclone DDS
+//! middleware (`rq/<name>Request`, `rr/<name>Reply`, a 16-byte request header in each
+//! sample: the client's id and a sequence number, copied into the reply).
+//!
+//! - **Exposed** ([`Remote`]): a local server (a foreign reader on `rq/…Request`) matching
+//!   `services.expose` is advertised in the call table; a fleet call becomes a request
+//!   with this bridge's client id and the answer is matched by sequence number. An action
+//!   server (its `send_goal` service) matching `actions.expose` is advertised as an
+//!   action: a goal is a `send_goal` request, then `get_result`; feedback samples with the
+//!   goal's UUID become the goal's feedback; a cancel is a `cancel_goal` request.
+//! - **Offered** ([`Offered`]): a fleet service matching `services.offer` gets a reader on
+//!   its request topic and a writer on its reply topic, so local clients call it like any
+//!   ROS 2 service.
+//!
+//! Bodies are never decoded except an action's result (its `get_result` answer puts the
+//! result after a status byte, so its alignment differs from a result of its own; the
+//! registry converts that one message).
+
+use std::collections::{HashMap, HashSet};
+use std::sync::atomic::{AtomicI32, AtomicI64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use bytes::Bytes;
+use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::TopicName;
+use fleetlink_relay::calls::{
+    CallEvent, CallOptions, CallRequest, CallStatus, PeerMsg, ServiceChange,
+};
+use futures::StreamExt;
+use rustdds::{DataWriterStatus, StatusEvented};
+use tokio::sync::oneshot;
+use tokio::task::AbortHandle;
+
+use crate::bridge::{Bridge, RawReader, RawWriter};
+use crate::names::{self, DdsName};
+use crate::qos;
+use crate::raw::{CDR_LE_HEADER, RawCdr, RequestHeader};
+
+/// How long a request waits for its server's reader to be matched before it is sent
+/// (a volatile request written before matching would be lost).
+const MATCH_WAIT: Duration = Duration::from_secs(3);
+
+/// One service of a local server, as this bridge calls it.
+pub(crate) struct Endpoint {
+    service: String,
+    writer: RawWriter,
+    client: u64,
+    seq: AtomicI64,
+    /// Readers matched to `writer` (the server's), from the writer's status events.
+    matched: AtomicI32,
+    waiting: Mutex<HashMap<i64, oneshot::Sender<Bytes>>>,
+}
+
+impl Endpoint {
+    fn new(
+        bridge: &Bridge,
+        service: &str,
+        type_base: &str,
+        client: u64,
+    ) -> Result<(Arc<Endpoint>, RawReader), String> {
+        let dds = |suffix: &str| {
+            names::dds_type(&format!("{type_base}{suffix}"))
+                .ok_or_else(|| format!("{type_base} is not a ROS type name"))
+        };
+        let writer = bridge.writer(
+            &names::request_topic(service),
+            &dds("_Request")?,
+            qos::service(),
+        )?;
+        let reader = bridge.reader(
+            &names::reply_topic(service),
+            &dds("_Response")?,
+            qos::service(),
+        )?;
+        Ok((
+            Arc::new(Endpoint {
+                service: service.to_owned(),
+                writer,
+                client,
+                seq: AtomicI64::new(0),
+                matched: AtomicI32::new(0),
+                waiting: Mutex::new(HashMap::new()),
+            }),
+            reader,
+        ))
+    }
+
+    /// Sends `msg` (a CDR request message) and waits for the reply message.
+    async fn request(&self, msg: &[u8]) -> Result<Bytes, String> {
+        let started = Instant::now();
+        while !self.server_matched() {
+            if started.elapsed() > MATCH_WAIT {
+                return Err(format!(
+                    "the server of {} is not reachable over DDS",
+                    self.service
+                ));
+            }
+            tokio::time::sleep(Duration::from_millis(20)).await;
+        }
+        let seq = self.seq.fetch_add(1, Relaxed) + 1;
+        let (tx, rx) = oneshot::channel();
+        self.lock().insert(seq, tx);
+        let header = RequestHeader {
+            client: self.client,
+            seq,
+        };
+        if let Err(e) = self.writer.write(RawCdr(header.prepend(msg)), None) {
+            self.lock().remove(&seq);
+            return Err(format!("sending a request to {}: {e:?}", self.service));
+        }
+        let forget = Forget(self, seq);
+        let reply = rx.await.map_err(|_| format!("{} went away", self.service));
+        drop(forget);
+        reply
+    }
+
+    /// True once the server's request reader is matched with this endpoint's writer.
+    fn server_matched(&self) -> bool {
+        while let Some(ev) = self.writer.try_recv_status() {
+            if let DataWriterStatus::PublicationMatched { current, .. } = ev {
+                self.matched.store(current.count(), Relaxed);
+            }
+        }
+        self.matched.load(Relaxed) > 0
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<i64, oneshot::Sender<Bytes>>> {
+        self.waiting.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Hands replies meant for this bridge to their waiting requests.
+    async fn pump(self: Arc<Self>, reader: RawReader) {
+        let mut samples = reader.async_sample_stream();
+        while let Some(r) = samples.next().await {
+            let Ok(sample) = r else { continue };
+            let raw = sample.into_value().0;
+            let Some(h) = RequestHeader::read(&raw) else {
+                continue;
+            };
+            if h.client != self.client {
+                continue; // another client's reply
+            }
+            if let (Some(tx), Some(msg)) = (self.lock().remove(&h.seq), RequestHeader::strip(&raw))
+            {
+                let _ = tx.send(msg);
+            }
+        }
+    }
+}
+
+/// Removes a request's waiter when the request is dropped (timeout, cancel).
+struct Forget<'a>(&'a Endpoint, i64);
+
+impl Drop for Forget<'_> {
+    fn drop(&mut self) {
+        self.0.lock().remove(&self.1);
+    }
+}
+
+pub(crate) enum RemoteKind {
+    Service {
+        srv_type: String,
+        call: Arc<Endpoint>,
+    },
+    Action {
+        action_type: String,
+        send_goal: Arc<Endpoint>,
+        get_result: Arc<Endpoint>,
+        cancel_goal: Arc<Endpoint>,
+        /// Goals in flight: UUID → call id (for their feedback).
+        goals: Mutex<HashMap<[u8; 16], u64>>,
+    },
+}
+
+/// A local service or action server offered to the fleet.
+pub struct Remote {
+    name: String,
+    kind: RemoteKind,
+    tasks: Vec<AbortHandle>,
+}
+
+impl Remote {
+    pub(crate) fn abort(&self) {
+        for t in &self.tasks {
+            t.abort();
+        }
+    }
+}
+
+/// A fleet service offered to local clients.
+pub struct Offered {
+    srv_type: String,
+    replies: RawWriter,
+    pub(crate) task: AbortHandle,
+}
+
+/// Where a local caller's answer goes.
+pub(crate) struct LocalCall {
+    service: String,
+    header: RequestHeader,
+}
+
+/// Follows the graph's servers: exposes new ones, withdraws vanished ones.
+pub(crate) fn discover(bridge: &Arc<Bridge>) {
+    let mut services: HashMap<String, String> = HashMap::new();
+    let mut actions: HashMap<String, String> = HashMap::new();
+    for r in bridge.dp.discovered_readers() {
+        let s = &r.subscription_topic_data;
+        if bridge.is_own(s.key()) {
+            continue;
+        }
+        let Some(DdsName::Request(service)) = DdsName::parse(s.topic_name()) else {
+            continue;
+        };
+        if let Some(action) = names::action_of_send_goal(&service) {
+            if bridge.opts.expose_actions.matches(action)
+                && let Some(t) = names::action_type(s.type_name())
+            {
+                actions.insert(action.to_owned(), t);
+            }
+        } else if !names::is_hidden(&service)
+            && bridge.opts.expose.matches(&service)
+            && let Some(t) = names::service_type(s.type_name())
+        {
+            services.insert(service, t);
+        }
+    }
+    let known: HashSet<String> = bridge.lock().remotes.keys().cloned().collect();
+    for name in known
+        .iter()
+        .filter(|n| !services.contains_key(*n) && !actions.contains_key(*n))
+    {
+        if let Some(r) = bridge.lock().remotes.remove(name) {
+            r.abort();
+            if let Ok(n) = TopicName::parse(name) {
+                bridge.router.calls.unadvertise(bridge.client, &n);
+            }
+            tracing::info!("ros2: local server of {name} went away");
+        }
+    }
+    for (name, t) in services {
+        if !known.contains(&name) {
+            expose(bridge, &name, &t, false);
+        }
+    }
+    for (name, t) in actions {
+        if !known.contains(&name) {
+            expose(bridge, &name, &t, true);
+        }
+    }
+}
+
+/// This bridge's client id in request headers: from its participant's GUID, so two agents
+/// on one graph never read each other's replies.
+fn client_id(bridge: &Bridge) -> u64 {
+    let p = bridge.own.prefix.as_ref();
+    let mut b = [0u8; 8];
+    b.copy_from_slice(&p[4..12]);
+    u64::from_le_bytes(b)
+}
+
+fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool) {
+    let Some(schema) = bridge.schema(type_name) else {
+        bridge.report_once(name, &bridge.stats.unknown_types, || {
+            format!(
+                "ros2: not exposing {name}: type {type_name} is unknown to the agent's registry; \
+                 give the agent its package with --msg-path DIR"
+            )
+        });
+        return;
+    };
+    let Ok(topic_name) = TopicName::parse(name) else {
+        return;
+    };
+    let client = client_id(bridge);
+    let made = if action {
+        make_action(bridge, name, type_name, client)
+    } else {
+        Endpoint::new(bridge, name, type_name, client).map(|(call, reader)| {
+            let task = tokio::spawn(call.clone().pump(reader)).abort_handle();
+            (
+                RemoteKind::Service {
+                    srv_type: type_name.to_owned(),
+                    call,
+                },
+                vec![task],
+            )
+        })
+    };
+    let (kind, tasks) = match made {
+        Ok(k) => k,
+        Err(e) => {
+            tracing::warn!("ros2: cannot expose {name}: {e}");
+            return;
+        }
+    };
+    tracing::info!(
+        "ros2: exposing local {} {name} ({type_name}) to the fleet",
+        if action { "action" } else { "service" }
+    );
+    bridge.lock().remotes.insert(
+        name.to_owned(),
+        Arc::new(Remote {
+            name: name.to_owned(),
+            kind,
+            tasks,
+        }),
+    );
+    bridge
+        .router
+        .calls
+        .advertise(bridge.client, topic_name, schema, action);
+}
+
+fn make_action(
+    bridge: &Arc<Bridge>,
+    name: &str,
+    action_type: &str,
+    client: u64,
+) -> Result<(RemoteKind, Vec<AbortHandle>), String> {
+    let part = |p: &str| format!("{name}/_action/{p}");
+    let (send_goal, r1) = Endpoint::new(
+        bridge,
+        &part("send_goal"),
+        &format!("{action_type}_SendGoal"),
+        client,
+    )?;
+    let (get_result, r2) = Endpoint::new(
+        bridge,
+        &part("get_result"),
+        &format!("{action_type}_GetResult"),
+        client,
+    )?;
+    let (cancel_goal, r3) = Endpoint::new(
+        bridge,
+        &part("cancel_goal"),
+        "action_msgs/srv/CancelGoal",
+        client,
+    )?;
+    let feedback_type = names::dds_type(&format!("{action_type}_FeedbackMessage"))
+        .ok_or_else(|| format!("{action_type} is not a ROS type name"))?;
+    let feedback = bridge.reader(
+        &names::topic(&part("feedback")),
+        &feedback_type,
+        qos::reader_for(None, None),
+    )?;
+    let tasks = vec![
+        tokio::spawn(send_goal.clone().pump(r1)).abort_handle(),
+        tokio::spawn(get_result.clone().pump(r2)).abort_handle(),
+        tokio::spawn(cancel_goal.clone().pump(r3)).abort_handle(),
+        tokio::spawn(pump_feedback(bridge.clone(), name.to_owned(), feedback)).abort_handle(),
+    ];
+    Ok((
+        RemoteKind::Action {
+            action_type: action_type.to_owned(),
+            send_goal,
+            get_result,
+            cancel_goal,
+            goals: Mutex::new(HashMap::new()),
+        },
+        tasks,
+    ))
+}
+
+/// Feedback samples of `action`'s goals → the goals' callers. A feedback message is the
+/// goal's UUID (16 bytes, so the feedback after it keeps its alignment) then the feedback.
+async fn pump_feedback(bridge: Arc<Bridge>, action: String, reader: RawReader) {
+    let mut samples = reader.async_sample_stream();
+    while let Some(r) = samples.next().await {
+        let Ok(sample) = r else { continue };
+        let raw = sample.into_value().0;
+        let Some(uuid) = raw.get(4..20).and_then(|u| <[u8; 16]>::try_from(u).ok()) else {
+            continue;
+        };
+        let Some(remote) = bridge.lock().remotes.get(&action).cloned() else {
+            return;
+        };
+        let RemoteKind::Action { goals, .. } = &remote.kind else {
+            return;
+        };
+        let id = goals
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .get(&uuid)
+            .copied();
+        if let Some(id) = id {
+            let mut fb = Vec::with_capacity(raw.len() - 16);
+            fb.extend_from_slice(&raw[..4]);
+            fb.extend_from_slice(&raw[20..]);
+            bridge
+                .router
+                .calls
+                .feedback(bridge.client, id, Payload::new(Encoding::Cdr, fb));
+        }
+    }
+}
+
+/// The call table's messages for this bridge.
+pub(crate) fn on_peer(bridge: &Arc<Bridge>, m: PeerMsg) {
+    match m {
+        PeerMsg::Call(req) => {
+            let remote = bridge
+                .lock()
+                .remotes
+                .get(req.service.name.as_str())
+                .cloned();
+            let bridge = bridge.clone();
+            tokio::spawn(async move {
+                match remote {
+                    Some(r) => serve(&bridge, &r, req).await,
+                    None => {
+                        let text =
+                            format!("{} is not exposed by the ROS 2 bridge", req.service.name);
+                        bridge.router.calls.respond(
+                            bridge.client,
+                            req.id,
+                            CallStatus::NoProvider,
+                            None,
+                            text,
+                        );
+                    }
+                }
+            });
+        }
+        PeerMsg::Cancel(id) => {
+            let goal = bridge.lock().goals.get(&id).cloned();
+            if let Some((remote, uuid)) = goal {
+                tokio::spawn(async move { cancel(&remote, uuid).await });
+            }
+        }
+        PeerMsg::Event(ev) => answer_local(bridge, ev),
+        PeerMsg::Changed(ServiceChange::Added(info)) => {
+            let name = info.name.as_str();
+            if info.action || info.provider == bridge.client || !bridge.opts.offer.matches(name) {
+                return;
+            }
+            offer(bridge, name, &info.schema.type_name);
+        }
+        PeerMsg::Changed(ServiceChange::Removed(info)) => {
+            if let Some(o) = bridge.lock().offered.remove(info.name.as_str()) {
+                o.task.abort();
+                tracing::info!(
+                    "ros2: fleet service {} is gone: no longer offered",
+                    info.name
+                );
+            }
+        }
+    }
+}
+
+/// A fleet call or goal for a local server, answered in the call table.
+async fn serve(bridge: &Bridge, remote: &Arc<Remote>, req: CallRequest) {
+    let limit = req.deadline.map_or(bridge.opts.call_timeout, |d| {
+        d.saturating_duration_since(Instant::now())
+    });
+    let outcome = tokio::time::timeout(limit, async {
+        match &remote.kind {
+            RemoteKind::Service { srv_type, call } => {
+                let body = bridge.to_cdr(&format!("{srv_type}_Request"), &req.payload)?;
+                let reply = call.request(&body).await?;
+                Ok((
+                    CallStatus::Ok,
+                    Some(Payload::new(Encoding::Cdr, reply)),
+                    String::new(),
+                ))
+            }
+            RemoteKind::Action { .. } => goal(bridge, remote, &req).await,
+        }
+    })
+    .await;
+    let (status, payload, text) = match outcome {
+        Ok(Ok(answer)) => answer,
+        Ok(Err(text)) => (CallStatus::Failed, None, text),
+        Err(_) => (
+            CallStatus::Timeout,
+            None,
+            format!("{} did not answer within {limit:?}", remote.name),
+        ),
+    };
+    bridge.lock().goals.remove(&req.id);
+    if let RemoteKind::Action { goals, .. } = &remote.kind {
+        goals
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .retain(|_, id| *id != req.id);
+    }
+    bridge
+        .router
+        .calls
+        .respond(bridge.client, req.id, status, payload, text);
+}
+
+type Answer = (CallStatus, Option<Payload>, String);
+
+/// A goal: `send_goal`, then `get_result` (feedback flows meanwhile).
+async fn goal(bridge: &Bridge, remote: &Arc<Remote>, req: &CallRequest) -> Result<Answer, String> {
+    let RemoteKind::Action {
+        action_type,
+        send_goal,
+        get_result,
+        goals,
+        ..
+    } = &remote.kind
+    else {
+        return Err("not an action".into());
+    };
+    let uuid = req.goal_id.unwrap_or_default();
+    let goal = bridge.to_cdr(&format!("{action_type}_Goal"), &req.payload)?;
+    let mut msg = Vec::with_capacity(goal.len() + 16);
+    msg.extend_from_slice(&CDR_LE_HEADER);
+    msg.extend_from_slice(&uuid);
+    msg.extend_from_slice(goal.get(4..).unwrap_or_default());
+    goals
+        .lock()
+        .unwrap_or_else(|p| p.into_inner())
+        .insert(uuid, req.id);
+    bridge.lock().goals.insert(req.id, (remote.clone(), uuid));
+    let accepted = send_goal.request(&msg).await?;
+    if accepted.get(4).copied().unwrap_or(0) == 0 {
+        return Ok((
+            CallStatus::Failed,
+            None,
+            format!("{} rejected the goal", remote.name),
+        ));
+    }
+    let mut ask = Vec::with_capacity(20);
+    ask.extend_from_slice(&CDR_LE_HEADER);
+    ask.extend_from_slice(&uuid);
+    let reply = get_result.request(&ask).await?;
+    // `{int8 status, T_Result result}`: the result is not aligned as a message of its
+    // own, so the registry reads the whole answer once.
+    let schema = Schema {
+        type_name: format!("{action_type}_GetResult_Response"),
+        encoding: "ros2msg".into(),
+        text: String::new(),
+    };
+    let json = bridge
+        .router
+        .transcoder()
+        .convert(&schema, &Payload::new(Encoding::Cdr, reply), Encoding::Json)
+        .map_err(|e| e.to_string())?;
+    let v: serde_json::Value = serde_json::from_slice(&json).map_err(|e| e.to_string())?;
+    let status = match v.get("status").and_then(|s| s.as_i64()) {
+        Some(4) => CallStatus::Ok,
+        Some(5) => CallStatus::Cancelled,
+        _ => CallStatus::Aborted,
+    };
+    let result = serde_json::to_vec(v.get("result").unwrap_or(&serde_json::Value::Null))
+        .map_err(|e| e.to_string())?;
+    let text = match status {
+        CallStatus::Ok => String::new(),
+        CallStatus::Cancelled => format!("{} cancelled the goal", remote.name),
+        _ => format!("{} aborted the goal", remote.name),
+    };
+    Ok((status, Some(Payload::new(Encoding::Json, result)), text))
+}
+
+/// Asks a local action server to cancel a goal (`cancel_goal` with the goal's UUID and a
+/// zero stamp); the goal's `get_result` then ends it.
+async fn cancel(remote: &Remote, uuid: [u8; 16]) {
+    let RemoteKind::Action { cancel_goal, .. } = &remote.kind else {
+        return;
+    };
+    let mut msg = Vec::with_capacity(28);
+    msg.extend_from_slice(&CDR_LE_HEADER);
+    msg.extend_from_slice(&uuid);
+    msg.extend_from_slice(&[0u8; 8]);
+    if let Err(e) = cancel_goal.request(&msg).await {
+        tracing::debug!("ros2: cancelling a goal of {}: {e}", remote.name);
+    }
+}
+
+/// Offers fleet service `name` to local clients.
+fn offer(bridge: &Arc<Bridge>, name: &str, type_name: &str) {
+    if bridge.lock().offered.contains_key(name) {
+        return;
+    }
+    let srv_type = type_name.trim_end_matches("_Request").to_owned();
+    let made = (|| {
+        let dds = |suffix: &str| {
+            names::dds_type(&format!("{srv_type}{suffix}"))
+                .ok_or_else(|| format!("{srv_type:?} is not a ROS service type name"))
+        };
+        let requests = bridge.reader(
+            &names::request_topic(name),
+            &dds("_Request")?,
+            qos::service(),
+        )?;
+        let replies = bridge.writer(
+            &names::reply_topic(name),
+            &dds("_Response")?,
+            qos::service(),
+        )?;
+        Ok::<_, String>((requests, replies))
+    })();
+    let (requests, replies) = match made {
+        Ok(m) => m,
+        Err(e) => {
+            tracing::warn!("ros2: cannot offer fleet service {name} to local nodes: {e}");
+            return;
+        }
+    };
+    let task =
+        tokio::spawn(pump_requests(bridge.clone(), name.to_owned(), requests)).abort_handle();
+    tracing::info!("ros2: offering fleet service {name} ({srv_type}) to local nodes");
+    bridge.lock().offered.insert(
+        name.to_owned(),
+        Arc::new(Offered {
+            srv_type,
+            replies,
+            task,
+        }),
+    );
+}
+
+/// Local clients' requests of an offered fleet service → fleet calls.
+async fn pump_requests(bridge: Arc<Bridge>, service: String, reader: RawReader) {
+    let Ok(name) = TopicName::parse(&service) else {
+        return;
+    };
+    let mut samples = reader.async_sample_stream();
+    while let Some(r) = samples.next().await {
+        let Ok(sample) = r else { continue };
+        if bridge.is_own(sample.sample_info().writer_guid()) {
+            continue;
+        }
+        let raw = sample.into_value().0;
+        let (Some(header), Some(msg)) = (RequestHeader::read(&raw), RequestHeader::strip(&raw))
+        else {
+            continue;
+        };
+        let opts = CallOptions {
+            timeout: Some(bridge.opts.call_timeout),
+            goal: false,
+            goal_id: None,
+        };
+        match bridge
+            .router
+            .calls
+            .call(bridge.client, &name, Payload::new(Encoding::Cdr, msg), opts)
+        {
+            Ok(id) => {
+                bridge.lock().local_calls.insert(
+                    id,
+                    LocalCall {
+                        service: service.clone(),
+                        header,
+                    },
+                );
+            }
+            Err(e) => tracing::warn!("ros2: a local call of {service} was refused: {}", e.text),
+        }
+    }
+}
+
+/// The end of a local caller's fleet call: the reply, written with the caller's header.
+fn answer_local(bridge: &Bridge, ev: CallEvent) {
+    let CallEvent::Done {
+        id,
+        status,
+        payload,
+        text,
+    } = ev
+    else {
+        return;
+    };
+    let (call, offered) = {
+        let mut st = bridge.lock();
+        let Some(call) = st.local_calls.remove(&id) else {
+            return;
+        };
+        let offered = st.offered.get(&call.service).cloned();
+        (call, offered)
+    };
+    let Some(offered) = offered else {
+        return;
+    };
+    let Some(payload) = payload.filter(|_| status == CallStatus::Ok) else {
+        // ROS 2 services have no error reply: the local client times out.
+        tracing::warn!(
+            "ros2: a local call of {} failed ({status:?}): {text}",
+            call.service
+        );
+        return;
+    };
+    match bridge.to_cdr(&format!("{}_Response", offered.srv_type), &payload) {
+        Ok(body) => {
+            if let Err(e) = offered
+                .replies
+                .write(RawCdr(call.header.prepend(&body)), None)
+            {
+                tracing::debug!("ros2: replying to a local call of {}: {e:?}", call.service);
+            }
+        }
+        Err(e) => tracing::warn!(
+            "ros2: the answer of {} cannot be sent to the local caller: {e}",
+            call.service
+        ),
+    }
+}
