@@ -40,8 +40,33 @@ enum Command {
     QoiSim(cmd::qoi_sim::Args),
 }
 
-fn main() -> anyhow::Result<()> {
-    let cli = Cli::parse();
+fn main() -> std::process::ExitCode {
+    // A user's error is one line saying what is wrong and what to do: never a backtrace
+    // (even with RUST_BACKTRACE set), never the `Debug` form of the error chain.
+    match run(Cli::parse()) {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", error_text(&e));
+            std::process::ExitCode::FAILURE
+        }
+    }
+}
+
+/// An error and its causes on one line, each cause once: errors that already quote their
+/// source in their own text are not followed by it again ("X: X").
+fn error_text(e: &anyhow::Error) -> String {
+    let mut text = e.to_string();
+    for cause in e.chain().skip(1) {
+        let c = cause.to_string();
+        if !text.contains(&c) {
+            text.push_str(": ");
+            text.push_str(&c);
+        }
+    }
+    text
+}
+
+fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Command::Hub(args) => cmd::hub::run(args),
         Command::Agent(args) => cmd::agent::run(args),
@@ -71,4 +96,22 @@ pub fn transcoder(
     Ok(Arc::new(
         fleetlink_relay::transcode::RegistryTranscoder::new(registry),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::error_text;
+
+    #[test]
+    fn causes_are_shown_once() {
+        let io = std::io::Error::new(std::io::ErrorKind::NotFound, "no such file");
+        let quoted = anyhow::Error::new(io).context("robot.yaml: cannot read config: no such file");
+        assert_eq!(
+            error_text(&quoted),
+            "robot.yaml: cannot read config: no such file"
+        );
+        let io = std::io::Error::new(std::io::ErrorKind::NotFound, "no such file");
+        let plain = anyhow::Error::new(io).context("loading --msg-path msgs");
+        assert_eq!(error_text(&plain), "loading --msg-path msgs: no such file");
+    }
 }

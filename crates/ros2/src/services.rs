@@ -261,7 +261,14 @@ fn client_id(bridge: &Bridge) -> u64 {
 }
 
 fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool) {
-    let Some(schema) = bridge.schema(type_name) else {
+    // A service or action is known when its request (goal) part is; the registry may
+    // or may not have a full text for the whole interface.
+    let part = format!("{type_name}{}", if action { "_Goal" } else { "_Request" });
+    let Some(schema) = bridge.schema(&part).map(|_| {
+        bridge
+            .schema(type_name)
+            .unwrap_or_else(|| Schema::named(type_name))
+    }) else {
         bridge.report_once(name, &bridge.stats.unknown_types, || {
             format!(
                 "ros2: not exposing {name}: type {type_name} is unknown to the agent's registry; \
