@@ -128,6 +128,7 @@ fn ros2_options(
         expose: NameFilter::new(&r.services.expose, &r.services.exclude)?,
         offer: NameFilter::new(&r.services.offer, &[])?,
         expose_actions: NameFilter::new(&r.actions.expose, &r.actions.exclude)?,
+        offer_actions: NameFilter::new(&r.actions.offer, &[])?,
         discovery_period: r.discovery(),
         call_timeout: r.call_timeout(),
     })

@@ -24,6 +24,7 @@ use tokio::task::AbortHandle;
 use tokio_util::sync::CancellationToken;
 
 use crate::names::{self, DdsName};
+use crate::offered_actions::OfferedAction;
 use crate::options::Ros2Options;
 use crate::raw::{RawAdapter, RawCdr};
 use crate::services::{self, Offered, Remote};
@@ -76,6 +77,10 @@ pub(crate) struct State {
     pub(crate) local_calls: HashMap<u64, services::LocalCall>,
     /// Fleet goals sent to local action servers, by call id.
     pub(crate) goals: HashMap<u64, (Arc<Remote>, [u8; 16])>,
+    /// Fleet actions served to local clients, by name.
+    pub(crate) offered_actions: HashMap<String, Arc<OfferedAction>>,
+    /// Local clients' goals of fleet actions, by call id.
+    pub(crate) offered_goals: HashMap<u64, Arc<OfferedAction>>,
 }
 
 /// The bridge's shared half: the participant, the router client and the state.
@@ -227,7 +232,13 @@ pub async fn run(
         "ros2: joined DDS domain {domain} as participant {:?}",
         bridge.dp.guid().prefix
     );
-    for re in &bridge.opts.offer.include {
+    for re in bridge
+        .opts
+        .offer
+        .include
+        .iter()
+        .chain(&bridge.opts.offer_actions.include)
+    {
         router.calls.watch(client, re.clone());
     }
     for name in &bridge.opts.subscribe {
@@ -263,6 +274,9 @@ pub async fn run(
     }
     for o in st.offered.values() {
         o.task.abort();
+    }
+    for a in st.offered_actions.values() {
+        a.abort();
     }
     router.disconnect(client);
     let s = &bridge.stats;

@@ -17,10 +17,12 @@
 //! - [`names`]: ROS 2 names ⇄ DDS topic and type names.
 //! - [`qos`]: DDS QoS for the readers and writers the bridge creates.
 //! - [`bridge`]: the participant, discovery, topics both ways ([`run`]).
-//! - [`services`]: services and actions both ways.
+//! - [`services`]: services both ways, local action servers exposed to the fleet.
+//! - [`offered_actions`]: fleet actions served to local action clients.
 
 pub mod bridge;
 pub mod names;
+pub mod offered_actions;
 pub mod options;
 pub mod qos;
 pub mod raw;

@@ -19,6 +19,8 @@ pub struct Ros2Options {
     pub offer: NameFilter,
     /// Local ROS 2 action servers offered to the fleet.
     pub expose_actions: NameFilter,
+    /// Fleet actions served to local ROS 2 action clients.
+    pub offer_actions: NameFilter,
     /// How often the discovered endpoints are looked at.
     pub discovery_period: Duration,
     /// How long a local caller's fleet call may take.

@@ -436,23 +436,54 @@ pub(crate) fn on_peer(bridge: &Arc<Bridge>, m: PeerMsg) {
                 tokio::spawn(async move { cancel(&remote, uuid).await });
             }
         }
-        PeerMsg::Event(ev) => answer_local(bridge, ev),
+        PeerMsg::Event(ev) => {
+            let action = bridge.lock().offered_goals.get(&ev.id()).cloned();
+            match action {
+                Some(a) => crate::offered_actions::on_event(bridge, &a, ev),
+                None => answer_local(bridge, ev),
+            }
+        }
         PeerMsg::Changed(ServiceChange::Added(info)) => {
             let name = info.name.as_str();
-            if info.action || info.provider == bridge.client || !bridge.opts.offer.matches(name) {
+            if info.provider == bridge.client {
                 return;
             }
-            offer(bridge, name, &info.schema.type_name);
-        }
-        PeerMsg::Changed(ServiceChange::Removed(info)) => {
-            if let Some(o) = bridge.lock().offered.remove(info.name.as_str()) {
-                o.task.abort();
-                tracing::info!(
-                    "ros2: fleet service {} is gone: no longer offered",
-                    info.name
-                );
+            if info.action && bridge.opts.offer_actions.matches(name) {
+                offer_action(bridge, name, &info.schema.type_name);
+            } else if !info.action && bridge.opts.offer.matches(name) {
+                offer(bridge, name, &info.schema.type_name);
             }
         }
+        PeerMsg::Changed(ServiceChange::Removed(info)) => {
+            let name = info.name.as_str();
+            let (service, action) = {
+                let mut st = bridge.lock();
+                (st.offered.remove(name), st.offered_actions.remove(name))
+            };
+            if let Some(o) = &service {
+                o.task.abort();
+            }
+            if let Some(a) = &action {
+                a.abort();
+            }
+            if service.is_some() || action.is_some() {
+                tracing::info!("ros2: fleet {name} is gone: no longer offered to local nodes");
+            }
+        }
+    }
+}
+
+/// Serves fleet action `name` to local action clients.
+fn offer_action(bridge: &Arc<Bridge>, name: &str, type_name: &str) {
+    if bridge.lock().offered_actions.contains_key(name) {
+        return;
+    }
+    match crate::offered_actions::offer(bridge, name, type_name) {
+        Ok(a) => {
+            tracing::info!("ros2: offering fleet action {name} ({type_name}) to local nodes");
+            bridge.lock().offered_actions.insert(name.to_owned(), a);
+        }
+        Err(e) => tracing::warn!("ros2: cannot offer fleet action {name} to local nodes: {e}"),
     }
 }
 

@@ -49,6 +49,8 @@ pub struct Ros2Actions {
     pub expose: Vec<String>,
     /// Local action servers never exposed.
     pub exclude: Vec<String>,
+    /// Fleet actions (as the agent names them) served to local ROS 2 action clients.
+    pub offer: Vec<String>,
 }
 
 impl Ros2Config {

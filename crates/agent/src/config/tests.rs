@@ -472,3 +472,35 @@ fn ros2_errors_name_the_field() {
         "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms",
     );
 }
+
+/// Issue 11: the `ros2:` section, from the commented example and the reference's snippet.
+#[test]
+fn ros2_examples_parse_and_become_options() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let cfg = AgentConfig::load(&root.join("examples/ros2-robot.yaml"))
+        .expect("examples/ros2-robot.yaml");
+    let ros2 = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .ros2
+        .expect("ros2 options");
+    assert_eq!(ros2.domain_id, 0);
+    assert!(ros2.publish.matches("/scan") && !ros2.publish.matches("/camera/raw"));
+    assert!(ros2.expose.matches("/set_mode") && !ros2.expose.matches("/node/list_parameters"));
+    assert!(ros2.expose_actions.matches("/navigate_to_pose"));
+    assert!(ros2.offer.matches("/cloud/plan") && ros2.offer_actions.matches("/cloud/dock"));
+
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\nros2:")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("the ros2 block in docs/config.md");
+    let cfg = AgentConfig::from_str(&format!("ros2:{block}"), "docs/config.md")
+        .expect("docs ros2 example is valid");
+    let ros2 = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .ros2
+        .expect("ros2 options");
+    assert!(ros2.publish.matches("/odom") && !ros2.publish.matches("/camera/raw"));
+    assert!(ros2.offer_actions.matches("/cloud/dock"));
+}

@@ -220,6 +220,7 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
         (at.key("services").key("offer"), &r.services.offer),
         (at.key("actions").key("expose"), &r.actions.expose),
         (at.key("actions").key("exclude"), &r.actions.exclude),
+        (at.key("actions").key("offer"), &r.actions.offer),
     ];
     check_patterns(lists)?;
     check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
