@@ -56,12 +56,22 @@ pub fn writer(latched: bool) -> QosPolicies {
         .build()
 }
 
-/// Request and reply topics: what ROS 2 uses for services (reliable, volatile, depth 10).
+/// How many requests (or replies) of one service may be in flight at once: a keep-last
+/// writer forgets unacknowledged samples beyond its depth, so a burst of concurrent
+/// calls needs room for all of them (the call table bounds pending calls per provider
+/// at 1024 by default).
+pub const SERVICE_DEPTH: i32 = 1024;
+
+/// Request and reply topics: reliable and volatile as ROS 2 services are, with room for
+/// [`SERVICE_DEPTH`] calls in flight (ROS 2's default depth of 10 would lose the 11th
+/// concurrent request).
 pub fn service() -> QosPolicies {
     QosPolicyBuilder::new()
         .reliability(reliable())
         .durability(Durability::Volatile)
-        .history(History::KeepLast { depth: DEPTH })
+        .history(History::KeepLast {
+            depth: SERVICE_DEPTH,
+        })
         .build()
 }
 

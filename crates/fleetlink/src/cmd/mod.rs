@@ -34,9 +34,13 @@ pub async fn shutdown_signal() {
 
 /// Logs to stderr; `RUST_LOG` overrides the default level.
 pub fn init_logging(default: &str) {
-    // rustdds narrates every socket and match at info; only its warnings are ours to show.
+    // rustdds narrates every socket and match at info, and warns about every datagram
+    // over its MTU guess and every long fragment NACK (normal for 1 MB samples): only
+    // its other warnings are worth showing.
     let filter = tracing_subscriber::EnvFilter::try_from_default_env()
-        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(format!("{default},rustdds=warn")));
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(format!(
+            "{default},rustdds=warn,rustdds::structure::sequence_number=off,rustdds::network::udp_sender=error"
+        )));
     let _ = tracing_subscriber::fmt()
         .with_env_filter(filter)
         .with_writer(std::io::stderr)

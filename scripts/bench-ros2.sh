@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Robot-side cost of bridging a ROS 2 PointCloud2 stream (issue 11's benchmark): a Cyclone
+# DDS node writes ~1 MB sensor_msgs/msg/PointCloud2 at 10 Hz on /points; the fleetlink
+# agent (ros2: publish /points) carries it to a hub, where a rosbridge client measures
+# latency from header.stamp. Side by side, in the same run and from the same DDS writer,
+# a rosbridge-style bridge (decode, JSON with base64 data, WebSocket) feeds its own client.
+# Reports each bridge's CPU (% of one core, from /proc/<pid>/stat over the measured
+# window) and memory (VmRSS at the end, VmHWM), and latency p50/p99.
+#
+#   cargo build --release -p fleetlink && sudo scripts/bench-ros2.sh [SECONDS] [POINTS]
+#
+# Runs in a network namespace of its own (DDS multicast stays in it): needs root.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+python="${PYTHON:-$root/.venv/bin/python}"
+seconds="${1:-30}"
+npoints="${2:-65536}"
+[ -x "$bin" ] || { echo "build first: cargo build --release -p fleetlink" >&2; exit 1; }
+[ "$(id -u)" -eq 0 ] || { echo "needs root (network namespace): sudo $0" >&2; exit 1; }
+"$python" -c 'import cyclonedds, cbor2, websockets' 2>/dev/null \
+    || { echo "run scripts/setup.d/35-ros2-peers.sh first" >&2; exit 1; }
+
+tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-ros2.XXXXXX")"
+ns="flbench2-$$"
+pids=()
+cleanup() {
+    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
+    wait 2>/dev/null || true
+    ip netns del "$ns" 2>/dev/null || true
+    rm -rf "$tmp"
+}
+trap cleanup EXIT
+ip netns add "$ns"
+ip netns exec "$ns" ip link set lo up
+ip netns exec "$ns" ip link set lo multicast on
+ip netns exec "$ns" ip route add 224.0.0.0/4 dev lo
+in_ns() { ip netns exec "$ns" "$@"; }
+export ROS_DOMAIN_ID=42 PYTHONPATH="$root/tests/interop/ros2"
+peer() { in_ns "$python" "$root/tests/interop/ros2/bench_peer.py" "$@"; }
+wait_line() { # file pattern
+    for _ in $(seq 200); do grep -q "$2" "$1" 2>/dev/null && return 0; sleep 0.05; done
+    echo "timed out waiting for '$2' in $1" >&2; cat "$1" >&2; exit 1
+}
+
+robot_token="$("$bin" admin --data-dir "$tmp/hub" token robot robot1)"
+op_token="$("$bin" admin --data-dir "$tmp/hub" token operator bench --group admin)"
+in_ns "$bin" hub --listen 127.0.0.1:18081 --data-dir "$tmp/hub" >"$tmp/hub.log" 2>&1 &
+pids+=($!)
+wait_line "$tmp/hub.log" "listening on"
+cat >"$tmp/agent.yaml" <<EOF
+hub: ws://127.0.0.1:18081/
+name: robot1
+token: $robot_token
+local_rosbridge: { listen: "127.0.0.1:18083" }
+ros2:
+  publish: { include: [/points] }
+EOF
+in_ns "$bin" agent --config "$tmp/agent.yaml" >"$tmp/agent.log" 2>&1 &
+pids+=($!)
+peer rosbridge-style --port 18082 >"$tmp/style.log" 2>&1 &
+pids+=($!)
+wait_line "$tmp/style.log" "ready"
+peer publish --seconds "$((seconds + 8))" --points "$npoints" >"$tmp/pub.log" 2>&1 &
+pids+=($!)
+# The bridges' pids inside the namespace are ordinary pids: find them by command line.
+sleep 3
+agent_pid="$(pgrep -f "^$bin agent --config $tmp/agent.yaml" | head -n1)"
+style_pid="$(pgrep -f "^$python .*bench_peer.py rosbridge-style" | head -n1)"
+[ -n "$agent_pid" ] && [ -n "$style_pid" ] || { echo "bridge processes not found" >&2; exit 1; }
+peer hub-sub --url "ws://127.0.0.1:18081/?token=$op_token" --seconds "$seconds" >"$tmp/hubsub.log" 2>&1 &
+pids+=($!)
+hubsub=$!
+# The floor: a Cyclone subscriber on the robot, no bridge at all.
+peer dds-sub --seconds "$seconds" >"$tmp/ddssub.log" 2>&1 &
+pids+=($!)
+if [ -n "${LOCAL_PROBE:-}" ]; then peer hub-sub --url "ws://127.0.0.1:18083/" --topic /points --seconds "$seconds" >"$tmp/localsub.log" 2>&1 & pids+=($!); fi
+peer style-sub --url "ws://127.0.0.1:18082/" --seconds "$seconds" >"$tmp/stylesub.log" 2>&1 &
+pids+=($!)
+stylesub=$!
+wait_line "$tmp/hubsub.log" "ready"
+wait_line "$tmp/stylesub.log" "ready"
+
+ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
+hz="$(getconf CLK_TCK)"
+t0=$(date +%s.%N); a0=$(ticks "$agent_pid"); s0=$(ticks "$style_pid")
+wait "$hubsub" "$stylesub" || true
+t1=$(date +%s.%N); a1=$(ticks "$agent_pid"); s1=$(ticks "$style_pid")
+mem() { awk '/^VmRSS|^VmHWM/ {printf "%s %.1f MB  ", $1, $2/1024}' "/proc/$1/status"; }
+cpu() { awk -v a="$1" -v b="$2" -v t0="$t0" -v t1="$t1" -v hz="$hz" 'BEGIN {printf "%.2f", 100 * (b - a) / hz / (t1 - t0)}'; }
+
+size=$((npoints * 16))
+echo "ROS 2 bridging, PointCloud2 of $npoints points ($size data bytes) at 10 Hz, ${seconds} s measured"
+echo "machine: $(nproc) cores, $(awk -F: '/model name/ {print $2; exit}' /proc/cpuinfo | sed 's/^ *//')"
+printf '%-34s cpu %6s %% of one core  %s latency %s\n' "fleetlink agent (+ hub)" "$(cpu "$a0" "$a1")" "$(mem "$agent_pid")" "$(tail -n1 "$tmp/hubsub.log")"
+printf '%-34s cpu %6s %% of one core  %s latency %s\n' "rosbridge-style Python bridge" "$(cpu "$s0" "$s1")" "$(mem "$style_pid")" "$(tail -n1 "$tmp/stylesub.log")"
+printf '%-34s latency %s\n' "DDS subscriber on the robot (floor)" "$(tail -n1 "$tmp/ddssub.log")"
+[ -n "${LOCAL_PROBE:-}" ] && echo "agent's local listener: $(tail -n1 "$tmp/localsub.log")"
+grep -E "WARN|ERROR" "$tmp/agent.log" | head -n 5 || true

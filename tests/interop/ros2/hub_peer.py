@@ -1,0 +1,339 @@
+"""The hub's side of the ros2 interop suite: roslibpy clients of the fleetlink hub (run
+with the repo's .venv python). Hub names are the robot's ROS names under /<robot>; types
+are ROS 2 names (sensor_msgs/msg/LaserScan), values rosbridge JSON.
+
+Modes (all take --hub-url URL --robot NAME):
+  serve OUT --chatter-stop FILE
+                stays running: advertises the fleet service /cloud/greet
+                (std_srvs/srv/Trigger), publishes a latched /<robot>/announce
+                (std_msgs/msg/String) once, /<robot>/cmd_vel (geometry_msgs/msg/Twist) at
+                5 Hz and, until FILE exists, /<robot>/chatter ("hub-N"); a second client
+                counts what it sees on /<robot>/chatter. Writes the counts to OUT (JSON)
+                every 0.2 s. Prints "serve ready".
+  check-up      /<robot>/scan, /<robot>/points (100k points) and /<robot>/battery (a type
+                only the robot's --msg-path knows) arrive with the values ros2_peer.py
+                sent.
+  check-latched /<robot>/robot_description (transient_local on the robot, published before
+                the agent started) arrives, and a client subscribing after that still
+                gets it (latched at the hub).
+  check-calls   /<robot>/add_two_ints answers, also many calls in flight at once, each
+                with its own sum.
+  check-action  the action /<robot>/fibonacci: order 5 gives feedback and SUCCEEDED with
+                [0, 1, 1, 2, 3, 5]; order 50 cancelled after its first feedback ends
+                CANCELED.
+  check-late    /<robot>/late_topic (a participant started after the agent) arrives.
+  serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
+                rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
+                "serve-fib ready".
+Exit status 0 when every check passed; each check prints "ok: ..." or "FAIL: ...".
+"""
+import argparse
+import json
+import os
+import queue
+import sys
+import threading
+import time
+import urllib.parse
+
+import roslibpy
+from roslibpy.core import GoalStatus
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import expected as E  # noqa: E402
+
+WAIT = 20.0
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok: " if ok else "FAIL: ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+    return ok
+
+
+def connect(url):
+    u = urllib.parse.urlparse(url)
+    # roslibpy builds the URL from host and port: the token goes in a header instead.
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers=headers)
+    ros.run(timeout=10)
+    # roslibpy has no handler for 'status' ops; print them: they explain failed checks.
+    proto = ros.factory._proto
+    if proto is not None:
+        proto._message_handlers["status"] = lambda m: print(f"    status op from the hub: {dict(m)}", flush=True)
+    return ros
+
+
+def first(ros, name, ty, wait=WAIT, want=lambda m: True):
+    """The first message on `name` (None after `wait` seconds)."""
+    q = queue.Queue()
+    t = roslibpy.Topic(ros, name, ty)
+    t.subscribe(lambda m: want(m) and q.put(m))
+    try:
+        return q.get(timeout=wait)
+    except queue.Empty:
+        return None
+    finally:
+        t.unsubscribe()
+
+
+def short(v, n=200):
+    s = json.dumps(v, default=str) if not isinstance(v, str) else v
+    return s if len(s) <= n else s[:n] + "..."
+
+
+# ---------------------------------------------------------------- checks
+
+def check_up(args):
+    ros = connect(args.hub_url)
+    r = f"/{args.robot}"
+    wanted = (("scan", "sensor_msgs/msg/LaserScan", E.check_scan),
+              ("points", "sensor_msgs/msg/PointCloud2", E.check_cloud),
+              ("battery", "fltest_msgs/msg/Battery", E.check_battery))
+    # All three subscribed at once, one shared deadline.
+    boxes, topics = {}, []
+    for name, ty, _ in wanted:
+        q = boxes[name] = queue.Queue()
+        t = roslibpy.Topic(ros, f"{r}/{name}", ty)
+        t.subscribe(q.put)
+        topics.append(t)
+    deadline = time.monotonic() + WAIT
+    for name, ty, compare in wanted:
+        try:
+            m = boxes[name].get(timeout=max(0.1, deadline - time.monotonic()))
+        except queue.Empty:
+            m = None
+        if check(m is not None, f"{r}/{name} ({ty}) arrives"):
+            problems = compare(dict(m))
+            check(not problems, f"{r}/{name} values equal what the robot sent"
+                  + (f": {'; '.join(problems[:4])}" if problems else ""))
+    for t in topics:
+        t.unsubscribe()
+
+
+def check_latched(args):
+    name = f"/{args.robot}/robot_description"
+    want = E.robot_description()
+    m = first(connect(args.hub_url), name, "std_msgs/msg/String")
+    if not check(m is not None, f"{name} (transient_local on the robot, published before the agent started) "
+                 "arrives at the hub"):
+        return
+    check(m["data"] == want, f"{name}: {len(m['data'])} characters, want the robot's {len(want)}")
+    # This client connects and subscribes only now: it gets the message from the hub's
+    # latch, or not at all (the robot published it once).
+    late = first(connect(args.hub_url), name, "std_msgs/msg/String", wait=5)
+    check(late is not None and late["data"] == want,
+          f"a subscriber started after {name} arrived gets it (latched at the hub)")
+
+
+def check_calls(args):
+    ros = connect(args.hub_url)
+    name = f"/{args.robot}/add_two_ints"
+    svc = roslibpy.Service(ros, name, "example_interfaces/srv/AddTwoInts")
+    # First a single call, retried while the route settles (bounded).
+    deadline, last = time.monotonic() + WAIT, None
+    while True:
+        try:
+            res = dict(svc.call(roslibpy.ServiceRequest({"a": 2, "b": 40}), timeout=5))
+            break
+        except Exception as e:
+            last = f"{type(e).__name__}: {e}"
+            if time.monotonic() > deadline:
+                res = {"error": last}
+                break
+            time.sleep(0.3)
+    if not check(res == {"sum": 42}, f"{name} answered {res}, want {{'sum': 42}}"):
+        return
+    # Then 40 calls in flight at once over two connections. They are issued from this one
+    # thread (roslibpy's id counter is not thread-safe) and answered asynchronously.
+    conns = [ros, connect(args.hub_url)]
+    svcs = [roslibpy.Service(c, name, "example_interfaces/srv/AddTwoInts") for c in conns]
+    done = queue.Queue()
+    t0 = time.monotonic()
+    for k in range(40):
+        a, b = 2**40 + 1000 * k, -7 * k  # int64 values beyond 32 bits
+        svcs[k % 2].call(roslibpy.ServiceRequest({"a": a, "b": b}),
+                         lambda r, a=a, b=b: done.put((a + b, dict(r))),
+                         lambda e, a=a, b=b: done.put((a + b, {"error": str(e)})))
+    got = []
+    try:
+        for _ in range(40):
+            got.append(done.get(timeout=max(0.1, t0 + WAIT - time.monotonic())))
+    except queue.Empty:
+        pass
+    wrong = [(want, r) for want, r in got if r != {"sum": want}]
+    check(len(got) == 40 and not wrong, f"{name}: {len(got) - len(wrong)} of 40 concurrent calls answered with "
+          f"their own sum in {time.monotonic() - t0:.2f} s" + (f"; wrong: {short(wrong[:3])}" if wrong else ""))
+
+
+class Goal:
+    """One goal's feedback and outcome, collected from roslibpy's callbacks."""
+
+    def __init__(self, client, order):
+        self.feedback, self.outcome = [], queue.Queue()
+        self.id = client.send_goal(roslibpy.Goal({"order": order}),
+                                   lambda r: self.outcome.put(("resultback", dict(r))),
+                                   lambda f: self.feedback.append(dict(f)),
+                                   lambda e: self.outcome.put(("errback", dict(e) if hasattr(e, "keys") else e)))
+
+    def wait(self, timeout):
+        try:
+            return self.outcome.get(timeout=timeout)
+        except queue.Empty:
+            return None, None
+
+
+def status_of(res):
+    s = res.get("status") if isinstance(res, dict) else None
+    return s.value if isinstance(s, GoalStatus) else s
+
+
+def check_action(args):
+    ros = connect(args.hub_url)
+    name = f"/{args.robot}/fibonacci"
+    client = roslibpy.ActionClient(ros, name, "example_interfaces/action/Fibonacci")
+    # 1. order 5 to success; resent while the action is not yet known at the hub (bounded).
+    deadline, attempts = time.monotonic() + WAIT, 0
+    while True:
+        attempts += 1
+        goal = Goal(client, 5)
+        kind, res = goal.wait(10)
+        if kind == "resultback" or time.monotonic() > deadline:
+            break
+        if attempts == 1:
+            print(f"    goal 5: {kind} {short(res)}; sending it again until {WAIT:.0f} s have passed", flush=True)
+        time.sleep(0.5)
+    want = E.fibonacci(5)
+    values = res.get("values") if isinstance(res, dict) else None
+    check(kind == "resultback" and status_of(res) == GoalStatus.SUCCEEDED.value and values == {"sequence": want},
+          f"{name} order 5: {kind} status {status_of(res)} values {short(values)}, want SUCCEEDED (4) {want}")
+    fbs = [f.get("sequence") for f in goal.feedback]
+    check(len(fbs) >= 1 and all(isinstance(s, list) and s == want[:len(s)] for s in fbs),
+          f"{name} order 5: {len(fbs)} feedback message(s), each a prefix of the result: {short(fbs)}")
+    # 2. order 50 (5 s on the robot), cancelled after its first feedback.
+    goal = Goal(client, 50)
+    if not check(wait_for(lambda: goal.feedback, 10), f"{name} order 50: first feedback"):
+        return
+    t0 = time.monotonic()
+    client.cancel_goal(goal.id)
+    kind, res = goal.wait(10)
+    seq = (res.get("values") or {}).get("sequence") if isinstance(res, dict) else None
+    check(status_of(res) == GoalStatus.CANCELED.value,
+          f"{name} order 50 cancelled: {kind} status {status_of(res)} after {time.monotonic() - t0:.2f} s, "
+          f"want CANCELED (5); values {short(res.get('values') if isinstance(res, dict) else res)}")
+    full = E.fibonacci(50)
+    check(seq is None or (isinstance(seq, list) and seq == full[:len(seq)] and len(seq) < len(full)),
+          f"{name} order 50 cancelled: partial result of {len(seq or [])} numbers, a prefix of the full one")
+
+
+def wait_for(cond, timeout):
+    deadline = time.monotonic() + timeout
+    while not cond():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
+def check_late(args):
+    name = f"/{args.robot}/late_topic"
+    m = first(connect(args.hub_url), name, "std_msgs/msg/String")
+    check(m is not None and str(m.get("data", "")).startswith("late-"),
+          f"{name} (a participant started after the agent) arrives at the hub: {m and dict(m)}")
+
+
+# ---------------------------------------------------------------- serve
+
+def serve_fib(args):
+    """A fleet action server at the hub: /cloud/fib (example_interfaces/action/Fibonacci),
+    spoken in plain rosbridge ops (roslibpy has no action server). One step per 0.1 s with
+    feedback; a cancel ends the goal with its partial sequence and status 5."""
+    import websockets.sync.client as wsc
+    with wsc.connect(args.hub_url, max_size=None) as ws:
+        ws.send(json.dumps({"op": "advertise_action", "action": "/cloud/fib",
+                            "type": "example_interfaces/action/Fibonacci"}))
+        print("serve-fib ready", flush=True)
+        goals = {}  # id -> {"seq": [...], "order": n, "next": t}
+        while True:
+            try:
+                m = json.loads(ws.recv(timeout=0.02))
+            except TimeoutError:
+                m = None
+            if m and m.get("op") == "send_action_goal":
+                goals[m["id"]] = {"seq": [0, 1], "order": int(m.get("args", {}).get("order", 0)),
+                                  "next": time.time() + 0.1}
+            elif m and m.get("op") == "cancel_action_goal" and m.get("id") in goals:
+                g = goals.pop(m["id"])
+                ws.send(json.dumps({"op": "action_result", "id": m["id"], "action": "/cloud/fib",
+                                    "values": {"sequence": g["seq"]}, "status": 5, "result": True}))
+            for gid, g in list(goals.items()):
+                if time.time() < g["next"]:
+                    continue
+                g["next"] += 0.1
+                if len(g["seq"]) <= g["order"]:
+                    g["seq"].append((g["seq"][-1] + g["seq"][-2]) & 0x7FFFFFFF)
+                    ws.send(json.dumps({"op": "action_feedback", "id": gid, "action": "/cloud/fib",
+                                        "values": {"sequence": g["seq"]}}))
+                else:
+                    goals.pop(gid)
+                    ws.send(json.dumps({"op": "action_result", "id": gid, "action": "/cloud/fib",
+                                        "values": {"sequence": g["seq"]}, "status": 4, "result": True}))
+
+
+def serve(args):
+    r = f"/{args.robot}"
+    ros = connect(args.hub_url)
+    watcher = connect(args.hub_url)
+    counts = {}
+    lock = threading.Lock()
+
+    def on_chatter(m):
+        with lock:
+            counts[m["data"]] = counts.get(m["data"], 0) + 1
+
+    roslibpy.Topic(watcher, f"{r}/chatter", "std_msgs/msg/String").subscribe(on_chatter)
+    greet = roslibpy.Service(ros, "/cloud/greet", "std_srvs/srv/Trigger")
+    greet.advertise(lambda req, res: res.update(success=True, message=E.GREETING) or True)
+    announce = roslibpy.Topic(ros, f"{r}/announce", "std_msgs/msg/String", latch=True)
+    announce.publish(roslibpy.Message({"data": E.ANNOUNCE}))
+    cmd = roslibpy.Topic(ros, f"{r}/cmd_vel", "geometry_msgs/msg/Twist")
+    chatter = roslibpy.Topic(ros, f"{r}/chatter", "std_msgs/msg/String")
+    time.sleep(1.0)  # the watcher's subscription is in place before hub-1
+    print("serve ready", flush=True)
+    n = sent = 0
+    while True:
+        n += 1
+        cmd.publish(roslibpy.Message(E.TWIST))
+        if not os.path.exists(args.chatter_stop):
+            sent = n
+            chatter.publish(roslibpy.Message({"data": f"hub-{n}"}))
+        with lock:
+            text = json.dumps({"chatter": counts, "chatter_sent": sent})
+        with open(args.out + ".tmp", "w") as f:
+            f.write(text)
+        os.replace(args.out + ".tmp", args.out)
+        time.sleep(0.2)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "serve-fib"])
+    p.add_argument("out", nargs="?")
+    p.add_argument("--hub-url", required=True)
+    p.add_argument("--robot", required=True)
+    p.add_argument("--chatter-stop")
+    args = p.parse_args()
+    if args.mode == "serve" and not (args.out and args.chatter_stop):
+        p.error("serve needs OUT and --chatter-stop")
+    {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
+     "check-action": check_action, "check-late": check_late, "serve-fib": serve_fib}[args.mode](args)
+    print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
+    os._exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,252 @@
+#!/usr/bin/env bash
+# ROS 2 bridge interop suite: Cyclone DDS (its Python binding, speaking ROS 2 topic and
+# type names and CDR) on the robot side of a fleetlink agent that joins the DDS graph as
+# a participant of its own (`ros2:` config), roslibpy clients on the hub side.
+#
+# Everything runs in a network namespace of its own (DDS discovery is multicast): lo up
+# with multicast and a 224.0.0.0/4 route, ROS_DOMAIN_ID=23. In it: a hub, the robot's
+# graph (ros2_peer.py graph: publishes /robot_description transient_local before the
+# agent starts), the agent, and the hub-side roslibpy process (hub_peer.py serve). Checks:
+#   1. Cyclone /scan (LaserScan), /points (PointCloud2, 100k points) and /battery (a type
+#      whose .msg exists only in a temporary package given to the agent by --msg-path)
+#      reach roslibpy subscribers with equal values; the graph proved beforehand that
+#      Cyclone's bytes for every type equal rosbags' (the IDL types are the ROS 2 types);
+#   2. roslibpy's /robot1/cmd_vel reaches a Cyclone subscriber of rt/cmd_vel, equal;
+#   3. transient_local both ways: /robot_description reaches a late hub subscriber; the
+#      hub's latched /robot1/announce reaches a transient_local reader started later;
+#   4. the Cyclone service /add_two_ints answers roslibpy calls at the hub, 40 at once;
+#   5. a Cyclone client calls the hub's /cloud/greet (rmw_cyclonedds request/reply);
+#   6. the Cyclone action /fibonacci from a roslibpy action client: feedback and
+#      SUCCEEDED; a long goal cancelled ends CANCELED (seen on both sides);
+#   7. a participant started after the agent publishes /late_topic: it reaches the hub;
+#   8. /chatter both ways: after both sides stop and a quiet period, every message was
+#      seen exactly once on each side (no loop), at least 5 crossed each way.
+# Every step runs under `timeout`, every background process under a longer one; on exit
+# (trap) the processes are stopped and the namespace is deleted. Under 3 minutes.
+#
+# Needs root for the namespace (re-runs itself with `sudo -n` when that works).
+# Env: FLEETLINK_BIN (default: target/release/fleetlink), PYTHON (default: .venv/bin/python
+# with roslibpy, cyclonedds and rosbags: scripts/setup.d/10-python-venv.sh, 35-ros2-peers.sh).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+python="${PYTHON:-$root/.venv/bin/python}"
+robot=robot1
+started=$SECONDS
+export ROS_DOMAIN_ID=23 PYTHONDONTWRITEBYTECODE=1
+
+[ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
+[ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
+"$python" -c 'import roslibpy, cyclonedds.domain, rosbags.serde' 2>/dev/null \
+    || { echo "FAIL: $python lacks roslibpy, cyclonedds or rosbags; run scripts/setup.d/10-python-venv.sh and scripts/setup.d/35-ros2-peers.sh" >&2; exit 1; }
+if [ "$(id -u)" -ne 0 ]; then
+    if sudo -n true 2>/dev/null; then
+        echo "ros2 interop: not root; running again under sudo (network namespaces need root)"
+        exec sudo -n --preserve-env=FLEETLINK_BIN,PYTHON,TMPDIR bash "$0" "$@"
+    fi
+    echo "FAIL: the ros2 suite needs root for its network namespace (DDS multicast stays inside it);" \
+        "run it as root (as CI does) or with passwordless sudo: sudo $0" >&2
+    exit 1
+fi
+command -v ip >/dev/null || { echo "FAIL: \`ip\` (iproute2) missing; run scripts/setup.d/35-ros2-peers.sh" >&2; exit 1; }
+bin="$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")"
+
+# shellcheck source=../lib.sh
+. "$here/../lib.sh"
+interop_begin ros2
+
+# --- the network namespace. Cleanup runs before lib.sh's (which stops the processes in
+# `pids`, shows the hub and agent logs on failure, removes $tmp and exits): it stops the
+# processes started here, kills whatever else is left in the namespace, deletes it.
+netns="flros2-$$"
+netns_made=""
+ros2_cleanup() {
+    local rc=$?
+    set +e
+    trap - EXIT
+    if [ -n "$netns_made" ]; then
+        for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null; done
+        for _ in $(seq 50); do # bounded: 5 s for a graceful stop
+            [ -z "$(ip netns pids "$netns" 2>/dev/null)" ] && break
+            sleep 0.1
+        done
+        for pid in $(ip netns pids "$netns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
+        ip netns del "$netns" 2>/dev/null || echo "warning: could not delete network namespace $netns" >&2
+    fi
+    (exit "$rc")
+    interop_cleanup
+}
+trap ros2_cleanup EXIT
+ip netns add "$netns" || { echo "FAIL: cannot create network namespace $netns (root with CAP_SYS_ADMIN needed)" >&2; exit 1; }
+netns_made=1
+in_ns=(ip netns exec "$netns")
+"${in_ns[@]}" ip link set lo up
+"${in_ns[@]}" ip link set lo multicast on
+"${in_ns[@]}" ip route add 224.0.0.0/4 dev lo
+echo "network namespace: $netns (lo, multicast), ROS_DOMAIN_ID=$ROS_DOMAIN_ID"
+
+# In the namespace, bounded: `ns_run SECONDS cmd...` for a step; `ns_bg cmd...` for a
+# process that stays (5 minutes at most, should this script itself be killed).
+ns_run() { local secs=$1; shift; "${in_ns[@]}" timeout --kill-after=5 "$secs" "$@"; }
+ns_bg() { "${in_ns[@]}" timeout --kill-after=5 300 "$@"; }
+py() { ns_run 30 "$python" "$@"; }
+
+failed=()
+fail() { echo "FAIL: $*"; failed+=("$*"); }
+step() { echo "== $1"; }
+show_log() { echo "--- last lines of $1 log" >&2; tail -n "${2:-15}" "$tmp/$1.log" >&2 || true; }
+
+# --- the custom type: its .msg exists only in this temporary package, which the agent
+# gets with --msg-path; the hub learns it from the agent.
+py "$here/ros2_peer.py" msg-package "$tmp/msgs"
+
+# --- hub, with tokens; robots may call the cloud's services
+admin() { ns_run 30 "$bin" admin --data-dir "$tmp/hub-data" "$@"; }
+robot_token="$(admin token robot "$robot")"
+op_token="$(admin token operator interop --group admin)"
+admin rules import - >/dev/null <<'RULES'
+rules:
+  - subject: any_robot
+    names: "/cloud/.*"
+    ops: [call_service, send_action_goal]
+RULES
+: >"$tmp/hub.log"; : >"$tmp/agent.log"; : >"$tmp/graph.log"; : >"$tmp/serve.log"
+ns_bg "$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
+pids+=($!)
+hub_addr="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on ([0-9.:]+)$' "hub start" "${pids[-1]}")"
+hub_url="ws://$hub_addr/?token=$op_token"
+echo "hub: ws://$hub_addr/"
+
+# --- the robot's graph, before the agent: /robot_description is published now, once.
+ns_bg "$python" "$here/ros2_peer.py" graph "$tmp/robot_got.json" --msg-path "$tmp/msgs" \
+    --chatter-stop "$tmp/chatter.stop" >"$tmp/graph.log" 2>&1 &
+pids+=($!)
+graph_pid=${pids[-1]}
+# Importing rosbags and cross-checking 100k points takes a few seconds on a busy machine.
+for _ in $(seq 300); do
+    grep -q '^graph ready$' "$tmp/graph.log" && break
+    kill -0 "$graph_pid" 2>/dev/null || break
+    sleep 0.1
+done
+grep -q '^graph ready$' "$tmp/graph.log" || { echo "FAIL: the Cyclone graph did not start (ros2_peer.py graph)" >&2; show_log graph 30; exit 1; }
+crosscheck_line="$(grep -m1 '^crosscheck ok' "$tmp/graph.log" || true)"
+
+# --- the agent, joining the graph
+cat >"$tmp/agent.yaml" <<EOF
+hub: ws://$hub_addr/
+name: $robot
+token: $robot_token
+local_rosbridge: null
+ros2:
+  publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic], exclude: [] }
+  subscribe: [/cmd_vel, /announce, /chatter]
+  services: { expose: [/add_two_ints], offer: ["/cloud/.*"] }
+  actions: { expose: [/fibonacci], offer: ["/cloud/.*"] }
+EOF
+ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent.log" 2>&1 &
+pids+=($!)
+agent_pid=${pids[-1]}
+
+# --- the hub side: latched /announce, fleet service, cmd_vel and chatter publishers
+ns_bg "$python" "$here/hub_peer.py" serve "$tmp/hub_got.json" --hub-url "$hub_url" --robot "$robot" \
+    --chatter-stop "$tmp/chatter.stop" >"$tmp/serve.log" 2>&1 &
+pids+=($!)
+wait_for_line "$tmp/serve.log" '^(serve) ready$' "hub serve (hub_peer.py)" "${pids[-1]}" >/dev/null \
+    || { show_log serve; exit 1; }
+# A configuration the agent refuses makes it exit at once: stop here, not after every
+# step has timed out (lib.sh's cleanup shows the agent's log).
+kill -0 "$agent_pid" 2>/dev/null || { echo "FAIL: the agent exited at start" >&2; exit 1; }
+
+# A value from the graph's JSON report: robot_got EXPR (Python, `g` is the report).
+robot_got() { py -c 'import json,sys; g=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$tmp/robot_got.json" "$1" 2>/dev/null || echo "?"; }
+
+step "1. robot -> hub: LaserScan, PointCloud2 (100k points), custom type"
+if [ -n "$crosscheck_line" ]; then echo "ok: the graph's rosbags cross-check: ${crosscheck_line#crosscheck ok: }"; else fail "the graph printed no rosbags cross-check"; fi
+ns_run 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" || fail "check-up (values at the hub)"
+
+step "2. hub -> robot: /cmd_vel"
+got_cmd=0
+deadline=$((SECONDS + 10))
+while [ "$SECONDS" -lt "$deadline" ]; do
+    got_cmd="$(robot_got 'g["cmd_vel"]')"
+    [ "$got_cmd" != "?" ] && [ "$got_cmd" -gt 0 ] && break
+    sleep 0.2
+done
+cmd_values="$(robot_got 'g["cmd_vel_values"]')"
+want_values="$(py -c 'import sys; sys.path.insert(0, sys.argv[1]); import expected as E; print([list(E.TWIST["linear"].values()) + list(E.TWIST["angular"].values())])' "$here")"
+if [ "$got_cmd" = "?" ] || [ "$got_cmd" -eq 0 ]; then
+    fail "/robot1/cmd_vel did not reach the Cyclone subscriber of rt/cmd_vel (reliable, volatile) within 10 s"
+elif [ "$cmd_values" != "$want_values" ]; then
+    fail "rt/cmd_vel values $cmd_values, want $want_values"
+else
+    echo "ok: the Cyclone subscriber got /cmd_vel ($got_cmd messages, every field equal)"
+fi
+
+step "3. transient_local both ways"
+ns_run 40 "$python" "$here/hub_peer.py" check-latched --hub-url "$hub_url" --robot "$robot" || fail "check-latched (/robot_description)"
+# The hub's latched /robot1/announce went out when serve started, before the /cmd_vel
+# that step 2 saw arrive; a transient_local reader created only now must still get it.
+sleep 1
+ns_run 30 "$python" "$here/ros2_peer.py" announce --wait 15 || fail "late transient_local reader of /announce"
+
+step "4. robot service /add_two_ints from the hub"
+ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" || fail "check-calls (/add_two_ints)"
+
+step "5. fleet service /cloud/greet from a Cyclone client"
+ns_run 40 "$python" "$here/ros2_peer.py" call-greet --wait 25 || fail "Cyclone client of /cloud/greet"
+
+step "6. action /fibonacci from the hub"
+ns_run 60 "$python" "$here/hub_peer.py" check-action --hub-url "$hub_url" --robot "$robot" || fail "check-action (/fibonacci)"
+# The graph's report is rewritten every 0.2 s: poll it (bounded) for the goals' end.
+deadline=$((SECONDS + 5))
+while :; do
+    goals="$(robot_got '[(x["order"], x["status"]) for x in g["goals"]]')"
+    case "$goals" in *"(5, 4)"*"(50, 5)"*) break ;; esac
+    [ "$SECONDS" -lt "$deadline" ] || break
+    sleep 0.2
+done
+case "$goals" in
+    *"(5, 4)"*"(50, 5)"*) echo "ok: the Cyclone action server saw goal 5 SUCCEEDED and goal 50 CANCELED: $goals" ;;
+    *) fail "the Cyclone action server's goals (order, status): $goals, want (5, 4) then (50, 5)" ;;
+esac
+
+step "6b. fleet action /cloud/fib from a Cyclone action client"
+ns_bg "$python" "$here/hub_peer.py" serve-fib --hub-url "$hub_url" --robot "$robot" >"$tmp/fib.log" 2>&1 &
+pids+=($!)
+wait_for_line "$tmp/fib.log" '^(serve-fib) ready$' "hub action server" "${pids[-1]}" >/dev/null || fail "serve-fib did not start"
+ns_run 60 "$python" "$here/ros2_peer.py" call-fib --wait 25 || fail "Cyclone action client of /cloud/fib"
+
+step "7. a participant started after the agent"
+ns_bg "$python" "$here/ros2_peer.py" late >"$tmp/late.log" 2>&1 &
+pids+=($!)
+ns_run 40 "$python" "$here/hub_peer.py" check-late --hub-url "$hub_url" --robot "$robot" || fail "check-late (/late_topic)"
+
+step "8. /chatter both ways: no loop"
+touch "$tmp/chatter.stop"
+sleep 3 # quiet: both sides stopped; whatever was in flight has arrived (or looped)
+loop_report="$(py - "$here" "$tmp/robot_got.json" "$tmp/hub_got.json" <<'EOF'
+import json, sys
+sys.path.insert(0, sys.argv[1])
+import expected as E
+robot, hub = json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
+problems = (E.chatter_problems(robot["chatter"], "robot", robot["chatter_sent"], "hub", hub["chatter_sent"], "robot")
+            + E.chatter_problems(hub["chatter"], "hub", hub["chatter_sent"], "robot", robot["chatter_sent"], "hub"))
+crossed_up = sum(1 for k in hub["chatter"] if k.startswith("robot-"))
+crossed_down = sum(1 for k in robot["chatter"] if k.startswith("hub-"))
+print("; ".join(problems) if problems else
+      f"ok: {crossed_up} of {robot['chatter_sent']} robot->hub and {crossed_down} of {hub['chatter_sent']} "
+      "hub->robot chatter messages crossed, every message seen exactly once on each side")
+EOF
+)" || loop_report="the chatter evaluation failed: $loop_report"
+case "$loop_report" in ok:*) echo "$loop_report" ;; *) fail "loop check: $loop_report" ;; esac
+
+kill -0 "$agent_pid" 2>/dev/null && echo "ok: the agent is still running" || fail "the agent died"
+kill -0 "$graph_pid" 2>/dev/null || fail "the Cyclone graph (ros2_peer.py graph) died"
+echo "ros2 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"
+if [ ${#failed[@]} -ne 0 ]; then
+    echo "FAIL: ${failed[*]}" >&2
+    for f in graph serve late; do [ -s "$tmp/$f.log" ] && show_log "$f"; done
+    exit 1
+fi
+echo "PASS: ros2 interop (Cyclone DDS <-> agent (rustdds) <-> hub <-> roslibpy)"
