@@ -6,7 +6,10 @@
 //! effect the same way as a renewed certificate; connections already open keep the config
 //! they started with. Reloading is driven by the caller ([`ReloadingServerConfig::reload_if_changed`]
 //! on a timer) — no watcher thread, no inotify — and a broken file keeps the old config.
-//! Only the `ring` provider is used.
+//! Only the `ring` provider is used, completed for RSA-PSS keys ([`provider`]); the agent
+//! checks the hub with [`HubVerifier`] (webpki, plus certificates of `tls.ca` pinned, so a
+//! self-signed `openssl req -x509` certificate works), the hub checks robots with
+//! [`RobotVerifier`].
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
