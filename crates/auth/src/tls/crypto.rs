@@ -30,8 +30,8 @@ const RSASSA_PSS: AlgorithmIdentifier = AlgorithmIdentifier::from_slice(&[
 /// The same OID as DER bytes, to recognise it inside a PKCS#8 or a certificate.
 pub(crate) const RSASSA_PSS_OID: &str = "1.2.840.113549.1.1.10";
 
-/// The provider every TLS config of fleetlink uses: ring, with [`PssKeys`] and
-/// [`algorithms`].
+/// The provider every TLS config of fleetlink uses: ring, with `PssKeys` (RSA-PSS key
+/// loading) and `algorithms` (RSA-PSS public keys).
 pub fn provider() -> Arc<CryptoProvider> {
     Arc::new(CryptoProvider {
         key_provider: &PssKeys,
