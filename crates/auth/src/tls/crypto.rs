@@ -27,7 +27,7 @@ use rustls::sign::{Signer, SigningKey};
 const RSASSA_PSS: AlgorithmIdentifier = AlgorithmIdentifier::from_slice(&[
     0x06, 0x09, 0x2a, 0x86, 0x48, 0x86, 0xf7, 0x0d, 0x01, 0x01, 0x0a,
 ]);
-/// The same OID as DER bytes, to recognise it inside a PKCS#8 or a certificate.
+/// The same OID in dotted form, to recognise it in a PKCS#8 PrivateKeyInfo.
 pub(crate) const RSASSA_PSS_OID: &str = "1.2.840.113549.1.1.10";
 
 /// The provider every TLS config of fleetlink uses: ring, with `PssKeys` (RSA-PSS key
