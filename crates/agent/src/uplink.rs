@@ -912,6 +912,7 @@ fn token_hint(token: &str) -> String {
 
 /// What a TLS failure with the hub means, in words that say what to do.
 fn tls_advice(url: &str, e: &rustls::Error) -> String {
+    use fleetlink_auth::tls::HubCertError;
     use rustls::CertificateError as C;
     let host = url
         .split("://")
@@ -938,11 +939,15 @@ fn tls_advice(url: &str, e: &rustls::Error) -> String {
                 "the certificate of the hub at {url} is not valid yet: check this robot's clock"
             ),
             C::Revoked => format!("the certificate of the hub at {url} has been revoked"),
-            C::Other(o) if o.to_string().contains("CaUsedAsEndEntity") => format!(
-                "the hub at {url} presents a CA certificate as its own (as a self-signed \
-                 `openssl req -x509` certificate is): the agent's verifier does not accept that; \
-                 give the hub a certificate issued by a CA and that CA as `tls.ca` (see \
-                 docs/security.md)"
+            C::Other(_) if HubCertError::of(e) == Some(&HubCertError::SelfSigned) => format!(
+                "the certificate of the hub at {url} is self-signed and this agent does not \
+                 trust it: give that certificate (the hub's --tls-cert file) as `tls.ca` in \
+                 this agent's configuration (see \"TLS in five minutes\" in docs/tls.md)"
+            ),
+            C::Other(_) if HubCertError::of(e) == Some(&HubCertError::CaAsServer) => format!(
+                "the hub at {url} presents a CA certificate as its own: give the hub a \
+                 certificate issued by that CA (`fleetlink admin cert hub`), or give this very \
+                 certificate as `tls.ca` to pin it"
             ),
             _ => format!(
                 "the certificate of the hub at {url} could not be verified ({}); check `tls.ca`",
@@ -1112,9 +1117,13 @@ mod failure_tests {
         assert!(advice(C::UnknownIssuer).contains("`tls.ca`"));
         assert!(advice(C::NotValidForName).contains("hub.example"));
         assert!(advice(C::Expired).contains("expired"));
-        let ca = advice(C::Other(rustls::OtherError(std::sync::Arc::new(
-            std::io::Error::other("CaUsedAsEndEntity"),
-        ))));
+        let ours = |h: fleetlink_auth::tls::HubCertError| {
+            advice(C::Other(rustls::OtherError(std::sync::Arc::new(h))))
+        };
+        let selfsigned = ours(fleetlink_auth::tls::HubCertError::SelfSigned);
+        assert!(selfsigned.contains("self-signed"), "{selfsigned}");
+        assert!(selfsigned.contains("as `tls.ca`"), "{selfsigned}");
+        let ca = ours(fleetlink_auth::tls::HubCertError::CaAsServer);
         assert!(ca.contains("CA certificate as its own"), "{ca}");
         for m in [advice(C::BadSignature), advice(C::UnknownIssuer)] {
             assert!(!m.contains("Some(") && !m.contains("OtherError"), "{m}");

@@ -20,7 +20,8 @@
 //! - [`audit`]: audit records, the non-blocking batching writer and queries.
 //! - [`security`]: [`Security`], the facade that keeps store, rules and audit in step for
 //!   every administrative change.
-//! - [`tls`]: rustls server config with file reload, client config, client-cert names.
+//! - [`tls`]: rustls server config with file reload, client config, client-cert names;
+//!   the certificate verifiers (pinned `tls.ca` certificates) and RSA-PSS key support.
 
 pub mod acl;
 pub mod audit;

@@ -6,4 +6,5 @@ mod attacks;
 mod audit;
 mod jwt;
 mod tls;
+mod tls_openssl;
 mod util;

@@ -100,7 +100,7 @@ pub fn transcoder(
 
 #[cfg(test)]
 mod tests {
-    use super::error_text;
+    use super::{Cli, error_text};
 
     #[test]
     fn causes_are_shown_once() {
@@ -113,5 +113,40 @@ mod tests {
         let io = std::io::Error::new(std::io::ErrorKind::NotFound, "no such file");
         let plain = anyhow::Error::new(io).context("loading --msg-path msgs");
         assert_eq!(error_text(&plain), "loading --msg-path msgs: no such file");
+    }
+
+    /// Issue 14: `--help` showed empty descriptions. Every subcommand and argument a user
+    /// can see must say what it is.
+    #[test]
+    fn issue14_every_subcommand_and_argument_has_help_text() {
+        fn walk(cmd: &clap::Command, path: &str, missing: &mut Vec<String>) {
+            for arg in cmd.get_arguments() {
+                let id = arg.get_id().as_str();
+                if arg.is_hide_set() || id == "help" || id == "version" {
+                    continue;
+                }
+                if arg.get_help().is_none() && arg.get_long_help().is_none() {
+                    missing.push(format!("{path} <{id}>"));
+                }
+            }
+            for sub in cmd.get_subcommands() {
+                let here = format!("{path} {}", sub.get_name());
+                if sub.get_about().is_none() && sub.get_long_about().is_none() {
+                    missing.push(here.clone());
+                }
+                walk(sub, &here, missing);
+            }
+        }
+        let mut missing = Vec::new();
+        walk(
+            &<Cli as clap::CommandFactory>::command(),
+            "fleetlink",
+            &mut missing,
+        );
+        assert!(
+            missing.is_empty(),
+            "without help text (add a /// doc comment):\n  {}",
+            missing.join("\n  ")
+        );
     }
 }

@@ -129,8 +129,33 @@ impl Collector for HubCollector {
             MetricType::Gauge,
         )?;
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
+        encode_audit(&st.security.audit, &mut enc)?;
         encode_front_door(&st.limits, &mut enc)
     }
+}
+
+/// The audit log's writer: what it stored and what it lost. A lost record is an
+/// event nobody can look up later, so it is counted where an alert can see it.
+fn encode_audit(
+    audit: &fleetlink_auth::AuditLog,
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    let m = enc.encode_descriptor(
+        "fleetlink_audit_records_written",
+        "Audit log records written to the database",
+        None,
+        MetricType::Counter,
+    )?;
+    ConstCounter::new(audit.written()).encode(m)?;
+    let mut m = enc.encode_descriptor(
+        "fleetlink_audit_records_lost",
+        "Audit log records lost: queue_full (the writer fell behind) or database_error",
+        None,
+        MetricType::Counter,
+    )?;
+    ConstCounter::new(audit.overflowed()).encode(m.encode_family(&[("reason", "queue_full")])?)?;
+    ConstCounter::new(audit.failed()).encode(m.encode_family(&[("reason", "database_error")])?)?;
+    Ok(())
 }
 
 /// The front door's counts: open connections, handshakes, and what the limits refused.

@@ -443,14 +443,70 @@ fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError
             };
         }
     };
-    let message = yaml_message(err);
     let at = yaml_position(err, file);
+    let message = match err.without_snippet() {
+        // The parser names only the type it wanted ("invalid u64"); say what it got.
+        serde_saphyr::Error::InvalidScalar { ty, .. } => {
+            let wanted = match *ty {
+                "u8" | "u16" | "u32" | "u64" | "u128" | "usize" => {
+                    format!("a whole number, 0 or more ({ty})")
+                }
+                "i8" | "i16" | "i32" | "i64" | "i128" | "isize" => {
+                    format!("a whole number ({ty})")
+                }
+                "floating point" | "f32" | "f64" => "a number".to_owned(),
+                "boolean" | "bool" => "true or false".to_owned(),
+                other => other.to_owned(),
+            };
+            match scalar_at(text, at.line, at.column) {
+                Some(got) => format!("expected {wanted}, got {got}"),
+                None => format!("expected {wanted}"),
+            }
+        }
+        _ => yaml_message(err),
+    };
     let path = tree.path_at((at.line, at.column));
     ConfigError::Field {
         at,
         field: path.to_string(),
         message,
     }
+}
+
+/// The scalar that starts at 1-based `line`:`column` of `text`, as written (quoted if it
+/// was), shortened to a readable length; `None` if there is nothing there.
+fn scalar_at(text: &str, line: u64, column: u64) -> Option<String> {
+    let line = text
+        .lines()
+        .nth(usize::try_from(line).ok()?.checked_sub(1)?)?;
+    let rest: String = line
+        .chars()
+        .skip(usize::try_from(column).ok()?.saturating_sub(1))
+        .collect();
+    let value = match rest.chars().next()? {
+        q @ ('"' | '\'') => match rest[1..].find(q) {
+            Some(end) => rest[..end + 2].to_owned(),
+            None => rest.clone(),
+        },
+        _ => rest
+            .split(" #")
+            .next()
+            .unwrap_or_default()
+            .split([',', '}', ']'])
+            .next()
+            .unwrap_or_default()
+            .trim()
+            .to_owned(),
+    };
+    if value.is_empty() {
+        return None;
+    }
+    let short: String = value.chars().take(40).collect();
+    Some(if short.len() < value.len() {
+        format!("`{short}…`")
+    } else {
+        format!("`{short}`")
+    })
 }
 
 fn socket_addr<'de, D: Deserializer<'de>>(deserializer: D) -> Result<SocketAddr, D::Error> {

@@ -504,3 +504,31 @@ fn ros2_examples_parse_and_become_options() {
     assert!(ros2.publish.matches("/odom") && !ros2.publish.matches("/camera/raw"));
     assert!(ros2.offer_actions.matches("/cloud/dock"));
 }
+
+#[test]
+fn issue14_a_wrong_scalar_type_names_the_value_it_got() {
+    assert_err(
+        "name: r1\nheartbeat_ms: fast\n",
+        "robot.yaml:2:15: heartbeat_ms: expected a whole number, 0 or more (u64), got `fast`",
+    );
+    assert_err(
+        "name: r1\nsim:\n  odometry: { rate_hz: \"quick\" }\n",
+        "robot.yaml:3:24: sim.odometry.rate_hz: expected a number, got `\"quick\"`",
+    );
+    assert_err(
+        "name: r1\nlocal_rosbridge: { enabled: maybe }\n",
+        "robot.yaml:2:29: local_rosbridge.enabled: expected true or false, got `maybe`",
+    );
+}
+
+#[test]
+fn issue14_example_topics_section_is_applied_and_not_called_rejected() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let path = root.join("examples/agent.yaml");
+    let cfg = AgentConfig::load(&path).expect("examples/agent.yaml");
+    assert_eq!(cfg.topics.len(), 3, "{:?}", cfg.topics);
+    let text = std::fs::read_to_string(&path).expect("examples/agent.yaml");
+    for stale in ["rejected", "not supported yet", "for now"] {
+        assert!(!text.contains(stale), "examples/agent.yaml says {stale:?}");
+    }
+}

@@ -33,23 +33,32 @@ enum Command {
     },
     /// Read a serialized message on stdin and print it as rosbridge JSON.
     Decode {
+        /// The message type, e.g. `sensor_msgs/msg/LaserScan` or `std_msgs/String`.
         type_name: String,
+        /// How the bytes on stdin are serialized.
         #[arg(long, value_enum)]
         format: Format,
     },
     /// Read rosbridge JSON on stdin and write the serialized message to stdout.
     Encode {
+        /// The message type, e.g. `sensor_msgs/msg/LaserScan` or `std_msgs/String`.
         type_name: String,
+        /// How to serialize the message written to stdout.
         #[arg(long, value_enum)]
         format: Format,
     },
     /// Print a type's identities: ROS 1 md5sum, DDS name, REP-2016 type hash.
-    Ids { type_name: String },
+    Ids {
+        /// The message type, e.g. `sensor_msgs/msg/LaserScan` or `std_msgs/String`.
+        type_name: String,
+    },
     /// List every known message type (bundled and `--msg-path`), one per line; with
     /// `--full-texts`, a JSON object of each type's full definition in `--dialect`.
     List {
+        /// Print every type's full definition (with its dependencies) as JSON.
         #[arg(long)]
         full_texts: bool,
+        /// Which generation's definitions to print with `--full-texts`.
         #[arg(long, value_enum, default_value_t = DialectArg::Ros2)]
         dialect: DialectArg,
     },
@@ -57,13 +66,17 @@ enum Command {
 
 #[derive(Clone, Copy, clap::ValueEnum)]
 enum Format {
+    /// ROS 2 CDR, as DDS carries it (with its 4-byte encapsulation header).
     Cdr,
+    /// ROS 1 serialization, as TCPROS and rosbag carry it.
     Ros1,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
 enum DialectArg {
+    /// ROS 1 `.msg` syntax.
     Ros1,
+    /// ROS 2 `.msg` syntax.
     Ros2,
 }
 

@@ -64,3 +64,50 @@ async fn commands_to_a_robot_are_audited_and_its_own_output_is_not() {
     agent.shutdown().await;
     hub.shutdown().await;
 }
+
+/// `GET path` with a bearer token over HTTP/1.0: the body as text.
+async fn get_text(addr: std::net::SocketAddr, path: &str, token: &str) -> String {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut s = within("connect", tokio::net::TcpStream::connect(addr))
+        .await
+        .unwrap();
+    s.write_all(
+        format!("GET {path} HTTP/1.0\r\nHost: {addr}\r\nAuthorization: Bearer {token}\r\n\r\n")
+            .as_bytes(),
+    )
+    .await
+    .unwrap();
+    let mut out = String::new();
+    within("response", s.read_to_string(&mut out))
+        .await
+        .unwrap();
+    out
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue14_audit_counters_are_exported_as_metrics() {
+    let hub = start_hub().await;
+    // A refused credential is audited (auth_failure).
+    let refused = get_text(hub.addr, "/metrics", "flk_op_not-a-real-token").await;
+    assert!(
+        refused.starts_with("HTTP/1.0 401") || refused.starts_with("HTTP/1.1 401"),
+        "{refused}"
+    );
+    hub.state.security.audit.flush();
+    let metrics = get_text(hub.addr, "/metrics", &hub.operator_token).await;
+    let value = |line: &str| -> Option<u64> {
+        metrics
+            .lines()
+            .find_map(|l| l.strip_prefix(line)?.trim().parse().ok())
+    };
+    let written = value("fleetlink_audit_records_written_total ");
+    assert!(
+        written >= Some(1),
+        "no written audit records in:\n{metrics}"
+    );
+    for reason in ["queue_full", "database_error"] {
+        let line = format!("fleetlink_audit_records_lost_total{{reason=\"{reason}\"}} ");
+        assert_eq!(value(&line), Some(0), "{line} in:\n{metrics}");
+    }
+    hub.shutdown().await;
+}

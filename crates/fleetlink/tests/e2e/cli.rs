@@ -134,3 +134,107 @@ fn agent_config_error_names_file_line_and_field() {
     assert!(err.contains("robot.yaml:4:"), "{err}");
     assert!(err.contains("sim.point_cloud.rate_hz"), "{err}");
 }
+
+#[test]
+fn issue14_admin_refuses_a_missing_database_for_reading_commands() {
+    let dir = temp_dir("admin-typo");
+    let typo = dir.join("fleetlink-dta");
+    for args in [
+        &["token", "list"][..],
+        &["token", "revoke", "1"],
+        &["rules", "list"],
+        &["users", "list"],
+        &["audit", "--limit", "5"],
+    ] {
+        let out = Command::new(BIN)
+            .arg("admin")
+            .arg("--data-dir")
+            .arg(&typo)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            !out.status.success(),
+            "admin {args:?} on a missing database succeeded"
+        );
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("no hub database at"), "{args:?}: {err}");
+        assert!(
+            err.contains("fleetlink-dta"),
+            "{args:?} names the path: {err}"
+        );
+        assert!(!typo.exists(), "admin {args:?} created {}", typo.display());
+    }
+    // Minting the first token creates the database, and says so.
+    let out = Command::new(BIN)
+        .arg("admin")
+        .arg("--data-dir")
+        .arg(&typo)
+        .args(["token", "robot", "r1"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("created a new hub database"));
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("flk_"));
+}
+
+/// Starts the demo on `dir` and returns the operator token it prints; then stops it.
+async fn demo_operator_token(dir: &std::path::Path) -> String {
+    let mut child = tokio::process::Command::new(BIN)
+        .args([
+            "demo",
+            "--robots",
+            "1",
+            "--listen",
+            "127.0.0.1:0",
+            "--data-dir",
+        ])
+        .arg(dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .kill_on_drop(true)
+        .spawn()
+        .expect("demo starts");
+    use tokio::io::AsyncBufReadExt;
+    let mut lines = tokio::io::BufReader::new(child.stdout.take().unwrap()).lines();
+    let token = within("the demo to print its operator token", async {
+        while let Some(l) = lines.next_line().await.unwrap() {
+            if let Some((_, t)) = l.split_once("valid 7 days): ") {
+                return t.trim().to_owned();
+            }
+        }
+        panic!("the demo exited without printing a token");
+    })
+    .await;
+    let _ = child.kill().await;
+    let _ = child.wait().await;
+    token
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue14_demo_reuses_its_tokens_and_they_expire() {
+    let dir = temp_dir("demo-tokens");
+    let first = demo_operator_token(&dir).await;
+    let second = demo_operator_token(&dir).await;
+    assert_eq!(
+        first, second,
+        "a second demo run minted another operator token"
+    );
+    let out = Command::new(BIN)
+        .arg("admin")
+        .arg("--data-dir")
+        .arg(&dir)
+        .args(["token", "list"])
+        .output()
+        .unwrap();
+    let list = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        list.lines().count(),
+        2,
+        "one operator and one robot token:\n{list}"
+    );
+}

@@ -2,7 +2,13 @@
 //! hub's database (`--data-dir`). Whoever can write the hub's data directory administers
 //! it; a running hub picks up rule changes within a second and checks tokens against the
 //! database, so nothing needs a restart. (The same operations are in the REST API for
-//! remote administration.)
+//! remote administration.) `admin cert` makes TLS certificates and needs no database.
+//!
+//! A missing database is created only by commands that add something (a token, a user,
+//! imported rules), and they say so; the others refuse, naming the path, so a mistyped
+//! `--data-dir` is an error instead of an empty listing.
+
+mod cert;
 
 use std::io::Read;
 use std::path::PathBuf;
@@ -16,7 +22,7 @@ use fleetlink_auth::{
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The hub's data directory.
+    /// The hub's data directory (its database is DIR/hub.sqlite3).
     #[arg(long, default_value = "./fleetlink-data")]
     pub data_dir: PathBuf,
     #[command(subcommand)]
@@ -34,8 +40,11 @@ pub enum What {
     /// Add, list and remove users (password login).
     #[command(subcommand)]
     Users(UsersCmd),
+    /// Make TLS certificates: a CA, the hub's certificate, robots' client certificates.
+    Cert(cert::Args),
     /// Show the newest audit log entries.
     Audit {
+        /// How many entries to show at most (newest first).
         #[arg(long, default_value_t = 50)]
         limit: u32,
         /// Only this principal, e.g. `user:alice` or `robot:r1`.
@@ -48,34 +57,47 @@ pub enum What {
 pub enum TokenCmd {
     /// A token for robot NAME's agent (printed once; only its hash is stored).
     Robot {
+        /// The robot's name, as in its agent's `name:`.
         name: String,
+        /// Days until the token expires (default: never).
         #[arg(long)]
         expires_days: Option<i64>,
     },
     /// A token for an operator or service, with its groups (`--group admin` for full rights).
     Operator {
+        /// Who holds the token: a person or a service (recorded in the audit log).
         name: String,
+        /// A group the token belongs to (`admin`, `metrics`, or one of your rules');
+        /// repeatable.
         #[arg(long = "group")]
         groups: Vec<String>,
+        /// Days until the token expires (default: never).
         #[arg(long)]
         expires_days: Option<i64>,
     },
+    /// List tokens: id, kind, holder, state (active, expired, revoked) and groups.
     List,
+    /// Revoke a token by its id (from `token list`); clients using it are refused at once.
     Revoke {
+        /// The token's id, as `token list` shows it.
         id: i64,
     },
 }
 
 #[derive(Subcommand)]
 pub enum RulesCmd {
+    /// List the rules in force, each with its id.
     List,
     /// Replace every rule with those of a YAML file (`-` for stdin); see docs/security.md.
     Import {
+        /// The YAML file of rules, or `-` for stdin.
         file: PathBuf,
     },
     /// Print the rules as YAML.
     Export,
+    /// Remove one rule by its id (from `rules list`).
     Remove {
+        /// The rule's id, as `rules list` shows it.
         id: i64,
     },
 }
@@ -84,12 +106,17 @@ pub enum RulesCmd {
 pub enum UsersCmd {
     /// Add a user; the password is read from stdin (one line).
     Add {
+        /// The user's login name.
         name: String,
+        /// A group the user belongs to; repeatable.
         #[arg(long = "group")]
         groups: Vec<String>,
     },
+    /// List users and their groups.
     List,
+    /// Remove a user; their password no longer logs in.
     Remove {
+        /// The user's login name.
         name: String,
     },
 }
@@ -118,15 +145,40 @@ fn expiry(days: Option<i64>, now: UnixTime) -> Option<UnixTime> {
     days.map(|d| now.plus_secs(d * 86_400))
 }
 
+/// Whether a command adds to the database, and so may create a missing one.
+fn creates(what: &What) -> bool {
+    matches!(
+        what,
+        What::Token(TokenCmd::Robot { .. } | TokenCmd::Operator { .. })
+            | What::Users(UsersCmd::Add { .. })
+            | What::Rules(RulesCmd::Import { .. })
+    )
+}
+
 pub fn run(args: Args) -> anyhow::Result<()> {
-    std::fs::create_dir_all(&args.data_dir)
-        .with_context(|| format!("creating {}", args.data_dir.display()))?;
+    let what = match args.what {
+        What::Cert(cert) => return cert::run(cert),
+        what => what,
+    };
     let db = args.data_dir.join("hub.sqlite3");
+    if !db.exists() {
+        anyhow::ensure!(
+            creates(&what),
+            "no hub database at {}: check --data-dir (it is the hub's --data-dir; a hub \
+             creates its database when it first starts, and so do `admin token` and \
+             `admin users add`)",
+            db.display()
+        );
+        std::fs::create_dir_all(&args.data_dir)
+            .with_context(|| format!("creating {}", args.data_dir.display()))?;
+        eprintln!("created a new hub database at {}", db.display());
+    }
     let store = Store::open(&db).with_context(|| format!("opening {}", db.display()))?;
     let security = Security::new(store, AuthPolicy::default(), AclDefaults::default())?;
     let me = local_admin()?;
     let now = UnixTime::now();
-    match args.what {
+    match what {
+        What::Cert(_) => unreachable!("handled before the database is opened"),
         What::Token(TokenCmd::Robot { name, expires_days }) => {
             let robot = RobotName::new(&name).with_context(|| format!("robot name {name:?}"))?;
             let t = security.add_robot_token(&me, &robot, expiry(expires_days, now), now)?;

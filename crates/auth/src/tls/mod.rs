@@ -6,7 +6,10 @@
 //! effect the same way as a renewed certificate; connections already open keep the config
 //! they started with. Reloading is driven by the caller ([`ReloadingServerConfig::reload_if_changed`]
 //! on a timer) — no watcher thread, no inotify — and a broken file keeps the old config.
-//! Only the `ring` provider is used.
+//! Only the `ring` provider is used, completed for RSA-PSS keys ([`provider`]); the agent
+//! checks the hub with [`HubVerifier`] (webpki, plus certificates of `tls.ca` pinned, so a
+//! self-signed `openssl req -x509` certificate works), the hub checks robots with
+//! [`RobotVerifier`].
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -14,7 +17,6 @@ use std::time::SystemTime;
 
 use arc_swap::ArcSwap;
 use rustls::RootCertStore;
-use rustls::crypto::CryptoProvider;
 use rustls::pki_types::pem::PemObject;
 use rustls::pki_types::{CertificateDer, PrivateKeyDer};
 use rustls::server::WebPkiClientVerifier;
@@ -47,9 +49,11 @@ pub enum TlsError {
     Rustls(#[from] rustls::Error),
 }
 
-fn provider() -> Arc<CryptoProvider> {
-    Arc::new(rustls::crypto::ring::default_provider())
-}
+mod crypto;
+mod verify;
+
+pub use crypto::provider;
+pub use verify::{HubCertError, HubVerifier, RobotVerifier};
 
 fn pem_err(path: &Path) -> impl FnOnce(rustls::pki_types::pem::Error) -> TlsError + '_ {
     move |source| match source {
@@ -143,7 +147,7 @@ pub fn server_config(files: &ServerTlsFiles) -> Result<Arc<ServerConfig>, TlsErr
             } else {
                 verifier
             };
-            builder.with_client_cert_verifier(verifier.build()?)
+            builder.with_client_cert_verifier(Arc::new(RobotVerifier::new(verifier.build()?)))
         }
     };
     let mut config = builder.with_single_cert(load_certs(&files.cert)?, load_key(&files.key)?)?;
@@ -214,9 +218,15 @@ pub struct ClientTlsFiles {
     pub client_cert: Option<(PathBuf, PathBuf)>,
 }
 
+/// The agent's config: the hub's certificate checked by [`HubVerifier`] (webpki, and
+/// certificates of the `tls.ca` file pinned).
 pub fn client_config(files: &ClientTlsFiles) -> Result<Arc<ClientConfig>, TlsError> {
+    let mut pinned = Vec::new();
     let roots = match &files.roots {
-        HubRoots::CaFile(path) => load_roots(path)?,
+        HubRoots::CaFile(path) => {
+            pinned = load_certs(path)?;
+            load_roots(path)?
+        }
         HubRoots::System => {
             let found = rustls_native_certs::load_native_certs();
             let mut roots = RootCertStore::empty();
@@ -231,9 +241,20 @@ pub fn client_config(files: &ClientTlsFiles) -> Result<Arc<ClientConfig>, TlsErr
             roots
         }
     };
+    let webpki =
+        rustls::client::WebPkiServerVerifier::builder_with_provider(Arc::new(roots), provider())
+            .build()
+            .map_err(|e| TlsError::BadCa {
+                path: match &files.roots {
+                    HubRoots::CaFile(p) => p.clone(),
+                    HubRoots::System => PathBuf::from("<system roots>"),
+                },
+                reason: e.to_string(),
+            })?;
     let builder = ClientConfig::builder_with_provider(provider())
         .with_safe_default_protocol_versions()?
-        .with_root_certificates(roots);
+        .dangerous()
+        .with_custom_certificate_verifier(Arc::new(HubVerifier::new(webpki, pinned)));
     let config = match &files.client_cert {
         None => builder.with_no_client_auth(),
         Some((cert, key)) => builder.with_client_auth_cert(load_certs(cert)?, load_key(key)?)?,
