@@ -25,6 +25,11 @@ tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-ros2.XXXXXX")"
 ns="flbench2-$$"
 pids=()
 cleanup() {
+    # Everything started runs inside the namespace: stop all of it, then remove it.
+    for sig in TERM KILL; do
+        ip netns pids "$ns" 2>/dev/null | xargs -r kill -s "$sig" 2>/dev/null || true
+        [ "$sig" = TERM ] && sleep 1
+    done
     for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
     wait 2>/dev/null || true
     ip netns del "$ns" 2>/dev/null || true
@@ -63,10 +68,12 @@ pids+=($!)
 wait_line "$tmp/style.log" "ready"
 peer publish --seconds "$((seconds + 8))" --points "$npoints" >"$tmp/pub.log" 2>&1 &
 pids+=($!)
+pub_pid=$!
 # The bridges' pids inside the namespace are ordinary pids: find them by command line.
 sleep 3
-agent_pid="$(pgrep -f "^$bin agent --config $tmp/agent.yaml" | head -n1)"
-style_pid="$(pgrep -f "^$python .*bench_peer.py rosbridge-style" | head -n1)"
+in_this_ns() { ip netns pids "$ns" | xargs -r ps -o pid=,args= -p | awk -v want="$1" 'index($0, want) {print $1; exit}'; }
+agent_pid="$(in_this_ns "agent --config $tmp/agent.yaml")"
+style_pid="$(in_this_ns "bench_peer.py rosbridge-style")"
 [ -n "$agent_pid" ] && [ -n "$style_pid" ] || { echo "bridge processes not found" >&2; exit 1; }
 peer hub-sub --url "ws://127.0.0.1:18081/?token=$op_token" --seconds "$seconds" >"$tmp/hubsub.log" 2>&1 &
 pids+=($!)
@@ -95,5 +102,8 @@ echo "machine: $(nproc) cores, $(awk -F: '/model name/ {print $2; exit}' /proc/c
 printf '%-34s cpu %6s %% of one core  %s latency %s\n' "fleetlink agent (+ hub)" "$(cpu "$a0" "$a1")" "$(mem "$agent_pid")" "$(tail -n1 "$tmp/hubsub.log")"
 printf '%-34s cpu %6s %% of one core  %s latency %s\n' "rosbridge-style Python bridge" "$(cpu "$s0" "$s1")" "$(mem "$style_pid")" "$(tail -n1 "$tmp/stylesub.log")"
 printf '%-34s latency %s\n' "DDS subscriber on the robot (floor)" "$(tail -n1 "$tmp/ddssub.log")"
+# The publisher's own time from stamp to the end of write() is inside every latency above.
+wait "$pub_pid" 2>/dev/null || true
+printf '%-34s %s\n' "publisher: stamp -> write() done" "$(grep '"sent"' "$tmp/pub.log" | tail -n1)"
 [ -n "${LOCAL_PROBE:-}" ] && echo "agent's local listener: $(tail -n1 "$tmp/localsub.log")"
 grep -E "WARN|ERROR" "$tmp/agent.log" | head -n 5 || true

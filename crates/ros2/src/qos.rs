@@ -6,11 +6,23 @@
 //! reliable writer, not the reverse) and transient-local for latched router topics, so a
 //! late local subscriber asking for transient-local gets the last message.
 
-use rustdds::policy::{Durability, History, Reliability};
+use rustdds::policy::{Durability, History, Reliability, ResourceLimits};
 use rustdds::{Duration, QosPolicies, QosPolicyBuilder};
 
 /// How many samples a reader or a volatile writer keeps (the ROS 2 default depth).
 pub const DEPTH: i32 = 10;
+
+/// A reader's cache bound. rustdds keeps a topic's received samples up to the
+/// resource limit (64 by default) and trims to the history depth only every few
+/// seconds: 64 samples of a 1 MB point cloud held for nothing. The bridge takes each
+/// sample as it arrives, so the cache never needs more than the depth.
+fn reader_limits() -> ResourceLimits {
+    ResourceLimits {
+        max_samples: DEPTH,
+        max_instances: 1,
+        max_samples_per_instance: DEPTH,
+    }
+}
 
 fn reliable() -> Reliability {
     Reliability::Reliable {
@@ -38,6 +50,7 @@ pub fn reader_for(reliability: Option<Reliability>, durability: Option<Durabilit
             Durability::Volatile
         })
         .history(History::KeepLast { depth: DEPTH })
+        .resource_limits(reader_limits())
         .build()
 }
 
