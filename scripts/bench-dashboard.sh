@@ -17,7 +17,7 @@ robot_token="$(timeout 30 "$bin" admin --data-dir "$data" token robot robot4)"
 "$bin" demo --listen 127.0.0.1:0 --data-dir "$data" >"$tmp/hub.log" 2>&1 &
 pids+=($!)
 addr="$(wait_for_line "$tmp/hub.log" '^  open http://([0-9.:]+)/ in a browser$' "demo start" "${pids[0]}")"
-op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \(full rights\): (.+)$' "operator token" "${pids[0]}")"
+op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \([^)]*\): (.+)$' "operator token" "${pids[0]}")"
 cat >"$tmp/agent.yaml" <<YAML
 hub: ws://$addr/
 name: robot4

@@ -5,23 +5,45 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Time per stage, reported at the end (also when a stage fails).
+stages=()
+stage_start=$SECONDS
+stage_name=""
+stage() {
+    [ -n "$stage_name" ] && stages+=("$(printf '%-40s %4d s' "$stage_name" $((SECONDS - stage_start)))")
+    stage_name="$1"
+    stage_start=$SECONDS
+    [ -n "$1" ] && echo "== $1"
+    return 0
+}
+report() {
+    stage ""
+    echo "== time per stage"
+    printf '  %s\n' "${stages[@]}"
+    echo "  total: $SECONDS s"
+}
+trap report EXIT
+
+stage "setup (scripts/setup.d)"
 ./scripts/setup-test-env.sh
 
-echo "== cargo fmt --check"
+stage "cargo fmt --check"
 cargo fmt --all --check
-echo "== cargo clippy"
+stage "cargo clippy"
 cargo clippy --workspace --all-targets --locked -- -D warnings
-echo "== cargo build (release binary for interop suites)"
-cargo build --release --locked -p fleetlink
-echo "== cargo test"
-cargo nextest run --workspace --locked --no-fail-fast
+# One build for both the Rust tests and the interop suites' binary: the `ci` profile
+# (Cargo.toml) is optimized with test-build assertions, so nothing is compiled twice.
+stage "cargo build (ci profile: the binary for interop suites)"
+cargo build --profile ci --locked -p fleetlink
+stage "cargo test (nextest, ci profile)"
+cargo nextest run --workspace --locked --no-fail-fast --cargo-profile ci
 
 # Each interop suite is a directory with a run.sh that exits non-zero on failure.
-export FLEETLINK_BIN="$PWD/target/release/fleetlink"
+export FLEETLINK_BIN="$PWD/target/ci/fleetlink"
 failed=()
 for suite in tests/interop/*/run.sh; do
     [ -e "$suite" ] || continue
-    echo "== interop: $suite"
+    stage "interop: $suite"
     if ! bash "$suite"; then failed+=("$suite"); fi
 done
 if [ ${#failed[@]} -ne 0 ]; then

@@ -7,6 +7,15 @@ cd "$(dirname "$0")/../.."
 req=tests/interop/rosbridge/requirements.txt
 stamp=.venv/.fleetlink-requirements
 if [ ! -x .venv/bin/python ]; then
+    # Debian's python3 makes venvs only with python3-venv (ensurepip); install it first
+    # (waiting for another apt's lock) rather than fail half-way.
+    if ! command -v python3 >/dev/null || ! python3 -c 'import ensurepip, venv' 2>/dev/null; then
+        sudo_cmd=()
+        [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+        "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 update
+        DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 \
+            install -y --no-install-recommends python3 python3-venv
+    fi
     python3 -m venv .venv
 fi
 # The stamp holds the requirements that were installed; reinstall only when they change.

@@ -79,7 +79,7 @@ RULES
 "$bin" demo --listen 127.0.0.1:0 --data-dir "$data" >"$tmp/hub.log" 2>&1 &
 pids+=($!)
 addr="$(wait_for_line "$tmp/hub.log" '^  open http://([0-9.:]+)/ in a browser$' "demo start" "${pids[0]}")"
-op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \(full rights\): (.+)$' "operator token" "${pids[0]}")"
+op_token="$(wait_for_line "$tmp/hub.log" '^  the operator token \([^)]*\): (.+)$' "operator token" "${pids[0]}")"
 echo "demo hub: http://$addr/"
 : >"$tmp/agent.log"
 cat >"$tmp/robot4.yaml" <<EOF
