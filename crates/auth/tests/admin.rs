@@ -163,3 +163,29 @@ fn robot_authenticates_by_client_certificate_name_without_token() {
     };
     assert!(sec.authenticate(empty, conn, T0).is_ok());
 }
+
+/// Issue 14 (found by the docs suite): a hub creating its database while `fleetlink admin`
+/// mints a token in the same file must not fail with "database is locked"; both wait for
+/// the other's lock.
+#[test]
+fn issue14_two_processes_opening_a_new_database_at_once_both_succeed() {
+    for round in 0..20 {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("hub.sqlite3");
+        let openers: Vec<_> = (0..4)
+            .map(|i| {
+                let path = path.clone();
+                std::thread::spawn(move || {
+                    let store = fleetlink_auth::store::Store::open(&path)
+                        .unwrap_or_else(|e| panic!("round {round}, opener {i}: {e}"));
+                    store
+                        .mint_operator_token(&user(&format!("op{i}")), &[group("admin")], None, T0)
+                        .unwrap_or_else(|e| panic!("round {round}, opener {i} minting: {e}"));
+                })
+            })
+            .collect();
+        for o in openers {
+            o.join().unwrap();
+        }
+    }
+}

@@ -55,10 +55,10 @@ impl Store {
             path: path.clone(),
             source,
         })?;
-        conn.execute_batch(
-            "PRAGMA journal_mode = WAL;
-             PRAGMA synchronous = NORMAL;
-             CREATE TABLE IF NOT EXISTS robots (
+        // Shared with `fleetlink admin` and the auth store: wait for their locks.
+        fleetlink_auth::store::init_schema(
+            &conn,
+            "CREATE TABLE IF NOT EXISTS robots (
                  name TEXT PRIMARY KEY,
                  first_seen_ms INTEGER NOT NULL,
                  last_seen_ms INTEGER NOT NULL,

@@ -39,9 +39,39 @@ pub enum StoreError {
     NoSuchUser(String),
 }
 
+/// How long a statement waits for another process's lock on the database.
+pub const BUSY_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
+
+/// Prepares a database file the hub and `fleetlink admin` share: WAL mode, then `schema`
+/// in one write transaction, waiting up to [`BUSY_TIMEOUT`] for the other process's
+/// locks. SQLite answers "database is locked" at once, without waiting, when two
+/// connections create the same new file together (the journal-mode switch, or a read
+/// that must become a write); those attempts are repeated.
+pub fn init_schema(conn: &Connection, schema: &str) -> rusqlite::Result<()> {
+    use rusqlite::ErrorCode::{DatabaseBusy, DatabaseLocked};
+    conn.busy_timeout(BUSY_TIMEOUT)?;
+    let deadline = std::time::Instant::now() + BUSY_TIMEOUT;
+    loop {
+        let attempt = conn
+            .query_row("PRAGMA journal_mode = WAL", [], |_| Ok(()))
+            .and_then(|()| conn.execute_batch("PRAGMA synchronous = NORMAL;"))
+            .and_then(|()| conn.execute_batch(&format!("BEGIN IMMEDIATE; {schema}; COMMIT;")));
+        match attempt {
+            Err(rusqlite::Error::SqliteFailure(e, _))
+                if matches!(e.code, DatabaseBusy | DatabaseLocked)
+                    && std::time::Instant::now() < deadline =>
+            {
+                if !conn.is_autocommit() {
+                    let _ = conn.execute_batch("ROLLBACK;");
+                }
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            other => return other,
+        }
+    }
+}
+
 const SCHEMA: &str = "
-    PRAGMA journal_mode = WAL;
-    PRAGMA synchronous = NORMAL;
     CREATE TABLE IF NOT EXISTS auth_meta (
         key TEXT PRIMARY KEY,
         value INTEGER NOT NULL
@@ -101,14 +131,14 @@ impl Store {
             source,
         };
         let conn = Connection::open(path).map_err(open_err)?;
-        conn.execute_batch(SCHEMA).map_err(open_err)?;
+        init_schema(&conn, SCHEMA).map_err(open_err)?;
         Ok(Store::from_conn(conn))
     }
 
     /// A private in-memory database, for tests and `fleetlink demo`.
     pub fn open_in_memory() -> Result<Store, StoreError> {
         let conn = Connection::open_in_memory()?;
-        conn.execute_batch(SCHEMA)?;
+        init_schema(&conn, SCHEMA)?;
         Ok(Store::from_conn(conn))
     }
 

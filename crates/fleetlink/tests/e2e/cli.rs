@@ -238,3 +238,41 @@ async fn issue14_demo_reuses_its_tokens_and_they_expire() {
         "one operator and one robot token:\n{list}"
     );
 }
+
+/// Issue 14, finding 2: a user's error is one line naming the problem — no backtrace even
+/// with RUST_BACKTRACE set, no `Debug` dump, no cause repeated ("X: X").
+#[test]
+fn issue14_user_errors_are_one_line_without_backtrace_or_repeated_causes() {
+    let dir = temp_dir("one-line-errors");
+    let missing = dir.join("robot.yaml");
+    let out = Command::new(BIN)
+        .args(["agent", "--config"])
+        .arg(&missing)
+        .env("RUST_BACKTRACE", "full")
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "one line, got: {err}");
+    let line = lines[0];
+    assert!(line.starts_with("error: "), "{line}");
+    assert!(line.contains("robot.yaml"), "names the file: {line}");
+    assert!(
+        !line.contains("backtrace") && !line.contains("Os {"),
+        "{line}"
+    );
+    // Every cause once: no segment of the message repeats right after itself.
+    let parts: Vec<&str> = line.split(": ").collect();
+    for pair in parts.windows(2) {
+        assert_ne!(pair[0], pair[1], "a repeated cause in {line}");
+    }
+    let out = Command::new(BIN)
+        .args(["agent", "--hub", "http://x"])
+        .env("RUST_BACKTRACE", "1")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains("--hub") && err.contains("ws://"), "{err}");
+}
