@@ -45,11 +45,23 @@ fn main() -> std::process::ExitCode {
     // (even with RUST_BACKTRACE set), never the `Debug` form of the error chain.
     match run(Cli::parse()) {
         Ok(()) => std::process::ExitCode::SUCCESS,
+        // Output piped into `head` and closed early: the reader has what it wanted.
+        Err(e) if is_broken_pipe(&e) => std::process::ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {}", error_text(&e));
             std::process::ExitCode::FAILURE
         }
     }
+}
+
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    use std::io::ErrorKind::BrokenPipe;
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == BrokenPipe)
+            || c.downcast_ref::<serde_json::Error>()
+                .is_some_and(|j| j.io_error_kind() == Some(BrokenPipe))
+    })
 }
 
 /// An error and its causes on one line, each cause once: errors that already quote their
@@ -101,6 +113,16 @@ pub fn transcoder(
 #[cfg(test)]
 mod tests {
     use super::{Cli, error_text};
+
+    #[test]
+    fn a_closed_pipe_is_not_an_error() {
+        let pipe = std::io::Error::new(std::io::ErrorKind::BrokenPipe, "broken pipe");
+        assert!(super::is_broken_pipe(
+            &anyhow::Error::new(pipe).context("writing the list")
+        ));
+        let other = std::io::Error::new(std::io::ErrorKind::NotFound, "no such file");
+        assert!(!super::is_broken_pipe(&anyhow::Error::new(other)));
+    }
 
     #[test]
     fn causes_are_shown_once() {

@@ -276,3 +276,27 @@ fn issue14_user_errors_are_one_line_without_backtrace_or_repeated_causes() {
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert!(err.contains("--hub") && err.contains("ws://"), "{err}");
 }
+
+/// Issue 14, finding 2: output piped into `head` that stops reading is not an error (no
+/// "Broken pipe" message, exit status 0).
+#[test]
+fn issue14_output_piped_into_head_ends_quietly() {
+    for args in [&["msg", "list"][..], &["msg", "list", "--full-texts"]] {
+        let mut child = Command::new(BIN)
+            .args(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut first = String::new();
+        BufReader::new(child.stdout.take().unwrap())
+            .read_line(&mut first)
+            .unwrap();
+        assert!(!first.is_empty(), "{args:?} printed nothing");
+        // The reader is dropped here: the pipe closes with most of the output unread.
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{args:?}: {:?} {err}", out.status);
+        assert!(err.is_empty(), "{args:?} wrote to stderr: {err}");
+    }
+}
