@@ -106,6 +106,23 @@ impl Bridge {
         guid.prefix == self.own.prefix
     }
 
+    /// The DDS topic `dds_topic` of type `dds_type` (no key, as ROS 2 topics are).
+    fn topic(
+        &self,
+        dds_topic: &str,
+        dds_type: &str,
+        qos: &QosPolicies,
+    ) -> Result<rustdds::Topic, String> {
+        self.dp
+            .create_topic(
+                dds_topic.to_owned(),
+                dds_type.to_owned(),
+                qos,
+                TopicKind::NoKey,
+            )
+            .map_err(|e| format!("topic {dds_topic}: {e}"))
+    }
+
     /// A DDS reader of raw samples on `dds_topic`.
     pub(crate) fn reader(
         &self,
@@ -113,15 +130,7 @@ impl Bridge {
         dds_type: &str,
         qos: QosPolicies,
     ) -> Result<RawReader, String> {
-        let topic = self
-            .dp
-            .create_topic(
-                dds_topic.to_owned(),
-                dds_type.to_owned(),
-                &qos,
-                TopicKind::NoKey,
-            )
-            .map_err(|e| format!("topic {dds_topic}: {e}"))?;
+        let topic = self.topic(dds_topic, dds_type, &qos)?;
         self.subscriber
             .create_datareader_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
             .map_err(|e| format!("reader of {dds_topic}: {e}"))
@@ -134,15 +143,7 @@ impl Bridge {
         dds_type: &str,
         qos: QosPolicies,
     ) -> Result<RawWriter, String> {
-        let topic = self
-            .dp
-            .create_topic(
-                dds_topic.to_owned(),
-                dds_type.to_owned(),
-                &qos,
-                TopicKind::NoKey,
-            )
-            .map_err(|e| format!("topic {dds_topic}: {e}"))?;
+        let topic = self.topic(dds_topic, dds_type, &qos)?;
         self.publisher
             .create_datawriter_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
             .map_err(|e| format!("writer of {dds_topic}: {e}"))
