@@ -290,6 +290,17 @@ impl Rosbridge {
         Rosbridge { ws }
     }
 
+    /// Sends all of `ops` with one flush, so they reach the server together.
+    pub async fn send_all(&mut self, ops: impl IntoIterator<Item = Value>) {
+        for v in ops {
+            self.ws
+                .feed(WsMessage::text(v.to_string()))
+                .await
+                .expect("send");
+        }
+        self.ws.flush().await.expect("flush");
+    }
+
     pub async fn send(&mut self, v: Value) {
         self.ws
             .send(WsMessage::text(v.to_string()))

@@ -56,7 +56,7 @@ pub fn to_json(value: &Value) -> serde_json::Value {
 
 /// The `f64` whose shortest decimal form equals the `f32`'s shortest form, so JSON
 /// shows `0.1` rather than `0.10000000149011612`.
-fn f32_as_f64(x: f32) -> f64 {
+pub(crate) fn f32_as_f64(x: f32) -> f64 {
     if !x.is_finite() {
         return f64::from(x);
     }

@@ -10,7 +10,9 @@
 use std::borrow::Cow;
 
 use crate::error::CodecError;
+use crate::layout::{Elem, FieldLayout, MsgLayout, Scalar};
 use crate::loose::{Loose, View};
+use crate::spec::ArrayKind;
 
 /// Deepest nesting accepted (serde_json uses the same limit).
 const MAX_DEPTH: usize = 128;
@@ -24,8 +26,10 @@ pub(crate) enum Node<'a> {
     Float(f64),
     Str(Cow<'a, str>),
     Array(Vec<Node<'a>>),
-    /// An array of numbers with at least one fraction, exponent or `null` (NaN).
-    Floats(Vec<f64>),
+    /// An array of numbers with at least one fraction, exponent or `null` (NaN). The flag
+    /// says every element was written with a fraction or exponent (no integer, no `null`),
+    /// which is how JSON output writes a float array.
+    Floats(Vec<f64>, bool),
     /// An array of integers that all fit `i64`.
     Ints(Vec<i64>),
     Object(Vec<(Cow<'a, str>, Node<'a>)>),
@@ -40,7 +44,7 @@ impl Loose for Node<'_> {
             Node::Float(f) => View::Float(*f),
             Node::Str(s) => View::Str(s),
             Node::Array(a) => View::Array(a),
-            Node::Floats(f) => View::Floats(f),
+            Node::Floats(f, _) => View::Floats(f),
             Node::Ints(i) => View::Ints(i),
             Node::Object(_) => View::Map,
         }
@@ -68,6 +72,110 @@ pub(crate) fn parse(text: &[u8]) -> Result<Node<'_>, CodecError> {
         return Err(syntax(p.pos, "trailing characters after the JSON value"));
     }
     Ok(node)
+}
+
+/// True when `node` already is what the JSON output of a `layout` message carries: an
+/// object with exactly the type's fields, each holding a value of its exact kind
+/// (integers in range for integer fields, numbers written as floats for float fields,
+/// base64 text for `uint8[]`, arrays of the right length). Such text can be passed on as
+/// it is: converting it would only reproduce it. Anything else (a missing field to fill
+/// with its default, an integer to turn into a float, an extra field, a wrong type) is
+/// not normal, and goes through the converting path, which also finds the errors.
+pub(crate) fn is_normal(layout: &MsgLayout, node: &Node<'_>) -> bool {
+    let Node::Object(fields) = node else {
+        return false;
+    };
+    // Equal counts and every declared field found: no extra or repeated key.
+    fields.len() == layout.fields.len()
+        && layout.fields.iter().all(|f| {
+            fields
+                .iter()
+                .find(|(k, _)| *k == *f.name)
+                .is_some_and(|(_, v)| field_is_normal(f, v))
+        })
+}
+
+fn field_is_normal(f: &FieldLayout, node: &Node<'_>) -> bool {
+    let len_ok = |n: usize| match f.array {
+        ArrayKind::Fixed(len) => n == len as usize,
+        ArrayKind::Bounded(b) => n <= b as usize,
+        _ => true,
+    };
+    match (f.array, &f.elem, node) {
+        (ArrayKind::Single, elem, node) => elem_is_normal(elem, node),
+        (_, Elem::Scalar(Scalar::U8), Node::Str(text)) => {
+            use base64::Engine as _;
+            base64::engine::general_purpose::STANDARD
+                .decode(text.as_bytes())
+                .is_ok_and(|b| len_ok(b.len()))
+        }
+        // JSON writes uint8[] as base64 text, never as numbers.
+        (_, Elem::Scalar(Scalar::U8), _) => false,
+        (_, Elem::Scalar(s), Node::Ints(items)) => {
+            len_ok(items.len())
+                && int_range(*s).is_some_and(|(lo, hi)| {
+                    items.iter().all(|i| (lo..=hi).contains(&i128::from(*i)))
+                })
+        }
+        (_, Elem::Scalar(s @ (Scalar::F32 | Scalar::F64)), Node::Floats(items, all_fractions)) => {
+            *all_fractions
+                && len_ok(items.len())
+                && (*s == Scalar::F64 || items.iter().all(|f| f32_is_normal(*f)))
+        }
+        (_, elem, Node::Array(items)) => {
+            len_ok(items.len()) && items.iter().all(|n| elem_is_normal(elem, n))
+        }
+        _ => false,
+    }
+}
+
+fn elem_is_normal(elem: &Elem, node: &Node<'_>) -> bool {
+    let s = match elem {
+        Elem::Msg(m) => return is_normal(m, node),
+        Elem::Scalar(s) => *s,
+    };
+    match (s, node) {
+        (Scalar::Bool, Node::Bool(_)) => true,
+        (Scalar::F64, Node::Float(f)) => f.is_finite(),
+        (Scalar::F32, Node::Float(f)) => f32_is_normal(*f),
+        (Scalar::String | Scalar::WString, Node::Str(_)) => true,
+        (Scalar::Time | Scalar::Duration, Node::Object(fields)) => {
+            let range = if s == Scalar::Time {
+                (0, i128::from(u32::MAX))
+            } else {
+                (i128::from(i32::MIN), i128::from(i32::MAX))
+            };
+            let part = |name: &str| {
+                fields.iter().find(|(k, _)| k == name).is_some_and(
+                    |(_, v)| matches!(v, Node::Int(i) if (range.0..=range.1).contains(i)),
+                )
+            };
+            fields.len() == 2 && part("sec") && part("nanosec")
+        }
+        (s, Node::Int(i)) => int_range(s).is_some_and(|(lo, hi)| (lo..=hi).contains(i)),
+        _ => false,
+    }
+}
+
+/// A `float32` value is written in its shortest `f32` form: `0.1`, never
+/// `0.10000000149011612`, and never a value `f32` cannot hold.
+fn f32_is_normal(f: f64) -> bool {
+    f.is_finite() && crate::json::f32_as_f64(f as f32) == f
+}
+
+/// The range of an integer scalar; `None` for the others.
+fn int_range(s: Scalar) -> Option<(i128, i128)> {
+    Some(match s {
+        Scalar::I8 => (i8::MIN.into(), i8::MAX.into()),
+        Scalar::U8 => (0, u8::MAX.into()),
+        Scalar::I16 => (i16::MIN.into(), i16::MAX.into()),
+        Scalar::U16 => (0, u16::MAX.into()),
+        Scalar::I32 => (i32::MIN.into(), i32::MAX.into()),
+        Scalar::U32 => (0, u32::MAX.into()),
+        Scalar::I64 => (i64::MIN.into(), i64::MAX.into()),
+        Scalar::U64 => (0, u64::MAX.into()),
+        _ => return None,
+    })
 }
 
 fn syntax(offset: usize, reason: &str) -> CodecError {
@@ -157,9 +265,11 @@ impl<'a> Parser<'a> {
         const EXACT: i64 = 1 << 53;
         let mut ints: Vec<i64> = Vec::new();
         let mut floats: Option<Vec<f64>> = None;
+        let mut all_fractions = true;
         loop {
             self.ws();
             let float = if self.eat("null") {
+                all_fractions = false;
                 f64::NAN
             } else {
                 let start = self.pos;
@@ -198,7 +308,10 @@ impl<'a> Parser<'a> {
                             return Ok(None);
                         }
                         Some(_) if i.abs() > EXACT => return Ok(None),
-                        Some(_) => i as f64,
+                        Some(_) => {
+                            all_fractions = false;
+                            i as f64
+                        }
                     }
                 }
             };
@@ -208,6 +321,7 @@ impl<'a> Parser<'a> {
                     if ints.iter().any(|i| i.abs() > EXACT) {
                         return Ok(None);
                     }
+                    all_fractions &= ints.is_empty();
                     floats.insert(ints.iter().map(|i| *i as f64).collect())
                 }
             };
@@ -217,7 +331,7 @@ impl<'a> Parser<'a> {
                 continue;
             }
             if self.eat("]") {
-                return Ok(floats.map(Node::Floats));
+                return Ok(floats.map(|f| Node::Floats(f, all_fractions)));
             }
             return Ok(None);
         }
@@ -389,10 +503,11 @@ mod tests {
         /// NaN != NaN; swap NaN for a marker so test comparisons work.
         fn clone_nan_free(self) -> Self {
             match self {
-                Node::Floats(v) => Node::Floats(
+                Node::Floats(v, exact) => Node::Floats(
                     v.into_iter()
                         .map(|f| if f.is_nan() { -0.123 } else { f })
                         .collect(),
+                    exact,
                 ),
                 other => other,
             }
@@ -421,7 +536,7 @@ mod tests {
         assert_eq!(a[1], Node::Int(-2));
         assert_eq!(
             parse(b"[1, 2.5, null]").expect("floats").clone_nan_free(),
-            Node::Floats(vec![1.0, 2.5, f64::NAN]).clone_nan_free()
+            Node::Floats(vec![1.0, 2.5, f64::NAN], false).clone_nan_free()
         );
         assert_eq!(parse(b"[1, -2]").expect("ints"), Node::Ints(vec![1, -2]));
         let big = parse(b"[9007199254740993, 0.5]").expect("parses");

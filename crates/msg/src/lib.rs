@@ -54,7 +54,7 @@ pub use error::{CodecError, ParseError, RegistryError};
 pub use ident::{full_text, md5sum, type_hash};
 pub use json::{to_json, write_json};
 pub use name::{InterfaceKind, TypeName, from_dds_name, ros2_dds_name};
-pub use registry::Registry;
+pub use registry::{Registry, Resolved};
 pub use spec::Dialect;
 pub use value::{Array, Struct, Value};
 pub use view::{CdrView, HeaderView, PrimitiveSlice};
@@ -116,6 +116,35 @@ pub fn from_json_bytes(
     loose::to_struct(&layout, &doc)
         .map(Value::Struct)
         .map_err(|e| binary::in_field(e, &layout.name.short()))
+}
+
+/// Checks rosbridge JSON text against `type_name` and brings it to normal form (missing
+/// fields filled with defaults, integers in float fields made floats). `Ok(None)` when the
+/// text already is in normal form and can be used as it is, which is the common case and
+/// costs one parse without building a message value.
+pub fn normalize_json_bytes(
+    registry: &Registry,
+    type_name: &str,
+    dialect: Dialect,
+    text: &[u8],
+) -> Result<Option<Vec<u8>>, CodecError> {
+    normalize_json_resolved(&registry.resolve(type_name, dialect)?, text)
+}
+
+/// [`normalize_json_bytes`] for a type resolved beforehand.
+pub fn normalize_json_resolved(
+    ty: &registry::Resolved,
+    text: &[u8],
+) -> Result<Option<Vec<u8>>, CodecError> {
+    let layout = &ty.layout;
+    let doc = json_text::parse(text)?;
+    if json_text::is_normal(layout, &doc) {
+        return Ok(None);
+    }
+    let v = loose::to_struct(layout, &doc)
+        .map(Value::Struct)
+        .map_err(|e| binary::in_field(e, &layout.name.short()))?;
+    Ok(Some(to_json_bytes(&v)))
 }
 
 /// The message as compact rosbridge JSON text.

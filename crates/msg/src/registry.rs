@@ -30,6 +30,17 @@ struct Tables {
     /// Whole interfaces (msg, srv, action) by name, for `show` and service md5sums.
     interfaces: HashMap<(Dialect, Key), Arc<Definition>>,
     layouts: LayoutCache,
+    /// Counts changes to the definitions; a [`Resolved`] type is current while it holds.
+    generation: u64,
+}
+
+/// A message type resolved once, for converting many messages of one topic without
+/// looking the type up each time. [`Registry::is_current`] tells whether a definition
+/// changed since (then resolve again).
+#[derive(Clone, Debug)]
+pub struct Resolved {
+    pub(crate) layout: Arc<MsgLayout>,
+    generation: u64,
 }
 
 impl SpecSource for Tables {
@@ -55,6 +66,7 @@ impl Tables {
         }
         table.insert(key, Arc::new(spec));
         self.layouts.clear();
+        self.generation += 1;
     }
 
     fn insert_definition(&mut self, dialect: Dialect, def: Definition) {
@@ -403,6 +415,20 @@ impl Registry {
         );
         t.layouts = cache;
         result
+    }
+
+    /// `type_name` resolved for repeated conversions (see [`Resolved`]).
+    pub fn resolve(&self, type_name: &str, dialect: Dialect) -> Result<Resolved, RegistryError> {
+        // Read first: a change between the two steps makes the result look stale, never
+        // the other way round.
+        let generation = self.read().generation;
+        let layout = self.layout(type_name, dialect)?;
+        Ok(Resolved { layout, generation })
+    }
+
+    /// False once a definition has changed since `r` was resolved.
+    pub fn is_current(&self, r: &Resolved) -> bool {
+        self.read().generation == r.generation
     }
 
     /// Every registered message type (both tables), sorted, in `pkg/kind/T` form.

@@ -64,6 +64,13 @@ impl TopicName {
     }
 }
 
+/// Lets maps keyed by topic name be searched with the name as a client spelled it.
+impl std::borrow::Borrow<str> for TopicName {
+    fn borrow(&self) -> &str {
+        &self.0
+    }
+}
+
 impl fmt::Display for TopicName {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.0)

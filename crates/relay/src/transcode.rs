@@ -75,6 +75,17 @@ pub trait Transcoder: Send + Sync + 'static {
         Ok(None)
     }
 
+    /// [`Transcoder::normalize`] for a publisher that sends many messages on one topic:
+    /// `cache` keeps whatever the transcoder resolved for the type between calls.
+    fn normalize_cached(
+        &self,
+        schema: &Schema,
+        payload: &Payload,
+        _cache: &mut NormalizeCache,
+    ) -> Result<Option<Payload>, TranscodeError> {
+        self.normalize(schema, payload)
+    }
+
     /// Every message type this side knows (rosapi `interfaces`).
     fn type_names(&self) -> Vec<String> {
         Vec::new()
@@ -87,6 +98,11 @@ pub trait Transcoder: Send + Sync + 'static {
         None
     }
 }
+
+/// State a transcoder keeps for one publisher's topic between
+/// [`Transcoder::normalize_cached`] calls; opaque to the caller.
+#[derive(Default)]
+pub struct NormalizeCache(Option<Box<dyn std::any::Any + Send + Sync>>);
 
 /// What a ROS 1 connection header says about a type.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -118,6 +134,13 @@ impl RegistryTranscoder {
     pub fn registry(&self) -> &fleetlink_msg::Registry {
         &self.registry
     }
+}
+
+/// What [`RegistryTranscoder::normalize_cached`] keeps per topic.
+struct ResolvedTopic {
+    type_name: String,
+    dialect: fleetlink_msg::Dialect,
+    resolved: fleetlink_msg::Resolved,
 }
 
 fn dialect_of(schema: &Schema, payload: Encoding) -> fleetlink_msg::Dialect {
@@ -230,9 +253,13 @@ impl Transcoder for RegistryTranscoder {
         };
         Ok(Some(match from {
             Encoding::Json => {
-                let v = fleetlink_msg::from_json_bytes(reg, ty, dialect, &payload.bytes)
-                    .map_err(invalid)?;
-                Payload::json(fleetlink_msg::to_json_bytes(&v))
+                match fleetlink_msg::normalize_json_bytes(reg, ty, dialect, &payload.bytes)
+                    .map_err(invalid)?
+                {
+                    Some(normal) => Payload::json(normal),
+                    // Already in normal form: the bytes as they came (no copy).
+                    None => payload.clone(),
+                }
             }
             _ => {
                 let v =
@@ -240,6 +267,60 @@ impl Transcoder for RegistryTranscoder {
                 Payload::new(Encoding::Cbor, fleetlink_msg::to_cbor_bytes(&v))
             }
         }))
+    }
+
+    fn normalize_cached(
+        &self,
+        schema: &Schema,
+        payload: &Payload,
+        cache: &mut NormalizeCache,
+    ) -> Result<Option<Payload>, TranscodeError> {
+        if payload.encoding != Encoding::Json {
+            return self.normalize(schema, payload);
+        }
+        let reg = &self.registry;
+        let ty = schema.type_name.as_str();
+        let dialect = dialect_of(schema, payload.encoding);
+        let cached = cache
+            .0
+            .as_ref()
+            .and_then(|c| c.downcast_ref::<ResolvedTopic>())
+            .filter(|c| c.type_name == ty && c.dialect == dialect && reg.is_current(&c.resolved));
+        let resolved = match cached {
+            Some(c) => &c.resolved,
+            None => {
+                if !reg.contains(ty) {
+                    return Ok(None);
+                }
+                let resolved = reg
+                    .resolve(ty, dialect)
+                    .map_err(|e| TranscodeError::Invalid {
+                        type_name: ty.to_owned(),
+                        from: payload.encoding,
+                        to: payload.encoding,
+                        cause: e.to_string(),
+                    })?;
+                let c = cache.0.insert(Box::new(ResolvedTopic {
+                    type_name: ty.to_owned(),
+                    dialect,
+                    resolved,
+                }));
+                &c.downcast_ref::<ResolvedTopic>()
+                    .expect("just stored")
+                    .resolved
+            }
+        };
+        match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
+            Ok(Some(normal)) => Ok(Some(Payload::json(normal))),
+            // Already in normal form: the bytes as they came (no copy).
+            Ok(None) => Ok(Some(payload.clone())),
+            Err(e) => Err(TranscodeError::Invalid {
+                type_name: ty.to_owned(),
+                from: payload.encoding,
+                to: payload.encoding,
+                cause: e.to_string(),
+            }),
+        }
     }
 
     fn type_names(&self) -> Vec<String> {

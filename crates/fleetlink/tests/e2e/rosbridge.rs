@@ -403,6 +403,38 @@ async fn a_burst_of_small_messages_reaches_a_default_subscriber_whole() {
     assert!(seen.windows(2).all(|w| w[0] < w[1]), "out of order");
 }
 
+/// A client that floods the hub must not starve the delivery of its own messages: the
+/// publisher's reader gives way to the subscriber's writer between operations. Before,
+/// the reader handled a whole socket read (thousands of publishes) before the writer
+/// ran, the subscriber's queue overflowed and about 1 % arrived.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_flood_of_publishes_in_one_write_is_delivered_not_dropped() {
+    const N: i64 = 20_000;
+    let hub = start_hub().await;
+    let mut sub = Rosbridge::connect(&hub.ws_url()).await;
+    sub.send(json!({"op": "subscribe", "topic": "/flood", "id": "f"}))
+        .await;
+    let mut pubr = Rosbridge::connect(&hub.ws_url()).await;
+    pubr.send(json!({"op": "advertise", "topic": "/flood", "type": "std_msgs/msg/Int64"}))
+        .await;
+    sub.call("/rosapi/get_time", json!({}), "sync").await;
+    pubr.send_all((0..N).map(|i| json!({"op": "publish", "topic": "/flood", "msg": {"data": i}})))
+        .await;
+    let mut seen = 0;
+    let deadline = tokio::time::Instant::now() + Duration::from_secs(20);
+    while seen < N {
+        match tokio::time::timeout_at(deadline, sub.try_recv()).await {
+            Ok(Some(m)) if m["op"] == "publish" => {
+                assert_eq!(m["msg"]["data"], json!(seen), "in order, none missing");
+                seen += 1;
+            }
+            Ok(Some(_)) => {}
+            _ => break,
+        }
+    }
+    assert_eq!(seen, N, "a flood of {N} publishes lost {}", N - seen);
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn protocol_odds_and_ends_fragments_set_level_png_and_plain_error_texts() {
     use base64::Engine;

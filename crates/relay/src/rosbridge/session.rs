@@ -31,6 +31,7 @@ use crate::outbox::{Delivery, Outbox};
 use crate::queue::DropReason;
 use crate::rosbridge::rosapi::{self, Answer};
 use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
+use crate::transcode::NormalizeCache;
 use crate::unix_nanos;
 
 /// Settings shared by all rosbridge sessions of one server.
@@ -122,7 +123,7 @@ pub async fn serve<S>(
             session.calls.binary = true;
         }
         let req = match frame {
-            Ok(WsMessage::Text(t)) => match Request::from_json(t.as_bytes()) {
+            Ok(WsMessage::Text(t)) => match Request::from_json_frame(&bytes::Bytes::from(t)) {
                 Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
                     Some(whole) => whole,
                     None => continue,
@@ -154,6 +155,11 @@ pub async fn serve<S>(
             _ = step => {}
             _ = shutdown.cancelled() => break,
         }
+        // One socket read can hold thousands of small operations; counting each against
+        // the task's budget makes a flooding client give way to the writers that deliver
+        // its messages (without it, a woken writer waits behind the whole read and the
+        // subscribers' queues overflow).
+        tokio::task::consume_budget().await;
     }
     router.disconnect(client);
     drop(session);
@@ -168,6 +174,18 @@ enum Reply {
 struct Published {
     topic: Arc<Topic>,
     seq: u64,
+    /// What the transcoder resolved for checking this topic's messages.
+    normalize: NormalizeCache,
+}
+
+impl Published {
+    fn new(topic: Arc<Topic>) -> Published {
+        Published {
+            topic,
+            seq: 0,
+            normalize: NormalizeCache::default(),
+        }
+    }
 }
 
 pub(super) struct Session {
@@ -498,9 +516,7 @@ impl Session {
             .router
             .advertise(self.client, &name, Schema::named(type_name), latch)
             .map_err(|e| format!("advertise: {e}"))?;
-        self.published
-            .entry(name)
-            .or_insert(Published { topic: t, seq: 0 });
+        self.published.entry(name).or_insert(Published::new(t));
         Ok(())
     }
 
@@ -520,10 +536,13 @@ impl Session {
     /// message waits here — and, because this loop is what reads the socket, the client's
     /// own sends slow down with it — instead of being refused.
     async fn wait_for_room(&self, topic: &str) {
-        let Some(p) = TopicName::parse(topic)
-            .ok()
-            .and_then(|n| self.published.get(&n))
-        else {
+        let found = match self.published.get(topic) {
+            Some(p) => Some(p),
+            None => TopicName::parse(topic)
+                .ok()
+                .and_then(|n| self.published.get(&n)),
+        };
+        let Some(p) = found else {
             return;
         };
         let flow = &p.topic.stats.no_drop_flow;
@@ -534,7 +553,11 @@ impl Session {
     }
 
     fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
-        let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
+        // Most publishes name a topic this client already publishes, spelled the same way.
+        let name = match self.published.get_key_value(topic) {
+            Some((known, _)) => known.clone(),
+            None => TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?,
+        };
         if !is_object(&msg) {
             return Err(format!("publish {name}: field 'msg' must be an object"));
         }
@@ -557,16 +580,15 @@ impl Session {
                 .router
                 .advertise(self.client, &name, schema, false)
                 .map_err(|e| format!("publish: {e}"))?;
-            self.published
-                .insert(name.clone(), Published { topic: t, seq: 0 });
+            self.published.insert(name.clone(), Published::new(t));
         }
         let p = self.published.get_mut(&name).expect("inserted above");
         // Checked and completed once here, for every subscriber.
-        let msg = match self
-            .router
-            .transcoder()
-            .normalize(&p.topic.meta().schema, &msg)
-        {
+        let msg = match self.router.transcoder().normalize_cached(
+            &p.topic.meta().schema,
+            &msg,
+            &mut p.normalize,
+        ) {
             Ok(Some(normal)) => normal,
             Ok(None) => msg,
             Err(e) => {

@@ -70,7 +70,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     rt.block_on(bench(args))
 }
 
-fn with_token(url: &str, token: &str) -> String {
+pub(super) fn with_token(url: &str, token: &str) -> String {
     let url = hub_url(url);
     if token.is_empty() {
         return url;
@@ -158,7 +158,7 @@ async fn caller(
 }
 
 /// CPU seconds (user + system) and resident kB of a process, from /proc.
-fn proc_figures(pid: u32) -> Option<(f64, u64)> {
+pub(super) fn proc_figures(pid: u32) -> Option<(f64, u64)> {
     let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
     // Fields after the command name (which may contain spaces) start after ") ".
     let rest = &stat[stat.rfind(')')? + 2..];

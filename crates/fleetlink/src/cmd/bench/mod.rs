@@ -5,6 +5,8 @@
 //! - [`relay`]: the `relay` subcommand: options, the run's order of events and what is
 //!   counted.
 //! - [`calls`]: the `calls` subcommand: service round trips through a hub and an agent.
+//! - [`delivery`]: the `delivery` subcommand: a server's CPU per delivered message, for
+//!   the hub's protocols and for NATS and MQTT servers.
 //! - [`conn`]: a bench client's `fleetlink.v1` connection and setup handshake.
 //! - [`publisher`], [`subscriber`]: the two kinds of client and their hot loops.
 //! - [`report`]: the progress line and the final summary.
@@ -13,6 +15,7 @@
 
 mod calls;
 mod conn;
+mod delivery;
 mod publisher;
 mod reconnect;
 mod relay;
@@ -36,6 +39,10 @@ enum Command {
     /// Service calls from rosbridge clients on the hub to a provider on an agent's local
     /// listener: round-trip percentiles, calls/s, servers' CPU per call and memory.
     Calls(calls::Args),
+    /// One publisher and its subscribers at a fixed rate through a server speaking
+    /// rosbridge JSON or CBOR, fleetlink.v1, NATS or MQTT: the server's CPU per delivered
+    /// message, from /proc.
+    Delivery(delivery::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
@@ -43,5 +50,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Relay(a) => relay::run(a),
         Command::Reconnect(a) => reconnect::run(a),
         Command::Calls(a) => calls::run(a),
+        Command::Delivery(a) => delivery::run(a),
     }
 }

@@ -1,0 +1,126 @@
+//! rosbridge JSON that is already in normal form is passed on as it came
+//! (`normalize_json_bytes` returns `None`); everything else is converted. Either way the
+//! result must be exactly what the full conversion gives.
+
+use fleetlink_msg::{Dialect, Registry, Wire, decode, from_json_bytes, normalize_json_bytes};
+use serde_json::{Value as Json, json};
+
+use crate::util::{registry, vectors};
+
+/// The full conversion: parse into a message value and write it out.
+fn converted(reg: &Registry, ty: &str, text: &str) -> Json {
+    let v = from_json_bytes(reg, ty, Dialect::Ros2, text.as_bytes()).expect("valid message");
+    serde_json::from_slice(&fleetlink_msg::to_json_bytes(&v)).expect("our output is JSON")
+}
+
+/// What the normalizer gives, as a JSON value, and whether it kept the input as it was.
+fn normalized(reg: &Registry, ty: &str, text: &str) -> (Json, bool) {
+    match normalize_json_bytes(reg, ty, Dialect::Ros2, text.as_bytes()).expect("valid") {
+        Some(out) => (serde_json::from_slice(&out).expect("JSON"), false),
+        None => (serde_json::from_str(text).expect("JSON"), true),
+    }
+}
+
+#[test]
+fn output_of_every_vector_is_already_normal() {
+    let reg = registry();
+    let mut checked = 0;
+    for v in vectors("cdr.jsonl") {
+        let ty = v["type"].as_str().expect("type");
+        let cdr = (0..v["cdr"].as_str().expect("hex").len())
+            .step_by(2)
+            .map(|i| u8::from_str_radix(&v["cdr"].as_str().unwrap()[i..i + 2], 16).unwrap())
+            .collect::<Vec<u8>>();
+        let value = decode(&reg, ty, Wire::Cdr, &cdr).expect("vector decodes");
+        let text = fleetlink_msg::to_json_bytes(&value);
+        let (_, kept) = normalized(&reg, ty, std::str::from_utf8(&text).unwrap());
+        // NaN is written as null, which reads back as a default to fill: not normal.
+        if !String::from_utf8_lossy(&text).contains("null") {
+            assert!(kept, "{ty}: our own JSON output was converted again");
+        }
+        checked += 1;
+    }
+    assert!(checked > 300, "only {checked} vectors");
+}
+
+#[test]
+fn normalizing_gives_what_full_conversion_gives() {
+    let reg = registry();
+    let mut kept_any = false;
+    let mut converted_any = false;
+    let mut inputs: Vec<(String, String)> = vectors("cdr.jsonl")
+        .iter()
+        .map(|v| {
+            (
+                v["type"].as_str().unwrap().to_owned(),
+                v["json"].to_string(),
+            )
+        })
+        .collect();
+    for (ty, msg) in [
+        ("std_msgs/msg/String", json!({"data": "hi \" \u{e9}"})),
+        ("std_msgs/msg/Float64", json!({"data": 1})),
+        ("std_msgs/msg/Float64", json!({"data": 1.5})),
+        ("std_msgs/msg/Int32", json!({"data": 7.0})),
+        ("std_msgs/msg/Int32", json!({})),
+        ("std_msgs/msg/Int32", json!({"data": 7, "extra": 1})),
+        (
+            "geometry_msgs/msg/Twist",
+            json!({"linear": {"x": 1.0, "y": 0.0, "z": 0.0}}),
+        ),
+        (
+            "geometry_msgs/msg/Twist",
+            json!({"linear": {"x": 1.0, "y": 0.0, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 2}}),
+        ),
+        (
+            "std_msgs/msg/Float64MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": [1.5, 2]}),
+        ),
+        (
+            "std_msgs/msg/Float64MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": [1.5, 2.0]}),
+        ),
+        (
+            "std_msgs/msg/Header",
+            json!({"stamp": {"secs": 1, "nsecs": 2}, "frame_id": "m"}),
+        ),
+        (
+            "std_msgs/msg/Header",
+            json!({"stamp": {"sec": 1, "nanosec": 2}, "frame_id": "m"}),
+        ),
+        (
+            "std_msgs/msg/UInt8MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": [1, 2, 3]}),
+        ),
+        (
+            "std_msgs/msg/UInt8MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": "AQID"}),
+        ),
+    ] {
+        inputs.push((ty.to_owned(), msg.to_string()));
+    }
+    for (ty, text) in &inputs {
+        let (got, kept) = normalized(&reg, ty, text);
+        assert_eq!(got, converted(&reg, ty, text), "{ty}: {text}");
+        kept_any |= kept;
+        converted_any |= !kept;
+    }
+    assert!(kept_any && converted_any, "both paths were taken");
+}
+
+#[test]
+fn wrong_types_are_refused_on_either_path() {
+    let reg = registry();
+    for text in [
+        r#"{"data":"notanint"}"#,
+        r#"{"data":1e40}"#,
+        r#"[1]"#,
+        r#"{"data":"#,
+    ] {
+        assert!(
+            normalize_json_bytes(&reg, "std_msgs/msg/Int32", Dialect::Ros2, text.as_bytes())
+                .is_err(),
+            "{text}"
+        );
+    }
+}

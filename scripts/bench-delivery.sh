@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Server CPU per delivered message (issue 13's benchmark): one publisher and one subscriber
+# exchange 64-byte messages at a fixed rate through the fleetlink hub (rosbridge JSON,
+# rosbridge CBOR, native fleetlink.v1), nats-server and mosquitto, all driven by the same
+# generator (`fleetlink bench delivery`). Each server's CPU comes from /proc over the
+# measured window, so a generator that saturates first does not bend the figure. Servers
+# run on core 0 and the generator on core 1 (taskset) when there are two cores or more.
+# Rounds alternate the systems; the table gives the median of the rounds.
+#
+#   cargo build --release -p fleetlink && scripts/bench-delivery.sh [ROUNDS] [RATES] [SECONDS]
+#   e.g. scripts/bench-delivery.sh 3 "100000 300000" 5
+#
+# nats-server and mosquitto come from Debian (installed here when missing; needs root).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+rounds="${1:-3}"
+rates="${2:-100000 300000}"
+seconds="${3:-5}"
+[ -x "$bin" ] || { echo "build first: cargo build --release -p fleetlink" >&2; exit 1; }
+
+missing=()
+command -v nats-server >/dev/null || missing+=(nats-server)
+command -v mosquitto >/dev/null || missing+=(mosquitto)
+if [ ${#missing[@]} -ne 0 ]; then
+    [ "$(id -u)" -eq 0 ] || { echo "install ${missing[*]} (Debian packages) or run as root" >&2; exit 1; }
+    apt-get -o DPkg::Lock::Timeout=600 update
+    DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends "${missing[@]}"
+fi
+
+server_cpu=() gen_cpu=()
+if [ "$(nproc)" -ge 2 ]; then server_cpu=(taskset -c 0); gen_cpu=(taskset -c 1); fi
+tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-delivery.XXXXXX")"
+pids=()
+cleanup() {
+    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
+    wait 2>/dev/null || true
+    rm -rf "$tmp"
+}
+trap cleanup EXIT
+free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
+wait_port() { # port
+    for _ in $(seq 200); do (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0; sleep 0.05; done
+    echo "nothing listens on port $1" >&2; exit 1
+}
+
+token="$("$bin" admin --data-dir "$tmp/hub" token operator bench --group admin)"
+hub_port="$(free_port)"
+"${server_cpu[@]}" "$bin" hub --listen "127.0.0.1:$hub_port" --data-dir "$tmp/hub" >"$tmp/hub.log" 2>&1 &
+hub_pid=$!; pids+=($hub_pid)
+nats_port="$(free_port)"
+"${server_cpu[@]}" nats-server -a 127.0.0.1 -p "$nats_port" >"$tmp/nats.log" 2>&1 &
+nats_pid=$!; pids+=($nats_pid)
+mqtt_port="$(free_port)"
+"${server_cpu[@]}" mosquitto -p "$mqtt_port" >"$tmp/mosquitto.log" 2>&1 &
+mqtt_pid=$!; pids+=($mqtt_pid)
+wait_port "$hub_port"; wait_port "$nats_port"; wait_port "$mqtt_port"
+
+run() { # protocol server pid rate
+    "${gen_cpu[@]}" "$bin" bench delivery --protocol "$1" --server "$2" --token "$token" \
+        --server-pid "$3" --rate "$4" --duration "$seconds" --warmup 2 --json
+}
+for round in $(seq "$rounds"); do
+    for rate in $rates; do
+        run rosbridge-json "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
+        run rosbridge-cbor "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
+        run native "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
+        run nats "127.0.0.1:$nats_port" "$nats_pid" "$rate"
+        run mqtt "127.0.0.1:$mqtt_port" "$mqtt_pid" "$rate"
+    done
+    echo "round $round of $rounds done" >&2
+done >"$tmp/results.jsonl"
+
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "versions: $("$bin" --version), $(nats-server --version), mosquitto $(dpkg-query -W -f='${Version}' mosquitto 2>/dev/null || echo '?')"
+python3 - "$tmp/results.jsonl" <<'EOF'
+import json, statistics, sys
+rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+names = {"RosbridgeJson": "fleetlink rosbridge JSON", "RosbridgeCbor": "fleetlink rosbridge CBOR",
+         "Native": "fleetlink native", "Nats": "nats-server", "Mqtt": "mosquitto (MQTT QoS 0)"}
+print(f"{'system':28} {'rate':>8} {'delivered/s':>12} {'server CPU':>11} {'µs/delivery (median, min-max)':>32}")
+for rate in sorted({r["rate"] for r in rows}):
+    for proto in names:
+        rs = [r for r in rows if r["rate"] == rate and r["protocol"] == proto]
+        if not rs:
+            continue
+        us = [r["server_cpu_us_per_delivery"] for r in rs]
+        print(f"{names[proto]:28} {rate:>8} {statistics.median(r['delivered_per_sec'] for r in rs):>12.0f} "
+              f"{statistics.median(r['server_cpu_percent'] for r in rs):>10.1f}% "
+              f"{statistics.median(us):>14.2f} ({min(us):.2f}-{max(us):.2f})")
+EOF
