@@ -43,7 +43,7 @@ command -v roscore >/dev/null && "$rospython" -c 'import rospy, sensor_msgs.msg'
 # package), and the package.xml files its message loader asks rospkg for.
 "$rospython" -c 'import tornado, twisted, autobahn, bson, PIL; bson.BSON' 2>/dev/null \
     && [ -f /usr/share/sensor_msgs/package.xml ] && [ -f /usr/share/std_msgs/package.xml ] \
-    || { echo "rosbridge_server's dependencies missing: run scripts/setup.d/52-rosbridge-ros1.sh" >&2; exit 1; }
+    || { echo "rosbridge_server's dependencies missing: run scripts/bench-setup-rosbridge-ros1.sh" >&2; exit 1; }
 
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-ros1.XXXXXX")"
 ns="flbench1-$$"

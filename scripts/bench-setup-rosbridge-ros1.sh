@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What rosbridge_suite's ROS 1 server needs from Debian to run from its source with
+# Bench only (not part of the test set-up): what rosbridge_suite's ROS 1 server needs from Debian to run from its source with
 # Debian's rospy, for the comparison in scripts/bench-ros1.sh (rosbridge itself is not
 # installed: the bench takes its source from ROSBRIDGE_SRC). Its package.xml exec_depends:
 # autobahn and twisted (the WebSocket server), tornado and bson (imported by its
