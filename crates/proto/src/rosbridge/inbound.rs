@@ -317,7 +317,13 @@ impl Request {
 /// A topic name as the protocol accepts it: non-empty, at most 1,024 bytes, no whitespace
 /// or control characters.
 fn valid_topic(s: &str) -> bool {
-    !s.is_empty() && s.len() <= 1024 && !s.chars().any(|c| c.is_whitespace() || c.is_control())
+    let clean = if s.is_ascii() {
+        // ASCII whitespace and control characters are all at or below space, or DEL.
+        s.bytes().all(|b| b > b' ' && b != 0x7f)
+    } else {
+        !s.chars().any(|c| c.is_whitespace() || c.is_control())
+    };
+    !s.is_empty() && s.len() <= 1024 && clean
 }
 
 /// The field that holds a message object, for operations that carry one.
@@ -712,6 +718,21 @@ mod tests {
             Request::from_json_frame(&Bytes::from_static(other)),
             Request::from_json(other)
         );
+    }
+
+    #[test]
+    fn topic_check_agrees_with_the_unicode_rules_for_every_ascii_byte() {
+        for b in 0u8..128 {
+            let c = b as char;
+            let name = format!("/a{c}b");
+            assert_eq!(
+                valid_topic(&name),
+                !(c.is_whitespace() || c.is_control()),
+                "byte {b:#x}"
+            );
+        }
+        assert!(!valid_topic("/a\u{2003}b"));
+        assert!(valid_topic("/caf\u{e9}"));
     }
 
     #[test]

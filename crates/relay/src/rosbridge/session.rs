@@ -776,9 +776,18 @@ async fn write_loop<K>(
         {
             let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
             match g.as_mut() {
-                Some(g) => taken
-                    .items
-                    .retain(|(_, _, m)| g.allows(m.topic.name.as_str(), GateOp::Subscribe)),
+                Some(g) => {
+                    // A batch mostly holds runs of one topic: ask once per run.
+                    let mut last = None;
+                    taken.items.retain(|(_, _, m)| match last {
+                        Some((id, ok)) if id == m.topic.id => ok,
+                        _ => {
+                            let ok = g.allows(m.topic.name.as_str(), GateOp::Subscribe);
+                            last = Some((m.topic.id, ok));
+                            ok
+                        }
+                    })
+                }
                 None => taken.items.clear(),
             }
         }

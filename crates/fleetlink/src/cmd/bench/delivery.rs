@@ -86,8 +86,8 @@ pub struct Args {
     json: bool,
 }
 
-/// Topic (or subject) every protocol uses.
-const TOPIC: &str = "/bench_pub_0/data";
+/// Topic of the rosbridge and MQTT runs (the native run uses the relay bench's topic).
+const TOPIC: &str = "/bench_delivery/data";
 const NATS_SUBJECT: &str = "bench.data";
 /// Longest wait for a connection and its setup exchange.
 const SETUP: Duration = Duration::from_secs(10);
