@@ -9,6 +9,7 @@ use std::sync::Arc;
 use std::sync::atomic::Ordering::Relaxed;
 use std::time::Duration;
 
+use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::TopicName;
 use fleetlink_relay::calls::CallStatus;
@@ -18,7 +19,7 @@ use tokio::net::{TcpListener, TcpStream};
 use tokio::sync::mpsc;
 use tokio_util::sync::CancellationToken;
 
-use crate::node::{Node, SUBSCRIBER_QUEUE};
+use crate::node::{Node, SUBSCRIBER_QUEUE, SubscriberTx};
 use crate::tcpros::{Header, read_header, read_message, write_header, write_service_response};
 
 /// How long a peer may take to send its connection header.
@@ -108,14 +109,21 @@ async fn subscriber(node: &Node, mut stream: TcpStream, topic: &str, header: &He
     if write_header(&mut stream, &reply).await.is_err() {
         return;
     }
-    let (tx, mut rx) = mpsc::channel(SUBSCRIBER_QUEUE);
+    let (tx, mut rx) = mpsc::channel::<Bytes>(SUBSCRIBER_QUEUE);
     let conn = node.next_conn_id();
+    let queued = Arc::new(std::sync::atomic::AtomicUsize::new(0));
     {
         let mut out = publication.out.lock().unwrap_or_else(|p| p.into_inner());
-        if let Some(last) = &out.last {
-            let _ = tx.try_send(last.clone());
+        if let Some(last) = &out.last
+            && tx.try_send(last.clone()).is_ok()
+        {
+            queued.fetch_add(last.len(), Relaxed);
         }
-        out.conns.push((conn, tx));
+        out.conns.push(SubscriberTx {
+            conn,
+            tx,
+            queued: queued.clone(),
+        });
     }
     tracing::info!(
         "ros1: {} subscribed to {topic} ({})",
@@ -128,7 +136,9 @@ async fn subscriber(node: &Node, mut stream: TcpStream, topic: &str, header: &He
         tokio::select! {
             f = rx.recv() => match f {
                 Some(frame) => {
-                    if tokio::io::AsyncWriteExt::write_all(&mut wr, &frame).await.is_err() {
+                    let written = tokio::io::AsyncWriteExt::write_all(&mut wr, &frame).await;
+                    queued.fetch_sub(frame.len(), Relaxed);
+                    if written.is_err() {
                         break;
                     }
                 }
@@ -143,7 +153,7 @@ async fn subscriber(node: &Node, mut stream: TcpStream, topic: &str, header: &He
         .lock()
         .unwrap_or_else(|p| p.into_inner())
         .conns
-        .retain(|(c, _)| *c != conn);
+        .retain(|s| s.conn != conn);
 }
 
 /// A local caller of a fleet service this node serves.

@@ -25,6 +25,17 @@ use crate::xmlrpc::{Value, decode_call, encode_fault, encode_response};
 /// Frames queued per local subscriber before newer ones are dropped (a subscriber that
 /// stops reading must not hold memory without bound).
 pub const SUBSCRIBER_QUEUE: usize = 64;
+/// Bytes queued per local subscriber before newer frames are dropped: eight 1 MiB point
+/// clouds, not 64. A frame larger than this still goes to a subscriber with nothing queued.
+pub const SUBSCRIBER_QUEUE_BYTES: usize = 8 << 20;
+
+/// One local subscriber's queue: the frames, and how many bytes they hold.
+pub struct SubscriberTx {
+    pub conn: u64,
+    pub tx: mpsc::Sender<Bytes>,
+    /// Bytes sent into `tx` and not yet written to the subscriber's socket.
+    pub queued: Arc<std::sync::atomic::AtomicUsize>,
+}
 
 /// A topic this node publishes into the graph (hub → robot).
 pub struct Publication {
@@ -39,7 +50,7 @@ pub struct Publication {
 
 #[derive(Default)]
 pub struct PubOut {
-    pub conns: Vec<(u64, mpsc::Sender<Bytes>)>,
+    pub conns: Vec<SubscriberTx>,
     pub last: Option<Bytes>,
 }
 
@@ -47,15 +58,24 @@ impl Publication {
     /// Queues a framed message for every connected subscriber (never waits).
     pub fn publish(&self, frame: Bytes) {
         let mut out = self.out.lock().unwrap_or_else(|p| p.into_inner());
-        out.conns
-            .retain(|(_, tx)| match tx.try_send(frame.clone()) {
-                Ok(()) => true,
+        out.conns.retain(|s| {
+            let queued = s.queued.load(Relaxed);
+            if queued > 0 && queued + frame.len() > SUBSCRIBER_QUEUE_BYTES {
+                self.dropped.fetch_add(1, Relaxed);
+                return !s.tx.is_closed();
+            }
+            match s.tx.try_send(frame.clone()) {
+                Ok(()) => {
+                    s.queued.fetch_add(frame.len(), Relaxed);
+                    true
+                }
                 Err(mpsc::error::TrySendError::Full(_)) => {
                     self.dropped.fetch_add(1, Relaxed);
                     true
                 }
                 Err(mpsc::error::TrySendError::Closed(_)) => false,
-            });
+            }
+        });
         if self.latched {
             out.last = Some(frame);
         }
@@ -377,6 +397,44 @@ async fn slave_connection(node: &Node, stream: tokio::net::TcpStream) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_subscriber_that_stops_reading_holds_at_most_the_byte_bound() {
+        let publication = Publication {
+            topic: "/points".into(),
+            identity: Ros1Identity {
+                type_name: "sensor_msgs/PointCloud2".into(),
+                md5sum: "x".into(),
+                definition: String::new(),
+            },
+            latched: false,
+            out: Mutex::new(PubOut::default()),
+            dropped: AtomicU64::new(0),
+        };
+        let (tx, mut rx) = mpsc::channel(SUBSCRIBER_QUEUE);
+        let queued = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        publication.out.lock().unwrap().conns.push(SubscriberTx {
+            conn: 1,
+            tx,
+            queued: queued.clone(),
+        });
+        let cloud = Bytes::from(vec![0u8; 1 << 20]);
+        for _ in 0..20 {
+            publication.publish(cloud.clone());
+        }
+        let fits = SUBSCRIBER_QUEUE_BYTES / cloud.len();
+        assert_eq!(queued.load(Relaxed), fits * cloud.len());
+        assert_eq!(publication.dropped.load(Relaxed), (20 - fits) as u64);
+        let mut held = 0;
+        while rx.try_recv().is_ok() {
+            held += 1;
+        }
+        assert_eq!(held, fits, "frames in the queue");
+        // A frame larger than the bound still reaches a subscriber with nothing queued.
+        queued.store(0, Relaxed);
+        publication.publish(Bytes::from(vec![0u8; SUBSCRIBER_QUEUE_BYTES + 1]));
+        assert!(rx.try_recv().is_ok(), "an oversized frame is not starved");
+    }
 
     fn done(id: CallId) -> CallEvent {
         CallEvent::Done {
