@@ -251,22 +251,15 @@ impl Transcoder for RegistryTranscoder {
             to: from,
             cause: e.to_string(),
         };
-        Ok(Some(match from {
-            Encoding::Json => {
-                match fleetlink_msg::normalize_json_bytes(reg, ty, dialect, &payload.bytes)
-                    .map_err(invalid)?
-                {
-                    Some(normal) => Payload::json(normal),
-                    // Already in normal form: the bytes as they came (no copy).
-                    None => payload.clone(),
-                }
-            }
-            _ => {
-                let v =
-                    fleetlink_msg::from_cbor(reg, ty, dialect, &payload.bytes).map_err(invalid)?;
-                Payload::new(Encoding::Cbor, fleetlink_msg::to_cbor_bytes(&v))
-            }
-        }))
+        if from == Encoding::Json {
+            // One path for JSON: the cached one, with a cache that lives for this call.
+            return self.normalize_cached(schema, payload, &mut NormalizeCache::default());
+        }
+        let v = fleetlink_msg::from_cbor(reg, ty, dialect, &payload.bytes).map_err(invalid)?;
+        Ok(Some(Payload::new(
+            Encoding::Cbor,
+            fleetlink_msg::to_cbor_bytes(&v),
+        )))
     }
 
     fn normalize_cached(
@@ -281,6 +274,12 @@ impl Transcoder for RegistryTranscoder {
         let reg = &self.registry;
         let ty = schema.type_name.as_str();
         let dialect = dialect_of(schema, payload.encoding);
+        let invalid = |cause: String| TranscodeError::Invalid {
+            type_name: ty.to_owned(),
+            from: payload.encoding,
+            to: payload.encoding,
+            cause,
+        };
         let cached = cache
             .0
             .as_ref()
@@ -294,12 +293,7 @@ impl Transcoder for RegistryTranscoder {
                 }
                 let resolved = reg
                     .resolve(ty, dialect)
-                    .map_err(|e| TranscodeError::Invalid {
-                        type_name: ty.to_owned(),
-                        from: payload.encoding,
-                        to: payload.encoding,
-                        cause: e.to_string(),
-                    })?;
+                    .map_err(|e| invalid(e.to_string()))?;
                 let c = cache.0.insert(Box::new(ResolvedTopic {
                     type_name: ty.to_owned(),
                     dialect,
@@ -314,12 +308,7 @@ impl Transcoder for RegistryTranscoder {
             Ok(Some(normal)) => Ok(Some(Payload::json(normal))),
             // Already in normal form: the bytes as they came (no copy).
             Ok(None) => Ok(Some(payload.clone())),
-            Err(e) => Err(TranscodeError::Invalid {
-                type_name: ty.to_owned(),
-                from: payload.encoding,
-                to: payload.encoding,
-                cause: e.to_string(),
-            }),
+            Err(e) => Err(invalid(e.to_string())),
         }
     }
 
