@@ -258,17 +258,42 @@ impl Agent {
                 }
             })
         });
+        // The ROS 2 adapter gets a runtime of its own with two workers: its DDS readers'
+        // tasks stop being woken when they share one thread with everything else (service
+        // replies and downlink writes stall; found with tests/interop/ros2, cause not yet
+        // found), and the rest of the agent runs on one thread whatever the caller chose.
         let ros2 = self.ros2.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
-            tokio::spawn(async move {
-                if let Err(e) = fleetlink_ros2::run(opts, router, shutdown).await {
-                    tracing::error!("{e}");
-                }
-            })
+            std::thread::Builder::new()
+                .name("ros2".into())
+                .spawn(move || {
+                    let rt = match tokio::runtime::Builder::new_multi_thread()
+                        .worker_threads(2)
+                        .thread_name("ros2-rt")
+                        .enable_all()
+                        .build()
+                    {
+                        Ok(rt) => rt,
+                        Err(e) => {
+                            tracing::error!("ros2: cannot start its runtime: {e}");
+                            return;
+                        }
+                    };
+                    rt.block_on(async move {
+                        if let Err(e) = fleetlink_ros2::run(opts, router, shutdown).await {
+                            tracing::error!("{e}");
+                        }
+                    })
+                })
+                .map_err(|e| tracing::error!("ros2: cannot start its thread: {e}"))
+                .ok()
         });
         self.uplink.run(shutdown.clone()).await;
-        for t in [local, sim, ros1, ros2].into_iter().flatten() {
+        for t in [local, sim, ros1].into_iter().flatten() {
             let _ = t.await;
+        }
+        if let Some(t) = ros2.flatten() {
+            let _ = tokio::task::spawn_blocking(move || t.join()).await;
         }
         let _ = deadlines.await;
     }

@@ -127,6 +127,56 @@ pub struct FileJournal {
     fsync: Fsync,
     synced_at: Instant,
     dirty: bool,
+    /// The batch policy's syncs run here, off the agent's thread.
+    syncer: Option<Syncer>,
+}
+
+/// Runs a batch policy's disk syncs on a thread of its own, so the agent (one thread)
+/// never waits for the disk. At most one request waits behind the sync in progress, and
+/// it covers every write made before it starts.
+struct Syncer {
+    tx: Option<std::sync::mpsc::SyncSender<()>>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Syncer {
+    fn start(file: &File, path: &Path) -> std::io::Result<Syncer> {
+        let file = file.try_clone()?;
+        let path = path.display().to_string();
+        let (tx, rx) = std::sync::mpsc::sync_channel::<()>(1);
+        let thread = std::thread::Builder::new()
+            .name("outbox-sync".into())
+            .spawn(move || {
+                // Ends when the journal drops its sender (closed, or its file replaced).
+                while rx.recv().is_ok() {
+                    if let Err(e) = file.sync_data() {
+                        tracing::warn!("durable outbox {path}: sync failed: {e}");
+                    }
+                }
+            })?;
+        Ok(Syncer {
+            tx: Some(tx),
+            thread: Some(thread),
+        })
+    }
+
+    fn request(&self) {
+        // Full: a sync is already waiting to start, and it covers this write too.
+        if let Some(tx) = &self.tx {
+            let _ = tx.try_send(());
+        }
+    }
+}
+
+impl Drop for Syncer {
+    /// Waits for the thread: its copy of the file descriptor holds the outbox's lock, which
+    /// must be free when the journal is gone (an agent restarting in the same process).
+    fn drop(&mut self) {
+        drop(self.tx.take());
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
 }
 
 fn io_err(path: &Path, cause: std::io::Error) -> StoreError {
@@ -170,6 +220,7 @@ pub fn open(cfg: &OutboxStoreConfig) -> Result<Opened, StoreError> {
         fsync: cfg.fsync,
         synced_at: Instant::now(),
         dirty: false,
+        syncer: None,
     };
     let good = j.replay(&data)?;
     if good < data.len() as u64 {
@@ -340,8 +391,23 @@ impl FileJournal {
             Fsync::Never => false,
         };
         if due && self.dirty {
-            if let Err(e) = self.file.sync_data() {
-                tracing::warn!("durable outbox {}: sync failed: {e}", self.path.display());
+            if self.fsync == Fsync::Batch && self.syncer.is_none() {
+                self.syncer = Syncer::start(&self.file, &self.path)
+                    .map_err(|e| {
+                        tracing::warn!(
+                            "durable outbox {}: no sync thread ({e}); syncing inline",
+                            self.path.display()
+                        )
+                    })
+                    .ok();
+            }
+            match &self.syncer {
+                Some(s) => s.request(),
+                None => {
+                    if let Err(e) = self.file.sync_data() {
+                        tracing::warn!("durable outbox {}: sync failed: {e}", self.path.display());
+                    }
+                }
             }
             self.dirty = false;
             self.synced_at = Instant::now();
@@ -383,6 +449,8 @@ impl FileJournal {
             Ok(f)
         };
         self.file = write().map_err(|e| io_err(&self.path, e))?;
+        // The sync thread holds the old file: the next sync starts one for the new file.
+        self.syncer = None;
         self.len = out.len() as u64;
         self.dirty = false;
         Ok(())

@@ -196,3 +196,24 @@ fn shared_payloads_are_not_copied_on_append() {
     let held = &o.journal.live[0].payload;
     assert_eq!(held.as_ptr(), p.bytes.as_ptr());
 }
+
+#[test]
+fn a_batch_synced_outbox_is_free_to_reopen_as_soon_as_it_is_dropped() {
+    // The batch policy syncs on a thread holding a copy of the file descriptor, and with
+    // it the outbox's lock: dropping the journal must end that thread first.
+    let d = Dir::new("batch-reopen");
+    let cfg = OutboxStoreConfig {
+        fsync: Fsync::Batch,
+        ..d.cfg(1 << 20)
+    };
+    let a = meta("/a");
+    for round in 1..=20u64 {
+        let mut o = open(&cfg).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        assert_eq!(o.recovered.len() as u64, round - 1);
+        o.journal
+            .append(&a, round, round, &payload(&format!("a{round}")))
+            .unwrap();
+        // An idle tick hands the sync to the thread.
+        o.journal.tick();
+    }
+}

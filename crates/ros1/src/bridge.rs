@@ -485,11 +485,22 @@ async fn follow_graph(node: &Arc<Node>) {
     };
     let me = node.opts.node_name.as_str();
     if !node.opts.publish.is_empty() {
-        let types = node.master.topic_types().await.unwrap_or_default();
-        let wanted: Vec<(String, String)> = state
+        let candidates = state
             .publishers
             .iter()
-            .filter(|(t, nodes)| node.opts.publish.matches(t) && nodes.iter().any(|n| n != me))
+            .filter(|(t, nodes)| node.opts.publish.matches(t) && nodes.iter().any(|n| n != me));
+        // Types are needed only for topics not bridged yet: a steady graph costs one call
+        // a period, not two.
+        let new_topic = {
+            let st = node.lock();
+            candidates.clone().any(|(t, _)| !st.subs.contains_key(t))
+        };
+        let types = if new_topic {
+            node.master.topic_types().await.unwrap_or_default()
+        } else {
+            Vec::new()
+        };
+        let wanted: Vec<(String, String)> = candidates
             .map(|(t, _)| {
                 let ty = types
                     .iter()

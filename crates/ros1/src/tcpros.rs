@@ -125,14 +125,17 @@ async fn read_body<R: AsyncRead + Unpin>(
     if len > limit {
         return Err(FrameError::TooLarge { what, len, limit });
     }
-    let mut buf = BytesMut::zeroed(len);
-    r.read_exact(&mut buf).await.map_err(|e| {
-        if e.kind() == std::io::ErrorKind::UnexpectedEof {
-            FrameError::Invalid(format!("connection closed inside a {what}"))
-        } else {
-            e.into()
+    // Read into spare capacity: zero-filling a megabyte point cloud's buffer first would
+    // cost as much as the copy out of the socket.
+    let mut buf = BytesMut::with_capacity(len);
+    while buf.len() < len {
+        let want = (len - buf.len()) as u64;
+        if (&mut *r).take(want).read_buf(&mut buf).await? == 0 {
+            return Err(FrameError::Invalid(format!(
+                "connection closed inside a {what}"
+            )));
         }
-    })?;
+    }
     Ok(buf.freeze())
 }
 

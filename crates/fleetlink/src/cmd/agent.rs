@@ -54,7 +54,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let cfg = load(&args)?;
     let opts = AgentOptions::from_config(&cfg).context("configuration")?;
     let transcoder = crate::transcoder(&args.msg_path)?;
-    let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
+    // One thread. The agent's work is moving bytes between sockets; on a multi-threaded
+    // runtime most of its CPU went to waking threads (an ACK read on one, the writer it
+    // frees on another), which a robot pays for in every message it bridges. The durable
+    // outbox's disk syncs and the ROS 2 adapter run on threads of their own (see
+    // `Agent::run`).
+    let rt = tokio::runtime::Builder::new_current_thread()
+        .enable_all()
+        .build()
+        .context("starting the async runtime")?;
     rt.block_on(async {
         let agent = Agent::bind(opts, transcoder).await?;
         println!("fleetlink agent {} → {}", cfg.name, cfg.hub);
