@@ -258,10 +258,10 @@ impl Agent {
                 }
             })
         });
-        // The ROS 2 adapter gets a runtime of its own with two workers: its DDS readers'
-        // tasks stop being woken when they share one thread with everything else (service
-        // replies and downlink writes stall; found with tests/interop/ros2, cause not yet
-        // found), and the rest of the agent runs on one thread whatever the caller chose.
+        // The ROS 2 adapter runs on a two-worker runtime of its own, whatever runtime the
+        // rest of the agent runs on: with only one thread for its tasks, its DDS readers'
+        // tasks stopped being woken (service replies and downlink writes stalled in
+        // tests/interop/ros2; the lost wake-up is not found yet).
         let ros2 = self.ros2.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
             std::thread::Builder::new()
