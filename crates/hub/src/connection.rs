@@ -136,6 +136,12 @@ impl Door {
         let acceptor = tokio_rustls::TlsAcceptor::from(cfg.current());
         match tokio::time::timeout_at(deadline, acceptor.accept(io)).await {
             Ok(Ok(stream)) => Some(stream),
+            // The peer went away mid-handshake: an abandoned connect (an agent keeps only
+            // the first of its staggered connects) or a port probe, not a refused login.
+            Ok(Err(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => {
+                tracing::debug!("{peer} closed the connection during the TLS handshake");
+                None
+            }
             Ok(Err(e)) => {
                 tracing::info!("TLS handshake with {peer} failed: {e}");
                 // A missing or unverifiable client certificate is a refused

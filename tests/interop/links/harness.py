@@ -45,6 +45,7 @@ class Net:
     robot_ns: str
     hub_ip: str
     robot_dev: str
+    hub_dev: str = "vh"
 
     def run(self, ns, *argv):
         r = subprocess.run(["ip", "netns", "exec", ns, *argv], capture_output=True, text=True, timeout=10)
@@ -54,6 +55,23 @@ class Net:
 
     def link(self, up):
         self.run(self.robot_ns, "ip", "link", "set", self.robot_dev, "up" if up else "down")
+
+    def far_link(self, up):
+        """The hub's end of the veth pair: down, the robot's interface stays up (with no
+        carrier) and its packets vanish, as when a robot's radio stays associated but
+        the path beyond it is dead; connects hang instead of failing at once.
+
+        The robot first gets a permanent neighbour entry for the hub, as it keeps its
+        gateway's while associated: without it the robot's kernel would find the hub
+        unresolvable (ARP) and fail connects with "no route to host" after 3 s, and on
+        the way back every sender would wait for the same ARP answer; that is a LAN's
+        behaviour, not a radio path's."""
+        if not up:
+            mac = re.search(r"link/ether ([0-9a-f:]{17})",
+                            self.run(self.hub_ns, "ip", "link", "show", self.hub_dev)).group(1)
+            self.run(self.robot_ns, "ip", "neigh", "replace", self.hub_ip, "lladdr", mac,
+                     "dev", self.robot_dev, "nud", "permanent")
+        self.run(self.hub_ns, "ip", "link", "set", self.hub_dev, "up" if up else "down")
 
     def shape(self, mbit):
         """Robot egress (the uplink) through a token bucket; None removes it.

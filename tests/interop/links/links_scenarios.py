@@ -178,23 +178,46 @@ def recovery_ratio(direct_s, fleet_s, bound_s):
     return max(d, PROBE_PERIOD_S) / max(fleet_s, PROBE_PERIOD_S), lower
 
 
-def blackout(fleet, nominal, secs):
+def explain_recovery(fleet, label, fast, t_down, t_up, thr):
+    """A recovery over its target: what came through after link-up, and when, and what the
+    agent logged, so a failure in CI can be told apart (no connection yet, or messages late)."""
+    print(f"   {label}: recovery over target; /probe/fast after link-up "
+          f"(s after link-up: latency ms; threshold {thr:.1f} ms):", flush=True)
+    post = sorted((r for r in fast if r.recv >= t_up), key=lambda r: r.recv)[:40]
+    print("     " + ", ".join(f"{(r.recv - t_up) / 1e9:.2f}: {r.latency_ms:.0f}" for r in post),
+          flush=True)
+    print(f"   agent log (link down at +0.00 s, up at +{(t_up - t_down) / 1e9:.2f} s):", flush=True)
+    try:
+        with open(fleet.agent.log, errors="replace") as f:
+            for line in f.read().splitlines()[-12:]:
+                print(f"     {line[:220]}", flush=True)
+    except (OSError, AttributeError) as e:
+        print(f"     (no agent log: {e})", flush=True)
+
+
+def blackout(fleet, nominal, secs, far=False):
     """One blackout, fleetlink's agent and a direct rosbridge client (roslibpy straight to
     the hub across the same link) side by side. The agent's publisher stops once its
     outcome is known, as before the comparison existed; the direct client keeps
-    publishing until it has been nominal for 2 s or DIRECT_WINDOW_S after link-up."""
+    publishing until it has been nominal for 2 s or DIRECT_WINDOW_S after link-up.
+
+    `far`: the hub's end of the link goes down instead of the robot's, so the robot
+    keeps its interface and route and its connects hang (SYNs vanish) rather than fail
+    at once; recovery then depends on how soon a new SYN follows the path's return."""
     thr = nominal["threshold"]
-    s = Session(fleet, f"blackout{secs}", direct=True)
+    label = f"{secs} s{' (far side)' if far else ''}"
+    s = Session(fleet, f"blackout{secs}{'far' if far else ''}", direct=True)
+    set_link = fleet.net.far_link if far else fleet.net.link
     try:
         s.wait_flow()
         s.wait_flow("direct")
         t_pre = now_ns()
         time.sleep(2)
-        fleet.net.link(False)
+        set_link(False)
         t_down = now_ns()
         direct_pre = [r.latency_ms for r in s.rx("direct") if t_pre <= r.sent < t_down]
         time.sleep(secs)
-        fleet.net.link(True)
+        set_link(True)
         t_up = now_ns()
         rec = None
         deadline = time.monotonic() + BLACKOUT_WINDOW_S
@@ -236,6 +259,8 @@ def blackout(fleet, nominal, secs):
         d_got = {r.seq for r in direct}
         d_lost = sum(1 for q, t in sent_direct if t_down <= t < t_up and q not in d_got)
         d_during = sum(1 for _, t in sent_direct if t_down <= t < t_up)
+        if rec is None or rec > RECOVERY_TARGET_S:
+            explain_recovery(fleet, label, fast, t_down, t_up, thr)
     finally:
         s.close()
     window = (t_last - t_up) / 1e9
@@ -257,28 +282,28 @@ def blackout(fleet, nominal, secs):
         else:
             ratio_ok = ratio >= RATIO_TARGET
     rows = [
-        (f"{secs} s: recovery of /probe/fast", "not recovered" if rec is None else f"{rec:.2f} s",
+        (f"{label}: recovery of /probe/fast", "not recovered" if rec is None else f"{rec:.2f} s",
          f"<= {RECOVERY_TARGET_S:g} s", rec is not None and rec <= RECOVERY_TARGET_S),
-        (f"{secs} s: recovery of /probe/direct (roslibpy straight to the hub)",
+        (f"{label}: recovery of /probe/direct (roslibpy straight to the hub)",
          f"> {DIRECT_WINDOW_S:g} s (not recovered)" if d_rec is None else f"{d_rec:.2f} s",
          "", None),
-        (f"{secs} s: recovery ratio direct / fleetlink", ratio_txt,
+        (f"{label}: recovery ratio direct / fleetlink", ratio_txt,
          f">= {RATIO_TARGET:g}x", ratio_ok),
-        (f"{secs} s: /probe/direct before the blackout; lost of those sent in it",
+        (f"{label}: /probe/direct before the blackout; lost of those sent in it",
          f"p50 {fmt_ms(percentile(direct_pre, 50))}; {d_lost}/{d_during}", "", None),
-        (f"{secs} s: uplink alive after (fast rx in last 2 s)", f"{alive:.0%} (window {window:.1f} s)",
+        (f"{label}: uplink alive after (fast rx in last 2 s)", f"{alive:.0%} (window {window:.1f} s)",
          ">= 80 %", alive >= 0.8),
-        (f"{secs} s: /probe/fast after recovery", f"p50 {fmt_ms(percentile(post_lat, 50))}, "
+        (f"{label}: /probe/fast after recovery", f"p50 {fmt_ms(percentile(post_lat, 50))}, "
          f"p99 {fmt_ms(percentile(post_lat, 99))}", "", None),
     ]
-    rows += audit_rows(f"{secs} s ({during} published in the blackout):", audit)
+    rows += audit_rows(f"{label} ({during} published in the blackout):", audit)
     return rows
 
 
 def scenario_blackouts(fleet, nominal):
     rows = []
-    for secs in (5, 10, 30):
-        r = blackout(fleet, nominal, secs)
+    for secs, far in ((5, False), (10, False), (30, False), (10, True)):
+        r = blackout(fleet, nominal, secs, far)
         for row in r:
             print(f"   {row[0]}: {row[1]} [{'ok' if row[3] else ('' if row[3] is None else 'FAIL')}]",
                   flush=True)

@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use fleetlink_auth::audit::AuditAction;
+use fleetlink_auth::audit::{AuditAction, AuditQuery};
 use fleetlink_auth::tls::{ClientAuth, ClientTlsFiles, HubRoots, ServerTlsFiles};
 use tokio::net::TcpStream;
 use tokio_rustls::rustls::pki_types::ServerName;
@@ -114,6 +114,9 @@ async fn tls_client_without_certificate_fails_the_handshake() {
         client_auth: ClientAuth::Required,
     };
     let fx = hub_with(|cfg| cfg.tls = Some(files)).await;
+    // A connection closed before its ClientHello (an agent's abandoned staggered connect,
+    // a port probe) is no refused login: it must not be audited as one.
+    drop(tokio::net::TcpStream::connect(fx.addr).await.unwrap());
     let anonymous = fleetlink_auth::tls::client_config(&ClientTlsFiles {
         roots: HubRoots::CaFile(dir.join("ca.pem")),
         client_cert: None,
@@ -129,6 +132,18 @@ async fn tls_client_without_certificate_fails_the_handshake() {
     );
     fx.assert_audited(AuditAction::AuthFailure, "TLS handshake")
         .await;
+    let failures = fx
+        .audit(AuditQuery {
+            action: Some(AuditAction::AuthFailure),
+            limit: 1000,
+            ..AuditQuery::default()
+        })
+        .await;
+    assert_eq!(
+        failures.len(),
+        1,
+        "only the client without a certificate was refused: {failures:#?}"
+    );
 
     // A robot with a valid certificate gets in without a token: the certificate names it.
     let r7 = fleetlink_auth::tls::client_config(&ClientTlsFiles {
