@@ -4,6 +4,7 @@
 #
 # After `interop_begin NAME`: $tmp is the suite's directory; append background pids to
 # the `pids` array; logs named $tmp/hub.log and $tmp/agent.log are shown on failure.
+# INTEROP_KEEP=DIR copies the suite's directory (logs, records) there before it is removed.
 
 interop_begin() {
     tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-$1.XXXXXX")"
@@ -26,6 +27,7 @@ interop_cleanup() {
             [ -f "$tmp/$f.log" ] && { echo "--- last lines of $f log"; tail -n 30 "$tmp/$f.log"; } >&2
         done
     fi
+    if [ -n "${INTEROP_KEEP:-}" ]; then cp -r "$tmp" "$INTEROP_KEEP" && echo "kept: $INTEROP_KEEP" >&2; fi
     rm -rf "$tmp"
     exit "$rc"
 }

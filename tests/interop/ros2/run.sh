@@ -66,6 +66,12 @@ ros2_cleanup() {
     set +e
     trap - EXIT
     if [ -n "$netns_made" ]; then
+        if [ "$rc" -ne 0 ]; then
+            # Whether the namespace's UDP dropped datagrams (full receive buffers): DDS
+            # repairs such losses, so a stall after one points at the repair.
+            echo "--- UDP counters of the namespace" >&2
+            ip netns exec "$netns" grep -A1 '^Udp:' /proc/net/snmp >&2
+        fi
         for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null; done
         for _ in $(seq 50); do # bounded: 5 s for a graceful stop
             [ -z "$(ip netns pids "$netns" 2>/dev/null)" ] && break
