@@ -143,6 +143,16 @@ impl Fixture {
         .expect("audit task")
     }
 
+    /// Every audit record of `action`, allowed or not.
+    pub async fn audited(&self, action: AuditAction) -> Vec<StoredAudit> {
+        self.audit(AuditQuery {
+            action: Some(action),
+            limit: 1000,
+            ..AuditQuery::default()
+        })
+        .await
+    }
+
     /// Asserts a denied record of `action` exists whose `field` contains `needle`.
     pub async fn assert_audited(&self, action: AuditAction, needle: &str) -> StoredAudit {
         let recs = self

@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use fleetlink_auth::audit::{AuditAction, AuditQuery};
+use fleetlink_auth::audit::AuditAction;
 use fleetlink_auth::tls::{ClientAuth, ClientTlsFiles, HubRoots, ServerTlsFiles};
 use tokio::net::TcpStream;
 use tokio_rustls::rustls::pki_types::ServerName;
@@ -132,13 +132,7 @@ async fn tls_client_without_certificate_fails_the_handshake() {
     );
     fx.assert_audited(AuditAction::AuthFailure, "TLS handshake")
         .await;
-    let failures = fx
-        .audit(AuditQuery {
-            action: Some(AuditAction::AuthFailure),
-            limit: 1000,
-            ..AuditQuery::default()
-        })
-        .await;
+    let failures = fx.audited(AuditAction::AuthFailure).await;
     assert_eq!(
         failures.len(),
         1,
