@@ -29,7 +29,7 @@ use fleetlink_relay::calls::{
 };
 use futures::StreamExt;
 use rustdds::{DataWriterStatus, StatusEvented};
-use tokio::sync::oneshot;
+use tokio::sync::{Semaphore, oneshot};
 use tokio::task::AbortHandle;
 
 use crate::bridge::{Bridge, RawReader, RawWriter};
@@ -41,6 +41,13 @@ use crate::raw::{CDR_LE_HEADER, RawCdr, RequestHeader};
 /// (a volatile request written before matching would be lost).
 const MATCH_WAIT: Duration = Duration::from_secs(3);
 
+/// How many requests one service of a local server has unanswered at once. A ROS 2
+/// server's request reader keeps the last 10 requests (rmw's default service QoS): a
+/// burst of more than that, arriving before the server takes them, would push the
+/// oldest out unanswered. Further calls wait here, in order, for a reply to free a slot.
+/// `get_result` is not limited: its requests wait for goals to end and are taken at once.
+pub(crate) const IN_FLIGHT: usize = 10;
+
 /// One service of a local server, as this bridge calls it.
 pub(crate) struct Endpoint {
     service: String,
@@ -50,6 +57,8 @@ pub(crate) struct Endpoint {
     /// Readers matched to `writer` (the server's), from the writer's status events.
     matched: AtomicI32,
     waiting: Mutex<HashMap<i64, oneshot::Sender<Bytes>>>,
+    /// Unanswered requests allowed at once ([`IN_FLIGHT`]); `None`: no limit.
+    slots: Option<Semaphore>,
 }
 
 impl Endpoint {
@@ -58,6 +67,7 @@ impl Endpoint {
         service: &str,
         type_base: &str,
         client: u64,
+        limited: bool,
     ) -> Result<(Arc<Endpoint>, RawReader), String> {
         let dds = |suffix: &str| {
             names::dds_type(&format!("{type_base}{suffix}"))
@@ -81,6 +91,7 @@ impl Endpoint {
                 seq: AtomicI64::new(0),
                 matched: AtomicI32::new(0),
                 waiting: Mutex::new(HashMap::new()),
+                slots: limited.then(|| Semaphore::new(IN_FLIGHT)),
             }),
             reader,
         ))
@@ -88,6 +99,15 @@ impl Endpoint {
 
     /// Sends `msg` (a CDR request message) and waits for the reply message.
     async fn request(&self, msg: &[u8]) -> Result<Bytes, String> {
+        // Held until the reply came or the call ended (timeout, cancel: dropped).
+        let _slot = match &self.slots {
+            Some(s) => Some(
+                s.acquire()
+                    .await
+                    .map_err(|_| "the bridge is closing".to_owned())?,
+            ),
+            None => None,
+        };
         let started = Instant::now();
         while !self.server_matched() {
             if started.elapsed() > MATCH_WAIT {
@@ -284,7 +304,7 @@ fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool) {
     let made = if action {
         make_action(bridge, name, type_name, client)
     } else {
-        Endpoint::new(bridge, name, type_name, client).map(|(call, reader)| {
+        Endpoint::new(bridge, name, type_name, client, true).map(|(call, reader)| {
             let task = tokio::spawn(call.clone().pump(reader)).abort_handle();
             (
                 RemoteKind::Service {
@@ -332,18 +352,21 @@ fn make_action(
         &part("send_goal"),
         &format!("{action_type}_SendGoal"),
         client,
+        true,
     )?;
     let (get_result, r2) = Endpoint::new(
         bridge,
         &part("get_result"),
         &format!("{action_type}_GetResult"),
         client,
+        false,
     )?;
     let (cancel_goal, r3) = Endpoint::new(
         bridge,
         &part("cancel_goal"),
         "action_msgs/srv/CancelGoal",
         client,
+        true,
     )?;
     let feedback_type = names::dds_type(&format!("{action_type}_FeedbackMessage"))
         .ok_or_else(|| format!("{action_type} is not a ROS type name"))?;

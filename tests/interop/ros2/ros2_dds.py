@@ -12,7 +12,7 @@ import threading
 import time
 import traceback
 
-from cyclonedds.core import Listener
+from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
@@ -31,13 +31,24 @@ def now():
 
 
 class Node:
-    """One DDS participant, like one ROS 2 context. Readers call back on Cyclone's
-    delivery thread, so callbacks must not block for long."""
+    """One DDS participant, like one ROS 2 context. Samples are handed to the readers'
+    callbacks on one thread of the node's own, which waits on a waitset (as rmw's
+    executors do), so callbacks must not block for long.
+
+    Not Cyclone listeners: a listener runs Python on Cyclone's receive thread, and the
+    binding's `write` keeps the GIL while Cyclone delivers to a reader in the same
+    process. A write delivered locally to a reader whose listener the receive thread is
+    entering at that moment then waits for that listener, which waits for the GIL:
+    both threads stop for good, the receive socket fills, and every remote writer's
+    samples to this process are dropped from then on."""
 
     def __init__(self):
         self.dp = DomainParticipant(domain_id())
         self.topics = {}
-        self.keep = []  # readers and listeners live as long as the node
+        self.waitset = WaitSet(self.dp)
+        self.readers = []  # (DataReader, ReadCondition, on_sample)
+        self.lock = threading.Lock()
+        threading.Thread(target=self._dispatch, daemon=True).start()
 
     def topic(self, name, cls):
         if name not in self.topics:
@@ -49,24 +60,32 @@ class Node:
 
     def reader(self, name, cls, on_sample, qos=T.DEFAULT_QOS):
         """A reader of DDS topic `name`; on_sample(sample) for each valid sample (its
-        SampleInfo is `sample.sample_info`)."""
-
-        def on_data(reader):
-            try:
-                while True:
-                    got = reader.take(N=64)
-                    if not got:
-                        return
-                    for s in got:
-                        if s.sample_info.valid_data:
-                            on_sample(s)
-            except Exception:  # a callback's bug must be seen, not swallowed by Cyclone
-                traceback.print_exc()
-
-        listener = Listener(on_data_available=on_data)
-        r = DataReader(self.dp, self.topic(name, cls), qos=qos, listener=listener)
-        self.keep += [r, listener]
+        SampleInfo is `sample.sample_info`), called on the node's dispatch thread."""
+        r = DataReader(self.dp, self.topic(name, cls), qos=qos)
+        cond = ReadCondition(r, SampleState.NotRead | ViewState.Any | InstanceState.Any)
+        with self.lock:
+            self.waitset.attach(cond)
+            self.readers.append((r, cond, on_sample))
         return r
+
+    def _dispatch(self):
+        while True:
+            # Bounded, so a reader attached while waiting is served within 50 ms anyway;
+            # the wait itself releases the GIL (ctypes).
+            self.waitset.wait(50_000_000)
+            with self.lock:
+                readers = list(self.readers)
+            for r, _, on_sample in readers:
+                try:
+                    while True:
+                        got = r.take(N=64)
+                        if not got:
+                            break
+                        for s in got:
+                            if s.sample_info.valid_data:
+                                on_sample(s)
+                except Exception:  # a callback's bug must be seen, not end the thread
+                    traceback.print_exc()
 
 
 def topic_name(ros_name):
@@ -86,7 +105,7 @@ def wait_until(cond, timeout, step=0.05):
 
 class ServiceServer:
     """Answers `name`: handler(request, reply) is called for every request, on the
-    delivery thread; reply(**fields) sends the response with the request's header (now or
+    node's dispatch thread; reply(**fields) sends the response with the request's header (now or
     later, from any thread)."""
 
     def __init__(self, node, name, req_cls, resp_cls, handler):

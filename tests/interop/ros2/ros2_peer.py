@@ -14,7 +14,7 @@ Modes:
                     (PointCloud2, 100k points, once a second) and, until FILE exists,
                     /chatter ("robot-N", from a participant of its own); subscribes
                     /cmd_vel and /chatter; serves /add_two_ints
-                    (example_interfaces/srv/AddTwoInts) and the action /fibonacci
+                    (example_interfaces/srv/AddTwoInts, 20 ms per request) and the action /fibonacci
                     (example_interfaces/action/Fibonacci, 0.1 s per step). Prints
                     "graph ready"; writes what it received to OUT (JSON) every 0.2 s.
   announce [--wait S]
@@ -30,6 +30,10 @@ Modes:
                     feedback and status updates, order 40 is cancelled.
   late              a participant started after the agent: publishes /late_topic
                     ("late-N", std_msgs/msg/String) at 5 Hz until stopped.
+  delivery-check    the peers' own plumbing: a reader takes /chatter written at 1 kHz both
+                    by a participant in this process and by another process, at once,
+                    for 2 s. Exit 0 when every write returned and the reader saw both.
+                    (Cyclone listeners deadlocked exactly there; see ros2_dds.Node.)
   selftest          checks all of the above against Cyclone peers of its own (no
                     fleetlink): run it by hand inside a network namespace when changing
                     this file. See selftest().
@@ -38,6 +42,7 @@ Every wait is bounded; failures print "FAIL: ...".
 import argparse
 import base64
 import dataclasses
+import itertools
 import json
 import os
 import random
@@ -199,6 +204,10 @@ def graph(args):
             got["chatter"][m.data] = got["chatter"].get(m.data, 0) + 1
 
     def on_add(req, reply):
+        # A server slower than a burst of calls: 20 ms each, on the node's one dispatch
+        # thread, while its request reader keeps the last 10 (rmw's default). The agent
+        # must keep no more than that unanswered, or 40 calls at once lose 30.
+        time.sleep(0.02)
         with lock:
             got["add_two_ints"] += 1
         reply(sum=req.a + req.b)
@@ -572,10 +581,47 @@ def selftest(args):
     return 1 if st.failures else 0
 
 
+def delivery_check(args):
+    """Writes from this process and from a child process to one reader here, at once."""
+    if args.path == "child":  # the other process: writes until killed
+        w = Node().writer(topic_name("/chatter"), T.String)
+        for i in itertools.count(1):
+            w.write(T.String(data=f"remote-{i}"))
+            time.sleep(0.001)
+    node = Node()
+    seen = {"local": 0, "remote": 0}
+    lock = threading.Lock()
+
+    def on_chatter(m):
+        with lock:
+            seen[m.data.split("-")[0]] += 1
+
+    node.reader(topic_name("/chatter"), T.String, on_chatter)
+    w = Node().writer(topic_name("/chatter"), T.String)
+    child = subprocess.Popen([sys.executable, os.path.abspath(__file__), "delivery-check", "child"])
+    try:
+        if not wait_until(lambda: seen["remote"] > 0, 20):
+            log("FAIL: delivery-check: nothing from the other process within 20 s")
+            return 1
+        writes, end = 0, time.monotonic() + 2
+        while time.monotonic() < end:  # a deadlock stops here; run.sh's timeout ends it
+            writes += 1
+            w.write(T.String(data=f"local-{writes}"))
+            time.sleep(0.001)
+        with lock:
+            got = dict(seen)
+        ok = got["local"] > 0 and got["remote"] > 0
+        log(f"{'ok' if ok else 'FAIL'}: delivery-check: {writes} local writes returned; the reader took "
+            f"{got['local']} local and {got['remote']} remote samples meanwhile")
+        return 0 if ok else 1
+    finally:
+        child.kill()
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["msg-package", "graph", "announce", "call-greet", "call-fib", "late", "selftest"])
-    p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT")
+    p.add_argument("mode", choices=["msg-package", "graph", "announce", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
+    p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT; delivery-check: (child, internal)")
     p.add_argument("--msg-path")
     p.add_argument("--chatter-stop")
     p.add_argument("--wait", type=float, default=20.0)
@@ -589,7 +635,7 @@ def main():
         args.out = args.path
         return graph(args)
     return {"announce": announce, "call-greet": call_greet, "call-fib": call_fib, "late": late,
-            "selftest": selftest}[args.mode](args)
+            "delivery-check": delivery_check, "selftest": selftest}[args.mode](args)
 
 
 if __name__ == "__main__":

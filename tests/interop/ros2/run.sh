@@ -14,7 +14,8 @@
 #   2. roslibpy's /robot1/cmd_vel reaches a Cyclone subscriber of rt/cmd_vel, equal;
 #   3. transient_local both ways: /robot_description reaches a late hub subscriber; the
 #      hub's latched /robot1/announce reaches a transient_local reader started later;
-#   4. the Cyclone service /add_two_ints answers roslibpy calls at the hub, 40 at once;
+#   4. the Cyclone service /add_two_ints answers roslibpy calls at the hub, 40 at once
+#      (the server takes 20 ms each and keeps rmw's default 10 requests);
 #   5. a Cyclone client calls the hub's /cloud/greet (rmw_cyclonedds request/reply);
 #   6. the Cyclone action /fibonacci from a roslibpy action client: feedback and
 #      SUCCEEDED; a long goal cancelled ends CANCELED (seen on both sides);
@@ -23,10 +24,13 @@
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
 # Every step runs under `timeout`, every background process under a longer one; on exit
 # (trap) the processes are stopped and the namespace is deleted. Under 3 minutes.
+# Step 0 checks the Cyclone peers' own plumbing before any of that.
 #
 # Needs root for the namespace (re-runs itself with `sudo -n` when that works).
 # Env: FLEETLINK_BIN (default: target/release/fleetlink), PYTHON (default: .venv/bin/python
 # with roslibpy, cyclonedds and rosbags: scripts/setup.d/10-python-venv.sh, 35-ros2-peers.sh).
+# Debugging: INTEROP_KEEP=DIR keeps the logs; ROS2_SHOW_SOCKETS=1 prints the namespace's
+# UDP sockets (drops per socket) even on success; ROS2_CAPTURE=FILE records a pcap.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
@@ -72,6 +76,11 @@ ros2_cleanup() {
             echo "--- UDP counters of the namespace" >&2
             ip netns exec "$netns" grep -A1 '^Udp:' /proc/net/snmp >&2
         fi
+        if [ "$rc" -ne 0 ] || [ -n "${ROS2_SHOW_SOCKETS:-}" ]; then
+            # Which process's socket dropped them (skmem d<N>) and its buffer (rb<N>).
+            echo "--- UDP sockets of the namespace (skmem: rb receive buffer, d dropped)" >&2
+            ip netns exec "$netns" ss -uanmp >&2
+        fi
         for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null; done
         for _ in $(seq 50); do # bounded: 5 s for a graceful stop
             [ -z "$(ip netns pids "$netns" 2>/dev/null)" ] && break
@@ -91,6 +100,11 @@ in_ns=(ip netns exec "$netns")
 "${in_ns[@]}" ip link set lo multicast on
 "${in_ns[@]}" ip route add 224.0.0.0/4 dev lo
 echo "network namespace: $netns (lo, multicast), ROS_DOMAIN_ID=$ROS_DOMAIN_ID"
+if [ -n "${ROS2_CAPTURE:-}" ]; then # a debugging aid: every datagram of the run, as pcap
+    command -v tcpdump >/dev/null || echo "warning: ROS2_CAPTURE set but tcpdump is not installed (apt-get install tcpdump)" >&2
+    "${in_ns[@]}" timeout 300 tcpdump -i lo -s 2048 -U -w "$ROS2_CAPTURE" udp 2>/dev/null &
+    pids+=($!)
+fi
 
 # In the namespace, bounded: `ns_run SECONDS cmd...` for a step; `ns_bg cmd...` for a
 # process that stays (5 minutes at most, should this script itself be killed).
@@ -102,6 +116,13 @@ failed=()
 fail() { echo "FAIL: $*"; failed+=("$*"); }
 step() { echo "== $1"; }
 show_log() { echo "--- last lines of $1 log" >&2; tail -n "${2:-15}" "$tmp/$1.log" >&2 || true; }
+
+# --- the peers' own plumbing first: Cyclone delivering to a reader from this process and
+# another at once. Its Python listeners deadlocked there and took the graph down
+# mid-suite (ros2_dds.Node says how); a return of that must fail here, by name.
+step "0. the Cyclone peers alone: local and remote writes to one reader at once"
+ns_run 30 "$python" "$here/ros2_peer.py" delivery-check \
+    || fail "delivery-check: the Cyclone peers' own delivery stalled or lost a side (no fleetlink involved; see tests/interop/ros2/ros2_dds.py, Node)"
 
 # --- the custom type: its .msg exists only in this temporary package, which the agent
 # gets with --msg-path; the hub learns it from the agent.
