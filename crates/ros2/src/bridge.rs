@@ -377,6 +377,7 @@ fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::Disc
             rustdds::policy::Reliability::BestEffort
         }),
         latched.then_some(rustdds::policy::Durability::TransientLocal),
+        crate::qos::reader_depth(&ros_type),
     );
     let topic = match bridge
         .router

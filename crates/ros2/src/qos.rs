@@ -12,15 +12,32 @@ use rustdds::{Duration, QosPolicies, QosPolicyBuilder};
 /// How many samples a reader or a volatile writer keeps (the ROS 2 default depth).
 pub const DEPTH: i32 = 10;
 
-/// A reader's cache bound. rustdds keeps a topic's received samples up to the
-/// resource limit (64 by default) and trims to the history depth only every few
-/// seconds: 64 samples of a 1 MB point cloud held for nothing. The bridge takes each
-/// sample as it arrives, so the cache never needs more than the depth.
-fn reader_limits() -> ResourceLimits {
+/// How many samples the bridge's reader of a `ros_type` topic keeps. rustdds keeps the
+/// last `depth` samples of a topic alive after they were taken (it trims a topic's
+/// cache on every insert once samples exceed 64 KiB, down to the depth, and only now and
+/// then for small ones). The bridge takes each sample as it arrives, so for bulk sensor
+/// data, whose samples are large, those slots are megabytes held for nothing: ten 1 MB
+/// point clouds put the agent at 42.7 MB where two leave it at 35 MB
+/// (docs/benchmarks.md). Small samples keep ROS 2's default depth of 10, room for a
+/// burst while the bridge is busy.
+pub fn reader_depth(ros_type: &str) -> i32 {
+    let bulk = matches!(
+        ros_type.replace("/msg/", "/").as_str(),
+        "sensor_msgs/PointCloud2"
+            | "sensor_msgs/PointCloud"
+            | "sensor_msgs/Image"
+            | "sensor_msgs/CompressedImage"
+    );
+    if bulk { 2 } else { DEPTH }
+}
+
+/// A reader's cache bound: the depth (rustdds' default resource limit of 64 samples
+/// would keep up to 64 between its trims).
+fn reader_limits(depth: i32) -> ResourceLimits {
     ResourceLimits {
-        max_samples: DEPTH,
+        max_samples: depth,
         max_instances: 1,
-        max_samples_per_instance: DEPTH,
+        max_samples_per_instance: depth,
     }
 }
 
@@ -31,8 +48,13 @@ fn reliable() -> Reliability {
 }
 
 /// A reader matching a writer that offers `reliability` and `durability` (either
-/// unknown: DDS's defaults for writers, reliable and volatile).
-pub fn reader_for(reliability: Option<Reliability>, durability: Option<Durability>) -> QosPolicies {
+/// unknown: DDS's defaults for writers, reliable and volatile), keeping `depth` samples
+/// ([`reader_depth`]).
+pub fn reader_for(
+    reliability: Option<Reliability>,
+    durability: Option<Durability>,
+    depth: i32,
+) -> QosPolicies {
     let reliable_writer = !matches!(reliability, Some(Reliability::BestEffort));
     let latched = matches!(
         durability,
@@ -49,8 +71,8 @@ pub fn reader_for(reliability: Option<Reliability>, durability: Option<Durabilit
         } else {
             Durability::Volatile
         })
-        .history(History::KeepLast { depth: DEPTH })
-        .resource_limits(reader_limits())
+        .history(History::KeepLast { depth })
+        .resource_limits(reader_limits(depth))
         .build()
 }
 
@@ -103,15 +125,29 @@ mod tests {
 
     #[test]
     fn readers_follow_what_the_writer_offers() {
-        let q = reader_for(Some(Reliability::BestEffort), Some(Durability::Volatile));
+        let q = reader_for(
+            Some(Reliability::BestEffort),
+            Some(Durability::Volatile),
+            DEPTH,
+        );
         assert!(!q.is_reliable());
         assert!(q.is_volatile());
-        let q = reader_for(Some(reliable()), Some(Durability::TransientLocal));
+        let q = reader_for(Some(reliable()), Some(Durability::TransientLocal), DEPTH);
         assert!(q.is_reliable());
         assert_eq!(q.durability(), Some(Durability::TransientLocal));
-        let q = reader_for(None, None);
+        let q = reader_for(None, None, 2);
         assert!(q.is_reliable() && q.is_volatile());
+        assert_eq!(q.history(), Some(History::KeepLast { depth: 2 }));
         assert_eq!(writer(true).durability(), Some(Durability::TransientLocal));
         assert!(writer(false).is_volatile());
+    }
+
+    #[test]
+    fn bulk_sensor_readers_keep_two_samples_and_the_rest_ten() {
+        assert_eq!(reader_depth("sensor_msgs/msg/PointCloud2"), 2);
+        assert_eq!(reader_depth("sensor_msgs/Image"), 2);
+        assert_eq!(reader_depth("sensor_msgs/msg/CompressedImage"), 2);
+        assert_eq!(reader_depth("sensor_msgs/msg/LaserScan"), DEPTH);
+        assert_eq!(reader_depth("fltest_msgs/msg/Battery"), DEPTH);
     }
 }

@@ -373,7 +373,7 @@ fn make_action(
     let feedback = bridge.reader(
         &names::topic(&part("feedback")),
         &feedback_type,
-        qos::reader_for(None, None),
+        qos::reader_for(None, None, qos::DEPTH),
     )?;
     let tasks = vec![
         tokio::spawn(send_goal.clone().pump(r1)).abort_handle(),
