@@ -245,15 +245,22 @@ impl Agent {
         let sim = self.sim.map(|cfg| {
             tokio::spawn(crate::sim::drive(
                 cfg,
-                self.robot,
+                self.robot.clone(),
                 self.router.clone(),
                 shutdown.clone(),
             ))
         });
+        // What the ROS adapters report goes on the status topic (crate::status).
+        let mut parts = Vec::new();
         let ros1 = self.ros1.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let stats = Arc::new(fleetlink_ros1::Ros1Stats::default());
+            parts.push(crate::status::Part {
+                name: "ros1",
+                report: stats.clone(),
+            });
             tokio::spawn(async move {
-                if let Err(e) = fleetlink_ros1::run(opts, router, shutdown).await {
+                if let Err(e) = fleetlink_ros1::run(opts, router, stats, shutdown).await {
                     tracing::error!("{e}");
                 }
             })
@@ -267,6 +274,11 @@ impl Agent {
         // with this runtime too: docs/benchmarks.md.)
         let ros2 = self.ros2.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let stats = Arc::new(fleetlink_ros2::Ros2Stats::default());
+            parts.push(crate::status::Part {
+                name: "ros2",
+                report: stats.clone(),
+            });
             std::thread::Builder::new()
                 .name("ros2".into())
                 .spawn(move || {
@@ -283,7 +295,7 @@ impl Agent {
                         }
                     };
                     rt.block_on(async move {
-                        if let Err(e) = fleetlink_ros2::run(opts, router, shutdown).await {
+                        if let Err(e) = fleetlink_ros2::run(opts, router, stats, shutdown).await {
                             tracing::error!("{e}");
                         }
                     })
@@ -291,8 +303,17 @@ impl Agent {
                 .map_err(|e| tracing::error!("ros2: cannot start its thread: {e}"))
                 .ok()
         });
+        let status = (!parts.is_empty()).then(|| {
+            tokio::spawn(crate::status::publish(
+                self.router.clone(),
+                self.robot.clone(),
+                parts,
+                self.uplink.stats.clone(),
+                shutdown.clone(),
+            ))
+        });
         self.uplink.run(shutdown.clone()).await;
-        for t in [local, sim, ros1].into_iter().flatten() {
+        for t in [local, sim, ros1, status].into_iter().flatten() {
             let _ = t.await;
         }
         if let Some(t) = ros2.flatten() {

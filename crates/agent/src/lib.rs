@@ -20,6 +20,7 @@ pub mod config;
 pub mod local;
 pub mod outbox_store;
 pub mod sim;
+pub mod status;
 pub mod uplink;
 
 pub use agent::{Agent, AgentOptions};

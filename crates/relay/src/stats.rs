@@ -163,3 +163,60 @@ mod tests {
         assert_eq!(b, 1000.0);
     }
 }
+
+/// What one of the agent's adapters (ROS 1, ROS 2) tells about itself on the agent's
+/// status topic: its counters, and the problems it found that a user must act on.
+pub trait AdapterReport: Send + Sync {
+    /// `(name, value)` of each counter, in a fixed order.
+    fn counters(&self) -> Vec<(&'static str, u64)>;
+    /// The distinct problems found so far (type mismatches, unknown types), oldest
+    /// first, at most [`Problems::CAP`].
+    fn problems(&self) -> Vec<String>;
+}
+
+/// The distinct problems an adapter found, as one line each, for its status. Bounded: the
+/// oldest go when more than [`Problems::CAP`] distinct ones were seen.
+#[derive(Default, Debug)]
+pub struct Problems(std::sync::Mutex<std::collections::VecDeque<String>>);
+
+impl Problems {
+    pub const CAP: usize = 16;
+
+    /// Records `text` unless it is already recorded.
+    pub fn note(&self, text: &str) {
+        let mut list = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        if list.iter().any(|t| t == text) {
+            return;
+        }
+        if list.len() == Self::CAP {
+            list.pop_front();
+        }
+        list.push_back(text.to_owned());
+    }
+
+    pub fn list(&self) -> Vec<String> {
+        let list = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        list.iter().cloned().collect()
+    }
+}
+
+#[cfg(test)]
+mod problems_tests {
+    use super::Problems;
+
+    #[test]
+    fn problems_are_kept_once_each_and_bounded() {
+        let p = Problems::default();
+        p.note("a");
+        p.note("a");
+        p.note("b");
+        assert_eq!(p.list(), ["a", "b"]);
+        for i in 0..Problems::CAP {
+            p.note(&format!("x{i}"));
+        }
+        let list = p.list();
+        assert_eq!(list.len(), Problems::CAP);
+        assert_eq!(list[0], "x0");
+        assert_eq!(list.last().map(String::as_str), Some("x15"));
+    }
+}

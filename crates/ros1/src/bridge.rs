@@ -20,7 +20,9 @@ use tokio::net::TcpListener;
 use tokio::sync::mpsc;
 use tokio_util::sync::CancellationToken;
 
-use crate::node::{Conn, Exposed, Node, Offered, PubOut, Publication, Subscription, srv_type_of};
+use crate::node::{
+    Conn, Exposed, Node, Offered, PubOut, Publication, Ros1Stats, Subscription, srv_type_of,
+};
 use crate::options::Ros1Options;
 use crate::outbound::{PullEnd, call_service, probe_service, pull};
 use crate::tcpros::frame;
@@ -38,6 +40,7 @@ pub enum Ros1Error {
 pub async fn run(
     opts: Ros1Options,
     router: Arc<Router>,
+    stats: Arc<Ros1Stats>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros1Error> {
     let bind = |what| move |source| Ros1Error::Bind { what, source };
@@ -65,6 +68,7 @@ pub async fn run(
         slave_port,
         tcpros_port,
         updates_tx,
+        stats,
     ));
     tracing::info!(
         "ros1: node {} at {} (TCPROS port {tcpros_port}), master {}",
@@ -161,10 +165,12 @@ fn create_publication(node: &Arc<Node>, msg: &Message) -> Option<Arc<Publication
     let Some(identity) = node.router.transcoder().ros1_identity(type_name) else {
         if node.lock().mismatched.insert(name.to_owned()) {
             node.stats.type_mismatches.fetch_add(1, Relaxed);
-            tracing::warn!(
-                "ros1: cannot publish {name} into the ROS graph: type {type_name:?} has no ROS 1 identity \
+            let text = format!(
+                "cannot publish {name} into the ROS graph: type {type_name:?} has no ROS 1 identity \
                  (unknown to the agent's registry); other topics are unaffected"
             );
+            tracing::warn!("ros1: {text}");
+            node.stats.problems.note(&text);
         }
         return None;
     };

@@ -96,6 +96,7 @@ async fn subscriber(node: &Node, mut stream: TcpStream, topic: &str, header: &He
         );
         tracing::warn!("ros1: {text}");
         node.stats.type_mismatches.fetch_add(1, Relaxed);
+        node.stats.problems.note(&text);
         refuse(&mut stream, text).await;
         return;
     }
@@ -179,6 +180,7 @@ async fn service_client(node: &Node, mut stream: TcpStream, service: &str, heade
         );
         tracing::warn!("ros1: {text}");
         node.stats.type_mismatches.fetch_add(1, Relaxed);
+        node.stats.problems.note(&text);
         refuse(&mut stream, text).await;
         return;
     }

@@ -32,4 +32,5 @@ pub mod tcpros;
 pub mod xmlrpc;
 
 pub use bridge::{Ros1Error, run};
+pub use node::Ros1Stats;
 pub use options::{NameFilter, Ros1Options};

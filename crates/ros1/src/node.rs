@@ -10,6 +10,7 @@ use std::sync::{Arc, Mutex};
 
 use bytes::Bytes;
 use fleetlink_relay::calls::{CallEvent, CallId};
+use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::transcode::Ros1Identity;
 use fleetlink_relay::{ClientId, Router, Topic};
 use tokio::net::TcpListener;
@@ -131,13 +132,31 @@ enum Waiter {
     Abandoned,
 }
 
-/// Counters shown in logs and tests.
+/// Counters and problems, for logs, tests and the agent's status topic.
 #[derive(Default, Debug)]
 pub struct Ros1Stats {
     pub messages_up: AtomicU64,
     pub messages_down: AtomicU64,
     pub type_mismatches: AtomicU64,
     pub master_registrations: AtomicU64,
+    /// Each type mismatch as its log line says it.
+    pub problems: Problems,
+}
+
+impl AdapterReport for Ros1Stats {
+    fn counters(&self) -> Vec<(&'static str, u64)> {
+        let get = |c: &AtomicU64| c.load(Relaxed);
+        vec![
+            ("messages_up", get(&self.messages_up)),
+            ("messages_down", get(&self.messages_down)),
+            ("type_mismatches", get(&self.type_mismatches)),
+            ("master_registrations", get(&self.master_registrations)),
+        ]
+    }
+
+    fn problems(&self) -> Vec<String> {
+        self.problems.list()
+    }
 }
 
 pub struct Node {
@@ -150,7 +169,7 @@ pub struct Node {
     pub tcpros_port: u16,
     pub state: Mutex<State>,
     waiters: Mutex<HashMap<CallId, Waiter>>,
-    pub stats: Ros1Stats,
+    pub stats: Arc<Ros1Stats>,
     next_conn: AtomicU64,
     /// Wakes the bridge loop when a publisher list changed (publisherUpdate).
     pub updates: mpsc::UnboundedSender<(String, Vec<String>)>,
@@ -164,6 +183,7 @@ impl Node {
         slave_port: u16,
         tcpros_port: u16,
         updates: mpsc::UnboundedSender<(String, Vec<String>)>,
+        stats: Arc<Ros1Stats>,
     ) -> Node {
         let caller_api = format!("http://{}:{slave_port}/", opts.host);
         let master = Master {
@@ -180,7 +200,7 @@ impl Node {
             master,
             state: Mutex::new(State::default()),
             waiters: Mutex::new(HashMap::new()),
-            stats: Ros1Stats::default(),
+            stats,
             next_conn: AtomicU64::new(1),
             updates,
         }
@@ -462,7 +482,15 @@ mod tests {
             discovery_period: std::time::Duration::from_secs(1),
             call_timeout: std::time::Duration::from_secs(1),
         };
-        Node::new(opts, router, client, 1, 2, mpsc::unbounded_channel().0)
+        Node::new(
+            opts,
+            router,
+            client,
+            1,
+            2,
+            mpsc::unbounded_channel().0,
+            Arc::default(),
+        )
     }
 
     #[tokio::test]

@@ -125,10 +125,12 @@ pub async fn pull(node: Arc<Node>, topic: String, api: String, seq: Arc<AtomicU6
 pub fn report_mismatch(node: &Node, topic: &str, hub_type: &str, local_type: &str, who: &str) {
     node.stats.type_mismatches.fetch_add(1, Relaxed);
     if node.lock().mismatched.insert(topic.to_owned()) {
-        tracing::warn!(
-            "ros1: type mismatch on {topic}: the agent's topic is {hub_type}, local publisher {who} sends {local_type}; \
+        let text = format!(
+            "type mismatch on {topic}: the agent's topic is {hub_type}, local publisher {who} sends {local_type}; \
              {topic} is not bridged, other topics are unaffected"
         );
+        tracing::warn!("ros1: {text}");
+        node.stats.problems.note(&text);
     }
 }
 

@@ -16,6 +16,7 @@ use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::ChannelPeer;
 use fleetlink_relay::names::ClientId;
 use fleetlink_relay::router::{RouteError, SubOptions, Target};
+use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
 use futures::StreamExt;
 use rustdds::no_key::{DataReader, DataWriter};
@@ -43,7 +44,7 @@ pub enum Ros2Error {
     Endpoint(String),
 }
 
-/// Counters of the bridge (logged at exit; tests read them).
+/// Counters and problems of the bridge (logged at exit; on the agent's status topic).
 #[derive(Debug, Default)]
 pub struct Stats {
     pub messages_up: AtomicU64,
@@ -51,6 +52,25 @@ pub struct Stats {
     pub dropped_down: AtomicU64,
     pub unknown_types: AtomicU64,
     pub type_mismatches: AtomicU64,
+    /// Each unknown type and type mismatch as its log line says it.
+    pub problems: Problems,
+}
+
+impl AdapterReport for Stats {
+    fn counters(&self) -> Vec<(&'static str, u64)> {
+        let get = |c: &AtomicU64| c.load(Relaxed);
+        vec![
+            ("messages_up", get(&self.messages_up)),
+            ("messages_down", get(&self.messages_down)),
+            ("dropped_down", get(&self.dropped_down)),
+            ("unknown_types", get(&self.unknown_types)),
+            ("type_mismatches", get(&self.type_mismatches)),
+        ]
+    }
+
+    fn problems(&self) -> Vec<String> {
+        self.problems.list()
+    }
 }
 
 /// A local topic sent up: its router topic, the writers feeding it, its reader task.
@@ -88,7 +108,7 @@ pub struct Bridge {
     pub opts: Ros2Options,
     pub router: Arc<Router>,
     pub client: ClientId,
-    pub stats: Stats,
+    pub stats: Arc<Stats>,
     pub(crate) dp: DomainParticipant,
     pub(crate) publisher: Publisher,
     pub(crate) subscriber: Subscriber,
@@ -181,7 +201,11 @@ impl Bridge {
     ) {
         if self.lock().reported.insert(key.to_owned()) {
             counter.fetch_add(1, Relaxed);
-            tracing::warn!("{}", text());
+            let text = text();
+            tracing::warn!("{text}");
+            self.stats
+                .problems
+                .note(text.strip_prefix("ros2: ").unwrap_or(&text));
         }
     }
 
@@ -195,6 +219,7 @@ impl Bridge {
 pub async fn run(
     opts: Ros2Options,
     router: Arc<Router>,
+    stats: Arc<Stats>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros2Error> {
     let domain = opts.domain_id;
@@ -222,7 +247,7 @@ pub async fn run(
         opts,
         router: router.clone(),
         client,
-        stats: Stats::default(),
+        stats,
         dp,
         publisher,
         subscriber,

@@ -28,5 +28,5 @@ pub mod qos;
 pub mod raw;
 pub mod services;
 
-pub use bridge::{Ros2Error, run};
+pub use bridge::{Ros2Error, Stats as Ros2Stats, run};
 pub use options::Ros2Options;

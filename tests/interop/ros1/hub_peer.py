@@ -12,6 +12,9 @@ Modes (all take --hub-url URL --robot NAME):
                 answer calls.
   check-after   /<robot>/after_restart (a publisher started after roscore restarted)
                 arrives.
+  check-status  the agent's status topic /<robot>/fleetlink/diagnostics
+                (diagnostic_msgs/DiagnosticArray) shows its ROS 1 part at WARN with the
+                /cmd_vel type mismatch named, both types in it.
 Exit status 0 when every check passed; each failure is printed as "FAIL: ...".
 """
 import argparse
@@ -122,6 +125,31 @@ def check_after(args):
     check(m is not None and m["data"].startswith("after-"), f"/after_restart arrived at the hub: {m}")
 
 
+def check_status(args):
+    ros = connect(args.hub_url)
+
+    def ros1_part(m):
+        return next((s for s in m.get("status", []) if s.get("name") == "fleetlink agent: ros1"), None)
+
+    def mismatch_named(m):
+        part = ros1_part(m)
+        problems = [kv["value"] for kv in (part or {}).get("values", []) if kv.get("key") == "problem"]
+        return any("/cmd_vel" in p and "geometry_msgs/Twist" in p and "std_msgs/String" in p for p in problems)
+
+    # Latched, republished every 5 s: the first message may predate the mismatch.
+    m = first(ros, f"/{args.robot}/fleetlink/diagnostics", "diagnostic_msgs/DiagnosticArray", wait=15,
+              want=mismatch_named)
+    part = ros1_part(m) if m else None
+    check(part is not None, f"the status topic names the /cmd_vel mismatch with both types: {part}")
+    if part:
+        counters = {kv["key"]: kv["value"] for kv in part["values"] if kv["key"] != "problem"}
+        check(part["level"] == 1, f"the ROS 1 part is at WARN (1): level {part['level']}, message {part['message']!r}")
+        check(int(counters.get("type_mismatches", 0)) >= 1 and int(counters.get("messages_up", 0)) > 0,
+              f"its counters: {counters}")
+        names = [s["name"] for s in m["status"]]
+        check("fleetlink agent: uplink" in names, f"the uplink has a part too: {names}")
+
+
 def serve(args):
     r = f"/{args.robot}"
     ros = connect(args.hub_url)
@@ -161,7 +189,7 @@ def main():
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
     args = p.parse_args()
-    {"serve": serve, "check-up": check_up, "check-after": check_after}[args.mode](args)
+    {"serve": serve, "check-up": check_up, "check-after": check_after, "check-status": check_status}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

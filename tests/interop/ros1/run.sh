@@ -13,7 +13,8 @@
 #   3. /chatter bridged both ways: every message is seen exactly once on each side (no
 #      loop), counted on both sides;
 #   4. a local subscriber asking for another type than the hub topic's is refused, the
-#      agent's log names the topic and both types, and /cmd_vel keeps flowing;
+#      agent's log names the topic and both types, so does its status topic at the hub
+#      (/<robot>/fleetlink/diagnostics, ROS 1 part at WARN), and /cmd_vel keeps flowing;
 #   5. roscore killed and restarted under the running agent: a publisher started afterwards
 #      reaches the hub, and the agent's publication is registered again (`rostopic echo`);
 #   6. that publisher restarted: the agent follows it (publisherUpdate) and data flows again.
@@ -187,6 +188,8 @@ else
     fail "no log line naming /cmd_vel and both types: '$mismatch'"
 fi
 grep -q unexpected "$tmp/wrongtype.log" && fail "the wrong-type subscriber received messages"
+timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-status --hub-url "$hub_url" --robot "$robot" \
+    || fail "check-status (the mismatch on the agent's status topic at the hub)"
 after="$(cmd_count)"
 [ "$after" -gt "$before" ] && echo "ok: /cmd_vel kept flowing ($before -> $after messages)" \
     || fail "/cmd_vel stopped during the mismatch ($before -> $after)"

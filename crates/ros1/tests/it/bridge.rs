@@ -246,6 +246,7 @@ async fn bridges_both_ways_and_registers_again_after_a_master_restart() {
     let bridge = tokio::spawn(fleetlink_ros1::run(
         options(&master),
         router.clone(),
+        Arc::default(),
         shutdown.clone(),
     ));
 
@@ -472,7 +473,12 @@ async fn services_cross_both_ways() {
         ..options(&master)
     };
     let shutdown = CancellationToken::new();
-    let bridge = tokio::spawn(fleetlink_ros1::run(opts, router.clone(), shutdown.clone()));
+    let bridge = tokio::spawn(fleetlink_ros1::run(
+        opts,
+        router.clone(),
+        Arc::default(),
+        shutdown.clone(),
+    ));
 
     // Fleet → local service: a JSON request, a ROS 1 answer from the local provider.
     let add = TopicName::parse("/add_two_ints").unwrap();
