@@ -21,7 +21,7 @@
 //! exponentially with full jitter (and never sooner than a `Retry-After` the hub sent), so
 //! a fleet does not stampede a restarted hub.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -36,7 +36,7 @@ use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::reliable::ReliableOut;
 use fleetlink_relay::router::{SubOptions, Target};
-use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicName};
+use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicId, TopicName};
 use futures_util::{SinkExt, StreamExt};
 use tokio::sync::{mpsc, watch};
 use tokio_tungstenite::tungstenite::Message as WsMessage;
@@ -603,14 +603,36 @@ impl Uplink {
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
         let dead_after = heartbeat * 2;
         // Once a second the hub hears what this robot would send and what its link
-        // carries, for sharing a site's access link among its robots.
+        // carries, for sharing a site's access link among its robots; and which local
+        // topics lost their last publisher (a ROS node gone), so it stops listing them.
         let reporter = {
             let (outbox, ctrl) = (self.outbox.clone(), ctrl_tx.clone());
+            let (router, me) = (self.router.clone(), self.client);
             tokio::spawn(async move {
                 let mut tick = tokio::time::interval(LINK_REPORT_INTERVAL);
                 tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+                let mut unpublished: HashSet<TopicId> = HashSet::new();
                 loop {
                     tick.tick().await;
+                    for t in router.topics() {
+                        if !t.subscribers.contains(&me) {
+                            continue; // not carried up
+                        }
+                        let id = t.meta.id;
+                        if t.publishers.iter().any(|c| *c != me) {
+                            unpublished.remove(&id);
+                        } else if unpublished.insert(id)
+                            && ctrl
+                                .send(Control::Unadvertise {
+                                    topic: id,
+                                    since: std::time::Instant::now(),
+                                })
+                                .await
+                                .is_err()
+                        {
+                            return;
+                        }
+                    }
                     let Some(f) = outbox.link_figures(std::time::Instant::now()) else {
                         return;
                     };

@@ -198,6 +198,15 @@ pub enum Control {
     /// Frames of one large call body (its `CALL_CHUNK`s, then the frame they belong to):
     /// sent one per writer round, between other traffic, in order.
     Sequence(VecDeque<Frame>),
+    /// The topic has had no publisher since `since`: tell the peer (`UNADVERTISE`) once
+    /// what was queued for it has been sent. Ignored for a topic never advertised on this
+    /// link and for no-drop (reliable) topics, whose streams outlive their publishers;
+    /// dropped when a message of the topic received after `since` comes (published
+    /// again). A later message of the topic advertises it again.
+    Unadvertise {
+        topic: TopicId,
+        since: Instant,
+    },
     /// Close the link (after flushing what is queued).
     Close,
 }
@@ -321,6 +330,9 @@ pub async fn write_link<K>(
         }
     }
     let mut lanes: Vec<Lane> = Vec::new();
+    // Topics to unadvertise once nothing of theirs is queued or in a lane, with when
+    // they were last seen without a publisher.
+    let mut unadvertise: Vec<(TopicId, Instant)> = Vec::new();
     // Large call bodies in progress, a frame of each per round.
     let mut sequences: VecDeque<VecDeque<Frame>> = VecDeque::new();
     // Heartbeat ids live far from the link estimator's probe ids (which count from 0).
@@ -334,6 +346,7 @@ pub async fn write_link<K>(
             match control.try_recv() {
                 Ok(Control::Frame(f)) => f.encode(&mut buf),
                 Ok(Control::Sequence(s)) => sequences.push_back(s),
+                Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Ok(Control::Close) | Err(mpsc::error::TryRecvError::Disconnected) => {
                     let _ = flush_buf(&mut sink, &mut buf).await;
                     let _ = sink.close().await;
@@ -421,6 +434,10 @@ pub async fn write_link<K>(
                 continue;
             }
             let tid = msg.topic.id;
+            if !unadvertise.is_empty() {
+                // Published again since it was seen without a publisher: keep it.
+                unadvertise.retain(|(t, since)| *t != tid || msg.received <= *since);
+            }
             if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
                 lane.waiting.push_back(msg.clone());
                 continue;
@@ -446,6 +463,22 @@ pub async fn write_link<K>(
                 lanes.push(Lane::start(tid, msg.clone(), sized.is_some()));
             }
         }
+        // 4. Topics whose publishers are gone, after their last message.
+        if !unadvertise.is_empty() {
+            unadvertise.retain(|(t, _)| {
+                if !advertised.contains_key(t)
+                    || outbox.advertise_flags(t.0) & ADVERTISE_RELIABLE != 0
+                {
+                    return false; // never announced here, or a no-drop stream
+                }
+                if lanes.iter().any(|l| l.topic == *t) || outbox.queued_for(t.0) > 0 {
+                    return true; // its messages first
+                }
+                Frame::Unadvertise { alias: t.0 }.encode(&mut buf);
+                advertised.remove(t);
+                false
+            });
+        }
         if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
             return;
         }
@@ -467,6 +500,7 @@ pub async fn write_link<K>(
             c = control.recv() => match c {
                 Some(Control::Frame(f)) => f.encode(&mut buf),
                 Some(Control::Sequence(s)) => sequences.push_back(s),
+                Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Some(Control::Close) | None => {
                     let _ = flush_buf(&mut sink, &mut buf).await;
                     let _ = sink.close().await;

@@ -482,6 +482,20 @@ impl Outbox {
         }
     }
 
+    /// Messages of the topic with link alias `alias` waiting to be taken.
+    pub fn queued_for(&self, alias: u32) -> usize {
+        let st = self.lock();
+        match &st.service {
+            Service::Scheduled { sched, .. } => sched.queued(QosTopic(alias)),
+            Service::RoundRobin { .. } => st
+                .slots
+                .values()
+                .filter(|s| s.topic == alias)
+                .map(|s| s.queue.as_ref().map_or(0, |q| q.len()))
+                .sum(),
+        }
+    }
+
     /// The numbering epoch of this outbox's no-drop streams (0 for a plain outbox).
     pub fn outbox_epoch(&self) -> u64 {
         match &self.lock().service {

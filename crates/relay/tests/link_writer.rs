@@ -305,3 +305,104 @@ async fn latched_topics_are_announced_latched() {
     assert_eq!(flags["/plain"] & frame::ADVERTISE_LATCHED, 0);
     writer.abort();
 }
+
+/// A topic whose publisher left is unadvertised to the peer only after everything of it
+/// that was queued, including a large message still going out chunk by chunk; a later
+/// message advertises it again.
+#[tokio::test]
+async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readvertises() {
+    let router = Arc::new(Router::default());
+    let (link, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "link".into(),
+        },
+        None,
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let name = TopicName::parse("/cloud").unwrap();
+    let topic = router
+        .advertise(publisher, &name, Schema::named("t/Blob"), false)
+        .unwrap();
+    let alias = topic.id().0;
+
+    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(0);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+    ));
+
+    let mut seen = Vec::new(); // "A", "C", "M", "U" in the order sent
+    let record = |frames: Vec<Frame>, seen: &mut Vec<&str>| {
+        for f in frames {
+            match f {
+                Frame::Advertise { alias: a, .. } if a == alias => seen.push("A"),
+                Frame::Chunk { alias: a, .. } if a == alias => seen.push("C"),
+                Frame::Message { alias: a, .. } if a == alias => seen.push("M"),
+                Frame::Unadvertise { alias: a } if a == alias => seen.push("U"),
+                _ => {}
+            }
+        }
+    };
+    // A large message (128 chunks) under way, a small one queued behind it, then the
+    // publisher leaves.
+    let big = Bytes::from(vec![7u8; 2 << 20]);
+    topic.publish(publisher, 1, 0, Payload::json(big.clone()));
+    while !seen.contains(&"C") {
+        record(next_frames(&mut rx).await, &mut seen);
+    }
+    topic.publish(publisher, 2, 0, Payload::json(&b"{\"last\":1}"[..]));
+    router.unadvertise(publisher, &name);
+    ctrl_tx
+        .send(Control::Unadvertise {
+            topic: topic.id(),
+            since: std::time::Instant::now(),
+        })
+        .await
+        .unwrap();
+    while !seen.contains(&"U") {
+        record(next_frames(&mut rx).await, &mut seen);
+    }
+    let chunks = seen.iter().filter(|s| **s == "C").count();
+    assert_eq!(seen.first(), Some(&"A"));
+    assert_eq!(chunks, big.len().div_ceil(frame::DEFAULT_CHUNK_SIZE));
+    assert_eq!(
+        seen.last(),
+        Some(&"U"),
+        "UNADVERTISE after every chunk and message"
+    );
+    assert_eq!(seen.iter().filter(|s| **s == "M").count(), 1);
+
+    // A second UNADVERTISE of a topic no longer advertised is not sent; neither is one
+    // overtaken by a new publisher's message, which advertises the topic again.
+    ctrl_tx
+        .send(Control::Unadvertise {
+            topic: topic.id(),
+            since: std::time::Instant::now(),
+        })
+        .await
+        .unwrap();
+    let again = router
+        .advertise(publisher, &name, Schema::named("t/Blob"), false)
+        .unwrap();
+    again.publish(publisher, 3, 0, Payload::json(&b"{\"back\":1}"[..]));
+    let mut after = Vec::new();
+    while !after.contains(&"M") {
+        record(next_frames(&mut rx).await, &mut after);
+    }
+    assert_eq!(after, ["A", "M"]);
+    writer.abort();
+}

@@ -22,6 +22,9 @@ Modes (all take --hub-url URL --robot NAME):
                 [0, 1, 1, 2, 3, 5]; order 50 cancelled after its first feedback ends
                 CANCELED.
   check-late    /<robot>/late_topic (a participant started after the agent) arrives.
+  check-gone    /<robot>/late_topic has no publisher at the hub (rosapi publishers) once
+                its only writer's participant is gone (killed: DDS notices when its lease
+                ends).
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -246,6 +249,27 @@ def check_late(args):
           f"{name} (a participant started after the agent) arrives at the hub: {m and dict(m)}")
 
 
+def check_gone(args):
+    name = f"/{args.robot}/late_topic"
+    ros = connect(args.hub_url)
+    publishers = roslibpy.Service(ros, "/rosapi/publishers", "rosapi/Publishers")
+    seen = [None]
+
+    def gone():
+        try:
+            seen[0] = publishers.call(roslibpy.ServiceRequest({"topic": name}), timeout=5).get("publishers")
+        except Exception as e:
+            seen[0] = f"error: {e}"
+        return seen[0] == []
+
+    t0 = time.monotonic()
+    # A killed participant says nothing: DDS forgets it when its lease (Cyclone: 10 s)
+    # ends, the agent unadvertises the topic at its next look, the uplink tells the hub.
+    ok = wait_for(gone, 25)
+    check(ok, f"{name} has no publisher at the hub {time.monotonic() - t0:.1f} s after its writer's "
+              f"participant was killed (rosapi publishers: {seen[0]})")
+
+
 # ---------------------------------------------------------------- serve
 
 def serve_fib(args):
@@ -321,7 +345,7 @@ def serve(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "serve-fib"])
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib"])
     p.add_argument("out", nargs="?")
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
@@ -330,7 +354,8 @@ def main():
     if args.mode == "serve" and not (args.out and args.chatter_stop):
         p.error("serve needs OUT and --chatter-stop")
     {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
-     "check-action": check_action, "check-late": check_late, "serve-fib": serve_fib}[args.mode](args)
+     "check-action": check_action, "check-late": check_late, "check-gone": check_gone,
+     "serve-fib": serve_fib}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 
