@@ -63,6 +63,7 @@ async fn robots(
         let own: Vec<&str> = access.visible(
             topics
                 .iter()
+                .filter(|t| t.listed())
                 .map(|t| t.meta.name.as_str())
                 .filter(|n| n.starts_with(&ns)),
             Operation::Subscribe,
@@ -121,7 +122,7 @@ async fn topics(
         .router
         .topics()
         .iter()
-        .filter(|t| access.allows(t.meta.name.as_str(), Operation::Subscribe))
+        .filter(|t| t.listed() && access.allows(t.meta.name.as_str(), Operation::Subscribe))
         .map(|t| {
             let (rate, bw) = t.stats.rates(now);
             let last = t.stats.last_message_ns.load(std::sync::atomic::Ordering::Relaxed);

@@ -223,6 +223,18 @@ pub struct TopicSnapshot {
     pub publishers: Vec<ClientId>,
     pub subscribers: Vec<ClientId>,
     pub stats: Arc<TopicStats>,
+    /// Someone subscribed to this topic by its name (not only through a pattern).
+    pub named_subscription: bool,
+}
+
+impl TopicSnapshot {
+    /// Whether listings show the topic: it has a publisher, or a subscriber that asked
+    /// for it by name. A topic kept only by pattern subscriptions (a robot's link
+    /// subscribes to its whole namespace) after its last publisher left is gone for a
+    /// user, as in ROS, where a topic exists while it has an endpoint.
+    pub fn listed(&self) -> bool {
+        !self.publishers.is_empty() || self.named_subscription
+    }
 }
 
 impl Default for Router {
@@ -613,6 +625,18 @@ impl Router {
     /// Every topic, sorted by name.
     pub fn topics(&self) -> Vec<TopicSnapshot> {
         let st = self.lock();
+        // Topics some client subscribed to by name.
+        let mut named: HashSet<&TopicName> = HashSet::new();
+        for c in st.clients.values() {
+            for (name, (_, holders)) in &c.slots {
+                if holders
+                    .iter()
+                    .any(|h| matches!(c.subs.get(h), Some((Target::Exact(_), _))))
+                {
+                    named.insert(name);
+                }
+            }
+        }
         let mut out: Vec<TopicSnapshot> = st
             .topics
             .iter()
@@ -622,6 +646,7 @@ impl Router {
                 publishers: st.publishers.get(name).cloned().unwrap_or_default(),
                 subscribers: t.subscribers.load().iter().map(|s| s.client).collect(),
                 stats: t.stats.clone(),
+                named_subscription: named.contains(name),
             })
             .collect();
         out.sort_by(|a, b| a.meta.name.cmp(&b.meta.name));

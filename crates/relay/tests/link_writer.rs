@@ -1,7 +1,8 @@
 //! The link writer over an in-memory sink: a small message on another topic overtakes a
-//! large message whose chunks are already being sent, and pieces of one message keep
-//! their order. The sink is a one-slot channel, so the test decides exactly when the
-//! writer may send its next WebSocket message.
+//! large message whose chunks are already being sent, pieces of one message keep their
+//! order, and a topic whose publisher left is unadvertised after its last message (and
+//! drops out of the router's listings). The sink is a one-slot channel, so the test
+//! decides exactly when the writer may send its next WebSocket message.
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -405,4 +406,54 @@ async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readverti
     }
     assert_eq!(after, ["A", "M"]);
     writer.abort();
+}
+
+/// Listings show a topic while it has an endpoint: a topic kept only by a pattern
+/// subscription (a robot link's namespace) is not listed once its publisher left; one a
+/// client subscribed to by name is; a publisher coming back lists it again.
+#[test]
+fn a_topic_kept_only_by_a_pattern_subscription_is_not_listed() {
+    let router = Router::default();
+    let (link, _) = router.connect(
+        ClientKind::Internal {
+            role: "link".into(),
+        },
+        None,
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern("/robot1/.*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let name = TopicName::parse("/robot1/late").unwrap();
+    let listed = |router: &Router| {
+        router
+            .topics()
+            .iter()
+            .find(|t| t.meta.name == name)
+            .map(|t| t.listed())
+    };
+    router
+        .advertise(publisher, &name, Schema::named("std_msgs/String"), false)
+        .unwrap();
+    assert_eq!(listed(&router), Some(true));
+    router.unadvertise(publisher, &name);
+    // Still in the router (the pattern subscription holds it), not listed.
+    assert_eq!(listed(&router), Some(false));
+
+    let (viewer, _) = router.connect(ClientKind::Internal { role: "ui".into() }, None);
+    let sid = router
+        .subscribe(viewer, Target::Exact(name.clone()), SubOptions::default())
+        .unwrap();
+    assert_eq!(listed(&router), Some(true), "a named subscriber lists it");
+    router.unsubscribe(viewer, sid);
+    assert_eq!(listed(&router), Some(false));
+
+    router
+        .advertise(publisher, &name, Schema::named("std_msgs/String"), false)
+        .unwrap();
+    assert_eq!(listed(&router), Some(true));
 }

@@ -22,9 +22,9 @@ Modes (all take --hub-url URL --robot NAME):
                 [0, 1, 1, 2, 3, 5]; order 50 cancelled after its first feedback ends
                 CANCELED.
   check-late    /<robot>/late_topic (a participant started after the agent) arrives.
-  check-gone    /<robot>/late_topic has no publisher at the hub (rosapi publishers) once
-                its only writer's participant is gone (killed: DDS notices when its lease
-                ends).
+  check-gone    /<robot>/late_topic leaves the hub's topic list and has no publisher there
+                (rosapi topics, publishers) once its only writer's participant is gone
+                (killed: DDS notices when its lease ends).
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -252,22 +252,25 @@ def check_late(args):
 def check_gone(args):
     name = f"/{args.robot}/late_topic"
     ros = connect(args.hub_url)
+    topics = roslibpy.Service(ros, "/rosapi/topics", "rosapi/Topics")
     publishers = roslibpy.Service(ros, "/rosapi/publishers", "rosapi/Publishers")
-    seen = [None]
+    seen = {}
 
     def gone():
         try:
-            seen[0] = publishers.call(roslibpy.ServiceRequest({"topic": name}), timeout=5).get("publishers")
+            seen["listed"] = name in topics.call(roslibpy.ServiceRequest({}), timeout=5).get("topics", [])
+            seen["publishers"] = publishers.call(roslibpy.ServiceRequest({"topic": name}), timeout=5).get("publishers")
         except Exception as e:
-            seen[0] = f"error: {e}"
-        return seen[0] == []
+            seen["error"] = str(e)
+            return False
+        return not seen["listed"] and not seen["publishers"]
 
     t0 = time.monotonic()
     # A killed participant says nothing: DDS forgets it when its lease (Cyclone: 10 s)
     # ends, the agent unadvertises the topic at its next look, the uplink tells the hub.
     ok = wait_for(gone, 25)
-    check(ok, f"{name} has no publisher at the hub {time.monotonic() - t0:.1f} s after its writer's "
-              f"participant was killed (rosapi publishers: {seen[0]})")
+    check(ok, f"{name} left the hub's topics and publishers {time.monotonic() - t0:.1f} s after its "
+              f"writer's participant was killed ({seen})")
 
 
 # ---------------------------------------------------------------- serve

@@ -22,7 +22,7 @@
 #   7. a participant started after the agent publishes /late_topic: it reaches the hub;
 #   8. /chatter both ways: after both sides stop and a quiet period, every message was
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
-#   9. restarts: the late participant killed -> /late_topic has no publisher at the hub;
+#   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
 # Every step runs under `timeout`, every background process under a longer one; on exit
@@ -282,8 +282,8 @@ case "$loop_report" in ok:*) echo "$loop_report" ;; *) fail "loop check: $loop_r
 
 step "9. restarts: a participant, then the agent"
 # The late participant killed (no goodbye): DDS forgets it when its lease ends (Cyclone:
-# 10 s), the agent unadvertises /late_topic and so does its uplink at the hub; a new
-# process publishing it is bridged again.
+# 10 s), the agent unadvertises /late_topic, its uplink tells the hub, which stops
+# listing it; a new process publishing it is bridged again.
 ns_kill "ros2_peer.py late"
 ns_run 40 "$python" "$here/hub_peer.py" check-gone --hub-url "$hub_url" --robot "$robot" || fail "check-gone (/late_topic after its participant was killed)"
 ns_bg "$python" "$here/ros2_peer.py" late >"$tmp/late2.log" 2>&1 &

@@ -63,11 +63,12 @@ pub fn answer(
     let Some(call) = name.strip_prefix("rosapi/") else {
         return Answer::NotRosapi;
     };
-    // Listings show only what the caller may subscribe to.
+    // Listings show only what the caller may subscribe to, and only topics that still
+    // have an endpoint (`TopicSnapshot::listed`).
     let topics: Vec<_> = router
         .topics()
         .into_iter()
-        .filter(|t| visible(t.meta.name.as_str(), Op::Subscribe))
+        .filter(|t| t.listed() && visible(t.meta.name.as_str(), Op::Subscribe))
         .collect();
     let arg_topic = || -> Result<TopicName, String> {
         let raw = args
