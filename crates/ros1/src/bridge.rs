@@ -181,6 +181,7 @@ fn create_publication(node: &Arc<Node>, msg: &Message) -> Option<Arc<Publication
         latched,
         out: std::sync::Mutex::new(PubOut::default()),
         dropped: AtomicU64::new(0),
+        stats: node.stats.clone(),
     });
     node.lock()
         .pubs

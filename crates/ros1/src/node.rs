@@ -47,6 +47,8 @@ pub struct Publication {
     pub out: Mutex<PubOut>,
     /// Frames dropped because a local subscriber's queue was full.
     pub dropped: AtomicU64,
+    /// The adapter's counters: its drops are added to `dropped_down` there too.
+    pub stats: Arc<Ros1Stats>,
 }
 
 #[derive(Default)]
@@ -62,7 +64,7 @@ impl Publication {
         out.conns.retain(|s| {
             let queued = s.queued.load(Relaxed);
             if queued > 0 && queued + frame.len() > SUBSCRIBER_QUEUE_BYTES {
-                self.dropped.fetch_add(1, Relaxed);
+                self.drop_one();
                 return !s.tx.is_closed();
             }
             match s.tx.try_send(frame.clone()) {
@@ -71,7 +73,7 @@ impl Publication {
                     true
                 }
                 Err(mpsc::error::TrySendError::Full(_)) => {
-                    self.dropped.fetch_add(1, Relaxed);
+                    self.drop_one();
                     true
                 }
                 Err(mpsc::error::TrySendError::Closed(_)) => false,
@@ -80,6 +82,11 @@ impl Publication {
         if self.latched {
             out.last = Some(frame);
         }
+    }
+
+    fn drop_one(&self) {
+        self.dropped.fetch_add(1, Relaxed);
+        self.stats.dropped_down.fetch_add(1, Relaxed);
     }
 }
 
@@ -139,6 +146,8 @@ pub struct Ros1Stats {
     pub messages_down: AtomicU64,
     pub type_mismatches: AtomicU64,
     pub master_registrations: AtomicU64,
+    /// Hub messages a slow local subscriber missed (its queue was full).
+    pub dropped_down: AtomicU64,
     /// Each type mismatch as its log line says it.
     pub problems: Problems,
 }
@@ -149,6 +158,7 @@ impl AdapterReport for Ros1Stats {
         vec![
             ("messages_up", get(&self.messages_up)),
             ("messages_down", get(&self.messages_down)),
+            ("dropped_down", get(&self.dropped_down)),
             ("type_mismatches", get(&self.type_mismatches)),
             ("master_registrations", get(&self.master_registrations)),
         ]
@@ -430,6 +440,7 @@ mod tests {
             latched: false,
             out: Mutex::new(PubOut::default()),
             dropped: AtomicU64::new(0),
+            stats: Arc::default(),
         };
         let (tx, mut rx) = mpsc::channel(SUBSCRIBER_QUEUE);
         let queued = Arc::new(std::sync::atomic::AtomicUsize::new(0));
@@ -445,6 +456,11 @@ mod tests {
         let fits = SUBSCRIBER_QUEUE_BYTES / cloud.len();
         assert_eq!(queued.load(Relaxed), fits * cloud.len());
         assert_eq!(publication.dropped.load(Relaxed), (20 - fits) as u64);
+        assert_eq!(
+            publication.stats.dropped_down.load(Relaxed),
+            (20 - fits) as u64,
+            "the adapter's status counts them too"
+        );
         let mut held = 0;
         while rx.try_recv().is_ok() {
             held += 1;
