@@ -12,7 +12,7 @@ use fleetlink_proto::frame::{self, Frame};
 use fleetlink_proto::{Payload, Schema};
 use fleetlink_relay::link::{Control, write_link};
 use fleetlink_relay::router::{SubOptions, Target};
-use fleetlink_relay::{ClientKind, Router, TopicName};
+use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, TopicName};
 use futures_util::{SinkExt, StreamExt};
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
@@ -30,9 +30,9 @@ async fn next_frames(rx: &mut futures_channel::mpsc::Receiver<WsMessage>) -> Vec
         .expect("valid frames")
 }
 
-#[tokio::test]
-async fn small_message_overtakes_a_large_one_mid_transfer() {
-    let router = Arc::new(Router::default());
+/// A link client subscribed to `pattern` (its outbox is what the writer sends) and a
+/// publisher, both on `router`.
+fn link_and_publisher(router: &Router, pattern: &str) -> (Arc<Outbox>, ClientId) {
     let (link, outbox) = router.connect(
         ClientKind::Internal {
             role: "link".into(),
@@ -42,11 +42,43 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
     router
         .subscribe(
             link,
-            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            Target::Pattern(Router::compile_pattern(pattern).unwrap()),
             SubOptions::default(),
         )
         .unwrap();
     let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    (outbox, publisher)
+}
+
+/// The writer of `outbox` over a sink holding `slots` WebSocket messages: its control
+/// channel, what it sends, its task.
+fn spawn_writer(
+    outbox: Arc<Outbox>,
+    slots: usize,
+) -> (
+    tokio::sync::mpsc::Sender<Control>,
+    futures_channel::mpsc::Receiver<WsMessage>,
+    tokio::task::JoinHandle<()>,
+) {
+    let (tx, rx) = futures_channel::mpsc::channel::<WsMessage>(slots);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+    ));
+    (ctrl_tx, rx, writer)
+}
+
+#[tokio::test]
+async fn small_message_overtakes_a_large_one_mid_transfer() {
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = link_and_publisher(&router, ".*");
     let big = router
         .advertise(
             publisher,
@@ -64,18 +96,7 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
         )
         .unwrap();
 
-    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(0);
-    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
-    let writer = tokio::spawn(write_link(
-        sink,
-        outbox,
-        ctrl_rx,
-        Duration::from_secs(3600),
-        Arc::new(|m| Some(m.name.to_string())),
-        Vec::new(),
-        None,
-    ));
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox, 0);
 
     // 2 MiB: 128 chunks of 16 KiB.
     let payload = Bytes::from(vec![7u8; 2 << 20]);
@@ -248,20 +269,7 @@ async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
 #[tokio::test]
 async fn latched_topics_are_announced_latched() {
     let router = Arc::new(Router::default());
-    let (link, outbox) = router.connect(
-        ClientKind::Internal {
-            role: "link".into(),
-        },
-        None,
-    );
-    router
-        .subscribe(
-            link,
-            Target::Pattern(Router::compile_pattern(".*").unwrap()),
-            SubOptions::default(),
-        )
-        .unwrap();
-    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let (outbox, publisher) = link_and_publisher(&router, ".*");
     let mut topics = Vec::new();
     for (name, latch) in [("/announce", true), ("/plain", false)] {
         let t = router
@@ -276,18 +284,7 @@ async fn latched_topics_are_announced_latched() {
         assert_eq!(t.is_latched(), latch, "{name}");
         topics.push(t);
     }
-    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(8);
-    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
-    let writer = tokio::spawn(write_link(
-        sink,
-        outbox,
-        ctrl_rx,
-        Duration::from_secs(3600),
-        Arc::new(|m| Some(m.name.to_string())),
-        Vec::new(),
-        None,
-    ));
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox, 8);
     for t in &topics {
         t.publish(publisher, 1, 0, Payload::json(Bytes::from_static(b"{}")));
     }
@@ -313,38 +310,14 @@ async fn latched_topics_are_announced_latched() {
 #[tokio::test]
 async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readvertises() {
     let router = Arc::new(Router::default());
-    let (link, outbox) = router.connect(
-        ClientKind::Internal {
-            role: "link".into(),
-        },
-        None,
-    );
-    router
-        .subscribe(
-            link,
-            Target::Pattern(Router::compile_pattern(".*").unwrap()),
-            SubOptions::default(),
-        )
-        .unwrap();
-    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let (outbox, publisher) = link_and_publisher(&router, ".*");
     let name = TopicName::parse("/cloud").unwrap();
     let topic = router
         .advertise(publisher, &name, Schema::named("t/Blob"), false)
         .unwrap();
     let alias = topic.id().0;
 
-    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(0);
-    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
-    let writer = tokio::spawn(write_link(
-        sink,
-        outbox,
-        ctrl_rx,
-        Duration::from_secs(3600),
-        Arc::new(|m| Some(m.name.to_string())),
-        Vec::new(),
-        None,
-    ));
+    let (ctrl_tx, mut rx, writer) = spawn_writer(outbox, 0);
 
     let mut seen = Vec::new(); // "A", "C", "M", "U" in the order sent
     let record = |frames: Vec<Frame>, seen: &mut Vec<&str>| {
@@ -414,20 +387,7 @@ async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readverti
 #[test]
 fn a_topic_kept_only_by_a_pattern_subscription_is_not_listed() {
     let router = Router::default();
-    let (link, _) = router.connect(
-        ClientKind::Internal {
-            role: "link".into(),
-        },
-        None,
-    );
-    router
-        .subscribe(
-            link,
-            Target::Pattern(Router::compile_pattern("/robot1/.*").unwrap()),
-            SubOptions::default(),
-        )
-        .unwrap();
-    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let (_outbox, publisher) = link_and_publisher(&router, "/robot1/.*");
     let name = TopicName::parse("/robot1/late").unwrap();
     let listed = |router: &Router| {
         router
