@@ -268,10 +268,8 @@ impl Agent {
         // The ROS 2 adapter runs on a two-worker runtime of its own, whatever runtime the
         // rest of the agent runs on. Its downlink writes into rustdds may block the calling
         // thread (up to the writer's 100 ms reliable blocking time), which on the agent's
-        // one thread would hold everything else up; in one of ten runs of
-        // tests/interop/ros2 with the adapter there, the robot missed the tail of a hub
-        // topic. (A stall where writes to Cyclone stop arriving altogether has been seen
-        // with this runtime too: docs/benchmarks.md.)
+        // one thread would hold everything else up. (The suite failures once blamed on
+        // the runtime were a deadlock in the Cyclone test peers: docs/ros2.md, "Tests".)
         let ros2 = self.ros2.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
             let stats = Arc::new(fleetlink_ros2::Ros2Stats::default());
