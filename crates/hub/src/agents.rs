@@ -95,6 +95,9 @@ pub struct Registry {
     // std Mutex: lookups and swaps only, never held across an await.
     robots: Mutex<HashMap<String, Arc<LiveRobot>>>,
     next_session: AtomicU64,
+    /// Bumped whenever a robot comes or goes, so callers can cache [`Registry::is_online`]
+    /// answers between changes.
+    changes: AtomicU64,
 }
 
 impl Registry {
@@ -111,10 +114,14 @@ impl Registry {
     }
 
     fn insert(&self, robot: Arc<LiveRobot>) -> Option<Arc<LiveRobot>> {
-        self.robots
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .insert(robot.name.clone(), robot)
+        let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
+        self.changes.fetch_add(1, Relaxed);
+        m.insert(robot.name.clone(), robot)
+    }
+
+    /// Changes whenever the set of robots online changes.
+    pub fn generation(&self) -> u64 {
+        self.changes.load(Relaxed)
     }
 
     /// Whether a robot of this name is connected now.
@@ -129,6 +136,7 @@ impl Registry {
         let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
         if m.get(name).is_some_and(|r| r.session == session) {
             m.remove(name);
+            self.changes.fetch_add(1, Relaxed);
         }
     }
 }

@@ -58,6 +58,10 @@ pub struct HubGate {
     /// The robot an agent link speaks for (its HELLO name): what it publishes under that
     /// namespace is the robot's own output, not an input to audit.
     acting_as: Option<String>,
+    /// The last [`HubGate::robot_input`] answer: the robot name asked about, the
+    /// registry's generation then, and the answer. A client mostly publishes on one
+    /// namespace, so this saves a registry lookup per message.
+    last_robot: Option<(String, u64, bool)>,
 }
 
 impl HubGate {
@@ -68,6 +72,7 @@ impl HubGate {
             registry,
             reported: Default::default(),
             acting_as: None,
+            last_robot: None,
         }
     }
 
@@ -90,7 +95,7 @@ impl HubGate {
 
     /// Whether `name` is an input of some online robot: a topic in its namespace that the
     /// robot did not publish itself. Publishing there acts on a robot and is audited.
-    fn robot_input(&self, name: &str) -> bool {
+    fn robot_input(&mut self, name: &str) -> bool {
         let Some(first) = name.strip_prefix('/').and_then(|n| n.split('/').next()) else {
             return false;
         };
@@ -102,7 +107,16 @@ impl HubGate {
         if self.acting_as.as_deref() == Some(first) {
             return false;
         }
-        self.registry.is_online(first)
+        let generation = self.registry.generation();
+        if let Some((robot, g, online)) = &self.last_robot
+            && *g == generation
+            && robot == first
+        {
+            return *online;
+        }
+        let online = self.registry.is_online(first);
+        self.last_robot = Some((first.to_owned(), generation, online));
+        online
     }
 }
 
@@ -164,6 +178,7 @@ impl Gate for HubGate {
             registry: self.registry.clone(),
             reported: Default::default(),
             acting_as: self.acting_as.clone(),
+            last_robot: None,
         })
     }
 

@@ -67,11 +67,23 @@ impl Message {
         origin: ClientId,
         payload: Payload,
     ) -> Message {
+        Self::received_at(topic, seq, stamp_ns, origin, payload, Instant::now())
+    }
+
+    /// [`Message::new`] for a message received at `received`.
+    pub fn received_at(
+        topic: Arc<TopicMeta>,
+        seq: u64,
+        stamp_ns: u64,
+        origin: ClientId,
+        payload: Payload,
+        received: Instant,
+    ) -> Message {
         Message {
             topic,
             seq,
             stamp_ns,
-            received: Instant::now(),
+            received,
             origin,
             payload,
             json: OnceLock::new(),

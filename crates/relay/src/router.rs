@@ -146,12 +146,25 @@ impl Topic {
         stamp_ns: u64,
         payload: Payload,
     ) -> Arc<Message> {
-        let msg = Arc::new(Message::new(
+        self.publish_at(origin, seq, stamp_ns, payload, std::time::Instant::now())
+    }
+
+    /// [`Topic::publish`] of a message received at `received`.
+    pub fn publish_at(
+        &self,
+        origin: ClientId,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Payload,
+        received: std::time::Instant,
+    ) -> Arc<Message> {
+        let msg = Arc::new(Message::received_at(
             self.meta.load_full(),
             seq,
             stamp_ns,
             origin,
             payload,
+            received,
         ));
         self.deliver(&msg);
         msg

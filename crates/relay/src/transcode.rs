@@ -77,13 +77,15 @@ pub trait Transcoder: Send + Sync + 'static {
 
     /// [`Transcoder::normalize`] for a publisher that sends many messages on one topic:
     /// `cache` keeps whatever the transcoder resolved for the type between calls.
+    /// Unlike `normalize`, takes the message and gives it back (unchanged, moved, when
+    /// it already is in normal form or the type is not known here).
     fn normalize_cached(
         &self,
         schema: &Schema,
-        payload: &Payload,
+        payload: Payload,
         _cache: &mut NormalizeCache,
-    ) -> Result<Option<Payload>, TranscodeError> {
-        self.normalize(schema, payload)
+    ) -> Result<Payload, TranscodeError> {
+        Ok(self.normalize(schema, &payload)?.unwrap_or(payload))
     }
 
     /// Every message type this side knows (rosapi `interfaces`).
@@ -253,7 +255,10 @@ impl Transcoder for RegistryTranscoder {
         };
         if from == Encoding::Json {
             // One path for JSON: the cached one, with a cache that lives for this call.
-            return self.normalize_cached(schema, payload, &mut NormalizeCache::default());
+            let cache = &mut NormalizeCache::default();
+            return self
+                .normalize_cached(schema, payload.clone(), cache)
+                .map(Some);
         }
         let v = fleetlink_msg::from_cbor(reg, ty, dialect, &payload.bytes).map_err(invalid)?;
         Ok(Some(Payload::new(
@@ -265,19 +270,19 @@ impl Transcoder for RegistryTranscoder {
     fn normalize_cached(
         &self,
         schema: &Schema,
-        payload: &Payload,
+        payload: Payload,
         cache: &mut NormalizeCache,
-    ) -> Result<Option<Payload>, TranscodeError> {
+    ) -> Result<Payload, TranscodeError> {
         if payload.encoding != Encoding::Json {
-            return self.normalize(schema, payload);
+            return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
         }
         let reg = &self.registry;
         let ty = schema.type_name.as_str();
         let dialect = dialect_of(schema, payload.encoding);
         let invalid = |cause: String| TranscodeError::Invalid {
             type_name: ty.to_owned(),
-            from: payload.encoding,
-            to: payload.encoding,
+            from: Encoding::Json,
+            to: Encoding::Json,
             cause,
         };
         let cached = cache
@@ -289,7 +294,7 @@ impl Transcoder for RegistryTranscoder {
             Some(c) => &c.resolved,
             None => {
                 if !reg.contains(ty) {
-                    return Ok(None);
+                    return Ok(payload);
                 }
                 let resolved = reg
                     .resolve(ty, dialect)
@@ -305,9 +310,9 @@ impl Transcoder for RegistryTranscoder {
             }
         };
         match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
-            Ok(Some(normal)) => Ok(Some(Payload::json(normal))),
+            Ok(Some(normal)) => Ok(Payload::json(normal)),
             // Already in normal form: the bytes as they came (no copy).
-            Ok(None) => Ok(Some(payload.clone())),
+            Ok(None) => Ok(payload),
             Err(e) => Err(invalid(e.to_string())),
         }
     }

@@ -208,12 +208,65 @@ impl ParseError {
 struct PublishFields<'a> {
     #[serde(borrow)]
     op: std::borrow::Cow<'a, str>,
+    /// Borrowed (`Option<Cow>` would always copy); a topic written with escapes fails
+    /// here and takes the full parse.
     #[serde(borrow, default)]
-    topic: Option<std::borrow::Cow<'a, str>>,
+    topic: Option<&'a str>,
     #[serde(borrow, default)]
     msg: Option<&'a serde_json::value::RawValue>,
     #[serde(borrow, default)]
     id: Option<&'a serde_json::value::RawValue>,
+}
+
+/// A `publish` read on the short path, its topic borrowed from the frame: the operation
+/// that carries nearly all traffic costs no allocation before it reaches the router.
+#[derive(Debug)]
+pub struct Publish<'a> {
+    pub id: Option<Value>,
+    pub topic: std::borrow::Cow<'a, str>,
+    pub msg: Payload,
+}
+
+impl<'a> Publish<'a> {
+    /// A well-formed JSON `publish` (object `msg`, valid topic name), its envelope read in
+    /// one pass and its message a slice of `frame`; `None` for anything else, which
+    /// [`Request::from_json`] then parses with the precise error.
+    pub fn from_json_frame(frame: &'a Bytes) -> Option<Publish<'a>> {
+        let f: PublishFields<'a> = serde_json::from_slice(frame).ok()?;
+        Self::from_fields(f, frame.as_ptr(), frame)
+    }
+
+    /// [`Publish::from_json_frame`] for a frame whose text is known to be UTF-8 (a
+    /// WebSocket text frame, validated on arrival), so it is not checked again. `text`
+    /// must be a view of `frame`'s own bytes (`None` otherwise).
+    pub fn from_json_text(text: &'a str, frame: &Bytes) -> Option<Publish<'a>> {
+        if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
+            return None;
+        }
+        let f: PublishFields<'a> = serde_json::from_str(text).ok()?;
+        Self::from_fields(f, text.as_ptr(), frame)
+    }
+
+    fn from_fields(f: PublishFields<'a>, base: *const u8, frame: &Bytes) -> Option<Publish<'a>> {
+        if f.op != "publish" {
+            return None;
+        }
+        let topic = f.topic?;
+        let msg = f.msg?;
+        if !msg.get().starts_with('{') || !valid_topic(topic) {
+            return None;
+        }
+        let id = match f.id {
+            Some(raw) => Some(serde_json::from_str::<Value>(raw.get()).ok()?),
+            None => None,
+        };
+        let at = msg.get().as_ptr() as usize - base as usize;
+        Some(Publish {
+            id,
+            topic: topic.into(),
+            msg: Payload::json(frame.slice(at..at + msg.get().len())),
+        })
+    }
 }
 
 impl Request {
@@ -223,34 +276,16 @@ impl Request {
     /// any `publish` the short path does not accept, goes through [`Request::from_json`],
     /// which gives the precise error.
     pub fn from_json_frame(frame: &Bytes) -> Result<Request, ParseError> {
-        match Self::publish_fast(frame) {
-            Some(r) => Ok(r),
+        match Publish::from_json_frame(frame) {
+            Some(p) => Ok(Request {
+                id: p.id,
+                op: Op::Publish {
+                    topic: p.topic.into_owned(),
+                    msg: p.msg,
+                },
+            }),
             None => Self::from_json(frame),
         }
-    }
-
-    fn publish_fast(frame: &Bytes) -> Option<Request> {
-        let f: PublishFields<'_> = serde_json::from_slice(frame).ok()?;
-        if f.op != "publish" {
-            return None;
-        }
-        let topic = f.topic?;
-        let msg = f.msg?;
-        if !msg.get().starts_with('{') || !valid_topic(&topic) {
-            return None;
-        }
-        let id = match f.id {
-            Some(raw) => Some(serde_json::from_str::<Value>(raw.get()).ok()?),
-            None => None,
-        };
-        let at = msg.get().as_ptr() as usize - frame.as_ptr() as usize;
-        Some(Request {
-            id,
-            op: Op::Publish {
-                topic: topic.into_owned(),
-                msg: Payload::json(frame.slice(at..at + msg.get().len())),
-            },
-        })
     }
 
     /// Parses a JSON text frame.
@@ -694,6 +729,32 @@ mod tests {
         // A slice of the frame's storage, not a copy.
         let start = msg.bytes.as_ptr() as usize - frame.as_ptr() as usize;
         assert_eq!(&frame[start..start + msg.len()], &msg.bytes[..]);
+    }
+
+    #[test]
+    fn publish_from_validated_text_borrows_the_topic_and_slices_the_message() {
+        let text = r#"{"op":"publish","topic":"/a/b","msg":{"data":"h\u00e9"}}"#;
+        let frame = Bytes::from(text.to_owned());
+        let view = std::str::from_utf8(&frame).unwrap();
+        let p = Publish::from_json_text(view, &frame).expect("a publish");
+        assert!(matches!(p.topic, std::borrow::Cow::Borrowed("/a/b")));
+        assert_eq!(p.id, None);
+        let start = p.msg.bytes.as_ptr() as usize - frame.as_ptr() as usize;
+        assert_eq!(&frame[start..start + p.msg.len()], br#"{"data":"h\u00e9"}"#);
+        // Text that is not a view of the frame is not trusted: the caller parses the
+        // frame on the full path instead.
+        let copy = text.to_owned();
+        assert!(Publish::from_json_text(&copy, &frame).is_none());
+        // Anything the short path does not take goes to the full parse, as before.
+        let frame = Bytes::from_static(br#"{"op":"publish","topic":"/a b","msg":{}}"#);
+        let view = std::str::from_utf8(&frame).unwrap();
+        assert!(Publish::from_json_text(view, &frame).is_none());
+        // A topic written with escapes cannot be borrowed: the full parse reads it.
+        let frame = Bytes::from_static(br#"{"op":"publish","topic":"\/a","msg":{}}"#);
+        let view = std::str::from_utf8(&frame).unwrap();
+        assert!(Publish::from_json_text(view, &frame).is_none());
+        let r = Request::from_json_frame(&frame).unwrap();
+        assert!(matches!(r.op, Op::Publish { topic, .. } if topic == "/a"));
     }
 
     #[test]

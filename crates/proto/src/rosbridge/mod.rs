@@ -12,4 +12,4 @@ pub mod convert;
 pub mod inbound;
 pub mod outbound;
 
-pub use inbound::{Compression, Op, ParseError, Request};
+pub use inbound::{Compression, Op, ParseError, Publish, Request};

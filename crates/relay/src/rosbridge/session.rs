@@ -11,7 +11,7 @@ use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Instant;
 
-use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Request, outbound};
+use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Publish, Request, outbound};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
 use serde_json::Value;
@@ -32,7 +32,6 @@ use crate::queue::DropReason;
 use crate::rosbridge::rosapi::{self, Answer};
 use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
 use crate::transcode::NormalizeCache;
-use crate::unix_nanos;
 
 /// Settings shared by all rosbridge sessions of one server.
 #[derive(Debug, Clone)]
@@ -95,7 +94,7 @@ pub async fn serve<S>(
         router: router.clone(),
         client,
         cfg,
-        published: HashMap::new(),
+        published: HashMap::default(),
         subs: HashMap::new(),
         replies: reply_tx,
         gate: auth.gate,
@@ -104,9 +103,30 @@ pub async fn serve<S>(
         calls: super::calls::SessionCalls::default(),
         level,
         fragments: Fragments::default(),
+        clock: crate::StampClock::default(),
     };
+    // One wait for the shutdown, registered once: a fresh `cancelled()` per frame costs a
+    // lock and a waker registration on every operation.
+    let cancelled = shutdown.cancelled();
+    tokio::pin!(cancelled);
+    // Frames are taken first while the client has some queued (`biased`): polling every
+    // branch for each of thousands of small operations in a read costs more than handling
+    // them. So that a flooding client still sees its call replies and a shutdown, both are
+    // looked at every `LOOK_AROUND` frames without waiting.
+    const LOOK_AROUND: u32 = 64;
+    let mut frames = 0u32;
     loop {
+        frames += 1;
+        if frames.is_multiple_of(LOOK_AROUND) {
+            if shutdown.is_cancelled() {
+                break;
+            }
+            while let Ok(m) = peer_rx.try_recv() {
+                session.on_peer(m).await;
+            }
+        }
         let frame = tokio::select! {
+            biased;
             f = stream.next() => match f {
                 Some(f) => f,
                 None => break,
@@ -117,20 +137,29 @@ pub async fn serve<S>(
                 }
                 continue;
             }
-            _ = shutdown.cancelled() => break,
+            _ = &mut cancelled => break,
         };
         if matches!(frame, Ok(WsMessage::Binary(_))) {
             session.calls.binary = true;
         }
+        let (text, bytes);
         let req = match frame {
-            Ok(WsMessage::Text(t)) => match Request::from_json_frame(&bytes::Bytes::from(t)) {
-                Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
-                    Some(whole) => whole,
-                    None => continue,
-                },
-                other => other,
-            },
-            Ok(WsMessage::Binary(b)) => Request::from_cbor(&b),
+            Ok(WsMessage::Text(t)) => {
+                text = t;
+                bytes = bytes::Bytes::from(text.clone());
+                // Nearly all traffic: a publish, its topic borrowed from the frame.
+                match Publish::from_json_text(text.as_str(), &bytes) {
+                    Some(p) => Ok(Incoming::Publish(p)),
+                    None => match Request::from_json(&bytes) {
+                        Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
+                            Some(whole) => whole.map(Incoming::Other),
+                            None => continue,
+                        },
+                        other => other.map(Incoming::Other),
+                    },
+                }
+            }
+            Ok(WsMessage::Binary(b)) => Request::from_cbor(&b).map(Incoming::Other),
             Ok(WsMessage::Close(_)) => break,
             Ok(_) => continue,
             Err(WsError::Capacity(e)) => {
@@ -144,16 +173,18 @@ pub async fn serve<S>(
             Err(_) => break,
         };
         // A publish may wait for room on a no-drop topic (`Session::wait_for_room`); a
-        // shutdown must not wait for it.
+        // shutdown must not wait for it. `biased`: the step nearly always finishes at once.
         let step = async {
             match req {
-                Ok(req) => session.handle(req).await,
+                Ok(Incoming::Publish(p)) => session.handle_publish(p).await,
+                Ok(Incoming::Other(req)) => session.handle(req).await,
                 Err(e) => session.parse_error(e).await,
             }
         };
         tokio::select! {
+            biased;
             _ = step => {}
-            _ = shutdown.cancelled() => break,
+            _ = &mut cancelled => break,
         }
         // One socket read can hold thousands of small operations; counting each against
         // the task's budget makes a flooding client give way to the writers that deliver
@@ -164,6 +195,13 @@ pub async fn serve<S>(
     router.disconnect(client);
     drop(session);
     let _ = writer.await;
+}
+
+/// An operation as read from a frame.
+enum Incoming<'a> {
+    /// The short path for a JSON `publish`.
+    Publish(Publish<'a>),
+    Other(Request),
 }
 
 enum Reply {
@@ -192,7 +230,9 @@ pub(super) struct Session {
     pub(super) router: Arc<Router>,
     pub(super) client: ClientId,
     pub(super) cfg: Arc<SessionConfig>,
-    published: HashMap<TopicName, Published>,
+    /// Keyed by names the client chose: a seeded fast hash (foldhash), looked up on every
+    /// publish.
+    published: HashMap<TopicName, Published, foldhash::fast::RandomState>,
     /// Subscriptions by the `topic` string the client used, with the `id` each came with.
     subs: HashMap<String, Vec<(Option<Value>, SubscriptionId)>>,
     /// What this client may do; `None` until it authenticates.
@@ -208,6 +248,8 @@ pub(super) struct Session {
     level: Arc<std::sync::atomic::AtomicU8>,
     /// Operations the client sent in `fragment`s, being put back together.
     fragments: Fragments,
+    /// Stamps the messages this client publishes.
+    clock: crate::StampClock,
 }
 
 /// Severity of `status` levels, as `set_level` names them.
@@ -356,6 +398,19 @@ impl Session {
             None => e.message.clone(),
         };
         self.status("error", msg, e.id.as_ref()).await;
+    }
+
+    /// A `publish` from the short path: what [`Session::handle`] does for one.
+    async fn handle_publish(&mut self, p: Publish<'_>) {
+        if self.gate.is_none() {
+            let msg =
+                "publish: authentication required: send an 'auth' operation with a token first";
+            return self.status("error", msg.into(), p.id.as_ref()).await;
+        }
+        self.wait_for_room(&p.topic).await;
+        if let Err(msg) = self.publish(&p.topic, p.msg) {
+            self.status("error", msg, p.id.as_ref()).await;
+        }
     }
 
     async fn handle(&mut self, req: Request) {
@@ -553,57 +608,64 @@ impl Session {
     }
 
     fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
-        // Most publishes name a topic this client already publishes, spelled the same way.
-        let name = match self.published.get_key_value(topic) {
-            Some((known, _)) => known.clone(),
-            None => TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?,
+        // Most publishes name a topic this client already publishes, spelled the same way:
+        // two lookups by the client's spelling, no parse, no copy of the name.
+        let name: std::borrow::Cow<'_, str> = if self.published.contains_key(topic) {
+            topic.into()
+        } else {
+            let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
+            name.as_str().to_owned().into()
         };
         if !is_object(&msg) {
             return Err(format!("publish {name}: field 'msg' must be an object"));
         }
         // Asked for every message: rules can change while a client publishes, and the
         // gate's cache makes the repeat question cheap.
-        self.check("publish", name.as_str(), GateOp::Publish)?;
-        if !self.published.contains_key(&name) {
-            // rosbridge lets a client publish on a topic whose type is already known.
-            let Some(existing) = self
-                .router
-                .topic(&name)
-                .filter(|t| !t.meta().schema.type_name.is_empty())
-            else {
-                return Err(format!(
-                    "publish {name}: topic is not advertised; send 'advertise' with its type first"
-                ));
-            };
-            let schema = existing.meta().schema.clone();
-            let t = self
-                .router
-                .advertise(self.client, &name, schema, false)
-                .map_err(|e| format!("publish: {e}"))?;
-            self.published.insert(name.clone(), Published::new(t));
+        self.check("publish", &name, GateOp::Publish)?;
+        if !self.published.contains_key(&*name) {
+            self.start_publishing(&name)?;
         }
-        let p = self.published.get_mut(&name).expect("inserted above");
+        let p = self.published.get_mut(&*name).expect("inserted above");
         // Checked and completed once here, for every subscriber.
-        let msg = match self.router.transcoder().normalize_cached(
-            &p.topic.meta().schema,
-            &msg,
-            &mut p.normalize,
-        ) {
-            Ok(Some(normal)) => normal,
-            Ok(None) => msg,
-            Err(e) => {
-                return Err(format!(
+        let msg = self
+            .router
+            .transcoder()
+            .normalize_cached(&p.topic.meta().schema, msg, &mut p.normalize)
+            .map_err(|e| {
+                format!(
                     "publish {name}: the message does not fit its type: {}",
                     e.cause_text()
-                ));
-            }
-        };
+                )
+            })?;
         p.seq += 1;
         let size = msg.len();
-        p.topic.publish(self.client, p.seq, unix_nanos(), msg);
+        let (received, stamp) = self.clock.now();
+        p.topic.publish_at(self.client, p.seq, stamp, msg, received);
         if let Some(g) = self.gate.as_mut() {
-            g.done(name.as_str(), GateOp::Publish, size);
+            g.done(&name, GateOp::Publish, size);
         }
+        Ok(())
+    }
+
+    /// The first publish on `name` without an `advertise`: rosbridge allows it on a topic
+    /// whose type is already known.
+    fn start_publishing(&mut self, name: &str) -> Result<(), String> {
+        let name = TopicName::parse(name).map_err(|e| format!("publish: {e}"))?;
+        let Some(existing) = self
+            .router
+            .topic(&name)
+            .filter(|t| !t.meta().schema.type_name.is_empty())
+        else {
+            return Err(format!(
+                "publish {name}: topic is not advertised; send 'advertise' with its type first"
+            ));
+        };
+        let schema = existing.meta().schema.clone();
+        let t = self
+            .router
+            .advertise(self.client, &name, schema, false)
+            .map_err(|e| format!("publish: {e}"))?;
+        self.published.insert(name, Published::new(t));
         Ok(())
     }
 
