@@ -104,6 +104,7 @@ fn ros1_options(
         offer: NameFilter::new(&r.services.offer, &[])?,
         discovery_period: r.discovery(),
         call_timeout: r.call_timeout(),
+        parameters: r.parameters,
     })
 }
 

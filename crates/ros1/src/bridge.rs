@@ -76,6 +76,14 @@ pub async fn run(
         node.master.caller_api,
         node.opts.master_uri
     );
+    if node.opts.parameters {
+        for (name, ty, definition) in crate::params::SERVICES {
+            let name = TopicName::parse(name).expect("a valid service name");
+            router
+                .calls
+                .advertise(client, name, crate::params::schema(ty, definition), false);
+        }
+    }
     for re in &node.opts.offer.include {
         router.calls.watch(client, re.clone());
     }
@@ -335,6 +343,9 @@ async fn register_service(node: &Node, name: &str) {
 /// A fleet caller's call of a local ROS service.
 async fn serve_call(node: &Node, req: CallRequest) {
     let name = req.service.name.as_str();
+    if node.opts.parameters && crate::params::is_param_service(name) {
+        return crate::params::serve(node, &req).await;
+    }
     let found = node
         .lock()
         .exposed

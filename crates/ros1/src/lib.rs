@@ -28,6 +28,7 @@ pub mod master;
 pub mod node;
 pub mod options;
 pub mod outbound;
+pub mod params;
 pub mod tcpros;
 pub mod xmlrpc;
 

@@ -98,7 +98,11 @@ pub struct Master {
 }
 
 impl Master {
-    async fn call(&self, method: &str, mut params: Vec<Value>) -> Result<Value, ApiError> {
+    pub(crate) async fn call(
+        &self,
+        method: &str,
+        mut params: Vec<Value>,
+    ) -> Result<Value, ApiError> {
         params.insert(0, Value::from(self.caller_id.as_str()));
         call(&self.uri, method, &params).await
     }

@@ -497,6 +497,7 @@ mod tests {
             offer: Default::default(),
             discovery_period: std::time::Duration::from_secs(1),
             call_timeout: std::time::Duration::from_secs(1),
+            parameters: false,
         };
         Node::new(
             opts,

@@ -26,6 +26,8 @@ pub struct Ros1Options {
     pub discovery_period: Duration,
     /// How long a local caller waits for a fleet service.
     pub call_timeout: Duration,
+    /// Provide rosapi's parameter services from the master's parameters (`crate::params`).
+    pub parameters: bool,
 }
 
 impl Ros1Options {

@@ -12,6 +12,10 @@ Modes (all take --hub-url URL --robot NAME):
                 answer calls.
   check-after   /<robot>/after_restart (a publisher started after roscore restarted)
                 arrives.
+  check-params  rosapi's parameter services at the hub reach the robot's ROS master for
+                names under /<robot>/ (run.sh set /max_speed and /limits with rosparam):
+                get, set, has, search, delete, a default for a missing one; a hub
+                parameter outside any robot stays the hub's own.
   check-status  the agent's status topic /<robot>/fleetlink/diagnostics
                 (diagnostic_msgs/DiagnosticArray) shows its ROS 1 part at WARN with the
                 /cmd_vel type mismatch named, both types in it.
@@ -182,6 +186,46 @@ def serve(args):
         time.sleep(0.2)
 
 
+def rosapi(ros, call, **args):
+    """One rosapi parameter call; its values, or the error text of a refused call."""
+    srv = roslibpy.Service(ros, f"/rosapi/{call}", f"rosapi/{call.title().replace('_', '')}")
+    try:
+        return srv.call(roslibpy.ServiceRequest(args), timeout=WAIT)
+    except Exception as e:  # roslibpy raises on result: false, with the values as text
+        return {"error": str(e)}
+
+
+def check_params(args):
+    ros = connect(args.hub_url)
+    r = args.robot
+    got = rosapi(ros, "get_param", name=f"/{r}/max_speed")
+    check(json.loads(got.get("value", "null")) == 1.5, f"get_param /{r}/max_speed from the robot's master: {got}")
+    got = rosapi(ros, "get_param", name=f"/{r}/limits")
+    check(json.loads(got.get("value", "null")) == {"a": 1, "b": [1, 2]}, f"get_param /{r}/limits (a tree): {got}")
+    got = rosapi(ros, "set_param", name=f"/{r}/max_speed", value="2.5")
+    check("error" not in got, f"set_param /{r}/max_speed 2.5: {got}")
+    got = rosapi(ros, "get_param", name=f"/{r}/max_speed")
+    check(json.loads(got.get("value", "null")) == 2.5, f"the robot's /max_speed reads back 2.5: {got}")
+    got = rosapi(ros, "has_param", name=f"/{r}/limits/a")
+    check(got.get("exists") is True, f"has_param /{r}/limits/a: {got}")
+    got = rosapi(ros, "search_param", name=f"/{r}/max_speed")
+    check(got.get("global_name") == f"/{r}/max_speed", f"search_param gives the hub's name: {got}")
+    got = rosapi(ros, "delete_param", name=f"/{r}/limits")
+    check("error" not in got, f"delete_param /{r}/limits: {got}")
+    got = rosapi(ros, "has_param", name=f"/{r}/limits")
+    check(got.get("exists") is False, f"/{r}/limits is gone: {got}")
+    got = rosapi(ros, "delete_param", name=f"/{r}/limits")
+    check("error" in got and "not set" in got["error"] and r in got["error"],
+          f"deleting it again is an error naming the robot: {got}")
+    got = rosapi(ros, "get_param", name=f"/{r}/missing", default="7")
+    check(got.get("value") == "7", f"a missing robot parameter gives the caller's default: {got}")
+    # Outside any robot's namespace: the hub's own store, as before.
+    rosapi(ros, "set_param", name="/fleet/limit", value="3")
+    got = rosapi(ros, "get_param", name="/fleet/limit")
+    check(got.get("value") == "3", f"a hub parameter stays the hub's: {got}")
+    ros.close()
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("mode")
@@ -189,7 +233,8 @@ def main():
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
     args = p.parse_args()
-    {"serve": serve, "check-up": check_up, "check-after": check_after, "check-status": check_status}[args.mode](args)
+    {"serve": serve, "check-up": check_up, "check-after": check_after, "check-status": check_status,
+     "check-params": check_params}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

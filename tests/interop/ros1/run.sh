@@ -10,6 +10,9 @@
 #   2. roslibpy's /<robot>/cmd_vel reaches the rospy subscriber; `rostopic echo -n 1` sees
 #      a latched hub topic published before it started; `rosservice call` reaches a fleet
 #      service advertised on the hub;
+#   2b. rosapi's parameter services at the hub reach the robot's master for /<robot>/...
+#      names (rosparam sets them on the robot, roslibpy reads, changes, searches and
+#      deletes them at the hub; rosparam sees the change);
 #   3. /chatter bridged both ways: every message is seen exactly once on each side (no
 #      loop), counted on both sides;
 #   4. a local subscriber asking for another type than the hub topic's is refused, the
@@ -156,6 +159,17 @@ grep -q '/cmd_vel' <<<"$node_out" && grep -q '/scan' <<<"$node_out" \
 hz_out="$(timeout 6 rostopic hz -w 5 /cmd_vel 2>&1 || true)"
 grep -q 'average rate' <<<"$hz_out" && echo "ok: rostopic hz /cmd_vel: $(grep -m1 'average rate' <<<"$hz_out")" \
     || fail "rostopic hz /cmd_vel: $hz_out"
+
+step "2b. parameters: the hub's rosapi reaches the robot's master"
+timeout 20 rosparam set /max_speed 1.5 || fail "rosparam set /max_speed"
+timeout 20 rosparam set /limits "{a: 1, b: [1, 2]}" || fail "rosparam set /limits"
+timeout --kill-after=5 60 "$python" "$here/hub_peer.py" check-params --hub-url "$hub_url" --robot "$robot" \
+    || fail "check-params"
+speed="$(timeout 20 rosparam get /max_speed 2>&1 || true)"
+[ "$speed" = "2.5" ] && echo "ok: rosparam get /max_speed on the robot sees the hub's set_param (2.5)" \
+    || fail "rosparam get /max_speed after the hub's set_param: $speed"
+if timeout 20 rosparam get /limits >/dev/null 2>&1; then fail "/limits still set on the robot after the hub's delete_param"
+else echo "ok: /limits is deleted on the robot"; fi
 
 step "3. /chatter both ways: no loop"
 sleep 2 # both sides have been publishing for a while; the counters are written every 0.2 s

@@ -29,6 +29,10 @@ pub struct Ros1Config {
     pub discovery_ms: u64,
     /// How long a local caller of a fleet service waits. Default 10000.
     pub call_timeout_ms: u64,
+    /// Offer the master's parameters to the fleet (rosapi's parameter services under
+    /// `/<robot>/rosapi/`, which the hub's `/rosapi/get_param` of `/<robot>/...` reaches).
+    /// Default true.
+    pub parameters: bool,
 }
 
 impl Default for Ros1Config {
@@ -42,6 +46,7 @@ impl Default for Ros1Config {
             services: Ros1Services::default(),
             discovery_ms: 1000,
             call_timeout_ms: 10_000,
+            parameters: true,
         }
     }
 }

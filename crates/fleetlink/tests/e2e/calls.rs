@@ -484,3 +484,142 @@ async fn the_simulated_robot_offers_set_mode_get_status_and_navigation() {
     let r = op.recv_op("action_result").await;
     assert_eq!(r["status"], 6, "{r}");
 }
+
+/// What the ROS 1 adapter does on a robot with `parameters: true`: rosapi's parameter
+/// services in the agent's call table (here answered from a fixed set, since this test
+/// is about the hub's routing; tests/interop/ros1 runs it against a real ROS master).
+/// Returns the names the robot was asked about.
+fn robot_parameters(agent: &TestAgent) -> std::sync::Arc<std::sync::Mutex<Vec<String>>> {
+    use fleetlink_relay::calls::{CallStatus, ChannelPeer, PeerMsg};
+    let router = agent.router.clone();
+    let (client, _outbox) = router.connect(
+        fleetlink_relay::ClientKind::Internal {
+            role: "params".into(),
+        },
+        None,
+    );
+    let (peer, mut rx) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    for s in ["get_param", "set_param", "search_param"] {
+        router.calls.advertise(
+            client,
+            fleetlink_relay::TopicName::parse(&format!("/rosapi/{s}")).unwrap(),
+            fleetlink_proto::Schema::named(format!("rosapi/srv/{s}")),
+            false,
+        );
+    }
+    let asked = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+    let seen = asked.clone();
+    tokio::spawn(async move {
+        let _outbox = _outbox;
+        while let Some(m) = rx.recv().await {
+            let PeerMsg::Call(req) = m else { continue };
+            let args: Value = serde_json::from_slice(&req.payload.bytes).unwrap_or_default();
+            let name = args["name"].as_str().unwrap_or_default().to_owned();
+            seen.lock().unwrap().push(name.clone());
+            let values = match req.service.name.as_str() {
+                "/rosapi/get_param" if name == "/max_speed" => json!({"value": "1.5"}),
+                "/rosapi/get_param" => json!({"value": "null"}),
+                "/rosapi/search_param" => json!({"global_name": name}),
+                _ => json!({}),
+            };
+            router.calls.respond(
+                client,
+                req.id,
+                CallStatus::Ok,
+                Some(fleetlink_proto::Payload::json(
+                    serde_json::to_vec(&values).unwrap(),
+                )),
+                String::new(),
+            );
+        }
+    });
+    asked
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
+    let hub = start_hub().await;
+    // Robots may call rosapi; their own namespace is theirs by default, r1's is not r2's.
+    hub.set_rules(
+        "rules:\n  - subject: any_robot\n    names: \"/rosapi/.*\"\n    ops: [call_service]\n",
+    );
+    let agent = start_agent(&hub, "r1").await;
+    let asked = robot_parameters(&agent);
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    // Until the robot's services have crossed the link, the hub answers from its own
+    // (empty) store.
+    let r = within("the robot's parameters to be reachable", async {
+        for i in 0.. {
+            let r = op
+                .call(
+                    "/rosapi/get_param",
+                    json!({"name": "/r1/max_speed"}),
+                    &format!("g{i}"),
+                )
+                .await;
+            if r["values"]["value"] != "null" {
+                return r;
+            }
+            tokio::time::sleep(Duration::from_millis(20)).await;
+        }
+        unreachable!()
+    })
+    .await;
+    assert_eq!(r["result"], true, "{r}");
+    assert_eq!(r["service"], "/rosapi/get_param");
+    assert_eq!(r["values"]["value"], "1.5", "{r}");
+    assert_eq!(asked.lock().unwrap().last().unwrap(), "/max_speed");
+    // A found name comes back in the hub's names.
+    let r = op
+        .call("/rosapi/search_param", json!({"name": "r1/nav/rate"}), "s")
+        .await;
+    assert_eq!(r["values"]["global_name"], "/r1/nav/rate", "{r}");
+    // The robot's namespace itself is its whole tree.
+    op.call("/rosapi/get_param", json!({"name": "/r1"}), "all")
+        .await;
+    assert_eq!(asked.lock().unwrap().last().unwrap(), "/");
+    // Outside any robot that provides parameters: the hub's own store.
+    let r = op
+        .call(
+            "/rosapi/set_param",
+            json!({"name": "/r9/x", "value": "2"}),
+            "h",
+        )
+        .await;
+    assert_eq!(r["result"], true, "{r}");
+    let r = op
+        .call("/rosapi/get_param", json!({"name": "/r9/x"}), "h2")
+        .await;
+    assert_eq!(r["values"]["value"], "2", "{r}");
+    // Another robot may neither read nor change r1's parameters; r1 never hears of it.
+    let before = asked.lock().unwrap().len();
+    let other = format!("ws://{}/?token={}", hub.addr, hub.robot_token("r2"));
+    let mut r2 = Rosbridge::connect(&other).await;
+    let r = r2
+        .call("/rosapi/get_param", json!({"name": "/r1/max_speed"}), "x")
+        .await;
+    assert_eq!(r["result"], false, "{r}");
+    assert!(
+        r["values"]
+            .as_str()
+            .unwrap()
+            .contains("not allowed to read parameter /r1/max_speed"),
+        "{r}"
+    );
+    let r = r2
+        .call(
+            "/rosapi/set_param",
+            json!({"name": "/r1/max_speed", "value": "9"}),
+            "y",
+        )
+        .await;
+    assert!(
+        r["values"]
+            .as_str()
+            .unwrap()
+            .contains("not allowed to change parameter /r1/max_speed"),
+        "{r}"
+    );
+    assert_eq!(asked.lock().unwrap().len(), before);
+}

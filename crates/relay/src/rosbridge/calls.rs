@@ -42,6 +42,8 @@ struct Made {
     feedback: bool,
     how: Answering,
     size: usize,
+    /// A parameter call forwarded to this robot's agent: its answer names the robot.
+    robot: Option<String>,
 }
 
 struct Serving {
@@ -208,6 +210,7 @@ impl Session {
             feedback: false,
             how,
             size,
+            robot: None,
         };
         if let Err(e) = self.start(&name, args, opts, made) {
             let text = format!("call_service {name}: {}", e.text);
@@ -432,6 +435,7 @@ impl Session {
             feedback,
             how,
             size,
+            robot: None,
         };
         match self.start(&name, args, opts, made) {
             Ok(call) => {
@@ -655,6 +659,10 @@ impl Session {
         payload: Option<Payload>,
         text: String,
     ) {
+        let (payload, text) = match &m.robot {
+            Some(robot) => from_robot(robot, payload, text),
+            None => (payload, text),
+        };
         let suffix = if m.goal { "_Result" } else { "_Response" };
         let body = match payload {
             Some(p) => match self.body_for(&p, &part(&m.type_name, suffix), m.how.cbor) {
@@ -711,6 +719,125 @@ impl Session {
         let body = body.unwrap_or_else(|| empty_map(m.how.cbor));
         self.send_op(fields, "values", &body, m.how).await;
     }
+}
+
+/// The parameter services a robot's agent may answer for names in its namespace.
+/// (`get_param_names` has no name to route by: it lists the hub's own parameters.)
+const FORWARDED_PARAMS: [&str; 5] = [
+    "get_param",
+    "set_param",
+    "has_param",
+    "delete_param",
+    "search_param",
+];
+
+impl Session {
+    /// A rosapi parameter call for a name in a robot's namespace (`/robot1/max_speed`),
+    /// when that robot's agent provides parameters (`/robot1/rosapi/get_param` is in the
+    /// call table): forwarded there with the name relative to the robot (`/max_speed`),
+    /// answered when the robot answers. The ACL applies to the full name as for the hub's
+    /// own parameters (reading needs `subscribe`, changing `publish`). `None`: not such a
+    /// call, the hub answers it from its own store.
+    pub(super) fn forward_param(
+        &mut self,
+        service: &str,
+        args: &Value,
+        id: Option<&Value>,
+        how: Answering,
+    ) -> Option<Result<(), String>> {
+        let call = service.strip_prefix("/rosapi/")?;
+        if !FORWARDED_PARAMS.contains(&call) {
+            return None;
+        }
+        let name = crate::params::param_name(args.get("name")?.as_str()?).ok()?;
+        let (robot, rest) = match name[1..].find('/') {
+            Some(i) => (&name[1..=i], &name[i + 1..]),
+            None => (&name[1..], "/"),
+        };
+        let provider = TopicName::parse(&format!("/{robot}/rosapi/{call}")).ok()?;
+        self.router.calls.service(&provider)?;
+        let op = if matches!(call, "set_param" | "delete_param") {
+            GateOp::Publish
+        } else {
+            GateOp::Subscribe
+        };
+        let gate = self.gate.as_mut()?;
+        if !gate.allows(&name, op) {
+            let verb = if op == GateOp::Publish {
+                "change"
+            } else {
+                "read"
+            };
+            return Some(Err(format!("not allowed to {verb} parameter {name}")));
+        }
+        let mut forwarded = args.clone();
+        forwarded["name"] = json!(rest);
+        let body = serde_json::to_vec(&forwarded).expect("JSON");
+        let size = body.len();
+        if op == GateOp::Publish {
+            // Audited like a change of the hub's own parameters.
+            gate.finished(
+                &name,
+                GateOp::Publish,
+                size,
+                &format!("{call} on robot {robot}"),
+            );
+        }
+        let made = Made {
+            id: id.cloned(),
+            name: service.to_owned(),
+            type_name: String::new(),
+            goal: false,
+            feedback: false,
+            how,
+            size,
+            robot: Some(robot.to_owned()),
+        };
+        let opts = CallOptions {
+            timeout: timeout_of(None),
+            goal: false,
+            goal_id: None,
+        };
+        Some(
+            self.start(&provider, Payload::json(body), opts, made)
+                .map(|_| ())
+                .map_err(|e| format!("{service} of {name}: robot {robot}: {}", e.text)),
+        )
+    }
+}
+
+/// A robot's answer to a forwarded parameter call, in the hub's names: a found name
+/// (`search_param`) gets the robot's namespace back, an error says which robot.
+fn from_robot(robot: &str, payload: Option<Payload>, text: String) -> (Option<Payload>, String) {
+    let text = if text.is_empty() {
+        text
+    } else {
+        format!("robot {robot}: {text}")
+    };
+    let payload = payload.map(|p| {
+        let json = match p.encoding {
+            Encoding::Json => serde_json::from_slice::<Value>(&p.bytes).ok(),
+            _ => None,
+        };
+        match json {
+            Some(mut v) => {
+                if let Some(found) = v.get("global_name").and_then(Value::as_str)
+                    && !found.is_empty()
+                {
+                    let full = if found == "/" {
+                        format!("/{robot}")
+                    } else {
+                        format!("/{robot}{found}")
+                    };
+                    v["global_name"] = json!(full);
+                    return Payload::json(serde_json::to_vec(&v).expect("JSON"));
+                }
+                p
+            }
+            None => p,
+        }
+    });
+    (payload, text)
 }
 
 fn empty_map(cbor: bool) -> Bytes {

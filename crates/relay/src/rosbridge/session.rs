@@ -743,6 +743,13 @@ impl Session {
                 .and_then(|j| serde_json::from_slice(&j).ok())
                 .unwrap_or(Value::Null),
         };
+        if let Some(forwarded) = self.forward_param(service, &args_json, id, how) {
+            if let Err(e) = forwarded {
+                let reply = outbound::service_response(service, id, Value::String(e), false);
+                self.send_value(&reply, how.cbor).await;
+            }
+            return;
+        }
         let gate = self.gate.as_mut().expect("checked by the caller");
         let mut changes = Vec::new();
         let answer = {

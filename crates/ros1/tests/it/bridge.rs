@@ -211,6 +211,7 @@ fn options(master: &str) -> Ros1Options {
         offer: NameFilter::default(),
         discovery_period: Duration::from_millis(50),
         call_timeout: Duration::from_secs(2),
+        parameters: true,
     }
 }
 
