@@ -147,6 +147,21 @@ pub fn normalize_json_resolved(
     Ok(Some(to_json_bytes(&v)))
 }
 
+/// Rosbridge CBOR checked against a type resolved beforehand and written in normal form
+/// ([`from_cbor`] then [`to_cbor_bytes`], without resolving the type again).
+pub fn normalize_cbor_resolved(
+    ty: &registry::Resolved,
+    bytes: &[u8],
+) -> Result<Vec<u8>, CodecError> {
+    let layout = &ty.layout;
+    let doc: ciborium::Value =
+        ciborium::de::from_reader(bytes).map_err(|e| CodecError::Cbor(e.to_string()))?;
+    let v = loose::to_struct(layout, &doc)
+        .map(Value::Struct)
+        .map_err(|e| binary::in_field(e, &layout.name.short()))?;
+    Ok(to_cbor_bytes(&v))
+}
+
 /// The message as compact rosbridge JSON text.
 pub fn to_json_bytes(value: &Value) -> Vec<u8> {
     let mut out = Vec::with_capacity(256);

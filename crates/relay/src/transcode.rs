@@ -273,16 +273,17 @@ impl Transcoder for RegistryTranscoder {
         payload: Payload,
         cache: &mut NormalizeCache,
     ) -> Result<Payload, TranscodeError> {
-        if payload.encoding != Encoding::Json {
+        let enc = payload.encoding;
+        if !matches!(enc, Encoding::Json | Encoding::Cbor) {
             return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
         }
         let reg = &self.registry;
         let ty = schema.type_name.as_str();
-        let dialect = dialect_of(schema, payload.encoding);
+        let dialect = dialect_of(schema, enc);
         let invalid = |cause: String| TranscodeError::Invalid {
             type_name: ty.to_owned(),
-            from: Encoding::Json,
-            to: Encoding::Json,
+            from: enc,
+            to: enc,
             cause,
         };
         let cached = cache
@@ -309,6 +310,11 @@ impl Transcoder for RegistryTranscoder {
                     .resolved
             }
         };
+        if enc == Encoding::Cbor {
+            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
+                .map(|normal| Payload::new(Encoding::Cbor, normal))
+                .map_err(|e| invalid(e.to_string()));
+        }
         match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
             Ok(Some(normal)) => Ok(Payload::json(normal)),
             // Already in normal form: the bytes as they came (no copy).

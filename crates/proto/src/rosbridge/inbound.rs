@@ -269,6 +269,134 @@ impl<'a> Publish<'a> {
     }
 }
 
+impl<'a> Publish<'a> {
+    /// A CBOR `publish` (a definite-length map with text `op`, `topic`, a map `msg`,
+    /// maybe `id`), its envelope walked header by header (`ciborium_ll`) without decoding
+    /// the message: `msg` is a slice of `frame`. `None` for anything else (indefinite
+    /// lengths, duplicate keys, trailing bytes...), which [`Request::from_cbor`] then
+    /// parses with the precise error.
+    pub fn from_cbor_frame(frame: &'a Bytes) -> Option<Publish<'a>> {
+        let mut c = CborCursor {
+            data: frame,
+            pos: 0,
+        };
+        let ciborium_ll::Header::Map(Some(entries)) = c.header()? else {
+            return None;
+        };
+        let (mut op, mut topic, mut msg, mut id) = (None, None, None, None);
+        for _ in 0..entries {
+            let slot = match c.text()? {
+                "op" => &mut op,
+                "topic" => &mut topic,
+                "msg" => &mut msg,
+                "id" => &mut id,
+                _ => {
+                    c.skip(0)?;
+                    continue;
+                }
+            };
+            if slot.is_some() {
+                return None;
+            }
+            let start = c.pos;
+            c.skip(0)?;
+            *slot = Some(start..c.pos);
+        }
+        if c.pos != frame.len() {
+            return None;
+        }
+        let text = |r: std::ops::Range<usize>| {
+            let mut t = CborCursor {
+                data: &frame[..r.end],
+                pos: r.start,
+            };
+            t.text()
+        };
+        if text(op?)? != "publish" {
+            return None;
+        }
+        let topic = text(topic?)?;
+        let msg = msg?;
+        // Major type 5: a map.
+        if frame[msg.start] >> 5 != 5 || !valid_topic(topic) {
+            return None;
+        }
+        let id = match id {
+            Some(r) => Some(
+                convert::parse_cbor(&frame[r])
+                    .ok()
+                    .and_then(|v| convert::cbor_value_to_json(v).ok())?,
+            ),
+            None => None,
+        };
+        Some(Publish {
+            id,
+            topic: topic.into(),
+            msg: Payload::new(Encoding::Cbor, frame.slice(msg)),
+        })
+    }
+}
+
+/// Walks CBOR items by their headers, keeping the position in the input.
+struct CborCursor<'a> {
+    data: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> CborCursor<'a> {
+    /// Deepest nesting walked (as for JSON).
+    const MAX_DEPTH: usize = 128;
+
+    fn header(&mut self) -> Option<ciborium_ll::Header> {
+        let mut d = ciborium_ll::Decoder::from(self.data.get(self.pos..)?);
+        let h = d.pull().ok()?;
+        self.pos += d.offset();
+        Some(h)
+    }
+
+    fn take(&mut self, len: usize) -> Option<&'a [u8]> {
+        let s = self.data.get(self.pos..self.pos.checked_add(len)?)?;
+        self.pos += len;
+        Some(s)
+    }
+
+    /// A definite-length text item.
+    fn text(&mut self) -> Option<&'a str> {
+        match self.header()? {
+            ciborium_ll::Header::Text(Some(n)) => std::str::from_utf8(self.take(n)?).ok(),
+            _ => None,
+        }
+    }
+
+    /// Steps over one item; `None` for what only the full parse handles (indefinite
+    /// lengths, a stray break, truncation, nesting deeper than `MAX_DEPTH`).
+    fn skip(&mut self, depth: usize) -> Option<()> {
+        use ciborium_ll::Header;
+        if depth > Self::MAX_DEPTH {
+            return None;
+        }
+        match self.header()? {
+            Header::Positive(_) | Header::Negative(_) | Header::Float(_) | Header::Simple(_) => {}
+            Header::Tag(_) => self.skip(depth + 1)?,
+            Header::Bytes(Some(n)) | Header::Text(Some(n)) => {
+                self.take(n)?;
+            }
+            Header::Array(Some(n)) => {
+                for _ in 0..n {
+                    self.skip(depth + 1)?;
+                }
+            }
+            Header::Map(Some(n)) => {
+                for _ in 0..n.checked_mul(2)? {
+                    self.skip(depth + 1)?;
+                }
+            }
+            _ => return None,
+        }
+        Some(())
+    }
+}
+
 impl Request {
     /// Parses a JSON text frame held in shared bytes. A well-formed `publish` (the
     /// operation that carries nearly all traffic) takes a short path: its envelope is read
@@ -755,6 +883,137 @@ mod tests {
         assert!(Publish::from_json_text(view, &frame).is_none());
         let r = Request::from_json_frame(&frame).unwrap();
         assert!(matches!(r.op, Op::Publish { topic, .. } if topic == "/a"));
+    }
+
+    fn cbor(v: &ciborium::Value) -> Vec<u8> {
+        let mut out = Vec::new();
+        ciborium::into_writer(v, &mut out).unwrap();
+        out
+    }
+
+    #[test]
+    fn cbor_publish_slices_the_message_and_agrees_with_the_full_parse() {
+        use ciborium::Value as C;
+        let text = |s: &str| C::Text(s.into());
+        // A message with a nested map, an array, a byte string and a typed array (tag 85,
+        // float32 little-endian), as rosbridge CBOR clients write them.
+        let msg = C::Map(vec![
+            (
+                text("header"),
+                C::Map(vec![(text("frame_id"), text("map"))]),
+            ),
+            (text("data"), C::Bytes(vec![1, 2, 3])),
+            (
+                text("ranges"),
+                C::Tag(85, Box::new(C::Bytes(vec![0, 0, 128, 63]))),
+            ),
+            (
+                text("list"),
+                C::Array(vec![C::Integer(1.into()), C::Float(2.5), C::Null]),
+            ),
+        ]);
+        let msg_bytes = cbor(&msg);
+        let frame = Bytes::from(cbor(&C::Map(vec![
+            (text("op"), text("publish")),
+            (text("id"), text("p1")),
+            (text("extra"), C::Array(vec![C::Bool(true)])),
+            (text("topic"), text("/scan")),
+            (text("msg"), msg.clone()),
+        ])));
+        let p = Publish::from_cbor_frame(&frame).expect("the short path takes it");
+        assert_eq!(p.topic, "/scan");
+        assert_eq!(p.id, Some(serde_json::json!("p1")));
+        assert_eq!(p.msg.encoding, Encoding::Cbor);
+        assert_eq!(&p.msg.bytes[..], &msg_bytes[..]);
+        let start = p.msg.bytes.as_ptr() as usize - frame.as_ptr() as usize;
+        assert_eq!(
+            &frame[start..start + p.msg.len()],
+            &msg_bytes[..],
+            "a slice, not a copy"
+        );
+        let full = Request::from_cbor(&frame).unwrap();
+        assert_eq!(full.id, p.id);
+        let Op::Publish {
+            topic,
+            msg: full_msg,
+        } = full.op
+        else {
+            panic!("not a publish")
+        };
+        assert_eq!(topic, "/scan");
+        assert_eq!(
+            convert::parse_cbor(&full_msg.bytes).unwrap(),
+            convert::parse_cbor(&p.msg.bytes).unwrap()
+        );
+    }
+
+    #[test]
+    fn cbor_publish_short_path_leaves_everything_else_to_the_full_parse() {
+        use ciborium::Value as C;
+        let text = |s: &str| C::Text(s.into());
+        let publish = |entries: Vec<(C, C)>| Bytes::from(cbor(&C::Map(entries)));
+        let ok_msg = C::Map(vec![(text("data"), C::Integer(1.into()))]);
+        let cases = [
+            publish(vec![
+                (text("op"), text("subscribe")),
+                (text("topic"), text("/a")),
+            ]),
+            publish(vec![
+                (text("op"), text("publish")),
+                (text("topic"), text("/a")),
+                (text("msg"), C::Array(vec![])),
+            ]),
+            publish(vec![
+                (text("op"), text("publish")),
+                (text("topic"), text("/a b")),
+                (text("msg"), ok_msg.clone()),
+            ]),
+            publish(vec![
+                (text("op"), text("publish")),
+                (text("topic"), text("/a")),
+                (text("topic"), text("/b")),
+                (text("msg"), ok_msg.clone()),
+            ]),
+            publish(vec![
+                (text("op"), text("publish")),
+                (C::Integer(7.into()), text("/a")),
+                (text("msg"), ok_msg.clone()),
+            ]),
+            publish(vec![
+                (text("op"), text("publish")),
+                (text("topic"), text("/a")),
+            ]),
+        ];
+        for frame in cases {
+            assert!(Publish::from_cbor_frame(&frame).is_none(), "{frame:?}");
+        }
+        let good = cbor(&C::Map(vec![
+            (text("op"), text("publish")),
+            (text("topic"), text("/a")),
+            (text("msg"), ok_msg),
+        ]));
+        assert!(Publish::from_cbor_frame(&Bytes::from(good.clone())).is_some());
+        // Trailing bytes, truncation, indefinite lengths: the full parse decides.
+        let mut trailing = good.clone();
+        trailing.push(0);
+        assert!(Publish::from_cbor_frame(&Bytes::from(trailing)).is_none());
+        for cut in 0..good.len() {
+            assert!(Publish::from_cbor_frame(&Bytes::copy_from_slice(&good[..cut])).is_none());
+        }
+        let mut indefinite = vec![0xbf];
+        indefinite.extend_from_slice(&good[1..]);
+        indefinite.push(0xff);
+        assert!(Publish::from_cbor_frame(&Bytes::from(indefinite)).is_none());
+        // Hostile nesting is bounded, not a stack overflow.
+        let mut deep = cbor(&C::Map(vec![
+            (text("op"), text("publish")),
+            (text("topic"), text("/a")),
+        ]));
+        deep[0] = 0xa3;
+        deep.extend_from_slice(&cbor(&text("msg")));
+        deep.extend(std::iter::repeat_n(0x81, 100_000));
+        deep.push(0x00);
+        assert!(Publish::from_cbor_frame(&Bytes::from(deep)).is_none());
     }
 
     #[test]

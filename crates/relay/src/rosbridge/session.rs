@@ -142,7 +142,7 @@ pub async fn serve<S>(
         if matches!(frame, Ok(WsMessage::Binary(_))) {
             session.calls.binary = true;
         }
-        let (text, bytes);
+        let (text, bytes, binary);
         let req = match frame {
             Ok(WsMessage::Text(t)) => {
                 text = t;
@@ -159,7 +159,13 @@ pub async fn serve<S>(
                     },
                 }
             }
-            Ok(WsMessage::Binary(b)) => Request::from_cbor(&b).map(Incoming::Other),
+            Ok(WsMessage::Binary(b)) => {
+                binary = b;
+                match Publish::from_cbor_frame(&binary) {
+                    Some(p) => Ok(Incoming::Publish(p)),
+                    None => Request::from_cbor(&binary).map(Incoming::Other),
+                }
+            }
             Ok(WsMessage::Close(_)) => break,
             Ok(_) => continue,
             Err(WsError::Capacity(e)) => {
