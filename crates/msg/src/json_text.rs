@@ -495,6 +495,245 @@ impl<'a> Parser<'a> {
     }
 }
 
+/// [`parse`] and [`is_normal`] in one pass over the text, building nothing: `true` only
+/// when the text is a JSON object in normal form for `layout`. It is stricter than the
+/// two together (it also wants the JSON number grammar, finite floats everywhere) and
+/// gives up on what it does not handle — escapes in strings, `NaN`/`Infinity`, integers
+/// too long for `i128`, layouts of more than 64 fields — so `false` means "take the full
+/// path", which then decides. The publish hot path: most messages are in normal form.
+pub(crate) fn is_normal_text(layout: &MsgLayout, text: &[u8]) -> bool {
+    let mut c = Check { b: text, pos: 0 };
+    let ok = c.msg(layout, 0);
+    c.ws();
+    ok && c.pos == text.len()
+}
+
+struct Check<'a> {
+    b: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> Check<'a> {
+    fn ws(&mut self) {
+        while let Some(b' ' | b'\n' | b'\r' | b'\t') = self.b.get(self.pos) {
+            self.pos += 1;
+        }
+    }
+
+    /// Skips whitespace, then takes `byte` if it is next.
+    fn eat(&mut self, byte: u8) -> bool {
+        self.ws();
+        if self.b.get(self.pos) == Some(&byte) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    fn lit(&mut self, word: &[u8]) -> bool {
+        if self.b[self.pos..].starts_with(word) {
+            self.pos += word.len();
+            true
+        } else {
+            false
+        }
+    }
+
+    /// A string without escapes or control characters, as valid UTF-8.
+    fn plain_string(&mut self) -> Option<&'a str> {
+        self.ws();
+        if self.b.get(self.pos) != Some(&b'"') {
+            return None;
+        }
+        let start = self.pos + 1;
+        let len = self.b[start..]
+            .iter()
+            .position(|&c| c == b'"' || c == b'\\' || c < 0x20)?;
+        if self.b[start + len] != b'"' {
+            return None;
+        }
+        self.pos = start + len + 1;
+        std::str::from_utf8(&self.b[start..start + len]).ok()
+    }
+
+    /// A number in JSON's grammar: its text, and whether it has a fraction or exponent.
+    fn number(&mut self) -> Option<(&'a str, bool)> {
+        self.ws();
+        let start = self.pos;
+        let digits = |c: &mut Self| {
+            let from = c.pos;
+            while c.b.get(c.pos).is_some_and(u8::is_ascii_digit) {
+                c.pos += 1;
+            }
+            c.pos > from
+        };
+        if self.b.get(self.pos) == Some(&b'-') {
+            self.pos += 1;
+        }
+        match self.b.get(self.pos) {
+            Some(b'0') => self.pos += 1,
+            Some(b'1'..=b'9') => {
+                digits(self);
+            }
+            _ => return None,
+        }
+        let mut float = false;
+        if self.b.get(self.pos) == Some(&b'.') {
+            self.pos += 1;
+            float = true;
+            if !digits(self) {
+                return None;
+            }
+        }
+        if let Some(b'e' | b'E') = self.b.get(self.pos) {
+            self.pos += 1;
+            float = true;
+            if let Some(b'+' | b'-') = self.b.get(self.pos) {
+                self.pos += 1;
+            }
+            if !digits(self) {
+                return None;
+            }
+        }
+        // ASCII by construction.
+        Some((std::str::from_utf8(&self.b[start..self.pos]).ok()?, float))
+    }
+
+    /// A number written as a float, finite.
+    fn float(&mut self) -> Option<f64> {
+        match self.number()? {
+            (text, true) => text.parse::<f64>().ok().filter(|f| f.is_finite()),
+            _ => None,
+        }
+    }
+
+    fn int(&mut self) -> Option<i128> {
+        match self.number()? {
+            (text, false) => text.parse().ok(),
+            _ => None,
+        }
+    }
+
+    /// An object with exactly the layout's fields, once each, every one normal.
+    fn msg(&mut self, layout: &MsgLayout, depth: usize) -> bool {
+        if depth > MAX_DEPTH || layout.fields.len() > 64 || !self.eat(b'{') {
+            return false;
+        }
+        let mut seen = 0u64;
+        if !self.eat(b'}') {
+            loop {
+                let Some(key) = self.plain_string() else {
+                    return false;
+                };
+                let Some(i) = layout.fields.iter().position(|f| *f.name == *key) else {
+                    return false;
+                };
+                if seen & (1 << i) != 0 || !self.eat(b':') {
+                    return false;
+                }
+                seen |= 1 << i;
+                if !self.field(&layout.fields[i], depth) {
+                    return false;
+                }
+                if self.eat(b',') {
+                    continue;
+                }
+                if self.eat(b'}') {
+                    break;
+                }
+                return false;
+            }
+        }
+        seen.count_ones() as usize == layout.fields.len()
+    }
+
+    fn field(&mut self, f: &FieldLayout, depth: usize) -> bool {
+        if matches!(f.array, ArrayKind::Single) {
+            return self.elem(&f.elem, depth);
+        }
+        let len_ok = |n: usize| match f.array {
+            ArrayKind::Fixed(len) => n == len as usize,
+            ArrayKind::Bounded(b) => n <= b as usize,
+            _ => true,
+        };
+        if let Elem::Scalar(Scalar::U8) = f.elem {
+            // JSON writes uint8[] as base64 text.
+            use base64::Engine as _;
+            return self.plain_string().is_some_and(|text| {
+                base64::engine::general_purpose::STANDARD
+                    .decode(text.as_bytes())
+                    .is_ok_and(|b| len_ok(b.len()))
+            });
+        }
+        if !self.eat(b'[') {
+            return false;
+        }
+        let mut n = 0usize;
+        if !self.eat(b']') {
+            loop {
+                if !self.elem(&f.elem, depth) {
+                    return false;
+                }
+                n += 1;
+                if self.eat(b',') {
+                    continue;
+                }
+                if self.eat(b']') {
+                    break;
+                }
+                return false;
+            }
+        }
+        len_ok(n)
+    }
+
+    fn elem(&mut self, elem: &Elem, depth: usize) -> bool {
+        let s = match elem {
+            Elem::Msg(m) => return self.msg(m, depth + 1),
+            Elem::Scalar(s) => *s,
+        };
+        self.ws();
+        match s {
+            Scalar::Bool => self.lit(b"true") || self.lit(b"false"),
+            Scalar::F64 => self.float().is_some(),
+            Scalar::F32 => self.float().is_some_and(f32_is_normal),
+            Scalar::String | Scalar::WString => self.plain_string().is_some(),
+            Scalar::Time | Scalar::Duration => {
+                let (lo, hi) = if s == Scalar::Time {
+                    (0, i128::from(u32::MAX))
+                } else {
+                    (i128::from(i32::MIN), i128::from(i32::MAX))
+                };
+                let part = |c: &mut Self| c.int().is_some_and(|i| (lo..=hi).contains(&i));
+                if !self.eat(b'{') {
+                    return false;
+                }
+                let (mut sec, mut nanosec) = (false, false);
+                for i in 0..2 {
+                    let slot = match self.plain_string() {
+                        Some("sec") if !sec => &mut sec,
+                        Some("nanosec") if !nanosec => &mut nanosec,
+                        _ => return false,
+                    };
+                    if !self.eat(b':') || !part(self) {
+                        return false;
+                    }
+                    *slot = true;
+                    if i == 0 && !self.eat(b',') {
+                        return false;
+                    }
+                }
+                self.eat(b'}')
+            }
+            s => match (int_range(s), self.int()) {
+                (Some((lo, hi)), Some(i)) => (lo..=hi).contains(&i),
+                _ => false,
+            },
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -544,6 +783,171 @@ mod tests {
             matches!(big, Node::Array(_)),
             "inexact integers keep the general form"
         );
+    }
+
+    /// The one-pass check against parse + `is_normal`: never more lenient, and equal on
+    /// text without the things it leaves to the full path.
+    #[test]
+    fn one_pass_normal_check_agrees_with_the_tree() {
+        let reg = crate::Registry::bundled();
+        let layout = |ty: &str, d| reg.resolve(ty, d).expect(ty).layout;
+        let ros2 = crate::Dialect::Ros2;
+        let cases: &[(&str, crate::Dialect, &str, bool)] = &[
+            ("std_msgs/msg/String", ros2, r#"{"data":"hi"}"#, true),
+            ("std_msgs/msg/String", ros2, r#" { "data" : "hi" } "#, true),
+            ("std_msgs/msg/String", ros2, r#"{}"#, false),
+            (
+                "std_msgs/msg/String",
+                ros2,
+                r#"{"data":"hi","data":"x"}"#,
+                false,
+            ),
+            ("std_msgs/msg/String", ros2, r#"{"data":"hi","x":1}"#, false),
+            ("std_msgs/msg/String", ros2, r#"{"data":7}"#, false),
+            ("std_msgs/msg/String", ros2, r#"{"data":"hi"} x"#, false),
+            ("std_msgs/msg/String", ros2, r#"{"data":"hi""#, false),
+            ("std_msgs/msg/Int32", ros2, r#"{"data":-5}"#, true),
+            ("std_msgs/msg/Int32", ros2, r#"{"data":2147483648}"#, false),
+            ("std_msgs/msg/Int32", ros2, r#"{"data":5.0}"#, false),
+            ("std_msgs/msg/Int32", ros2, r#"{"data":"5"}"#, false),
+            (
+                "std_msgs/msg/UInt64",
+                ros2,
+                r#"{"data":18446744073709551615}"#,
+                true,
+            ),
+            ("std_msgs/msg/Float64", ros2, r#"{"data":1.5e3}"#, true),
+            ("std_msgs/msg/Float64", ros2, r#"{"data":1}"#, false),
+            ("std_msgs/msg/Float32", ros2, r#"{"data":0.1}"#, true),
+            (
+                "std_msgs/msg/Float32",
+                ros2,
+                r#"{"data":0.10000000149011612}"#,
+                false,
+            ),
+            ("std_msgs/msg/Bool", ros2, r#"{"data":true}"#, true),
+            ("std_msgs/msg/Bool", ros2, r#"{"data":1}"#, false),
+            (
+                "geometry_msgs/msg/Twist",
+                ros2,
+                r#"{"linear":{"x":1.0,"y":0.0,"z":0.0},"angular":{"x":0.0,"y":0.0,"z":-0.5}}"#,
+                true,
+            ),
+            (
+                "geometry_msgs/msg/Twist",
+                ros2,
+                r#"{"linear":{"x":1,"y":0.0,"z":0.0},"angular":{"x":0.0,"y":0.0,"z":-0.5}}"#,
+                false,
+            ),
+            (
+                "geometry_msgs/msg/Twist",
+                ros2,
+                r#"{"linear":{"x":1.0,"y":0.0,"z":0.0}}"#,
+                false,
+            ),
+            (
+                "std_msgs/msg/Header",
+                ros2,
+                r#"{"stamp":{"sec":1,"nanosec":2},"frame_id":"map"}"#,
+                true,
+            ),
+            (
+                "std_msgs/msg/Float64MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[1.5,2.0,-3e-2]}"#,
+                true,
+            ),
+            (
+                "std_msgs/msg/Float64MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[1.5,2]}"#,
+                false,
+            ),
+            (
+                "std_msgs/msg/Float64MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[1.5,null]}"#,
+                false,
+            ),
+            (
+                "std_msgs/msg/Float64MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[]}"#,
+                true,
+            ),
+            (
+                "std_msgs/msg/Int8MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[{"label":"a","size":2,"stride":2}],"data_offset":0},"data":[1,-128]}"#,
+                true,
+            ),
+            (
+                "std_msgs/msg/Int8MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[1,128]}"#,
+                false,
+            ),
+            (
+                "std_msgs/msg/UInt8MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":"AQID"}"#,
+                true,
+            ),
+            (
+                "std_msgs/msg/UInt8MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":[1,2,3]}"#,
+                false,
+            ),
+            (
+                "std_msgs/msg/UInt8MultiArray",
+                ros2,
+                r#"{"layout":{"dim":[],"data_offset":0},"data":"A!ID"}"#,
+                false,
+            ),
+            (
+                "geometry_msgs/msg/PoseWithCovariance",
+                ros2,
+                &format!(
+                    r#"{{"pose":{{"position":{{"x":0.0,"y":0.0,"z":0.0}},"orientation":{{"x":0.0,"y":0.0,"z":0.0,"w":1.0}}}},"covariance":[{}]}}"#,
+                    vec!["0.5"; 36].join(",")
+                ),
+                true,
+            ),
+            (
+                "geometry_msgs/msg/PoseWithCovariance",
+                ros2,
+                &format!(
+                    r#"{{"pose":{{"position":{{"x":0.0,"y":0.0,"z":0.0}},"orientation":{{"x":0.0,"y":0.0,"z":0.0,"w":1.0}}}},"covariance":[{}]}}"#,
+                    vec!["0.5"; 35].join(",")
+                ),
+                false,
+            ),
+        ];
+        for (ty, d, text, expect) in cases {
+            let l = layout(ty, *d);
+            let quick = is_normal_text(&l, text.as_bytes());
+            let tree = parse(text.as_bytes()).is_ok_and(|n| is_normal(&l, &n));
+            assert_eq!(quick, *expect, "{ty}: {text}");
+            assert_eq!(quick, tree, "the tree disagrees on {ty}: {text}");
+        }
+        // Left to the full path (which accepts them): escapes, integers beyond i128.
+        let s = layout("std_msgs/msg/String", ros2);
+        assert!(!is_normal_text(&s, br#"{"data":"a\nb"}"#));
+        assert!(parse(br#"{"data":"a\nb"}"#).is_ok_and(|n| is_normal(&s, &n)));
+        // ROS 1 time, written as rosbridge writes it.
+        let h1 = layout("std_msgs/Header", crate::Dialect::Ros1);
+        let text = br#"{"seq":3,"stamp":{"sec":1,"nanosec":2},"frame_id":""}"#;
+        assert!(is_normal_text(&h1, text));
+        assert!(parse(text).is_ok_and(|n| is_normal(&h1, &n)));
+        assert!(!is_normal_text(
+            &h1,
+            br#"{"seq":3,"stamp":{"sec":1},"frame_id":""}"#
+        ));
+        assert!(!is_normal_text(
+            &h1,
+            br#"{"seq":3,"stamp":{"sec":1,"sec":2},"frame_id":""}"#
+        ));
     }
 
     #[test]
