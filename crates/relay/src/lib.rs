@@ -117,6 +117,18 @@ pub fn unix_nanos() -> u64 {
 mod tests {
     use super::*;
 
+    /// The session hands `Publish::from_json_text` a WebSocket text frame and the bytes
+    /// it converts into: they must be one buffer, or every publish takes the full parse.
+    #[test]
+    fn a_websocket_text_frame_takes_the_publish_short_path() {
+        use tokio_tungstenite::tungstenite::Utf8Bytes;
+        let text = Utf8Bytes::from(r#"{"op":"publish","topic":"/a","msg":{"data":1}}"#.to_owned());
+        let bytes = bytes::Bytes::from(text.clone());
+        let p = fleetlink_proto::rosbridge::Publish::from_json_text(text.as_str(), &bytes)
+            .expect("the short path");
+        assert_eq!(&p.msg.bytes[..], br#"{"data":1}"#);
+    }
+
     #[test]
     fn stamp_clock_stays_within_a_refresh_period_of_the_wall_clock() {
         let mut clock = StampClock::default();

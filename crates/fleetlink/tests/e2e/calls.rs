@@ -541,8 +541,9 @@ fn robot_parameters(agent: &TestAgent) -> std::sync::Arc<std::sync::Mutex<Vec<St
 async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
     let hub = start_hub().await;
     // Robots may call rosapi; their own namespace is theirs by default, r1's is not r2's.
+    // r2 may also call r1's parameter services by name, but not read r1's parameters.
     hub.set_rules(
-        "rules:\n  - subject: any_robot\n    names: \"/rosapi/.*\"\n    ops: [call_service]\n",
+        "rules:\n  - subject: any_robot\n    names: \"/rosapi/.*\"\n    ops: [call_service]\n  - subject: {robot: r2}\n    names: \"/r1/rosapi/.*\"\n    ops: [call_service]\n",
     );
     let agent = start_agent(&hub, "r1").await;
     let asked = robot_parameters(&agent);
@@ -596,30 +597,25 @@ async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
     let before = asked.lock().unwrap().len();
     let other = format!("ws://{}/?token={}", hub.addr, hub.robot_token("r2"));
     let mut r2 = Rosbridge::connect(&other).await;
+    let refused = |r: &Value, why: &str| {
+        assert_eq!(r["result"], false, "{r}");
+        let text = r["values"].as_str().unwrap_or_default();
+        assert!(text.contains(why), "{r}");
+    };
     let r = r2
         .call("/rosapi/get_param", json!({"name": "/r1/max_speed"}), "x")
         .await;
-    assert_eq!(r["result"], false, "{r}");
-    assert!(
-        r["values"]
-            .as_str()
-            .unwrap()
-            .contains("not allowed to read parameter /r1/max_speed"),
-        "{r}"
-    );
-    let r = r2
-        .call(
-            "/rosapi/set_param",
-            json!({"name": "/r1/max_speed", "value": "9"}),
-            "y",
-        )
-        .await;
-    assert!(
-        r["values"]
-            .as_str()
-            .unwrap()
-            .contains("not allowed to change parameter /r1/max_speed"),
-        "{r}"
-    );
+    refused(&r, "not allowed to read parameter /r1/max_speed");
+    let args = json!({"name": "/r1/max_speed", "value": "9"});
+    let r = r2.call("/rosapi/set_param", args, "y").await;
+    refused(&r, "not allowed to change parameter /r1/max_speed");
+    // Calling r1's parameter service by its own name is held to the same rule.
+    let args = json!({"name": "max_speed"});
+    let r = r2.call("/r1/rosapi/get_param", args, "z").await;
+    refused(&r, "not allowed to read parameter /r1/max_speed");
     assert_eq!(asked.lock().unwrap().len(), before);
+    // The operator may, by either name.
+    let args = json!({"name": "/max_speed"});
+    let r = op.call("/r1/rosapi/get_param", args, "direct").await;
+    assert_eq!(r["values"]["value"], "1.5", "{r}");
 }

@@ -189,6 +189,9 @@ impl Session {
         if let Err(e) = self.check("call_service", name.as_str(), GateOp::CallService) {
             return self.service_failed(service, id, e, how.cbor).await;
         }
+        if let Some(e) = self.direct_param_refusal(name.as_str(), &args) {
+            return self.service_failed(service, id, e, how.cbor).await;
+        }
         if name.as_str().starts_with("/rosapi/") && self.router.calls.service(&name).is_none() {
             return self.call_rosapi(service, &args, id, how).await;
         }
@@ -803,6 +806,47 @@ impl Session {
                 .map(|_| ())
                 .map_err(|e| format!("{service} of {name}: robot {robot}: {}", e.text)),
         )
+    }
+}
+
+impl Session {
+    /// A robot's parameter service called by its own name (`/robot1/rosapi/set_param`
+    /// with `/max_speed`) is held to the ACL the hub's forwarding applies: the parameter's
+    /// full name (`/robot1/max_speed`), `subscribe` to read, `publish` to change. The
+    /// refusal text, or `None` when the call may go on (or is not such a call).
+    fn direct_param_refusal(&mut self, service: &str, args: &Payload) -> Option<String> {
+        let (robot, call) = service.strip_prefix('/')?.split_once("/rosapi/")?;
+        if robot.contains('/') || !FORWARDED_PARAMS.contains(&call) {
+            return None;
+        }
+        let args: Value = match args.encoding {
+            Encoding::Json => serde_json::from_slice(&args.bytes).ok()?,
+            Encoding::Cbor => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
+                .ok()
+                .and_then(|j| serde_json::from_slice(&j).ok())?,
+            _ => return None,
+        };
+        let raw = args.get("name").and_then(Value::as_str).unwrap_or_default();
+        let full = match raw.trim() {
+            "/" => format!("/{robot}"),
+            // An invalid name is the provider's to refuse.
+            other => format!("/{robot}{}", crate::params::param_name(other).ok()?),
+        };
+        let op = if matches!(call, "set_param" | "delete_param") {
+            GateOp::Publish
+        } else {
+            GateOp::Subscribe
+        };
+        let gate = self.gate.as_mut()?;
+        if gate.allows(&full, op) {
+            return None;
+        }
+        let verb = if op == GateOp::Publish {
+            "change"
+        } else {
+            "read"
+        };
+        Some(format!("not allowed to {verb} parameter {full}"))
     }
 }
 

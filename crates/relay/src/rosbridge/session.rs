@@ -205,7 +205,7 @@ pub async fn serve<S>(
 
 /// An operation as read from a frame.
 enum Incoming<'a> {
-    /// The short path for a JSON `publish`.
+    /// The short path for a `publish` (JSON text or CBOR).
     Publish(Publish<'a>),
     Other(Request),
 }
