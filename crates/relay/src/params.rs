@@ -82,6 +82,52 @@ pub fn param_name(raw: &str) -> Result<String, String> {
     Ok(n.trim_end_matches('/').to_owned())
 }
 
+/// [`param_name`], also taking `/` alone: the whole tree (a robot's namespace as its
+/// agent sees it).
+pub fn param_name_or_root(raw: &str) -> Result<String, String> {
+    match raw.trim() {
+        "/" => Ok("/".into()),
+        other => param_name(other),
+    }
+}
+
+/// The arguments of a parameter call (JSON text or CBOR) as JSON.
+pub fn call_args(p: &fleetlink_proto::Payload) -> Option<Value> {
+    use fleetlink_proto::Encoding;
+    match p.encoding {
+        Encoding::Json => serde_json::from_slice(&p.bytes).ok(),
+        Encoding::Cbor => fleetlink_proto::rosbridge::convert::cbor_to_json(&p.bytes)
+            .ok()
+            .and_then(|j| serde_json::from_slice(&j).ok()),
+        _ => None,
+    }
+}
+
+/// `get_param`'s answer for a parameter that is not set: the caller's `default` (a JSON
+/// text), `null` without one.
+pub fn default_text(args: &Value) -> &str {
+    args.get("default")
+        .and_then(Value::as_str)
+        .filter(|d| !d.is_empty())
+        .unwrap_or("null")
+}
+
+/// `set_param`'s `value` for parameter `name`: its JSON text and what it says. Refused
+/// when missing, not JSON, or larger than 1 MiB.
+pub fn value_to_set(args: &Value, name: &str) -> Result<(String, Value), String> {
+    let text = match args.get("value") {
+        Some(Value::String(s)) => s.clone(),
+        Some(other) => other.to_string(),
+        None => return Err("missing argument 'value' (a JSON text)".into()),
+    };
+    if text.len() > 1 << 20 {
+        return Err(format!("value of {name} is larger than 1 MiB"));
+    }
+    let v = serde_json::from_str(&text)
+        .map_err(|e| format!("value of {name} is not a JSON text: {e}"))?;
+    Ok((text, v))
+}
+
 /// The value of `name`: the parameter itself, or the tree of parameters under it as an
 /// object (`/a/b/c` = 1 gives `get /a` = `{"b": {"c": 1}}`).
 pub fn lookup(all: &BTreeMap<String, String>, name: &str) -> Option<Value> {

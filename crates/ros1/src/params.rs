@@ -13,8 +13,9 @@
 //! parameter client does it: integers that fit 32 bits are `i4`, other numbers `double`,
 //! objects `struct`s, arrays `array`s; `null` has no XML-RPC form and is refused.
 
-use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_proto::{Payload, Schema};
 use fleetlink_relay::calls::{CallRequest, CallStatus};
+use fleetlink_relay::params;
 use serde_json::{Value as Json, json};
 
 use crate::master::ApiError;
@@ -85,12 +86,14 @@ pub async fn serve(node: &Node, req: &CallRequest) {
 }
 
 async fn answer(node: &Node, req: &CallRequest) -> Result<Json, String> {
-    let args = args_of(&req.payload)?;
+    let args = params::call_args(&req.payload)
+        .filter(Json::is_object)
+        .ok_or("the arguments must be an object (JSON or CBOR)")?;
     let service = req.service.name.as_str();
     let call = service.strip_prefix("/rosapi/").unwrap_or(service);
     let name = || -> Result<String, String> {
         let n = args.get("name").and_then(Json::as_str).unwrap_or_default();
-        param_name(n)
+        params::param_name_or_root(n)
     };
     let master = &node.master;
     Ok(match call {
@@ -99,14 +102,7 @@ async fn answer(node: &Node, req: &CallRequest) -> Result<Json, String> {
             match master.call("getParam", vec![n.as_str().into()]).await {
                 Ok(v) => json!({"value": to_json(&v).to_string()}),
                 // Not set: the caller's default (a JSON text), `null` without one.
-                Err(ApiError::Refused { .. }) => {
-                    let default = args
-                        .get("default")
-                        .and_then(Json::as_str)
-                        .filter(|d| !d.is_empty())
-                        .unwrap_or("null");
-                    json!({"value": default})
-                }
+                Err(ApiError::Refused { .. }) => json!({"value": params::default_text(&args)}),
                 Err(e) => return Err(unreachable_master(&e)),
             }
         }
@@ -136,13 +132,7 @@ async fn answer(node: &Node, req: &CallRequest) -> Result<Json, String> {
         }
         "set_param" => {
             let n = name()?;
-            let text = match args.get("value") {
-                Some(Json::String(s)) => s.clone(),
-                Some(other) => other.to_string(),
-                None => return Err("missing argument 'value' (a JSON text)".into()),
-            };
-            let v: Json = serde_json::from_str(&text)
-                .map_err(|e| format!("value of {n} is not a JSON text: {e}"))?;
+            let (_, v) = params::value_to_set(&args, &n)?;
             let v = to_xmlrpc(&v).map_err(|e| format!("value of {n}: {e}"))?;
             master
                 .call("setParam", vec![n.as_str().into(), v])
@@ -164,35 +154,6 @@ async fn answer(node: &Node, req: &CallRequest) -> Result<Json, String> {
 
 fn unreachable_master(e: &ApiError) -> String {
     format!("the robot's ROS master did not answer: {e}")
-}
-
-/// The call's arguments as a JSON object, whatever encoding they came in.
-fn args_of(p: &Payload) -> Result<Json, String> {
-    let v: Json = match p.encoding {
-        Encoding::Json => serde_json::from_slice(&p.bytes).map_err(|e| e.to_string())?,
-        Encoding::Cbor => fleetlink_proto::rosbridge::convert::cbor_to_json(&p.bytes)
-            .ok()
-            .and_then(|j| serde_json::from_slice(&j).ok())
-            .ok_or("arguments are not valid CBOR")?,
-        other => return Err(format!("arguments in {other:?} are not understood here")),
-    };
-    if v.is_object() {
-        Ok(v)
-    } else {
-        Err("arguments must be an object".into())
-    }
-}
-
-/// A parameter name: leading `/` added, trailing `/` dropped; `/` alone is the whole tree.
-fn param_name(raw: &str) -> Result<String, String> {
-    let t = raw.trim();
-    if t.is_empty() {
-        return Err("missing parameter name".into());
-    }
-    if t == "/" {
-        return Ok("/".into());
-    }
-    fleetlink_relay::params::param_name(t)
 }
 
 /// An XML-RPC value as JSON. `base64` and dates are kept as their text.
@@ -265,8 +226,11 @@ mod tests {
             assert!(def.contains("---"));
         }
         assert!(!is_param_service("/rosapi/topics"));
-        assert_eq!(param_name("max_speed").unwrap(), "/max_speed");
-        assert_eq!(param_name("/").unwrap(), "/");
-        assert!(param_name("  ").is_err());
+        assert_eq!(
+            params::param_name_or_root("max_speed").unwrap(),
+            "/max_speed"
+        );
+        assert_eq!(params::param_name_or_root("/").unwrap(), "/");
+        assert!(params::param_name_or_root("  ").is_err());
     }
 }

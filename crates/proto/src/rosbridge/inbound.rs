@@ -228,26 +228,16 @@ pub struct Publish<'a> {
 }
 
 impl<'a> Publish<'a> {
-    /// A well-formed JSON `publish` (object `msg`, valid topic name), its envelope read in
-    /// one pass and its message a slice of `frame`; `None` for anything else, which
-    /// [`Request::from_json`] then parses with the precise error.
-    pub fn from_json_frame(frame: &'a Bytes) -> Option<Publish<'a>> {
-        let f: PublishFields<'a> = serde_json::from_slice(frame).ok()?;
-        Self::from_fields(f, frame.as_ptr(), frame)
-    }
-
-    /// [`Publish::from_json_frame`] for a frame whose text is known to be UTF-8 (a
-    /// WebSocket text frame, validated on arrival), so it is not checked again. `text`
-    /// must be a view of `frame`'s own bytes (`None` otherwise).
+    /// A well-formed JSON `publish` (object `msg`, valid topic name) from a frame whose
+    /// text is known to be UTF-8 (a WebSocket text frame, validated on arrival, so it is
+    /// not checked again): its envelope read in one pass, the topic borrowed, the message
+    /// a slice of `frame`. `text` must be a view of `frame`'s own bytes. `None` for
+    /// anything else, which [`Request::from_json`] then parses with the precise error.
     pub fn from_json_text(text: &'a str, frame: &Bytes) -> Option<Publish<'a>> {
         if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
             return None;
         }
         let f: PublishFields<'a> = serde_json::from_str(text).ok()?;
-        Self::from_fields(f, text.as_ptr(), frame)
-    }
-
-    fn from_fields(f: PublishFields<'a>, base: *const u8, frame: &Bytes) -> Option<Publish<'a>> {
         if f.op != "publish" {
             return None;
         }
@@ -260,16 +250,14 @@ impl<'a> Publish<'a> {
             Some(raw) => Some(serde_json::from_str::<Value>(raw.get()).ok()?),
             None => None,
         };
-        let at = msg.get().as_ptr() as usize - base as usize;
+        let at = msg.get().as_ptr() as usize - text.as_ptr() as usize;
         Some(Publish {
             id,
             topic: topic.into(),
             msg: Payload::json(frame.slice(at..at + msg.get().len())),
         })
     }
-}
 
-impl<'a> Publish<'a> {
     /// A CBOR `publish` (a definite-length map with text `op`, `topic`, a map `msg`,
     /// maybe `id`), its envelope walked header by header (`ciborium_ll`) without decoding
     /// the message: `msg` is a slice of `frame`. `None` for anything else (indefinite
@@ -398,24 +386,6 @@ impl<'a> CborCursor<'a> {
 }
 
 impl Request {
-    /// Parses a JSON text frame held in shared bytes. A well-formed `publish` (the
-    /// operation that carries nearly all traffic) takes a short path: its envelope is read
-    /// in one pass and its message is a slice of `frame`, not a copy. Everything else, and
-    /// any `publish` the short path does not accept, goes through [`Request::from_json`],
-    /// which gives the precise error.
-    pub fn from_json_frame(frame: &Bytes) -> Result<Request, ParseError> {
-        match Publish::from_json_frame(frame) {
-            Some(p) => Ok(Request {
-                id: p.id,
-                op: Op::Publish {
-                    topic: p.topic.into_owned(),
-                    msg: p.msg,
-                },
-            }),
-            None => Self::from_json(frame),
-        }
-    }
-
     /// Parses a JSON text frame.
     pub fn from_json(text: &[u8]) -> Result<Request, ParseError> {
         let value: Value = serde_json::from_slice(text)
@@ -847,7 +817,7 @@ mod tests {
         let frame = Bytes::from_static(
             br#"{"op": "publish", "topic": "/a", "id": {"n": [1]}, "msg": {"data": "h\u00e9"}, "x": 1}"#,
         );
-        let r = Request::from_json_frame(&frame).unwrap();
+        let r = from_json_frame(&frame).unwrap();
         assert_eq!(r.id, Some(serde_json::json!({"n": [1]})));
         let Op::Publish { topic, msg } = r.op else {
             panic!("not a publish")
@@ -881,8 +851,24 @@ mod tests {
         let frame = Bytes::from_static(br#"{"op":"publish","topic":"\/a","msg":{}}"#);
         let view = std::str::from_utf8(&frame).unwrap();
         assert!(Publish::from_json_text(view, &frame).is_none());
-        let r = Request::from_json_frame(&frame).unwrap();
+        let r = from_json_frame(&frame).unwrap();
         assert!(matches!(r.op, Op::Publish { topic, .. } if topic == "/a"));
+    }
+
+    /// What the rosbridge session does with a text frame: the publish short path, else
+    /// the full parse.
+    fn from_json_frame(frame: &Bytes) -> Result<Request, ParseError> {
+        let text = std::str::from_utf8(frame).expect("a text frame");
+        match Publish::from_json_text(text, frame) {
+            Some(p) => Ok(Request {
+                id: p.id,
+                op: Op::Publish {
+                    topic: p.topic.into_owned(),
+                    msg: p.msg,
+                },
+            }),
+            None => Request::from_json(frame),
+        }
     }
 
     fn cbor(v: &ciborium::Value) -> Vec<u8> {
@@ -1028,14 +1014,14 @@ mod tests {
         ] {
             let frame = Bytes::copy_from_slice(text.as_bytes());
             assert_eq!(
-                Request::from_json_frame(&frame),
+                from_json_frame(&frame),
                 Request::from_json(text.as_bytes()),
                 "{text}"
             );
         }
         let other = br#"{"op":"subscribe","id":7,"topic":"/a"}"#;
         assert_eq!(
-            Request::from_json_frame(&Bytes::from_static(other)),
+            from_json_frame(&Bytes::from_static(other)),
             Request::from_json(other)
         );
     }

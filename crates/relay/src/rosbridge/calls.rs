@@ -46,6 +46,22 @@ struct Made {
     robot: Option<String>,
 }
 
+impl Made {
+    /// A `call_service` of `name` (as the client wrote it).
+    fn service_call(name: &str, id: Option<&Value>, how: Answering, size: usize) -> Made {
+        Made {
+            id: id.cloned(),
+            name: name.to_owned(),
+            type_name: String::new(),
+            goal: false,
+            feedback: false,
+            how,
+            size,
+            robot: None,
+        }
+    }
+}
+
 struct Serving {
     call: CallId,
     name: TopicName,
@@ -205,16 +221,7 @@ impl Session {
             goal: false,
             goal_id: None,
         };
-        let made = Made {
-            id: id.cloned(),
-            name: service.to_owned(),
-            type_name: String::new(),
-            goal: false,
-            feedback: false,
-            how,
-            size,
-            robot: None,
-        };
+        let made = Made::service_call(service, id, how, size);
         if let Err(e) = self.start(&name, args, opts, made) {
             let text = format!("call_service {name}: {}", e.text);
             self.service_failed(service, id, text, how.cbor).await
@@ -787,14 +794,8 @@ impl Session {
             );
         }
         let made = Made {
-            id: id.cloned(),
-            name: service.to_owned(),
-            type_name: String::new(),
-            goal: false,
-            feedback: false,
-            how,
-            size,
             robot: Some(robot.to_owned()),
+            ..Made::service_call(service, id, how, size)
         };
         let opts = CallOptions {
             timeout: timeout_of(None),
@@ -819,18 +820,12 @@ impl Session {
         if robot.contains('/') || !FORWARDED_PARAMS.contains(&call) {
             return None;
         }
-        let args: Value = match args.encoding {
-            Encoding::Json => serde_json::from_slice(&args.bytes).ok()?,
-            Encoding::Cbor => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
-                .ok()
-                .and_then(|j| serde_json::from_slice(&j).ok())?,
-            _ => return None,
-        };
+        let args = crate::params::call_args(args)?;
         let raw = args.get("name").and_then(Value::as_str).unwrap_or_default();
-        let full = match raw.trim() {
+        // An invalid name is the provider's to refuse.
+        let full = match crate::params::param_name_or_root(raw).ok()?.as_str() {
             "/" => format!("/{robot}"),
-            // An invalid name is the provider's to refuse.
-            other => format!("/{robot}{}", crate::params::param_name(other).ok()?),
+            rel => format!("/{robot}{rel}"),
         };
         let op = if matches!(call, "set_param" | "delete_param") {
             GateOp::Publish

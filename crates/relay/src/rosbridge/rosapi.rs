@@ -283,16 +283,7 @@ fn params(
             may(&n, Op::Subscribe, visible)?;
             match lookup(&store.snapshot(), &n) {
                 Some(v) => json!({"value": v.to_string()}),
-                None => {
-                    // rosapi answers the caller's default (a JSON text) for a missing one,
-                    // `null` without one.
-                    let default = args
-                        .get("default")
-                        .and_then(Value::as_str)
-                        .filter(|d| !d.is_empty())
-                        .unwrap_or("null");
-                    json!({"value": default})
-                }
+                None => json!({"value": crate::params::default_text(args)}),
             }
         }
         "has_param" => {
@@ -316,16 +307,7 @@ fn params(
         "set_param" => {
             let n = name()?;
             may(&n, Op::Publish, visible)?;
-            let text = match args.get("value") {
-                Some(Value::String(s)) => s.clone(),
-                Some(other) => other.to_string(),
-                None => return Err("missing argument 'value' (a JSON text)".into()),
-            };
-            let v: Value = serde_json::from_str(&text)
-                .map_err(|e| format!("value of {n} is not a JSON text: {e}"))?;
-            if text.len() > 1 << 20 {
-                return Err(format!("value of {n} is larger than 1 MiB"));
-            }
+            let (text, v) = crate::params::value_to_set(args, &n)?;
             // An object sets the tree under the name, as rosparam does.
             let mut flat = Vec::new();
             flatten(&n, &v, &mut flat);

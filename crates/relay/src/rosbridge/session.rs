@@ -742,13 +742,7 @@ impl Session {
         id: Option<&Value>,
         how: super::calls::Answering,
     ) {
-        let args_json: Value = match args.encoding {
-            Encoding::Json => serde_json::from_slice(&args.bytes).unwrap_or(Value::Null),
-            _ => fleetlink_proto::rosbridge::convert::cbor_to_json(&args.bytes)
-                .ok()
-                .and_then(|j| serde_json::from_slice(&j).ok())
-                .unwrap_or(Value::Null),
-        };
+        let args_json = crate::params::call_args(args).unwrap_or(Value::Null);
         if let Some(forwarded) = self.forward_param(service, &args_json, id, how) {
             if let Err(e) = forwarded {
                 let reply = outbound::service_response(service, id, Value::String(e), false);
