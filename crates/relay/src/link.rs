@@ -24,6 +24,9 @@ use crate::outbox::Outbox;
 
 /// Ids of heartbeat `PING`s start here; lower ids are link-estimator probes.
 pub const HEARTBEAT_ID_BASE: u64 = 1 << 62;
+/// Most bulk bytes one round of a scheduled outbox's writer puts out before it looks at
+/// its queue and control frames again (its window usually stops it well before).
+const MAX_ROUND_BYTES: usize = 1 << 20;
 /// How often an idle writer looks whether an estimator probe is due.
 const PROBE_TICK: Duration = Duration::from_millis(50);
 
@@ -379,50 +382,64 @@ pub async fn write_link<K>(
             }
         }
         sequences.retain(|s| !s.is_empty());
-        // 2. One chunk from every lane in progress, while the link's window allows.
+        // 2. Chunks from the lanes in progress, a chunk from each in turn, while the
+        // link's window allows. A plain outbox's lanes take one turn per round, so small
+        // messages queued meanwhile go out between chunks. A scheduled outbox's window
+        // already bounds what a round may write (about `QUEUE_TARGET` of link time), so
+        // its lanes take turns until the window is full and the round ends in one flush:
+        // a fast link is not driven one chunk per system call.
         let mut gated: Option<Option<Instant>> = None;
-        let mut i = 0;
-        while i < lanes.len() {
-            if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
-                return;
-            }
-            let lane = &mut lanes[i];
-            if !lane.is_done() {
-                let now = Instant::now();
-                if let Err(wake) = outbox.bulk_check(now) {
-                    gated = Some(wake);
-                    break;
-                }
-                let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
-                let (f, n) = lane.next_frame(chunk);
-                if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
+        let mut round_bytes = 0usize;
+        'turns: loop {
+            let mut wrote = false;
+            let mut i = 0;
+            while i < lanes.len() {
+                if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
                     return;
                 }
-                outbox.on_written(n);
-            }
-            if lane.is_done() {
-                // Done: start the next waiting message of the same topic, if any.
-                match lane.waiting.pop_front() {
-                    Some(m) => {
-                        let (topic, sized) = (lane.topic, lane.cached.is_none());
-                        let waiting = std::mem::take(&mut lane.waiting);
-                        let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
-                        *lane = Lane {
-                            waiting,
-                            ..Lane::start(topic, m, sized)
-                        };
-                        if !carried {
-                            lane.skip();
+                let lane = &mut lanes[i];
+                if !lane.is_done() {
+                    let now = Instant::now();
+                    if let Err(wake) = outbox.bulk_check(now) {
+                        gated = Some(wake);
+                        break 'turns;
+                    }
+                    let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
+                    let (f, n) = lane.next_frame(chunk);
+                    if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
+                        return;
+                    }
+                    outbox.on_written(n);
+                    round_bytes += f.len();
+                    wrote = true;
+                }
+                if lane.is_done() {
+                    // Done: start the next waiting message of the same topic, if any.
+                    match lane.waiting.pop_front() {
+                        Some(m) => {
+                            let (topic, sized) = (lane.topic, lane.cached.is_none());
+                            let waiting = std::mem::take(&mut lane.waiting);
+                            let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
+                            *lane = Lane {
+                                waiting,
+                                ..Lane::start(topic, m, sized)
+                            };
+                            if !carried {
+                                lane.skip();
+                            }
+                        }
+                        None => {
+                            outbox.hold(lane.topic.0, false, Instant::now());
+                            lanes.swap_remove(i);
+                            continue;
                         }
                     }
-                    None => {
-                        outbox.hold(lane.topic.0, false, Instant::now());
-                        lanes.swap_remove(i);
-                        continue;
-                    }
                 }
+                i += 1;
             }
-            i += 1;
+            if !wrote || !outbox.is_scheduled() || round_bytes >= MAX_ROUND_BYTES {
+                break;
+            }
         }
         // 3. A batch from the outbox.
         let taken = outbox.take(512, 4 << 20, Instant::now());

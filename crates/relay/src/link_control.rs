@@ -24,8 +24,9 @@
 //! radio retransmission): a late acknowledgement only delays the next chunk.
 //!
 //! Chunks are sized to the link too: about [`CHUNK_TIME`] (2 ms) of the delivered rate,
-//! between 1 and 16 KiB, so a priority message waits behind at most a few milliseconds of bulk
-//! data even at 4 Mbit/s. Small frames are never held back (they count in the window, so
+//! between 1 and 64 KiB (16 KiB until a rate is measured), so a priority message waits
+//! behind at most a few milliseconds of bulk data even at 4 Mbit/s, and a fast link is
+//! not cut into more pieces than it needs. Small frames are never held back (they count in the window, so
 //! bulk yields to them).
 //!
 //! The hub's capacity share, when set, caps bulk frames further with a token bucket.
@@ -41,8 +42,10 @@ pub const QUEUE_TARGET: Nanos = Nanos::from_millis(5);
 pub const CHUNK_TIME: Nanos = Nanos::from_millis(2);
 /// Smallest chunk.
 pub const MIN_CHUNK: usize = 1024;
-/// Largest chunk (and the chunk size before any rate is known).
-pub const MAX_CHUNK: usize = DEFAULT_CHUNK_SIZE;
+/// Largest chunk: 2 ms at 32 MB/s and more.
+pub const MAX_CHUNK: usize = 64 * 1024;
+/// The chunk size before any rate is measured.
+pub const FIRST_CHUNK: usize = DEFAULT_CHUNK_SIZE;
 /// Delivered-rate slots: 50 ms each, the best of the last ten counts.
 const SLOT: Nanos = Nanos::from_millis(50);
 const SLOTS: usize = 10;
@@ -93,7 +96,7 @@ impl ShareBucket {
 }
 
 fn burst(rate: f64) -> f64 {
-    (rate * 0.005).max(MAX_CHUNK as f64)
+    (rate * 0.005).max(FIRST_CHUNK as f64)
 }
 
 /// Why a bulk frame may not go now.
@@ -197,7 +200,7 @@ impl LinkControl {
     pub fn chunk_size(&self, now: Nanos) -> usize {
         let rate = self.delivered_rate(now);
         if rate <= 0.0 {
-            return MAX_CHUNK;
+            return FIRST_CHUNK;
         }
         ((rate * CHUNK_TIME.as_secs_f64()) as usize).clamp(MIN_CHUNK, MAX_CHUNK)
     }
@@ -325,7 +328,7 @@ mod tests {
     #[test]
     fn chunks_follow_the_delivered_rate() {
         let mut c = control();
-        assert_eq!(c.chunk_size(Nanos::ZERO), MAX_CHUNK);
+        assert_eq!(c.chunk_size(Nanos::ZERO), FIRST_CHUNK);
         // 4 Mbit/s delivered over a full slot.
         for i in 0..50u64 {
             c.on_written(500, Nanos::from_millis(i));
@@ -341,8 +344,8 @@ mod tests {
         let mut c = control();
         c.set_share(Some(10_000.0), Nanos::ZERO);
         assert!(c.bulk_check(Nanos::ZERO).is_ok());
-        c.on_written(MAX_CHUNK, Nanos::ZERO);
-        c.on_acked_bytes(MAX_CHUNK as u64, Nanos::ZERO);
+        c.on_written(FIRST_CHUNK, Nanos::ZERO);
+        c.on_acked_bytes(FIRST_CHUNK as u64, Nanos::ZERO);
         c.on_written(100_000, Nanos::ZERO);
         c.on_acked_bytes(100_000, Nanos::ZERO);
         match c.bulk_check(Nanos::ZERO) {

@@ -380,6 +380,12 @@ impl Outbox {
         }
     }
 
+    /// Whether this outbox schedules its link (the agent's uplink) rather than serving
+    /// queues in turn (the hub's links).
+    pub fn is_scheduled(&self) -> bool {
+        self.scheduled
+    }
+
     /// Whether a bulk frame may be written now; if not, when it may (`None`: once an
     /// acknowledgement arrives, which wakes the writer). Always yes for a plain outbox.
     pub fn bulk_check(&self, now: Instant) -> Result<(), Option<Instant>> {

@@ -417,3 +417,156 @@ fn a_topic_kept_only_by_a_pattern_subscription_is_not_listed() {
         .unwrap();
     assert_eq!(listed(&router), Some(true));
 }
+
+/// A sink that hands over what was fed to it as one batch per flush: what the writer
+/// would put on the socket in one go.
+struct FlushBatches {
+    fed: Vec<WsMessage>,
+    tx: tokio::sync::mpsc::UnboundedSender<Vec<WsMessage>>,
+}
+
+impl futures_util::Sink<WsMessage> for FlushBatches {
+    type Error = WsError;
+    fn poll_ready(
+        self: std::pin::Pin<&mut Self>,
+        _: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<Result<(), WsError>> {
+        std::task::Poll::Ready(Ok(()))
+    }
+    fn start_send(mut self: std::pin::Pin<&mut Self>, m: WsMessage) -> Result<(), WsError> {
+        self.fed.push(m);
+        Ok(())
+    }
+    fn poll_flush(
+        mut self: std::pin::Pin<&mut Self>,
+        _: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<Result<(), WsError>> {
+        if !self.fed.is_empty() {
+            let batch = std::mem::take(&mut self.fed);
+            if self.tx.send(batch).is_err() {
+                return std::task::Poll::Ready(Err(WsError::ConnectionClosed));
+            }
+        }
+        std::task::Poll::Ready(Ok(()))
+    }
+    fn poll_close(
+        self: std::pin::Pin<&mut Self>,
+        cx: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<Result<(), WsError>> {
+        self.poll_flush(cx)
+    }
+}
+
+/// Issues 10 and 11: on the agent's uplink a large message goes out as many chunks as the
+/// link's window allows in one flush (one system call), not one flush per chunk, and the
+/// next window's worth only after the hub acknowledges.
+#[tokio::test]
+async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
+    use fleetlink_qos::{SchedulerConfig, TopicQos};
+    use fleetlink_relay::link_control::FIRST_CHUNK;
+    use fleetlink_relay::reliable::ReliableOut;
+    use std::time::Instant;
+
+    let router = Arc::new(Router::default());
+    let (link, outbox) = router.connect_with(
+        ClientKind::Internal {
+            role: "uplink".into(),
+        },
+        None,
+        |id| {
+            Outbox::scheduled(
+                id,
+                SchedulerConfig::default(),
+                Arc::new(|_| TopicQos::default()),
+                ReliableOut::in_memory(),
+            )
+        },
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let cloud = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/cloud").unwrap(),
+            Schema::named("t/Blob"),
+            false,
+        )
+        .unwrap();
+    let (tx, mut batches) = tokio::sync::mpsc::unbounded_channel();
+    let sink = FlushBatches {
+        fed: Vec::new(),
+        tx,
+    };
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox.clone(),
+        ctrl_rx,
+        Duration::from_secs(3600),
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+    ));
+    let size = 8 * FIRST_CHUNK;
+    cloud.publish(publisher, 1, 0, Payload::json(Bytes::from(vec![7u8; size])));
+    let chunks_in = |batch: &[WsMessage]| -> Vec<(u64, usize)> {
+        let mut out = Vec::new();
+        for m in batch {
+            let WsMessage::Binary(b) = m else { continue };
+            for f in frame::frames(b) {
+                if let Frame::Chunk { offset, data, .. } = f.expect("valid frames") {
+                    out.push((offset, data.len()));
+                }
+            }
+        }
+        out
+    };
+    let next_batch_with_chunks =
+        async |batches: &mut tokio::sync::mpsc::UnboundedReceiver<Vec<WsMessage>>| loop {
+            let b = tokio::time::timeout(Duration::from_secs(10), batches.recv())
+                .await
+                .expect("the writer flushes")
+                .expect("open");
+            let c = chunks_in(&b);
+            if !c.is_empty() {
+                return c;
+            }
+        };
+    // Before any rate is measured the window is two first-size chunks: both go out in the
+    // first flush, and nothing more until the hub acknowledges them.
+    let first = next_batch_with_chunks(&mut batches).await;
+    assert_eq!(
+        first,
+        vec![(0, FIRST_CHUNK), (FIRST_CHUNK as u64, FIRST_CHUNK)],
+        "one flush carries the window's chunks"
+    );
+    tokio::time::sleep(Duration::from_millis(100)).await;
+    assert!(
+        chunks_in(&batches.try_recv().unwrap_or_default()).is_empty(),
+        "nothing beyond the window before an acknowledgement"
+    );
+    let mut received: usize = first.iter().map(|c| c.1).sum();
+    let mut offsets: Vec<u64> = first.iter().map(|c| c.0).collect();
+    let mut acked = 0;
+    while received < size {
+        // The hub acknowledges what arrived.
+        outbox.on_acked(0, (received - acked) as u64, Instant::now());
+        acked = received;
+        let more = next_batch_with_chunks(&mut batches).await;
+        received += more.iter().map(|c| c.1).sum::<usize>();
+        assert!(
+            more.len() >= 2 || received == size,
+            "a window's worth per flush: {more:?}"
+        );
+        offsets.extend(more.iter().map(|c| c.0));
+    }
+    assert_eq!(received, size);
+    assert!(offsets.windows(2).all(|w| w[0] < w[1]), "{offsets:?}");
+    writer.abort();
+}

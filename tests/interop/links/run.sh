@@ -87,6 +87,11 @@ ip -n "$robot_ns" addr add "$robot_ip/30" dev vr
 for ns in "$hub_ns" "$robot_ns"; do ip -n "$ns" link set lo up; done
 ip -n "$hub_ns" link set vh up
 ip -n "$robot_ns" link set vr up
+# The robot's uplink leaves in wire-sized packets, as it would over a radio. With
+# segmentation offload a veth hands tbf packets of up to 64 KB; one already queued when the
+# ramp lowers the rate (and with it the bucket) can be larger than the new bucket, which
+# tbf then never sends, and everything behind it waits until the rate rises again.
+ip -n "$robot_ns" link set vr gso_max_size 1500 gso_max_segs 1
 echo "namespaces: $hub_ns (hub, vh $hub_ip) <-> $robot_ns (robot, vr $robot_ip)"
 
 # The driver runs in the hub namespace (the hub is on its loopback) and starts the
