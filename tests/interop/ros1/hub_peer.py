@@ -223,6 +223,14 @@ def check_params(args):
     rosapi(ros, "set_param", name="/fleet/limit", value="3")
     got = rosapi(ros, "get_param", name="/fleet/limit")
     check(got.get("value") == "3", f"a hub parameter stays the hub's: {got}")
+    # The listing has both: the robot's master's names in its namespace, and the hub's.
+    names = rosapi(ros, "get_param_names").get("names", [])
+    check(f"/{r}/max_speed" in names and "/fleet/limit" in names
+          and f"/{r}/limits/a" not in names,
+          f"get_param_names lists the robot's names (/{r}/max_speed, not the deleted "
+          f"/{r}/limits/a) and the hub's (/fleet/limit): {names}")
+    check(f"/{r}/run_id" in names,
+          f"the robot master's own parameters are listed too: {names}")
     ros.close()
 
 

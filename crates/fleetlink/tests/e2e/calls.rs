@@ -500,7 +500,7 @@ fn robot_parameters(agent: &TestAgent) -> std::sync::Arc<std::sync::Mutex<Vec<St
     );
     let (peer, mut rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    for s in ["get_param", "set_param", "search_param"] {
+    for s in ["get_param", "set_param", "search_param", "get_param_names"] {
         router.calls.advertise(
             client,
             fleetlink_relay::TopicName::parse(&format!("/rosapi/{s}")).unwrap(),
@@ -521,6 +521,7 @@ fn robot_parameters(agent: &TestAgent) -> std::sync::Arc<std::sync::Mutex<Vec<St
                 "/rosapi/get_param" if name == "/max_speed" => json!({"value": "1.5"}),
                 "/rosapi/get_param" => json!({"value": "null"}),
                 "/rosapi/search_param" => json!({"global_name": name}),
+                "/rosapi/get_param_names" => json!({"names": ["/max_speed", "/nav/rate"]}),
                 _ => json!({}),
             };
             router.calls.respond(
@@ -593,6 +594,14 @@ async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
         .call("/rosapi/get_param", json!({"name": "/r9/x"}), "h2")
         .await;
     assert_eq!(r["values"]["value"], "2", "{r}");
+    // The listing of names has the hub's and the robot's, in the hub's names.
+    let r = op.call("/rosapi/get_param_names", json!({}), "n").await;
+    assert_eq!(r["result"], true, "{r}");
+    assert_eq!(
+        r["values"]["names"],
+        json!(["/r1/max_speed", "/r1/nav/rate", "/r9/x"]),
+        "{r}"
+    );
     // Another robot may neither read nor change r1's parameters; r1 never hears of it.
     let before = asked.lock().unwrap().len();
     let other = format!("ws://{}/?token={}", hub.addr, hub.robot_token("r2"));
@@ -609,11 +618,25 @@ async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
     let args = json!({"name": "/r1/max_speed", "value": "9"});
     let r = r2.call("/rosapi/set_param", args, "y").await;
     refused(&r, "not allowed to change parameter /r1/max_speed");
+    // Nor does it see r1's names in a listing (r1 is asked, the ACL filters).
+    let r = r2.call("/rosapi/get_param_names", json!({}), "l").await;
+    assert_eq!(r["result"], true, "{r}");
+    let names = r["values"]["names"].as_array().expect("names").clone();
+    assert!(
+        names
+            .iter()
+            .all(|n| !n.as_str().unwrap().starts_with("/r1/")),
+        "{r}"
+    );
     // Calling r1's parameter service by its own name is held to the same rule.
     let args = json!({"name": "max_speed"});
     let r = r2.call("/r1/rosapi/get_param", args, "z").await;
     refused(&r, "not allowed to read parameter /r1/max_speed");
-    assert_eq!(asked.lock().unwrap().len(), before);
+    assert_eq!(
+        asked.lock().unwrap().len(),
+        before + 1,
+        "r1 heard only of the listing"
+    );
     // The operator may, by either name.
     let args = json!({"name": "/max_speed"});
     let r = op.call("/r1/rosapi/get_param", args, "direct").await;

@@ -44,6 +44,8 @@ struct Made {
     size: usize,
     /// A parameter call forwarded to this robot's agent: its answer names the robot.
     robot: Option<String>,
+    /// Part of a `get_param_names` listing (the key of its [`Gathering`]).
+    gather: Option<u64>,
 }
 
 impl Made {
@@ -58,9 +60,23 @@ impl Made {
             how,
             size,
             robot: None,
+            gather: None,
         }
     }
 }
+
+/// A `get_param_names` waiting for the lists of the robots that provide parameters.
+struct Gathering {
+    id: Option<Value>,
+    how: Answering,
+    /// Names so far: the hub's own, then each robot's as it answers.
+    names: Vec<String>,
+    /// Robots that have not answered yet.
+    pending: usize,
+}
+
+/// How long a listing of parameter names waits for a robot's own list.
+const ROBOT_NAMES_WAIT: Duration = Duration::from_secs(5);
 
 struct Serving {
     call: CallId,
@@ -79,6 +95,8 @@ pub struct SessionCalls {
     serving: HashMap<String, Serving>,
     serving_by_call: HashMap<CallId, String>,
     provided: HashSet<(TopicName, bool)>,
+    gathering: HashMap<u64, Gathering>,
+    next_gathering: u64,
 }
 
 /// `action_msgs/GoalStatus` codes.
@@ -438,14 +456,9 @@ impl Session {
             goal_id: None,
         };
         let made = Made {
-            id: id.cloned(),
-            name: action.to_owned(),
-            type_name: String::new(),
             goal: true,
             feedback,
-            how,
-            size,
-            robot: None,
+            ..Made::service_call(action, id, how, size)
         };
         match self.start(&name, args, opts, made) {
             Ok(call) => {
@@ -643,6 +656,9 @@ impl Session {
                 let Some(m) = self.calls.made.remove(&id) else {
                     return;
                 };
+                if let Some(g) = m.gather {
+                    return self.gathered(g, m, status, payload, text).await;
+                }
                 if let Some(key) = m.id.as_ref().map(id_key)
                     && self.calls.goals.get(&key) == Some(&id)
                 {
@@ -732,7 +748,8 @@ impl Session {
 }
 
 /// The parameter services a robot's agent may answer for names in its namespace.
-/// (`get_param_names` has no name to route by: it lists the hub's own parameters.)
+/// (`get_param_names` has no name to route by: the hub asks every robot that provides
+/// parameters, see [`Session::gather_param_names`].)
 const FORWARDED_PARAMS: [&str; 5] = [
     "get_param",
     "set_param",
@@ -811,6 +828,126 @@ impl Session {
 }
 
 impl Session {
+    /// `get_param_names` when robots provide parameters: `own` (the hub's names, already
+    /// held to the ACL) and, as each robot answers, the robot's names in its namespace
+    /// (`/robot1/max_speed`) under the same ACL. Answered once every robot has answered or
+    /// [`ROBOT_NAMES_WAIT`] has passed; a robot that fails is left out of the list.
+    /// `false`: no robot provides parameters (the caller answers with `own`).
+    pub(super) fn gather_param_names(
+        &mut self,
+        own: Vec<String>,
+        id: Option<&Value>,
+        how: Answering,
+    ) -> bool {
+        let providers: Vec<(String, TopicName)> = self
+            .router
+            .calls
+            .services()
+            .iter()
+            .filter_map(|s| {
+                let robot = s
+                    .name
+                    .as_str()
+                    .strip_prefix('/')?
+                    .strip_suffix("/rosapi/get_param_names")?;
+                (!robot.contains('/')).then(|| (robot.to_owned(), s.name.clone()))
+            })
+            .collect();
+        if providers.is_empty() {
+            return false;
+        }
+        let key = self.calls.next_gathering;
+        self.calls.next_gathering += 1;
+        let mut pending = 0;
+        for (robot, provider) in providers {
+            let made = Made {
+                robot: Some(robot.clone()),
+                gather: Some(key),
+                ..Made::service_call("/rosapi/get_param_names", id, how, 2)
+            };
+            let opts = CallOptions {
+                timeout: Some(ROBOT_NAMES_WAIT),
+                goal: false,
+                goal_id: None,
+            };
+            match self.start(&provider, Payload::json(&b"{}"[..]), opts, made) {
+                Ok(_) => pending += 1,
+                Err(e) => tracing::debug!("parameter names of robot {robot}: {}", e.text),
+            }
+        }
+        if pending == 0 {
+            return false;
+        }
+        let gathering = Gathering {
+            id: id.cloned(),
+            how,
+            names: own,
+            pending,
+        };
+        self.calls.gathering.insert(key, gathering);
+        true
+    }
+
+    /// One robot's answer to a `get_param_names` listing; the last one sends the list.
+    async fn gathered(
+        &mut self,
+        key: u64,
+        m: Made,
+        status: CallStatus,
+        payload: Option<Payload>,
+        text: String,
+    ) {
+        let robot = m.robot.unwrap_or_default();
+        let names = payload
+            .filter(|_| status == CallStatus::Ok)
+            .and_then(|p| serde_json::from_slice::<Value>(&p.bytes).ok())
+            .and_then(|v| match v.get("names") {
+                Some(Value::Array(a)) => Some(a.clone()),
+                _ => None,
+            });
+        let Some(g) = self.calls.gathering.get_mut(&key) else {
+            return;
+        };
+        g.pending -= 1;
+        match names {
+            Some(names) => {
+                for n in names.iter().filter_map(Value::as_str) {
+                    let full = match n {
+                        "/" => format!("/{robot}"),
+                        n if n.starts_with('/') => format!("/{robot}{n}"),
+                        n => format!("/{robot}/{n}"),
+                    };
+                    g.names.push(full);
+                }
+            }
+            None => tracing::info!(
+                "parameter names of robot {robot} left out of a listing: {}",
+                if text.is_empty() {
+                    status.as_str().replace('_', " ")
+                } else {
+                    text
+                }
+            ),
+        }
+        if g.pending > 0 {
+            return;
+        }
+        let g = self.calls.gathering.remove(&key).expect("present");
+        let mut names = g.names;
+        if let Some(gate) = self.gate.as_mut() {
+            names.retain(|n| gate.allows(n, GateOp::Subscribe));
+        }
+        names.sort_unstable();
+        names.dedup();
+        let reply = outbound::service_response(
+            "/rosapi/get_param_names",
+            g.id.as_ref(),
+            json!({ "names": names }),
+            true,
+        );
+        self.send_value(&reply, g.how.cbor).await;
+    }
+
     /// A robot's parameter service called by its own name (`/robot1/rosapi/set_param`
     /// with `/max_speed`) is held to the ACL the hub's forwarding applies: the parameter's
     /// full name (`/robot1/max_speed`), `subscribe` to read, `publish` to change. The

@@ -771,6 +771,20 @@ impl Session {
             gate.finished(&name, GateOp::Publish, size, &what);
         }
         let reply = match answer {
+            Answer::Values(v) if service == "/rosapi/get_param_names" => {
+                // Robots that provide parameters add theirs; answered when they have.
+                let own = match v.get("names") {
+                    Some(Value::Array(a)) => a
+                        .iter()
+                        .filter_map(|n| n.as_str().map(str::to_owned))
+                        .collect(),
+                    _ => Vec::new(),
+                };
+                if self.gather_param_names(own, id, how) {
+                    return;
+                }
+                outbound::service_response(service, id, v, true)
+            }
             Answer::Values(v) => outbound::service_response(service, id, v, true),
             Answer::Failed(e) => outbound::service_response(service, id, Value::String(e), false),
             Answer::NotRosapi => outbound::service_response(
