@@ -10,6 +10,7 @@
 
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock, RwLock, RwLockReadGuard};
 
 use crate::bundled;
@@ -157,6 +158,36 @@ fn action_wrappers(name: &TypeName) -> Vec<MsgSpec> {
 #[derive(Clone, Default)]
 pub struct Registry {
     tables: Arc<RwLock<Tables>>,
+    /// The tables' generation, readable without the lock: [`Registry::is_current`] runs
+    /// once per converted message.
+    generation: Arc<AtomicU64>,
+}
+
+/// The tables, written; the generation is published when the writing ends.
+struct Writing<'a> {
+    guard: std::sync::RwLockWriteGuard<'a, Tables>,
+    generation: &'a AtomicU64,
+}
+
+impl std::ops::Deref for Writing<'_> {
+    type Target = Tables;
+    fn deref(&self) -> &Tables {
+        &self.guard
+    }
+}
+
+impl std::ops::DerefMut for Writing<'_> {
+    fn deref_mut(&mut self) -> &mut Tables {
+        &mut self.guard
+    }
+}
+
+impl Drop for Writing<'_> {
+    fn drop(&mut self) {
+        // Still under the lock: generations are published in order.
+        self.generation
+            .store(self.guard.generation, Ordering::Release);
+    }
 }
 
 impl std::fmt::Debug for Registry {
@@ -203,6 +234,7 @@ impl Registry {
         });
         Registry {
             tables: Arc::new(RwLock::new(tables.clone())),
+            generation: Arc::new(AtomicU64::new(tables.generation)),
         }
     }
 
@@ -212,8 +244,11 @@ impl Registry {
         self.tables.read().unwrap_or_else(|e| e.into_inner())
     }
 
-    fn write(&self) -> std::sync::RwLockWriteGuard<'_, Tables> {
-        self.tables.write().unwrap_or_else(|e| e.into_inner())
+    fn write(&self) -> Writing<'_> {
+        Writing {
+            guard: self.tables.write().unwrap_or_else(|e| e.into_inner()),
+            generation: &self.generation,
+        }
     }
 
     /// Registers one interface file's text (`name` says msg, srv or action).
@@ -421,14 +456,14 @@ impl Registry {
     pub fn resolve(&self, type_name: &str, dialect: Dialect) -> Result<Resolved, RegistryError> {
         // Read first: a change between the two steps makes the result look stale, never
         // the other way round.
-        let generation = self.read().generation;
+        let generation = self.generation.load(Ordering::Acquire);
         let layout = self.layout(type_name, dialect)?;
         Ok(Resolved { layout, generation })
     }
 
     /// False once a definition has changed since `r` was resolved.
     pub fn is_current(&self, r: &Resolved) -> bool {
-        self.read().generation == r.generation
+        self.generation.load(Ordering::Acquire) == r.generation
     }
 
     /// Every registered message type (both tables), sorted, in `pkg/kind/T` form.
