@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
 # Peers of the ROS 2 bridge interop suite (tests/interop/ros2): Cyclone DDS's Python
 # binding and rosbags (tests/interop/ros2/requirements.txt) in the repo's .venv (made by
-# 10-python-venv.sh), and `ip` (iproute2) for the suite's network namespace. Idempotent:
+# 10-python-venv.sh), Fast DDS (libfastrtps-dev, g++), and `ip` (iproute2) for the
+# suite's network namespace. Idempotent:
 # quiet and quick when everything is already there; waits for another apt's lock.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 req=tests/interop/ros2/requirements.txt
 stamp=.venv/.fleetlink-ros2-requirements
 
-if ! command -v ip >/dev/null; then
+# Debian packages: iproute2, and Fast DDS (eProsima's libfastrtps, the DDS under ROS 2's
+# default middleware) with a C++ compiler for the suite's Fast DDS node (fastdds_peer.cpp).
+apt_missing=()
+command -v ip >/dev/null || apt_missing+=(iproute2)
+command -v g++ >/dev/null || apt_missing+=(g++)
+[ -f /usr/include/fastdds/dds/domain/DomainParticipant.hpp ] || apt_missing+=(libfastrtps-dev)
+if [ ${#apt_missing[@]} -ne 0 ]; then
     sudo_cmd=()
     [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
     "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 update
     DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600 \
-        install -y --no-install-recommends iproute2
+        install -y --no-install-recommends "${apt_missing[@]}"
 fi
 
 [ -x .venv/bin/python ] || { echo "ros2 peers: .venv missing; run scripts/setup.d/10-python-venv.sh first" >&2; exit 1; }

@@ -25,6 +25,11 @@ Modes (all take --hub-url URL --robot NAME):
   check-gone    /<robot>/late_topic leaves the hub's topic list and has no publisher there
                 (rosapi topics, publishers) once its only writer's participant is gone
                 (killed: DDS notices when its lease ends).
+  check-fastdds --peer-log FILE
+                Fast DDS (fastdds_peer, ROS 2's default middleware's DDS) both ways:
+                /<robot>/fdds_up (std_msgs/msg/String, "fastdds N") arrives in order;
+                then /<robot>/fdds_down ("from the hub N") is published at 10 Hz until
+                FILE has the peer's "down: from the hub" line (15 s at most).
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -242,6 +247,44 @@ def wait_for(cond, timeout):
     return True
 
 
+def check_fastdds(args):
+    ros = connect(args.hub_url)
+    r = f"/{args.robot}"
+    got = queue.Queue()
+    up = roslibpy.Topic(ros, f"{r}/fdds_up", "std_msgs/msg/String")
+    up.subscribe(lambda m: got.put(m.get("data")))
+    texts = []
+    deadline = time.monotonic() + WAIT
+    while len(texts) < 5 and time.monotonic() < deadline:
+        try:
+            texts.append(got.get(timeout=max(0.1, deadline - time.monotonic())))
+        except queue.Empty:
+            break
+    up.unsubscribe()
+    numbers = [int(t.split()[1]) for t in texts if isinstance(t, str) and t.startswith("fastdds ")]
+    if check(len(texts) >= 5, f"{r}/fdds_up from the Fast DDS writer arrives: {texts}"):
+        check(len(numbers) == len(texts) and numbers == sorted(numbers)
+              and numbers[-1] - numbers[0] == len(numbers) - 1,
+              f"its values are the writer's, in order, none missing: {texts}")
+    down = roslibpy.Topic(ros, f"{r}/fdds_down", "std_msgs/msg/String")
+    down.advertise()
+    reached = False
+    deadline = time.monotonic() + 15
+    i = 0
+    while time.monotonic() < deadline and not reached:
+        down.publish(roslibpy.Message({"data": f"from the hub {i}"}))
+        i += 1
+        time.sleep(0.1)
+        with open(args.peer_log) as f:
+            reached = any(line.startswith("down: from the hub") for line in f)
+    with open(args.peer_log) as f:
+        lines = [line.strip() for line in f if line.startswith("down:")]
+    check(reached and all(line.startswith("down: from the hub ") for line in lines),
+          f"{r}/fdds_down reaches the Fast DDS reader as std_msgs/msg/String "
+          f"({i} published): {lines[:5]}")
+    down.unadvertise()
+
+
 def check_late(args):
     name = f"/{args.robot}/late_topic"
     m = first(connect(args.hub_url), name, "std_msgs/msg/String")
@@ -348,17 +391,20 @@ def serve(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib"])
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds"])
     p.add_argument("out", nargs="?")
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
     p.add_argument("--chatter-stop")
+    p.add_argument("--peer-log")
     args = p.parse_args()
     if args.mode == "serve" and not (args.out and args.chatter_stop):
         p.error("serve needs OUT and --chatter-stop")
+    if args.mode == "check-fastdds" and not args.peer_log:
+        p.error("check-fastdds needs --peer-log")
     {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
      "check-action": check_action, "check-late": check_late, "check-gone": check_gone,
-     "serve-fib": serve_fib}[args.mode](args)
+     "serve-fib": serve_fib, "check-fastdds": check_fastdds}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

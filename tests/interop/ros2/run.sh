@@ -22,6 +22,9 @@
 #   7. a participant started after the agent publishes /late_topic: it reaches the hub;
 #   8. /chatter both ways: after both sides stop and a quiet period, every message was
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
+#   8b. Fast DDS (Debian's libfastrtps, under ROS 2's default middleware): a C++ node
+#      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, which reaches roslibpy
+#      in order, and reads rt/fdds_down, which roslibpy publishes at the hub;
 #   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
@@ -178,8 +181,8 @@ name: $robot
 token: $robot_token
 local_rosbridge: null
 ros2:
-  publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic], exclude: [] }
-  subscribe: [/cmd_vel, /announce, /chatter]
+  publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up], exclude: [] }
+  subscribe: [/cmd_vel, /announce, /chatter, /fdds_down]
   services: { expose: [/add_two_ints], offer: ["/cloud/.*"] }
   actions: { expose: [/fibonacci], offer: ["/cloud/.*"] }
 EOF
@@ -279,6 +282,19 @@ print("; ".join(problems) if problems else
 EOF
 )" || loop_report="the chatter evaluation failed: $loop_report"
 case "$loop_report" in ok:*) echo "$loop_report" ;; *) fail "loop check: $loop_report" ;; esac
+
+step "8b. Fast DDS (the DDS under ROS 2's default middleware) topics both ways"
+# eProsima's libfastrtps from Debian, in a small C++ node (fastdds_peer.cpp).
+if ! g++ -O1 -std=c++17 -o "$tmp/fastdds_peer" "$here/fastdds_peer.cpp" -lfastrtps -lfastcdr 2>"$tmp/fastdds_build.log"; then
+    fail "fastdds_peer.cpp did not build (libfastrtps-dev from scripts/setup.d/35-ros2-peers.sh)"
+    show_log fastdds_build
+else
+    ns_bg "$tmp/fastdds_peer" fdds_up fdds_down 600 60 >"$tmp/fastdds.log" 2>&1 &
+    pids+=($!)
+    ns_run 60 "$python" "$here/hub_peer.py" check-fastdds --hub-url "$hub_url" --robot "$robot" \
+        --peer-log "$tmp/fastdds.log" || { fail "check-fastdds (Fast DDS writer and reader)"; show_log fastdds; }
+    ns_kill "$tmp/fastdds_peer"
+fi
 
 step "9. restarts: a participant, then the agent"
 # The late participant killed (no goodbye): DDS forgets it when its lease ends (Cyclone:
