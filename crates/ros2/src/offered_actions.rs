@@ -227,9 +227,26 @@ async fn serve_requests(
     reader: RawReader,
 ) {
     let mut samples = reader.async_sample_stream();
+    let mut told = false;
     while let Some(r) = samples.next().await {
         let Ok(sample) = r else { continue };
-        if bridge.is_own(sample.sample_info().writer_guid()) {
+        let info = sample.sample_info();
+        if bridge.is_own(info.writer_guid()) {
+            continue;
+        }
+        // Fast DDS's mapping has no header in the sample: its first bytes are the goal's.
+        if info.related_sample_identity().is_some()
+            || crate::services::Mapping::of(info.writer_guid()) == crate::services::Mapping::FastDds
+        {
+            if !std::mem::replace(&mut told, true) {
+                tracing::warn!(
+                    "ros2: a Fast DDS (rmw_fastrtps) client called the fleet action {}: \
+                     fleet actions are offered in rmw_cyclonedds' mapping only; its \
+                     requests are not answered (run the client with \
+                     RMW_IMPLEMENTATION=rmw_cyclonedds_cpp)",
+                    action.name
+                );
+            }
             continue;
         }
         let raw = sample.into_value().0;

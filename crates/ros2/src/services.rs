@@ -1,6 +1,8 @@
-//! Services and actions both ways, over the request/reply topics of ROS 2's Cyclone DDS
-//! middleware (`rq/<name>Request`, `rr/<name>Reply`, a 16-byte request header in each
-//! sample: the client's id and a sequence number, copied into the reply).
+//! Services and actions both ways, over ROS 2's request/reply topics (`rq/<name>Request`,
+//! `rr/<name>Reply`) in the two mappings ROS 2's middlewares use ([`Mapping`]): Cyclone
+//! DDS's (a 16-byte request header in each sample: the client's id and a sequence number,
+//! copied into the reply) and Fast DDS's (the request's own sample identity, echoed as the
+//! reply's related sample identity in the RTPS inline QoS).
 //!
 //! - **Exposed** ([`Remote`]): a local server (a foreign reader on `rq/…Request`) matching
 //!   `services.expose` is advertised in the call table; a fleet call becomes a request
@@ -28,7 +30,10 @@ use fleetlink_relay::calls::{
     CallEvent, CallOptions, CallRequest, CallStatus, PeerMsg, ServiceChange,
 };
 use futures::StreamExt;
-use rustdds::{DataWriterStatus, StatusEvented};
+use rustdds::{
+    DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber, StatusEvented,
+    WriteOptionsBuilder,
+};
 use tokio::sync::{Semaphore, oneshot};
 use tokio::task::AbortHandle;
 
@@ -48,10 +53,36 @@ const MATCH_WAIT: Duration = Duration::from_secs(3);
 /// `get_result` is not limited: its requests wait for goals to end and are taken at once.
 pub(crate) const IN_FLIGHT: usize = 10;
 
+/// How a request and its reply are tied together, by the middleware of the other side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Mapping {
+    /// rmw_cyclonedds: a 16-byte header (client id, sequence number) before the fields.
+    Cyclone,
+    /// rmw_fastrtps (Fast DDS, ROS 2's default): no header; a request carries the GUID of
+    /// the client's reply reader as its related sample identity, and the reply carries
+    /// that GUID with the request's sequence number.
+    FastDds,
+}
+
+impl Mapping {
+    /// The mapping of the participant that owns `guid`, from its vendor id: RTPS
+    /// implementations start their GUID prefixes with it, eProsima's being 01.0f.
+    pub(crate) fn of(guid: GUID) -> Mapping {
+        if guid.prefix.as_ref().starts_with(&[0x01, 0x0f]) {
+            Mapping::FastDds
+        } else {
+            Mapping::Cyclone
+        }
+    }
+}
+
 /// One service of a local server, as this bridge calls it.
 pub(crate) struct Endpoint {
     service: String,
     writer: RawWriter,
+    mapping: Mapping,
+    /// The reply reader's GUID (a Fast DDS server answers to it).
+    reply_reader: GUID,
     client: u64,
     seq: AtomicI64,
     /// Readers matched to `writer` (the server's), from the writer's status events.
@@ -68,6 +99,7 @@ impl Endpoint {
         type_base: &str,
         client: u64,
         limited: bool,
+        mapping: Mapping,
     ) -> Result<(Arc<Endpoint>, RawReader), String> {
         let dds = |suffix: &str| {
             names::dds_type(&format!("{type_base}{suffix}"))
@@ -87,6 +119,8 @@ impl Endpoint {
             Arc::new(Endpoint {
                 service: service.to_owned(),
                 writer,
+                mapping,
+                reply_reader: reader.guid(),
                 client,
                 seq: AtomicI64::new(0),
                 matched: AtomicI32::new(0),
@@ -118,17 +152,47 @@ impl Endpoint {
             }
             tokio::time::sleep(Duration::from_millis(20)).await;
         }
-        let seq = self.seq.fetch_add(1, Relaxed) + 1;
         let (tx, rx) = oneshot::channel();
-        self.lock().insert(seq, tx);
-        let header = RequestHeader {
-            client: self.client,
-            seq,
+        let seq = match self.mapping {
+            Mapping::Cyclone => {
+                let seq = self.seq.fetch_add(1, Relaxed) + 1;
+                self.lock().insert(seq, tx);
+                let header = RequestHeader {
+                    client: self.client,
+                    seq,
+                };
+                if let Err(e) = self.writer.write(RawCdr(header.prepend(msg)), None) {
+                    self.lock().remove(&seq);
+                    return Err(format!("sending a request to {}: {e:?}", self.service));
+                }
+                seq
+            }
+            Mapping::FastDds => {
+                // The request's sequence number is known once it is written, and its
+                // reply could be read before that: the table stays locked meanwhile.
+                let mut waiting = self.lock();
+                let to = SampleIdentity {
+                    writer_guid: self.reply_reader,
+                    sequence_number: SequenceNumber::default(),
+                };
+                let options = WriteOptionsBuilder::new()
+                    .related_sample_identity(to)
+                    .build();
+                match self
+                    .writer
+                    .write_with_options(RawCdr(Bytes::copy_from_slice(msg)), options)
+                {
+                    Ok(id) => {
+                        let seq = i64::from(id.sequence_number);
+                        waiting.insert(seq, tx);
+                        seq
+                    }
+                    Err(e) => {
+                        return Err(format!("sending a request to {}: {e:?}", self.service));
+                    }
+                }
+            }
         };
-        if let Err(e) = self.writer.write(RawCdr(header.prepend(msg)), None) {
-            self.lock().remove(&seq);
-            return Err(format!("sending a request to {}: {e:?}", self.service));
-        }
         let forget = Forget(self, seq);
         let reply = rx.await.map_err(|_| format!("{} went away", self.service));
         drop(forget);
@@ -152,8 +216,23 @@ impl Endpoint {
     /// Hands replies meant for this bridge to their waiting requests.
     async fn pump(self: Arc<Self>, reader: RawReader) {
         let mut samples = reader.async_sample_stream();
+        let own = [self.reply_reader, self.writer.guid()];
         while let Some(r) = samples.next().await {
             let Ok(sample) = r else { continue };
+            if self.mapping == Mapping::FastDds {
+                // Ours when the reply names this endpoint's reader (or writer).
+                let Some(to) = sample.sample_info().related_sample_identity() else {
+                    continue;
+                };
+                if !own.contains(&to.writer_guid) {
+                    continue;
+                }
+                let seq = i64::from(to.sequence_number);
+                if let Some(tx) = self.lock().remove(&seq) {
+                    let _ = tx.send(sample.into_value().0);
+                }
+                continue;
+            }
             let raw = sample.into_value().0;
             let Some(h) = RequestHeader::read(&raw) else {
                 continue;
@@ -218,13 +297,20 @@ pub struct Offered {
 /// Where a local caller's answer goes.
 pub(crate) struct LocalCall {
     service: String,
-    header: RequestHeader,
+    reply: ReplyTo,
+}
+
+/// What ties a local caller's reply to its request, in the caller's mapping.
+#[derive(Debug, Clone, Copy)]
+enum ReplyTo {
+    Cyclone(RequestHeader),
+    FastDds(SampleIdentity),
 }
 
 /// Follows the graph's servers: exposes new ones, withdraws vanished ones.
 pub(crate) fn discover(bridge: &Arc<Bridge>) {
-    let mut services: HashMap<String, String> = HashMap::new();
-    let mut actions: HashMap<String, String> = HashMap::new();
+    let mut services: HashMap<String, (String, Mapping)> = HashMap::new();
+    let mut actions: HashMap<String, (String, Mapping)> = HashMap::new();
     for r in bridge.dp.discovered_readers() {
         let s = &r.subscription_topic_data;
         if bridge.is_own(s.key()) {
@@ -233,17 +319,18 @@ pub(crate) fn discover(bridge: &Arc<Bridge>) {
         let Some(DdsName::Request(service)) = DdsName::parse(s.topic_name()) else {
             continue;
         };
+        let mapping = Mapping::of(r.reader_proxy.remote_reader_guid);
         if let Some(action) = names::action_of_send_goal(&service) {
             if bridge.opts.expose_actions.matches(action)
                 && let Some(t) = names::action_type(s.type_name())
             {
-                actions.insert(action.to_owned(), t);
+                actions.insert(action.to_owned(), (t, mapping));
             }
         } else if !names::is_hidden(&service)
             && bridge.opts.expose.matches(&service)
             && let Some(t) = names::service_type(s.type_name())
         {
-            services.insert(service, t);
+            services.insert(service, (t, mapping));
         }
     }
     let known: HashSet<String> = bridge.lock().remotes.keys().cloned().collect();
@@ -259,14 +346,14 @@ pub(crate) fn discover(bridge: &Arc<Bridge>) {
             tracing::info!("ros2: local server of {name} went away");
         }
     }
-    for (name, t) in services {
+    for (name, (t, mapping)) in services {
         if !known.contains(&name) {
-            expose(bridge, &name, &t, false);
+            expose(bridge, &name, &t, false, mapping);
         }
     }
-    for (name, t) in actions {
+    for (name, (t, mapping)) in actions {
         if !known.contains(&name) {
-            expose(bridge, &name, &t, true);
+            expose(bridge, &name, &t, true, mapping);
         }
     }
 }
@@ -280,7 +367,7 @@ fn client_id(bridge: &Bridge) -> u64 {
     u64::from_le_bytes(b)
 }
 
-fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool) {
+fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool, mapping: Mapping) {
     // A service or action is known when its request (goal) part is; the registry may
     // or may not have a full text for the whole interface.
     let part = format!("{type_name}{}", if action { "_Goal" } else { "_Request" });
@@ -302,9 +389,9 @@ fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool) {
     };
     let client = client_id(bridge);
     let made = if action {
-        make_action(bridge, name, type_name, client)
+        make_action(bridge, name, type_name, client, mapping)
     } else {
-        Endpoint::new(bridge, name, type_name, client, true).map(|(call, reader)| {
+        Endpoint::new(bridge, name, type_name, client, true, mapping).map(|(call, reader)| {
             let task = tokio::spawn(call.clone().pump(reader)).abort_handle();
             (
                 RemoteKind::Service {
@@ -345,6 +432,7 @@ fn make_action(
     name: &str,
     action_type: &str,
     client: u64,
+    mapping: Mapping,
 ) -> Result<(RemoteKind, Vec<AbortHandle>), String> {
     let part = |p: &str| format!("{name}/_action/{p}");
     let (send_goal, r1) = Endpoint::new(
@@ -353,6 +441,7 @@ fn make_action(
         &format!("{action_type}_SendGoal"),
         client,
         true,
+        mapping,
     )?;
     let (get_result, r2) = Endpoint::new(
         bridge,
@@ -360,6 +449,7 @@ fn make_action(
         &format!("{action_type}_GetResult"),
         client,
         false,
+        mapping,
     )?;
     let (cancel_goal, r3) = Endpoint::new(
         bridge,
@@ -367,6 +457,7 @@ fn make_action(
         "action_msgs/srv/CancelGoal",
         client,
         true,
+        mapping,
     )?;
     let feedback_type = names::dds_type(&format!("{action_type}_FeedbackMessage"))
         .ok_or_else(|| format!("{action_type} is not a ROS type name"))?;
@@ -686,10 +777,26 @@ async fn pump_requests(bridge: Arc<Bridge>, service: String, reader: RawReader) 
         if bridge.is_own(sample.sample_info().writer_guid()) {
             continue;
         }
+        let info = sample.sample_info();
+        let (related, id) = (info.related_sample_identity(), info.sample_identity());
         let raw = sample.into_value().0;
-        let (Some(header), Some(msg)) = (RequestHeader::read(&raw), RequestHeader::strip(&raw))
-        else {
-            continue;
+        let (reply, msg) = if related.is_some() || Mapping::of(id.writer_guid) == Mapping::FastDds {
+            // A Fast DDS client names its reply reader; else its writer gets the reply.
+            let writer_guid = related
+                .map(|r| r.writer_guid)
+                .filter(|g| *g != GUID::GUID_UNKNOWN)
+                .unwrap_or(id.writer_guid);
+            let to = SampleIdentity {
+                writer_guid,
+                sequence_number: id.sequence_number,
+            };
+            (ReplyTo::FastDds(to), raw)
+        } else {
+            let (Some(header), Some(msg)) = (RequestHeader::read(&raw), RequestHeader::strip(&raw))
+            else {
+                continue;
+            };
+            (ReplyTo::Cyclone(header), msg)
         };
         let opts = CallOptions {
             timeout: Some(bridge.opts.call_timeout),
@@ -706,7 +813,7 @@ async fn pump_requests(bridge: Arc<Bridge>, service: String, reader: RawReader) 
                     id,
                     LocalCall {
                         service: service.clone(),
-                        header,
+                        reply,
                     },
                 );
             }
@@ -747,16 +854,48 @@ fn answer_local(bridge: &Bridge, ev: CallEvent) {
     };
     match bridge.to_cdr(&format!("{}_Response", offered.srv_type), &payload) {
         Ok(body) => {
-            if let Err(e) = offered
-                .replies
-                .write(RawCdr(call.header.prepend(&body)), None)
-            {
-                tracing::debug!("ros2: replying to a local call of {}: {e:?}", call.service);
+            let written = match call.reply {
+                ReplyTo::Cyclone(header) => offered
+                    .replies
+                    .write(RawCdr(header.prepend(&body)), None)
+                    .map_err(|e| format!("{e:?}")),
+                ReplyTo::FastDds(to) => {
+                    let options = WriteOptionsBuilder::new()
+                        .related_sample_identity(to)
+                        .build();
+                    offered
+                        .replies
+                        .write_with_options(RawCdr(Bytes::copy_from_slice(&body)), options)
+                        .map(|_| ())
+                        .map_err(|e| format!("{e:?}"))
+                }
+            };
+            if let Err(e) = written {
+                tracing::debug!("ros2: replying to a local call of {}: {e}", call.service);
             }
         }
         Err(e) => tracing::warn!(
             "ros2: the answer of {} cannot be sent to the local caller: {e}",
             call.service
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn guid(prefix: [u8; 2]) -> GUID {
+        let mut b = [0x5a; 16];
+        b[..2].copy_from_slice(&prefix);
+        GUID::from_bytes(b)
+    }
+
+    #[test]
+    fn the_request_mapping_follows_the_vendor_in_the_guid() {
+        assert_eq!(Mapping::of(guid([0x01, 0x0f])), Mapping::FastDds); // eProsima
+        assert_eq!(Mapping::of(guid([0x01, 0x10])), Mapping::Cyclone); // Eclipse Cyclone
+        assert_eq!(Mapping::of(guid([0x01, 0x12])), Mapping::Cyclone); // rustdds
+        assert_eq!(Mapping::of(GUID::GUID_UNKNOWN), Mapping::Cyclone);
     }
 }

@@ -1,15 +1,24 @@
 // A ROS 2 node's DDS side as Fast DDS (eProsima's libfastrtps, the DDS under ROS 2's
-// default middleware, rmw_fastrtps_cpp) has it, for the ROS 2 interop suite: it writes
-// std_msgs/msg/String on one topic and prints what it reads on another, with ROS 2's DDS
-// names (`rt/<topic>`, `std_msgs::msg::dds_::String_`) and its default topic QoS
-// (reliable, volatile, keep last 10). Samples are handled as the CDR bytes they are, so
-// the peer needs no generated type support.
+// default middleware, rmw_fastrtps_cpp) has it, for the ROS 2 interop suite, with ROS 2's
+// DDS names (`rt/<topic>`, `rq/<service>Request`, `pkg::msg::dds_::T_`) and rmw's default
+// QoS (reliable, volatile, keep last 10). Samples are handled as the CDR bytes they are,
+// so the peer needs no generated type support.
 //
-//   fastdds_peer UP_TOPIC DOWN_TOPIC COUNT SECONDS
-//
-// Writes "fastdds <i>" for i in 0..COUNT on rt/UP_TOPIC, 10 a second, once a reader is
-// matched; prints `down: <text>` for every sample read on rt/DOWN_TOPIC; exits 0 after
-// COUNT writes and at least one sample read, 1 when SECONDS pass first.
+//   fastdds_peer topics UP_TOPIC DOWN_TOPIC COUNT SECONDS
+//     Writes std_msgs/msg/String "fastdds <i>" for i in 0..COUNT on rt/UP_TOPIC, 10 a
+//     second, once a reader is matched; prints `down: <text>` for every sample read on
+//     rt/DOWN_TOPIC; exits 0 after COUNT writes and at least one sample read.
+//   fastdds_peer server SERVICE SECONDS
+//     Serves example_interfaces/srv/AddTwoInts on SERVICE as rmw_fastrtps does: the reply
+//     carries, as its related sample identity, the request's sequence number with the
+//     client's reply reader GUID (the request's related sample identity) or else the
+//     request writer's. Prints `served: A + B = SUM` per request; runs until SECONDS.
+//   fastdds_peer client SERVICE SECONDS
+//     Calls std_srvs/srv/Trigger on SERVICE as rmw_fastrtps does (the request names its
+//     reply reader; the reply is the one whose related sample identity has the request's
+//     sequence number), once the server is matched, again every 2 s until answered.
+//     Prints `reply: success=<0|1> message=<text>`; exits 0 once answered.
+// Every mode exits 1 when SECONDS pass first.
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -24,6 +33,7 @@
 #include <fastdds/dds/topic/TopicDataType.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 #include <fastdds/rtps/common/SerializedPayload.h>
+#include <fastdds/rtps/common/WriteParams.h>
 
 #include <chrono>
 #include <cstdint>
@@ -35,7 +45,10 @@
 #include <vector>
 
 using namespace eprosima::fastdds::dds;
+using eprosima::fastrtps::rtps::GUID_t;
 using eprosima::fastrtps::rtps::InstanceHandle_t;
+using eprosima::fastrtps::rtps::SampleIdentity;
+using eprosima::fastrtps::rtps::WriteParams;
 using eprosima::fastrtps::rtps::SerializedPayload_t;
 
 // A sample as its serialized bytes, encapsulation header first.
@@ -90,48 +103,182 @@ static bool decode_string(const Raw& r, std::string* out) {
     return true;
 }
 
-int main(int argc, char** argv) {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: %s UP_TOPIC DOWN_TOPIC COUNT SECONDS\n", argv[0]);
-        return 2;
-    }
-    const std::string up = std::string("rt/") + argv[1];
-    const std::string down = std::string("rt/") + argv[2];
-    const int count = std::atoi(argv[3]);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[4]));
-    const char* domain_env = std::getenv("ROS_DOMAIN_ID");
-    const int domain = domain_env ? std::atoi(domain_env) : 0;
+// A participant on ROS_DOMAIN_ID with writers and readers of raw samples.
+struct Node {
+    DomainParticipant* participant = nullptr;
+    Publisher* publisher = nullptr;
+    Subscriber* subscriber = nullptr;
 
-    DomainParticipantQos pqos;
-    pqos.name("fastdds_peer");
-    DomainParticipant* participant =
-        DomainParticipantFactory::get_instance()->create_participant(domain, pqos);
-    if (participant == nullptr) {
-        std::fprintf(stderr, "could not create a participant\n");
-        return 1;
+    bool open() {
+        const char* domain_env = std::getenv("ROS_DOMAIN_ID");
+        const int domain = domain_env ? std::atoi(domain_env) : 0;
+        DomainParticipantQos pqos;
+        pqos.name("fastdds_peer");
+        participant = DomainParticipantFactory::get_instance()->create_participant(domain, pqos);
+        if (participant == nullptr) {
+            std::fprintf(stderr, "could not create a participant\n");
+            return false;
+        }
+        publisher = participant->create_publisher(PUBLISHER_QOS_DEFAULT);
+        subscriber = participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
+        return publisher != nullptr && subscriber != nullptr;
     }
-    TypeSupport type(new RawType("std_msgs::msg::dds_::String_"));
-    type.register_type(participant);
-    Topic* up_topic = participant->create_topic(up, type.get_type_name(), TOPIC_QOS_DEFAULT);
-    Topic* down_topic = participant->create_topic(down, type.get_type_name(), TOPIC_QOS_DEFAULT);
-    Publisher* publisher = participant->create_publisher(PUBLISHER_QOS_DEFAULT);
-    Subscriber* subscriber = participant->create_subscriber(SUBSCRIBER_QOS_DEFAULT);
 
-    // rmw's default topic QoS; data sharing off, as it is for a type of unbounded size.
-    DataWriterQos wqos = DATAWRITER_QOS_DEFAULT;
-    wqos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-    wqos.durability().kind = VOLATILE_DURABILITY_QOS;
-    wqos.history().kind = KEEP_LAST_HISTORY_QOS;
-    wqos.history().depth = 10;
-    wqos.data_sharing().off();
-    DataWriter* writer = publisher->create_datawriter(up_topic, wqos);
-    DataReaderQos rqos = DATAREADER_QOS_DEFAULT;
-    rqos.reliability().kind = RELIABLE_RELIABILITY_QOS;
-    rqos.durability().kind = VOLATILE_DURABILITY_QOS;
-    rqos.history().kind = KEEP_LAST_HISTORY_QOS;
-    rqos.history().depth = 10;
-    rqos.data_sharing().off();
-    DataReader* reader = subscriber->create_datareader(down_topic, rqos);
+    Topic* topic(const std::string& name, const char* type_name) {
+        TypeSupport type(new RawType(type_name));
+        type.register_type(participant);
+        return participant->create_topic(name, type_name, TOPIC_QOS_DEFAULT);
+    }
+
+    // rmw's default QoS; data sharing off, as rmw has it for types of unbounded size.
+    DataWriter* writer(const std::string& name, const char* type_name) {
+        DataWriterQos q = DATAWRITER_QOS_DEFAULT;
+        q.reliability().kind = RELIABLE_RELIABILITY_QOS;
+        q.durability().kind = VOLATILE_DURABILITY_QOS;
+        q.history().kind = KEEP_LAST_HISTORY_QOS;
+        q.history().depth = 10;
+        q.data_sharing().off();
+        Topic* t = topic(name, type_name);
+        return t ? publisher->create_datawriter(t, q) : nullptr;
+    }
+
+    DataReader* reader(const std::string& name, const char* type_name) {
+        DataReaderQos q = DATAREADER_QOS_DEFAULT;
+        q.reliability().kind = RELIABLE_RELIABILITY_QOS;
+        q.durability().kind = VOLATILE_DURABILITY_QOS;
+        q.history().kind = KEEP_LAST_HISTORY_QOS;
+        q.history().depth = 10;
+        q.data_sharing().off();
+        Topic* t = topic(name, type_name);
+        return t ? subscriber->create_datareader(t, q) : nullptr;
+    }
+
+    ~Node() {
+        if (participant != nullptr) {
+            participant->delete_contained_entities();
+            DomainParticipantFactory::get_instance()->delete_participant(participant);
+        }
+    }
+};
+
+static int64_t read_i64(const std::vector<uint8_t>& b, size_t at) {
+    int64_t v = 0;
+    for (int i = 0; i < 8; i++) v |= static_cast<int64_t>(b[at + i]) << (8 * i);
+    return v;
+}
+
+static bool matched(DataWriter* w) {
+    PublicationMatchedStatus s;
+    w->get_publication_matched_status(s);
+    return s.current_count > 0;
+}
+
+static int server(char** argv) {
+    const std::string service = argv[2];
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
+    Node node;
+    if (!node.open()) return 1;
+    DataReader* requests =
+        node.reader("rq/" + service + "Request", "example_interfaces::srv::dds_::AddTwoInts_Request_");
+    DataWriter* replies =
+        node.writer("rr/" + service + "Reply", "example_interfaces::srv::dds_::AddTwoInts_Response_");
+    if (requests == nullptr || replies == nullptr) return 1;
+    std::printf("ready: serving %s\n", service.c_str());
+    std::fflush(stdout);
+    while (std::chrono::steady_clock::now() < deadline) {
+        Raw got;
+        SampleInfo info;
+        while (requests->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || got.bytes.size() < 4 + 16) continue;
+            const int64_t a = read_i64(got.bytes, 4), b = read_i64(got.bytes, 12);
+            Raw reply;
+            reply.bytes = {0x00, 0x01, 0x00, 0x00};
+            const int64_t sum = a + b;
+            for (int i = 0; i < 8; i++) reply.bytes.push_back(static_cast<uint8_t>(sum >> (8 * i)));
+            WriteParams params;
+            params.related_sample_identity(info.sample_identity);
+            if (info.related_sample_identity.writer_guid() != GUID_t::unknown()) {
+                params.related_sample_identity().writer_guid() =
+                    info.related_sample_identity.writer_guid();
+            }
+            const bool ok = replies->write(&reply, params);
+            std::printf("served: %lld + %lld = %lld%s\n", static_cast<long long>(a),
+                        static_cast<long long>(b), static_cast<long long>(sum),
+                        ok ? "" : " (reply not written)");
+            std::fflush(stdout);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return 0;
+}
+
+static int client(char** argv) {
+    const std::string service = argv[2];
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
+    Node node;
+    if (!node.open()) return 1;
+    DataWriter* requests =
+        node.writer("rq/" + service + "Request", "std_srvs::srv::dds_::Trigger_Request_");
+    DataReader* replies =
+        node.reader("rr/" + service + "Reply", "std_srvs::srv::dds_::Trigger_Response_");
+    if (requests == nullptr || replies == nullptr) return 1;
+    std::printf("ready: calling %s\n", service.c_str());
+    std::fflush(stdout);
+    std::vector<SampleIdentity> sent;
+    auto next_call = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (matched(requests) && std::chrono::steady_clock::now() >= next_call) {
+            // std_srvs/srv/Trigger's empty request: ROS 2's one-byte placeholder member.
+            Raw request;
+            request.bytes = {0x00, 0x01, 0x00, 0x00, 0x00};
+            WriteParams params;
+            params.related_sample_identity().writer_guid() = replies->guid();
+            if (requests->write(&request, params)) sent.push_back(params.sample_identity());
+            next_call = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        }
+        Raw got;
+        SampleInfo info;
+        while (replies->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data) continue;
+            const SampleIdentity& to = info.related_sample_identity;
+            bool ours = false;
+            for (const SampleIdentity& s : sent) {
+                ours = ours || (to.sequence_number() == s.sequence_number() &&
+                                (to.writer_guid() == replies->guid() ||
+                                 to.writer_guid() == s.writer_guid()));
+            }
+            if (!ours) {
+                std::printf("reply not for this client\n");
+                continue;
+            }
+            // bool success; string message (at 4: its length, then the text and a NUL).
+            std::string message;
+            if (got.bytes.size() >= 12) {
+                uint32_t n = 0;
+                for (int i = 0; i < 4; i++) n |= static_cast<uint32_t>(got.bytes[8 + i]) << (8 * i);
+                if (n > 0 && 12 + n <= got.bytes.size())
+                    message.assign(reinterpret_cast<const char*>(got.bytes.data() + 12), n - 1);
+            }
+            std::printf("reply: success=%d message=%s\n", got.bytes.size() > 4 ? got.bytes[4] : -1,
+                        message.c_str());
+            std::fflush(stdout);
+            return 0;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::printf("no reply\n");
+    return 1;
+}
+
+static int topics(int argc, char** argv) {
+    const std::string up = std::string("rt/") + argv[2];
+    const std::string down = std::string("rt/") + argv[3];
+    const int count = std::atoi(argv[4]);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[5]));
+    Node node;
+    if (!node.open()) return 1;
+    DataWriter* writer = node.writer(up, "std_msgs::msg::dds_::String_");
+    DataReader* reader = node.reader(down, "std_msgs::msg::dds_::String_");
     if (writer == nullptr || reader == nullptr) {
         std::fprintf(stderr, "could not create the writer or the reader\n");
         return 1;
@@ -169,7 +316,17 @@ int main(int argc, char** argv) {
     }
     std::printf("done: wrote %d, read %d\n", written, read);
     std::fflush(stdout);
-    participant->delete_contained_entities();
-    DomainParticipantFactory::get_instance()->delete_participant(participant);
     return (written >= count && read > 0) ? 0 : 1;
+}
+
+int main(int argc, char** argv) {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "topics" && argc == 6) return topics(argc, argv);
+    if (mode == "server" && argc == 4) return server(argv);
+    if (mode == "client" && argc == 4) return client(argv);
+    std::fprintf(stderr,
+                 "usage: %s topics UP_TOPIC DOWN_TOPIC COUNT SECONDS | server SERVICE SECONDS"
+                 " | client SERVICE SECONDS\n",
+                 argv[0]);
+    return 2;
 }

@@ -29,7 +29,8 @@ Modes (all take --hub-url URL --robot NAME):
                 Fast DDS (fastdds_peer, ROS 2's default middleware's DDS) both ways:
                 /<robot>/fdds_up (std_msgs/msg/String, "fastdds N") arrives in order;
                 then /<robot>/fdds_down ("from the hub N") is published at 10 Hz until
-                FILE has the peer's "down: from the hub" line (15 s at most).
+                FILE has the peer's "down: from the hub" line (15 s at most); the Fast
+                DDS server /<robot>/fdds_add_two_ints answers three calls.
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -283,6 +284,23 @@ def check_fastdds(args):
           f"{r}/fdds_down reaches the Fast DDS reader as std_msgs/msg/String "
           f"({i} published): {lines[:5]}")
     down.unadvertise()
+    # The Fast DDS server of /fdds_add_two_ints, called at the hub (retried while the
+    # agent discovers and exposes it).
+    name = f"{r}/fdds_add_two_ints"
+    svc = roslibpy.Service(ros, name, "example_interfaces/srv/AddTwoInts")
+    answers, deadline = [], time.monotonic() + WAIT
+    for a, b in ((20, 22), (-5, 3), (1 << 40, 7)):
+        while True:
+            try:
+                answers.append(dict(svc.call(roslibpy.ServiceRequest({"a": a, "b": b}), timeout=5)))
+                break
+            except Exception as e:
+                if time.monotonic() > deadline:
+                    answers.append({"error": f"{type(e).__name__}: {e}"})
+                    break
+                time.sleep(0.3)
+    check(answers == [{"sum": 42}, {"sum": -2}, {"sum": (1 << 40) + 7}],
+          f"{name} (a Fast DDS server) answers each call with its own sum: {answers}")
 
 
 def check_late(args):

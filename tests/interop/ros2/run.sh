@@ -24,7 +24,9 @@
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
 #   8b. Fast DDS (Debian's libfastrtps, under ROS 2's default middleware): a C++ node
 #      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, which reaches roslibpy
-#      in order, and reads rt/fdds_down, which roslibpy publishes at the hub;
+#      in order, and reads rt/fdds_down, which roslibpy publishes at the hub; a Fast DDS
+#      server of /fdds_add_two_ints answers roslibpy at the hub, and a Fast DDS client's
+#      call of /cloud/greet gets the fleet's answer (rmw_fastrtps request/reply);
 #   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
@@ -183,7 +185,7 @@ local_rosbridge: null
 ros2:
   publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up], exclude: [] }
   subscribe: [/cmd_vel, /announce, /chatter, /fdds_down]
-  services: { expose: [/add_two_ints], offer: ["/cloud/.*"] }
+  services: { expose: [/add_two_ints, /fdds_add_two_ints], offer: ["/cloud/.*"] }
   actions: { expose: [/fibonacci], offer: ["/cloud/.*"] }
 EOF
 ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent.log" 2>&1 &
@@ -283,16 +285,25 @@ EOF
 )" || loop_report="the chatter evaluation failed: $loop_report"
 case "$loop_report" in ok:*) echo "$loop_report" ;; *) fail "loop check: $loop_report" ;; esac
 
-step "8b. Fast DDS (the DDS under ROS 2's default middleware) topics both ways"
+step "8b. Fast DDS (the DDS under ROS 2's default middleware): topics both ways, services"
 # eProsima's libfastrtps from Debian, in a small C++ node (fastdds_peer.cpp).
 if ! g++ -O1 -std=c++17 -o "$tmp/fastdds_peer" "$here/fastdds_peer.cpp" -lfastrtps -lfastcdr 2>"$tmp/fastdds_build.log"; then
     fail "fastdds_peer.cpp did not build (libfastrtps-dev from scripts/setup.d/35-ros2-peers.sh)"
     show_log fastdds_build
 else
-    ns_bg "$tmp/fastdds_peer" fdds_up fdds_down 600 60 >"$tmp/fastdds.log" 2>&1 &
+    ns_bg "$tmp/fastdds_peer" topics fdds_up fdds_down 600 60 >"$tmp/fastdds.log" 2>&1 &
+    pids+=($!)
+    ns_bg "$tmp/fastdds_peer" server fdds_add_two_ints 60 >"$tmp/fastdds_server.log" 2>&1 &
     pids+=($!)
     ns_run 60 "$python" "$here/hub_peer.py" check-fastdds --hub-url "$hub_url" --robot "$robot" \
-        --peer-log "$tmp/fastdds.log" || { fail "check-fastdds (Fast DDS writer and reader)"; show_log fastdds; }
+        --peer-log "$tmp/fastdds.log" || { fail "check-fastdds (Fast DDS writer, reader and server)"; show_log fastdds; show_log fastdds_server; }
+    # A Fast DDS client calls the fleet's /cloud/greet (hub_peer.py serve answers it).
+    if ns_run 30 "$tmp/fastdds_peer" client cloud/greet 25 >"$tmp/fastdds_client.log" 2>&1 \
+        && grep -q '^reply: success=1 message=hello from the fleet$' "$tmp/fastdds_client.log"; then
+        echo "ok: a Fast DDS client's call of /cloud/greet got the fleet's answer: $(grep '^reply:' "$tmp/fastdds_client.log")"
+    else
+        fail "a Fast DDS client calling /cloud/greet (rmw_fastrtps request/reply)"; show_log fastdds_client
+    fi
     ns_kill "$tmp/fastdds_peer"
 fi
 
