@@ -13,6 +13,11 @@
 //     carries, as its related sample identity, the request's sequence number with the
 //     client's reply reader GUID (the request's related sample identity) or else the
 //     request writer's. Prints `served: A + B = SUM` per request; runs until SECONDS.
+//   fastdds_peer action ACTION SECONDS
+//     Serves example_interfaces/action/Fibonacci on ACTION: its send_goal, get_result and
+//     cancel_goal services in the mapping above, feedback on rt/ACTION/_action/feedback,
+//     one step per 0.1 s (int32 wrap-around, as the example does). Prints `goal: ORDER`,
+//     `succeeded`, `canceled`; runs until SECONDS.
 //   fastdds_peer client SERVICE SECONDS
 //     Calls std_srvs/srv/Trigger on SERVICE as rmw_fastrtps does (the request names its
 //     reply reader; the reply is the one whose related sample identity has the request's
@@ -35,6 +40,7 @@
 #include <fastdds/rtps/common/SerializedPayload.h>
 #include <fastdds/rtps/common/WriteParams.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -212,6 +218,140 @@ static int server(char** argv) {
     return 0;
 }
 
+static void put_i32(std::vector<uint8_t>* b, int32_t v) {
+    for (int i = 0; i < 4; i++) b->push_back(static_cast<uint8_t>(static_cast<uint32_t>(v) >> (8 * i)));
+}
+
+// A reply in the rmw_fastrtps mapping: to the request's sequence number, named by the
+// client's reply reader when the request gave one.
+static bool reply_to(DataWriter* w, const SampleInfo& request, Raw* reply) {
+    WriteParams params;
+    params.related_sample_identity(request.sample_identity);
+    if (request.related_sample_identity.writer_guid() != GUID_t::unknown()) {
+        params.related_sample_identity().writer_guid() = request.related_sample_identity.writer_guid();
+    }
+    return w->write(reply, params);
+}
+
+struct FibGoal {
+    std::vector<uint8_t> uuid;
+    int order = 0;
+    std::vector<int32_t> seq{0, 1};
+    int8_t status = 2;  // EXECUTING; 4 SUCCEEDED, 5 CANCELED
+    std::vector<SampleInfo> waiting;  // get_result requests to answer when it ends
+};
+
+static int action(char** argv) {
+    const std::string name = std::string(argv[2]) + "/_action/";
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
+    Node node;
+    if (!node.open()) return 1;
+    const std::string t = "example_interfaces::action::dds_::Fibonacci_";
+    DataReader* goal_rq = node.reader("rq/" + name + "send_goalRequest", (t + "SendGoal_Request_").c_str());
+    DataWriter* goal_rr = node.writer("rr/" + name + "send_goalReply", (t + "SendGoal_Response_").c_str());
+    DataReader* result_rq = node.reader("rq/" + name + "get_resultRequest", (t + "GetResult_Request_").c_str());
+    DataWriter* result_rr = node.writer("rr/" + name + "get_resultReply", (t + "GetResult_Response_").c_str());
+    DataReader* cancel_rq =
+        node.reader("rq/" + name + "cancel_goalRequest", "action_msgs::srv::dds_::CancelGoal_Request_");
+    DataWriter* cancel_rr =
+        node.writer("rr/" + name + "cancel_goalReply", "action_msgs::srv::dds_::CancelGoal_Response_");
+    DataWriter* feedback = node.writer("rt/" + name + "feedback", (t + "FeedbackMessage_").c_str());
+    if (!goal_rq || !goal_rr || !result_rq || !result_rr || !cancel_rq || !cancel_rr || !feedback) return 1;
+    std::printf("ready: action %s\n", argv[2]);
+    std::fflush(stdout);
+    std::vector<FibGoal> goals;
+    // {int8 status, int32[] sequence}
+    auto answer = [&](const FibGoal& g, const SampleInfo& request) {
+        Raw r;
+        r.bytes = {0x00, 0x01, 0x00, 0x00, static_cast<uint8_t>(g.status), 0, 0, 0};
+        put_i32(&r.bytes, static_cast<int32_t>(g.seq.size()));
+        for (int32_t v : g.seq) put_i32(&r.bytes, v);
+        reply_to(result_rr, request, &r);
+    };
+    auto find = [&](const std::vector<uint8_t>& b) -> FibGoal* {
+        if (b.size() < 20) return nullptr;
+        for (FibGoal& g : goals)
+            if (std::equal(g.uuid.begin(), g.uuid.end(), b.begin() + 4)) return &g;
+        return nullptr;
+    };
+    auto end = [&](FibGoal& g, int8_t status) {
+        g.status = status;
+        for (const SampleInfo& w : g.waiting) answer(g, w);
+        g.waiting.clear();
+        std::printf("%s\n", status == 4 ? "succeeded" : "canceled");
+        std::fflush(stdout);
+    };
+    auto next_step = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() < deadline) {
+        Raw got;
+        SampleInfo info;
+        // send_goal: {uuid[16], int32 order} -> {bool accepted, Time stamp}
+        while (goal_rq->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data || got.bytes.size() < 24) continue;
+            FibGoal g;
+            g.uuid.assign(got.bytes.begin() + 4, got.bytes.begin() + 20);
+            int32_t order = 0;
+            for (int i = 0; i < 4; i++) order |= static_cast<int32_t>(got.bytes[20 + i]) << (8 * i);
+            g.order = order;
+            goals.push_back(g);
+            Raw r;
+            r.bytes = {0x00, 0x01, 0x00, 0x00, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+            reply_to(goal_rr, info, &r);
+            std::printf("goal: %d\n", g.order);
+            std::fflush(stdout);
+        }
+        // get_result: {uuid[16]}
+        while (result_rq->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data) continue;
+            if (FibGoal* g = find(got.bytes)) {
+                if (g->status == 2) g->waiting.push_back(info);
+                else answer(*g, info);
+            }
+        }
+        // cancel_goal: {GoalInfo {uuid[16], Time stamp}} -> {int8 return_code, GoalInfo[]}
+        while (cancel_rq->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+            if (!info.valid_data) continue;
+            Raw r;
+            r.bytes = {0x00, 0x01, 0x00, 0x00};
+            FibGoal* g = find(got.bytes);
+            if (g != nullptr && g->status == 2) {
+                r.bytes.insert(r.bytes.end(), {0, 0, 0, 0});  // ERROR_NONE, padding
+                put_i32(&r.bytes, 1);
+                r.bytes.insert(r.bytes.end(), g->uuid.begin(), g->uuid.end());
+                put_i32(&r.bytes, 0);
+                put_i32(&r.bytes, 0);
+                end(*g, 5);
+            } else {
+                r.bytes.insert(r.bytes.end(), {2, 0, 0, 0});  // ERROR_UNKNOWN_GOAL_ID
+                put_i32(&r.bytes, 0);
+            }
+            reply_to(cancel_rr, info, &r);
+        }
+        if (std::chrono::steady_clock::now() >= next_step) {
+            next_step += std::chrono::milliseconds(100);
+            for (FibGoal& g : goals) {
+                if (g.status != 2) continue;
+                if (static_cast<int>(g.seq.size()) > g.order) {
+                    end(g, 4);
+                    continue;
+                }
+                const size_t n = g.seq.size();
+                g.seq.push_back(static_cast<int32_t>(static_cast<uint32_t>(g.seq[n - 1]) +
+                                                     static_cast<uint32_t>(g.seq[n - 2])));
+                // {uuid[16], int32[] sequence}
+                Raw f;
+                f.bytes = {0x00, 0x01, 0x00, 0x00};
+                f.bytes.insert(f.bytes.end(), g.uuid.begin(), g.uuid.end());
+                put_i32(&f.bytes, static_cast<int32_t>(g.seq.size()));
+                for (int32_t v : g.seq) put_i32(&f.bytes, v);
+                feedback->write(&f);
+            }
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return 0;
+}
+
 static int client(char** argv) {
     const std::string service = argv[2];
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
@@ -324,9 +464,10 @@ int main(int argc, char** argv) {
     if (mode == "topics" && argc == 6) return topics(argc, argv);
     if (mode == "server" && argc == 4) return server(argv);
     if (mode == "client" && argc == 4) return client(argv);
+    if (mode == "action" && argc == 4) return action(argv);
     std::fprintf(stderr,
                  "usage: %s topics UP_TOPIC DOWN_TOPIC COUNT SECONDS | server SERVICE SECONDS"
-                 " | client SERVICE SECONDS\n",
+                 " | client SERVICE SECONDS | action ACTION SECONDS\n",
                  argv[0]);
     return 2;
 }

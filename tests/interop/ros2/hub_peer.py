@@ -18,7 +18,8 @@ Modes (all take --hub-url URL --robot NAME):
                 gets it (latched at the hub).
   check-calls   /<robot>/add_two_ints answers, also many calls in flight at once, each
                 with its own sum.
-  check-action  the action /<robot>/fibonacci: order 5 gives feedback and SUCCEEDED with
+  check-action [--action NAME]
+                the action /<robot>/fibonacci (or NAME): order 5 gives feedback and SUCCEEDED with
                 [0, 1, 1, 2, 3, 5]; order 50 cancelled after its first feedback ends
                 CANCELED.
   check-late    /<robot>/late_topic (a participant started after the agent) arrives.
@@ -203,7 +204,7 @@ def status_of(res):
 
 def check_action(args):
     ros = connect(args.hub_url)
-    name = f"/{args.robot}/fibonacci"
+    name = f"/{args.robot}/{args.action}"
     client = roslibpy.ActionClient(ros, name, "example_interfaces/action/Fibonacci")
     # 1. order 5 to success; resent while the action is not yet known at the hub (bounded).
     deadline, attempts = time.monotonic() + WAIT, 0
@@ -415,6 +416,7 @@ def main():
     p.add_argument("--robot", required=True)
     p.add_argument("--chatter-stop")
     p.add_argument("--peer-log")
+    p.add_argument("--action", default="fibonacci", help="check-action: the robot's action (default fibonacci)")
     args = p.parse_args()
     if args.mode == "serve" and not (args.out and args.chatter_stop):
         p.error("serve needs OUT and --chatter-stop")

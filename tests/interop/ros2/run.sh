@@ -25,8 +25,9 @@
 #   8b. Fast DDS (Debian's libfastrtps, under ROS 2's default middleware): a C++ node
 #      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, which reaches roslibpy
 #      in order, and reads rt/fdds_down, which roslibpy publishes at the hub; a Fast DDS
-#      server of /fdds_add_two_ints answers roslibpy at the hub, and a Fast DDS client's
-#      call of /cloud/greet gets the fleet's answer (rmw_fastrtps request/reply);
+#      server of /fdds_add_two_ints answers roslibpy at the hub, a Fast DDS action server
+#      passes step 6's checks, and a Fast DDS client's call of /cloud/greet gets the
+#      fleet's answer (rmw_fastrtps request/reply);
 #   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
@@ -186,7 +187,7 @@ ros2:
   publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up], exclude: [] }
   subscribe: [/cmd_vel, /announce, /chatter, /fdds_down]
   services: { expose: [/add_two_ints, /fdds_add_two_ints], offer: ["/cloud/.*"] }
-  actions: { expose: [/fibonacci], offer: ["/cloud/.*"] }
+  actions: { expose: [/fibonacci, /fdds_fibonacci], offer: ["/cloud/.*"] }
 EOF
 ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent.log" 2>&1 &
 pids+=($!)
@@ -297,6 +298,11 @@ else
     pids+=($!)
     ns_run 60 "$python" "$here/hub_peer.py" check-fastdds --hub-url "$hub_url" --robot "$robot" \
         --peer-log "$tmp/fastdds.log" || { fail "check-fastdds (Fast DDS writer, reader and server)"; show_log fastdds; show_log fastdds_server; }
+    # A Fast DDS action server: the checks of step 6.
+    ns_bg "$tmp/fastdds_peer" action fdds_fibonacci 60 >"$tmp/fastdds_action.log" 2>&1 &
+    pids+=($!)
+    ns_run 60 "$python" "$here/hub_peer.py" check-action --action fdds_fibonacci --hub-url "$hub_url" \
+        --robot "$robot" || { fail "check-action of a Fast DDS action server"; show_log fastdds_action; }
     # A Fast DDS client calls the fleet's /cloud/greet (hub_peer.py serve answers it).
     if ns_run 30 "$tmp/fastdds_peer" client cloud/greet 25 >"$tmp/fastdds_client.log" 2>&1 \
         && grep -q '^reply: success=1 message=hello from the fleet$' "$tmp/fastdds_client.log"; then
