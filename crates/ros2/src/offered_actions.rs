@@ -28,7 +28,8 @@ use tokio::task::AbortHandle;
 use crate::bridge::{Bridge, RawReader, RawWriter};
 use crate::names;
 use crate::qos;
-use crate::raw::{CDR_LE_HEADER, RawCdr, RequestHeader};
+use crate::raw::{CDR_LE_HEADER, RawCdr};
+use crate::services::ReplyTo;
 
 /// Ended goals remembered for `get_result` requests that come after the end.
 const KEEP_ENDED: usize = 64;
@@ -48,7 +49,7 @@ struct Goal {
     /// The `get_result` reply once the goal ended.
     result: Option<Bytes>,
     /// `get_result` requests waiting for the end.
-    waiting: Vec<RequestHeader>,
+    waiting: Vec<ReplyTo>,
 }
 
 struct Writers {
@@ -227,31 +228,13 @@ async fn serve_requests(
     reader: RawReader,
 ) {
     let mut samples = reader.async_sample_stream();
-    let mut told = false;
     while let Some(r) = samples.next().await {
         let Ok(sample) = r else { continue };
-        let info = sample.sample_info();
-        if bridge.is_own(info.writer_guid()) {
+        if bridge.is_own(sample.sample_info().writer_guid()) {
             continue;
         }
-        // Fast DDS's mapping has no header in the sample: its first bytes are the goal's.
-        if info.related_sample_identity().is_some()
-            || crate::services::Mapping::of(info.writer_guid()) == crate::services::Mapping::FastDds
-        {
-            if !std::mem::replace(&mut told, true) {
-                tracing::warn!(
-                    "ros2: a Fast DDS (rmw_fastrtps) client called the fleet action {}: \
-                     fleet actions are offered in rmw_cyclonedds' mapping only; its \
-                     requests are not answered (run the client with \
-                     RMW_IMPLEMENTATION=rmw_cyclonedds_cpp)",
-                    action.name
-                );
-            }
-            continue;
-        }
-        let raw = sample.into_value().0;
-        let (Some(header), Some(msg)) = (RequestHeader::read(&raw), RequestHeader::strip(&raw))
-        else {
+        let info = sample.sample_info().clone();
+        let Some((header, msg)) = ReplyTo::of_request(&info, sample.into_value().0) else {
             continue;
         };
         let outcome = match kind {
@@ -268,16 +251,14 @@ async fn serve_requests(
     }
 }
 
-fn reply(writer: &RawWriter, header: RequestHeader, msg: &[u8]) -> Result<(), String> {
-    writer
-        .write(RawCdr(header.prepend(msg)), None)
-        .map_err(|e| format!("writing a reply: {e:?}"))
+fn reply(writer: &RawWriter, to: ReplyTo, msg: &[u8]) -> Result<(), String> {
+    to.reply(writer, msg)
 }
 
 fn send_goal(
     bridge: &Arc<Bridge>,
     action: &Arc<OfferedAction>,
-    header: RequestHeader,
+    header: ReplyTo,
     msg: &Bytes,
 ) -> Result<(), String> {
     let uuid = uuid_at(msg).ok_or("a send_goal request without a goal id")?;
@@ -332,7 +313,7 @@ fn send_goal(
     Ok(())
 }
 
-fn get_result(action: &OfferedAction, header: RequestHeader, msg: &Bytes) -> Result<(), String> {
+fn get_result(action: &OfferedAction, header: ReplyTo, msg: &Bytes) -> Result<(), String> {
     let uuid = uuid_at(msg).ok_or("a get_result request without a goal id")?;
     let ready = {
         let mut g = action.goals();
@@ -357,7 +338,7 @@ fn get_result(action: &OfferedAction, header: RequestHeader, msg: &Bytes) -> Res
 fn cancel_goal(
     bridge: &Bridge,
     action: &OfferedAction,
-    header: RequestHeader,
+    header: ReplyTo,
     msg: &Bytes,
 ) -> Result<(), String> {
     let uuid = uuid_at(msg).ok_or("a cancel_goal request without a goal id")?;

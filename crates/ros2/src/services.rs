@@ -302,9 +302,50 @@ pub(crate) struct LocalCall {
 
 /// What ties a local caller's reply to its request, in the caller's mapping.
 #[derive(Debug, Clone, Copy)]
-enum ReplyTo {
+pub(crate) enum ReplyTo {
     Cyclone(RequestHeader),
     FastDds(SampleIdentity),
+}
+
+impl ReplyTo {
+    /// A local client's request sample (`raw`, described by `info`): where its reply
+    /// goes, and the request message as a CDR sample of its own. `None`: a Cyclone-style
+    /// sample too short for its header.
+    pub(crate) fn of_request(info: &rustdds::SampleInfo, raw: Bytes) -> Option<(ReplyTo, Bytes)> {
+        let (related, id) = (info.related_sample_identity(), info.sample_identity());
+        if related.is_some() || Mapping::of(id.writer_guid) == Mapping::FastDds {
+            // A Fast DDS client names its reply reader; else its writer gets the reply.
+            let writer_guid = related
+                .map(|r| r.writer_guid)
+                .filter(|g| *g != GUID::GUID_UNKNOWN)
+                .unwrap_or(id.writer_guid);
+            let to = SampleIdentity {
+                writer_guid,
+                sequence_number: id.sequence_number,
+            };
+            return Some((ReplyTo::FastDds(to), raw));
+        }
+        let header = RequestHeader::read(&raw)?;
+        Some((ReplyTo::Cyclone(header), RequestHeader::strip(&raw)?))
+    }
+
+    /// Writes `body` (a CDR message with its encapsulation header) as the reply.
+    pub(crate) fn reply(&self, writer: &RawWriter, body: &[u8]) -> Result<(), String> {
+        match self {
+            ReplyTo::Cyclone(header) => writer
+                .write(RawCdr(header.prepend(body)), None)
+                .map_err(|e| format!("writing a reply: {e:?}")),
+            ReplyTo::FastDds(to) => {
+                let options = WriteOptionsBuilder::new()
+                    .related_sample_identity(*to)
+                    .build();
+                writer
+                    .write_with_options(RawCdr(Bytes::copy_from_slice(body)), options)
+                    .map(|_| ())
+                    .map_err(|e| format!("writing a reply: {e:?}"))
+            }
+        }
+    }
 }
 
 /// Follows the graph's servers: exposes new ones, withdraws vanished ones.
@@ -777,26 +818,9 @@ async fn pump_requests(bridge: Arc<Bridge>, service: String, reader: RawReader) 
         if bridge.is_own(sample.sample_info().writer_guid()) {
             continue;
         }
-        let info = sample.sample_info();
-        let (related, id) = (info.related_sample_identity(), info.sample_identity());
-        let raw = sample.into_value().0;
-        let (reply, msg) = if related.is_some() || Mapping::of(id.writer_guid) == Mapping::FastDds {
-            // A Fast DDS client names its reply reader; else its writer gets the reply.
-            let writer_guid = related
-                .map(|r| r.writer_guid)
-                .filter(|g| *g != GUID::GUID_UNKNOWN)
-                .unwrap_or(id.writer_guid);
-            let to = SampleIdentity {
-                writer_guid,
-                sequence_number: id.sequence_number,
-            };
-            (ReplyTo::FastDds(to), raw)
-        } else {
-            let (Some(header), Some(msg)) = (RequestHeader::read(&raw), RequestHeader::strip(&raw))
-            else {
-                continue;
-            };
-            (ReplyTo::Cyclone(header), msg)
+        let info = sample.sample_info().clone();
+        let Some((reply, msg)) = ReplyTo::of_request(&info, sample.into_value().0) else {
+            continue;
         };
         let opts = CallOptions {
             timeout: Some(bridge.opts.call_timeout),
@@ -854,23 +878,7 @@ fn answer_local(bridge: &Bridge, ev: CallEvent) {
     };
     match bridge.to_cdr(&format!("{}_Response", offered.srv_type), &payload) {
         Ok(body) => {
-            let written = match call.reply {
-                ReplyTo::Cyclone(header) => offered
-                    .replies
-                    .write(RawCdr(header.prepend(&body)), None)
-                    .map_err(|e| format!("{e:?}")),
-                ReplyTo::FastDds(to) => {
-                    let options = WriteOptionsBuilder::new()
-                        .related_sample_identity(to)
-                        .build();
-                    offered
-                        .replies
-                        .write_with_options(RawCdr(Bytes::copy_from_slice(&body)), options)
-                        .map(|_| ())
-                        .map_err(|e| format!("{e:?}"))
-                }
-            };
-            if let Err(e) = written {
+            if let Err(e) = call.reply.reply(&offered.replies, &body) {
                 tracing::debug!("ros2: replying to a local call of {}: {e}", call.service);
             }
         }

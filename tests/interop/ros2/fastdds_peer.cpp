@@ -18,6 +18,10 @@
 //     cancel_goal services in the mapping above, feedback on rt/ACTION/_action/feedback,
 //     one step per 0.1 s (int32 wrap-around, as the example does). Prints `goal: ORDER`,
 //     `succeeded`, `canceled`; runs until SECONDS.
+//   fastdds_peer action-client ACTION ORDER SECONDS
+//     Sends a Fibonacci goal of ORDER to ACTION in the mapping above, asks for its result,
+//     counts its feedback; prints `accepted: 0|1`, `feedback: N` and
+//     `result: status=S sequence=A,B,...`; exits 0 once the result came.
 //   fastdds_peer client SERVICE SECONDS
 //     Calls std_srvs/srv/Trigger on SERVICE as rmw_fastrtps does (the request names its
 //     reply reader; the reply is the one whose related sample identity has the request's
@@ -352,6 +356,100 @@ static int action(char** argv) {
     return 0;
 }
 
+// One request in the rmw_fastrtps mapping, and its reply (empty after `deadline`).
+struct Call {
+    DataWriter* requests;
+    DataReader* replies;
+
+    bool ready() {
+        SubscriptionMatchedStatus r;
+        replies->get_subscription_matched_status(r);
+        return matched(requests) && r.current_count > 0;
+    }
+
+    Raw call(Raw* request, std::chrono::steady_clock::time_point deadline) {
+        WriteParams params;
+        params.related_sample_identity().writer_guid() = replies->guid();
+        if (!requests->write(request, params)) return Raw();
+        const SampleIdentity sent = params.sample_identity();
+        while (std::chrono::steady_clock::now() < deadline) {
+            Raw got;
+            SampleInfo info;
+            while (replies->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+                if (info.valid_data &&
+                    info.related_sample_identity.sequence_number() == sent.sequence_number() &&
+                    info.related_sample_identity.writer_guid() == replies->guid())
+                    return got;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        return Raw();
+    }
+};
+
+static int action_client(char** argv) {
+    const std::string name = std::string(argv[2]) + "/_action/";
+    const int32_t order = std::atoi(argv[3]);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[4]));
+    Node node;
+    if (!node.open()) return 1;
+    const std::string t = "example_interfaces::action::dds_::Fibonacci_";
+    Call send_goal{node.writer("rq/" + name + "send_goalRequest", (t + "SendGoal_Request_").c_str()),
+                   node.reader("rr/" + name + "send_goalReply", (t + "SendGoal_Response_").c_str())};
+    Call get_result{node.writer("rq/" + name + "get_resultRequest", (t + "GetResult_Request_").c_str()),
+                    node.reader("rr/" + name + "get_resultReply", (t + "GetResult_Response_").c_str())};
+    DataReader* feedback = node.reader("rt/" + name + "feedback", (t + "FeedbackMessage_").c_str());
+    if (!send_goal.requests || !send_goal.replies || !get_result.requests || !get_result.replies || !feedback)
+        return 1;
+    std::vector<uint8_t> uuid;
+    for (int i = 0; i < 16; i++) uuid.push_back(static_cast<uint8_t>(0xa0 + i));
+    while (!(send_goal.ready() && get_result.ready())) {
+        if (std::chrono::steady_clock::now() >= deadline) {
+            std::printf("the action's services were not matched\n");
+            return 1;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    // {uuid[16], int32 order} -> {bool accepted, Time stamp}
+    Raw goal;
+    goal.bytes = {0x00, 0x01, 0x00, 0x00};
+    goal.bytes.insert(goal.bytes.end(), uuid.begin(), uuid.end());
+    put_i32(&goal.bytes, order);
+    Raw accepted = send_goal.call(&goal, deadline);
+    std::printf("accepted: %d\n", accepted.bytes.size() > 4 ? accepted.bytes[4] : -1);
+    std::fflush(stdout);
+    if (accepted.bytes.size() <= 4 || accepted.bytes[4] != 1) return 1;
+    // {uuid[16]} -> {int8 status, int32[] sequence}; feedback counted meanwhile.
+    Raw ask;
+    ask.bytes = {0x00, 0x01, 0x00, 0x00};
+    ask.bytes.insert(ask.bytes.end(), uuid.begin(), uuid.end());
+    Raw result = get_result.call(&ask, deadline);
+    int feedbacks = 0;
+    Raw got;
+    SampleInfo info;
+    while (feedback->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
+        if (info.valid_data && got.bytes.size() >= 20 &&
+            std::equal(uuid.begin(), uuid.end(), got.bytes.begin() + 4))
+            feedbacks++;
+    }
+    std::printf("feedback: %d\n", feedbacks);
+    if (result.bytes.size() < 12) {
+        std::printf("no result\n");
+        return 1;
+    }
+    uint32_t n = 0;
+    for (int i = 0; i < 4; i++) n |= static_cast<uint32_t>(result.bytes[8 + i]) << (8 * i);
+    std::string seq;
+    for (uint32_t i = 0; i < n && 12 + 4 * (i + 1) <= result.bytes.size(); i++) {
+        int32_t v = 0;
+        for (int k = 0; k < 4; k++) v |= static_cast<int32_t>(result.bytes[12 + 4 * i + k]) << (8 * k);
+        seq += (i ? "," : "") + std::to_string(v);
+    }
+    std::printf("result: status=%d sequence=%s\n", static_cast<int8_t>(result.bytes[4]), seq.c_str());
+    std::fflush(stdout);
+    return 0;
+}
+
 static int client(char** argv) {
     const std::string service = argv[2];
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
@@ -465,9 +563,11 @@ int main(int argc, char** argv) {
     if (mode == "server" && argc == 4) return server(argv);
     if (mode == "client" && argc == 4) return client(argv);
     if (mode == "action" && argc == 4) return action(argv);
+    if (mode == "action-client" && argc == 5) return action_client(argv);
     std::fprintf(stderr,
                  "usage: %s topics UP_TOPIC DOWN_TOPIC COUNT SECONDS | server SERVICE SECONDS"
-                 " | client SERVICE SECONDS | action ACTION SECONDS\n",
+                 " | client SERVICE SECONDS | action ACTION SECONDS"
+                 " | action-client ACTION ORDER SECONDS\n",
                  argv[0]);
     return 2;
 }

@@ -26,8 +26,9 @@
 #      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, which reaches roslibpy
 #      in order, and reads rt/fdds_down, which roslibpy publishes at the hub; a Fast DDS
 #      server of /fdds_add_two_ints answers roslibpy at the hub, a Fast DDS action server
-#      passes step 6's checks, and a Fast DDS client's call of /cloud/greet gets the
-#      fleet's answer (rmw_fastrtps request/reply);
+#      passes step 6's checks, a Fast DDS client's call of /cloud/greet gets the fleet's
+#      answer, and a Fast DDS action client's goal of /cloud/fib succeeds with feedback
+#      (rmw_fastrtps request/reply);
 #   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
@@ -309,6 +310,16 @@ else
         echo "ok: a Fast DDS client's call of /cloud/greet got the fleet's answer: $(grep '^reply:' "$tmp/fastdds_client.log")"
     else
         fail "a Fast DDS client calling /cloud/greet (rmw_fastrtps request/reply)"; show_log fastdds_client
+    fi
+    # A Fast DDS action client sends the fleet's /cloud/fib (hub_peer.py serve-fib) a goal.
+    want_fib="$(py -c 'import sys; sys.path.insert(0, sys.argv[1]); import expected as E; print(",".join(map(str, E.fibonacci(6))))' "$here")"
+    if ns_run 40 "$tmp/fastdds_peer" action-client cloud/fib 6 35 >"$tmp/fastdds_action_client.log" 2>&1 \
+        && grep -qx "result: status=4 sequence=$want_fib" "$tmp/fastdds_action_client.log" \
+        && grep -qE '^feedback: [1-9]' "$tmp/fastdds_action_client.log"; then
+        echo "ok: a Fast DDS action client's goal of /cloud/fib: $(tr '\n' ' ' <"$tmp/fastdds_action_client.log")"
+    else
+        fail "a Fast DDS action client's goal of /cloud/fib (want SUCCEEDED with $want_fib and feedback)"
+        show_log fastdds_action_client
     fi
     ns_kill "$tmp/fastdds_peer"
 fi
