@@ -192,8 +192,14 @@ async fn a_silent_provider_times_out_and_a_vanishing_one_fails_its_calls_at_once
     let hub = start_hub().await;
     let mut provider = Rosbridge::connect(&hub.ws_url()).await;
     advertise(&mut provider, "/slow", "std_srvs/srv/Trigger").await;
+    // The provider's session and the caller's run apart: wait until the hub's call table
+    // has the service (it never answers, so it cannot be called until it does).
+    let slow = fleetlink_relay::TopicName::parse("/slow").unwrap();
+    eventually("/slow advertised at the hub", || {
+        hub.state.router.calls.service(&slow).is_some()
+    })
+    .await;
     let mut op = Rosbridge::connect(&hub.ws_url()).await;
-    call_when_ready(&mut op, "/rosapi/get_time", json!({})).await;
     let t0 = Instant::now();
     op.send(json!({"op": "call_service", "service": "/slow", "id": "t", "timeout": 0.3}))
         .await;
