@@ -4,9 +4,10 @@
 // QoS (reliable, volatile, keep last 10). Samples are handled as the CDR bytes they are,
 // so the peer needs no generated type support.
 //
-//   fastdds_peer topics UP_TOPIC DOWN_TOPIC COUNT SECONDS
+//   fastdds_peer topics UP_TOPIC DOWN_TOPIC COUNT SECONDS [PAD]
 //     Writes std_msgs/msg/String "fastdds <i>" for i in 0..COUNT on rt/UP_TOPIC, 10 a
-//     second, once a reader is matched; prints `down: <text>` for every sample read on
+//     second, once a reader is matched; odd ones followed by a space and PAD x's (large
+//     samples go out in DDS fragments); prints `down: <text>` for every sample read on
 //     rt/DOWN_TOPIC; exits 0 after COUNT writes and at least one sample read.
 //   fastdds_peer server SERVICE SECONDS
 //     Serves example_interfaces/srv/AddTwoInts on SERVICE as rmw_fastrtps does: the reply
@@ -512,6 +513,7 @@ static int topics(int argc, char** argv) {
     const std::string up = std::string("rt/") + argv[2];
     const std::string down = std::string("rt/") + argv[3];
     const int count = std::atoi(argv[4]);
+    const size_t pad = argc > 6 ? std::strtoul(argv[6], nullptr, 10) : 0;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[5]));
     Node node;
     if (!node.open()) return 1;
@@ -532,7 +534,9 @@ static int topics(int argc, char** argv) {
         writer->get_publication_matched_status(matched);
         if (written < count && matched.current_count > 0 &&
             std::chrono::steady_clock::now() >= next_write) {
-            Raw sample = encode_string("fastdds " + std::to_string(written));
+            std::string text = "fastdds " + std::to_string(written);
+            if (written % 2 == 1 && pad > 0) text += " " + std::string(pad, 'x');
+            Raw sample = encode_string(text);
             if (writer->write(&sample)) written++;
             next_write += std::chrono::milliseconds(100);
         }
@@ -559,13 +563,13 @@ static int topics(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     const std::string mode = argc > 1 ? argv[1] : "";
-    if (mode == "topics" && argc == 6) return topics(argc, argv);
+    if (mode == "topics" && (argc == 6 || argc == 7)) return topics(argc, argv);
     if (mode == "server" && argc == 4) return server(argv);
     if (mode == "client" && argc == 4) return client(argv);
     if (mode == "action" && argc == 4) return action(argv);
     if (mode == "action-client" && argc == 5) return action_client(argv);
     std::fprintf(stderr,
-                 "usage: %s topics UP_TOPIC DOWN_TOPIC COUNT SECONDS | server SERVICE SECONDS"
+                 "usage: %s topics UP_TOPIC DOWN_TOPIC COUNT SECONDS [PAD] | server SERVICE SECONDS"
                  " | client SERVICE SECONDS | action ACTION SECONDS"
                  " | action-client ACTION ORDER SECONDS\n",
                  argv[0]);

@@ -26,9 +26,10 @@ Modes (all take --hub-url URL --robot NAME):
   check-gone    /<robot>/late_topic leaves the hub's topic list and has no publisher there
                 (rosapi topics, publishers) once its only writer's participant is gone
                 (killed: DDS notices when its lease ends).
-  check-fastdds --peer-log FILE
+  check-fastdds --peer-log FILE [--pad N]
                 Fast DDS (fastdds_peer, ROS 2's default middleware's DDS) both ways:
-                /<robot>/fdds_up (std_msgs/msg/String, "fastdds N") arrives in order;
+                /<robot>/fdds_up (std_msgs/msg/String, "fastdds N", odd N padded with
+                --pad bytes) arrives in order and whole;
                 then /<robot>/fdds_down ("from the hub N") is published at 10 Hz until
                 FILE has the peer's "down: from the hub" line (15 s at most); the Fast
                 DDS server /<robot>/fdds_add_two_ints answers three calls.
@@ -264,10 +265,15 @@ def check_fastdds(args):
             break
     up.unsubscribe()
     numbers = [int(t.split()[1]) for t in texts if isinstance(t, str) and t.startswith("fastdds ")]
-    if check(len(texts) >= 5, f"{r}/fdds_up from the Fast DDS writer arrives: {texts}"):
+    shown = [short(t, 40) for t in texts]
+    if check(len(texts) >= 5, f"{r}/fdds_up from the Fast DDS writer arrives: {shown}"):
         check(len(numbers) == len(texts) and numbers == sorted(numbers)
               and numbers[-1] - numbers[0] == len(numbers) - 1,
-              f"its values are the writer's, in order, none missing: {texts}")
+              f"its values are the writer's, in order, none missing: {shown}")
+        # Odd ones carry --pad bytes more: samples of that size arrive whole.
+        want = [len(f"fastdds {n}") + (1 + args.pad if n % 2 and args.pad else 0) for n in numbers]
+        got_len = [len(t) for t in texts]
+        check(got_len == want, f"the large ones ({args.pad} bytes more) arrive whole: lengths {got_len}, want {want}")
     down = roslibpy.Topic(ros, f"{r}/fdds_down", "std_msgs/msg/String")
     down.advertise()
     reached = False
@@ -416,6 +422,7 @@ def main():
     p.add_argument("--robot", required=True)
     p.add_argument("--chatter-stop")
     p.add_argument("--peer-log")
+    p.add_argument("--pad", type=int, default=0, help="check-fastdds: the padding of odd messages")
     p.add_argument("--action", default="fibonacci", help="check-action: the robot's action (default fibonacci)")
     args = p.parse_args()
     if args.mode == "serve" and not (args.out and args.chatter_stop):

@@ -23,8 +23,8 @@
 #   8. /chatter both ways: after both sides stop and a quiet period, every message was
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
 #   8b. Fast DDS (Debian's libfastrtps, under ROS 2's default middleware): a C++ node
-#      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, which reaches roslibpy
-#      in order, and reads rt/fdds_down, which roslibpy publishes at the hub; a Fast DDS
+#      (fastdds_peer.cpp, built here with g++) writes rt/fdds_up, every other sample 1 MB
+#      (DDS fragments), which reaches roslibpy in order and whole, and reads rt/fdds_down, which roslibpy publishes at the hub; a Fast DDS
 #      server of /fdds_add_two_ints answers roslibpy at the hub, a Fast DDS action server
 #      passes step 6's checks, a Fast DDS client's call of /cloud/greet gets the fleet's
 #      answer, and a Fast DDS action client's goal of /cloud/fib succeeds with feedback
@@ -293,12 +293,12 @@ if ! g++ -O1 -std=c++17 -o "$tmp/fastdds_peer" "$here/fastdds_peer.cpp" -lfastrt
     fail "fastdds_peer.cpp did not build (libfastrtps-dev from scripts/setup.d/35-ros2-peers.sh)"
     show_log fastdds_build
 else
-    ns_bg "$tmp/fastdds_peer" topics fdds_up fdds_down 600 60 >"$tmp/fastdds.log" 2>&1 &
+    ns_bg "$tmp/fastdds_peer" topics fdds_up fdds_down 600 60 1000000 >"$tmp/fastdds.log" 2>&1 &
     pids+=($!)
     ns_bg "$tmp/fastdds_peer" server fdds_add_two_ints 60 >"$tmp/fastdds_server.log" 2>&1 &
     pids+=($!)
     ns_run 60 "$python" "$here/hub_peer.py" check-fastdds --hub-url "$hub_url" --robot "$robot" \
-        --peer-log "$tmp/fastdds.log" || { fail "check-fastdds (Fast DDS writer, reader and server)"; show_log fastdds; show_log fastdds_server; }
+        --peer-log "$tmp/fastdds.log" --pad 1000000 || { fail "check-fastdds (Fast DDS writer, reader and server)"; show_log fastdds; show_log fastdds_server; }
     # A Fast DDS action server: the checks of step 6.
     ns_bg "$tmp/fastdds_peer" action fdds_fibonacci 60 >"$tmp/fastdds_action.log" 2>&1 &
     pids+=($!)
