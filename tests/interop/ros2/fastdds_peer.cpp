@@ -28,7 +28,7 @@
 //     reply reader; the reply is the one whose related sample identity has the request's
 //     sequence number), once the server is matched, again every 2 s until answered.
 //     Prints `reply: success=<0|1> message=<text>`; exits 0 once answered.
-// Every mode exits 1 when SECONDS pass first.
+// The writing and calling modes exit 1 when SECONDS pass first; the servers run until then.
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
@@ -184,6 +184,21 @@ static bool matched(DataWriter* w) {
     return s.current_count > 0;
 }
 
+static void put_i32(std::vector<uint8_t>* b, int32_t v) {
+    for (int i = 0; i < 4; i++) b->push_back(static_cast<uint8_t>(static_cast<uint32_t>(v) >> (8 * i)));
+}
+
+// A reply in the rmw_fastrtps mapping: to the request's sequence number, named by the
+// client's reply reader when the request gave one.
+static bool reply_to(DataWriter* w, const SampleInfo& request, Raw* reply) {
+    WriteParams params;
+    params.related_sample_identity(request.sample_identity);
+    if (request.related_sample_identity.writer_guid() != GUID_t::unknown()) {
+        params.related_sample_identity().writer_guid() = request.related_sample_identity.writer_guid();
+    }
+    return w->write(reply, params);
+}
+
 static int server(char** argv) {
     const std::string service = argv[2];
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
@@ -206,13 +221,7 @@ static int server(char** argv) {
             reply.bytes = {0x00, 0x01, 0x00, 0x00};
             const int64_t sum = a + b;
             for (int i = 0; i < 8; i++) reply.bytes.push_back(static_cast<uint8_t>(sum >> (8 * i)));
-            WriteParams params;
-            params.related_sample_identity(info.sample_identity);
-            if (info.related_sample_identity.writer_guid() != GUID_t::unknown()) {
-                params.related_sample_identity().writer_guid() =
-                    info.related_sample_identity.writer_guid();
-            }
-            const bool ok = replies->write(&reply, params);
+            const bool ok = reply_to(replies, info, &reply);
             std::printf("served: %lld + %lld = %lld%s\n", static_cast<long long>(a),
                         static_cast<long long>(b), static_cast<long long>(sum),
                         ok ? "" : " (reply not written)");
@@ -221,21 +230,6 @@ static int server(char** argv) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return 0;
-}
-
-static void put_i32(std::vector<uint8_t>* b, int32_t v) {
-    for (int i = 0; i < 4; i++) b->push_back(static_cast<uint8_t>(static_cast<uint32_t>(v) >> (8 * i)));
-}
-
-// A reply in the rmw_fastrtps mapping: to the request's sequence number, named by the
-// client's reply reader when the request gave one.
-static bool reply_to(DataWriter* w, const SampleInfo& request, Raw* reply) {
-    WriteParams params;
-    params.related_sample_identity(request.sample_identity);
-    if (request.related_sample_identity.writer_guid() != GUID_t::unknown()) {
-        params.related_sample_identity().writer_guid() = request.related_sample_identity.writer_guid();
-    }
-    return w->write(reply, params);
 }
 
 struct FibGoal {
@@ -456,54 +450,34 @@ static int client(char** argv) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(std::atoi(argv[3]));
     Node node;
     if (!node.open()) return 1;
-    DataWriter* requests =
-        node.writer("rq/" + service + "Request", "std_srvs::srv::dds_::Trigger_Request_");
-    DataReader* replies =
-        node.reader("rr/" + service + "Reply", "std_srvs::srv::dds_::Trigger_Response_");
-    if (requests == nullptr || replies == nullptr) return 1;
+    Call trigger{node.writer("rq/" + service + "Request", "std_srvs::srv::dds_::Trigger_Request_"),
+                 node.reader("rr/" + service + "Reply", "std_srvs::srv::dds_::Trigger_Response_")};
+    if (trigger.requests == nullptr || trigger.replies == nullptr) return 1;
     std::printf("ready: calling %s\n", service.c_str());
     std::fflush(stdout);
-    std::vector<SampleIdentity> sent;
-    auto next_call = std::chrono::steady_clock::now();
     while (std::chrono::steady_clock::now() < deadline) {
-        if (matched(requests) && std::chrono::steady_clock::now() >= next_call) {
-            // std_srvs/srv/Trigger's empty request: ROS 2's one-byte placeholder member.
-            Raw request;
-            request.bytes = {0x00, 0x01, 0x00, 0x00, 0x00};
-            WriteParams params;
-            params.related_sample_identity().writer_guid() = replies->guid();
-            if (requests->write(&request, params)) sent.push_back(params.sample_identity());
-            next_call = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        if (!trigger.ready()) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            continue;
         }
-        Raw got;
-        SampleInfo info;
-        while (replies->take_next_sample(&got, &info) == ReturnCode_t::RETCODE_OK) {
-            if (!info.valid_data) continue;
-            const SampleIdentity& to = info.related_sample_identity;
-            bool ours = false;
-            for (const SampleIdentity& s : sent) {
-                ours = ours || (to.sequence_number() == s.sequence_number() &&
-                                (to.writer_guid() == replies->guid() ||
-                                 to.writer_guid() == s.writer_guid()));
-            }
-            if (!ours) {
-                std::printf("reply not for this client\n");
-                continue;
-            }
-            // bool success; string message (at 4: its length, then the text and a NUL).
-            std::string message;
-            if (got.bytes.size() >= 12) {
-                uint32_t n = 0;
-                for (int i = 0; i < 4; i++) n |= static_cast<uint32_t>(got.bytes[8 + i]) << (8 * i);
-                if (n > 0 && 12 + n <= got.bytes.size())
-                    message.assign(reinterpret_cast<const char*>(got.bytes.data() + 12), n - 1);
-            }
-            std::printf("reply: success=%d message=%s\n", got.bytes.size() > 4 ? got.bytes[4] : -1,
-                        message.c_str());
-            std::fflush(stdout);
-            return 0;
+        // std_srvs/srv/Trigger's empty request: ROS 2's one-byte placeholder member.
+        Raw request;
+        request.bytes = {0x00, 0x01, 0x00, 0x00, 0x00};
+        Raw got = trigger.call(&request, std::min(deadline, std::chrono::steady_clock::now() +
+                                                                std::chrono::seconds(2)));
+        if (got.bytes.empty()) continue;  // asked again every 2 s
+        // bool success; string message (at 4: its length, then the text and a NUL).
+        std::string message;
+        if (got.bytes.size() >= 12) {
+            uint32_t n = 0;
+            for (int i = 0; i < 4; i++) n |= static_cast<uint32_t>(got.bytes[8 + i]) << (8 * i);
+            if (n > 0 && 12 + n <= got.bytes.size())
+                message.assign(reinterpret_cast<const char*>(got.bytes.data() + 12), n - 1);
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        std::printf("reply: success=%d message=%s\n", got.bytes.size() > 4 ? got.bytes[4] : -1,
+                    message.c_str());
+        std::fflush(stdout);
+        return 0;
     }
     std::printf("no reply\n");
     return 1;
