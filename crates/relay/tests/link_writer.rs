@@ -50,6 +50,36 @@ fn link_and_publisher(router: &Router, pattern: &str) -> (Arc<Outbox>, ClientId)
     (outbox, publisher)
 }
 
+/// An agent-style uplink (a scheduled outbox) subscribed to everything on `router`, and a
+/// publisher.
+fn uplink_and_publisher(router: &Router) -> (Arc<Outbox>, ClientId) {
+    use fleetlink_qos::{SchedulerConfig, TopicQos};
+    use fleetlink_relay::reliable::ReliableOut;
+    let (link, outbox) = router.connect_with(
+        ClientKind::Internal {
+            role: "uplink".into(),
+        },
+        None,
+        |id| {
+            Outbox::scheduled(
+                id,
+                SchedulerConfig::default(),
+                Arc::new(|_| TopicQos::default()),
+                ReliableOut::in_memory(),
+            )
+        },
+    );
+    router
+        .subscribe(
+            link,
+            Target::Pattern(Router::compile_pattern(".*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    (outbox, publisher)
+}
+
 /// The writer of `outbox` over a sink holding `slots` WebSocket messages: its control
 /// channel, what it sends, its task.
 fn spawn_writer(
@@ -170,34 +200,10 @@ async fn small_message_overtakes_a_large_one_mid_transfer() {
 /// behind them. Once bulk may go again, the rest of the large message follows in order.
 #[tokio::test]
 async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
-    use fleetlink_qos::{SchedulerConfig, TopicQos};
-    use fleetlink_relay::Outbox;
-    use fleetlink_relay::reliable::ReliableOut;
     use std::time::Instant;
 
     let router = Arc::new(Router::default());
-    let (link, outbox) = router.connect_with(
-        ClientKind::Internal {
-            role: "uplink".into(),
-        },
-        None,
-        |id| {
-            Outbox::scheduled(
-                id,
-                SchedulerConfig::default(),
-                Arc::new(|_| TopicQos::default()),
-                ReliableOut::in_memory(),
-            )
-        },
-    );
-    router
-        .subscribe(
-            link,
-            Target::Pattern(Router::compile_pattern(".*").unwrap()),
-            SubOptions::default(),
-        )
-        .unwrap();
-    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let (outbox, publisher) = uplink_and_publisher(&router);
     let advertise = |name: &str, ty: &str| {
         router
             .advertise(
@@ -462,34 +468,11 @@ impl futures_util::Sink<WsMessage> for FlushBatches {
 /// next window's worth only after the hub acknowledges.
 #[tokio::test]
 async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
-    use fleetlink_qos::{SchedulerConfig, TopicQos};
     use fleetlink_relay::link_control::FIRST_CHUNK;
-    use fleetlink_relay::reliable::ReliableOut;
     use std::time::Instant;
 
     let router = Arc::new(Router::default());
-    let (link, outbox) = router.connect_with(
-        ClientKind::Internal {
-            role: "uplink".into(),
-        },
-        None,
-        |id| {
-            Outbox::scheduled(
-                id,
-                SchedulerConfig::default(),
-                Arc::new(|_| TopicQos::default()),
-                ReliableOut::in_memory(),
-            )
-        },
-    );
-    router
-        .subscribe(
-            link,
-            Target::Pattern(Router::compile_pattern(".*").unwrap()),
-            SubOptions::default(),
-        )
-        .unwrap();
-    let (publisher, _) = router.connect(ClientKind::Internal { role: "pub".into() }, None);
+    let (outbox, publisher) = uplink_and_publisher(&router);
     let cloud = router
         .advertise(
             publisher,
@@ -546,11 +529,15 @@ async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
         vec![(0, FIRST_CHUNK), (FIRST_CHUNK as u64, FIRST_CHUNK)],
         "one flush carries the window's chunks"
     );
-    tokio::time::sleep(Duration::from_millis(100)).await;
-    assert!(
-        chunks_in(&batches.try_recv().unwrap_or_default()).is_empty(),
-        "nothing beyond the window before an acknowledgement"
-    );
+    // Whatever the writer flushes meanwhile (its idle ticks, probes) carries no chunk;
+    // looked at for 200 ms.
+    let quiet = tokio::time::Instant::now() + Duration::from_millis(200);
+    while let Ok(Some(b)) = tokio::time::timeout_at(quiet, batches.recv()).await {
+        assert!(
+            chunks_in(&b).is_empty(),
+            "nothing beyond the window before an acknowledgement"
+        );
+    }
     let mut received: usize = first.iter().map(|c| c.1).sum();
     let mut offsets: Vec<u64> = first.iter().map(|c| c.0).collect();
     let mut acked = 0;

@@ -251,10 +251,6 @@ async fn serve_requests(
     }
 }
 
-fn reply(writer: &RawWriter, to: ReplyTo, msg: &[u8]) -> Result<(), String> {
-    to.reply(writer, msg)
-}
-
 fn send_goal(
     bridge: &Arc<Bridge>,
     action: &Arc<OfferedAction>,
@@ -308,7 +304,7 @@ fn send_goal(
         &format!("{}_SendGoal_Response", action.action_type),
         &json!({"accepted": accepted, "stamp": {"sec": stamp.0, "nanosec": stamp.1}}),
     )?;
-    reply(&action.writers.send_goal, header, &answer)?;
+    header.reply(&action.writers.send_goal, &answer)?;
     publish_status(bridge, action);
     Ok(())
 }
@@ -327,7 +323,7 @@ fn get_result(action: &OfferedAction, header: ReplyTo, msg: &Bytes) -> Result<()
             .and_then(|e| e.result.clone())
     };
     match ready {
-        Some(result) => reply(&action.writers.get_result, header, &result),
+        Some(result) => header.reply(&action.writers.get_result, &result),
         None => Err(format!(
             "get_result for a goal {} does not know",
             action.name
@@ -367,7 +363,7 @@ fn cancel_goal(
         "action_msgs/srv/CancelGoal_Response",
         &json!({"return_code": return_code, "goals_canceling": infos}),
     )?;
-    reply(&action.writers.cancel_goal, header, &answer)
+    header.reply(&action.writers.cancel_goal, &answer)
 }
 
 /// The status of every live and recently ended goal, as `GoalStatusArray`.
@@ -484,7 +480,7 @@ pub(crate) fn on_event(bridge: &Bridge, action: &OfferedAction, ev: CallEvent) {
             match answer {
                 Ok(result) => {
                     for h in waiting {
-                        if let Err(e) = reply(&action.writers.get_result, h, &result) {
+                        if let Err(e) = h.reply(&action.writers.get_result, &result) {
                             tracing::debug!("ros2: result of {}: {e}", action.name);
                         }
                     }

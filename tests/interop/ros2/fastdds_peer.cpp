@@ -142,26 +142,24 @@ struct Node {
     }
 
     // rmw's default QoS; data sharing off, as rmw has it for types of unbounded size.
-    DataWriter* writer(const std::string& name, const char* type_name) {
-        DataWriterQos q = DATAWRITER_QOS_DEFAULT;
+    template <typename Qos>
+    static Qos rmw_default(Qos q) {
         q.reliability().kind = RELIABLE_RELIABILITY_QOS;
         q.durability().kind = VOLATILE_DURABILITY_QOS;
         q.history().kind = KEEP_LAST_HISTORY_QOS;
         q.history().depth = 10;
         q.data_sharing().off();
+        return q;
+    }
+
+    DataWriter* writer(const std::string& name, const char* type_name) {
         Topic* t = topic(name, type_name);
-        return t ? publisher->create_datawriter(t, q) : nullptr;
+        return t ? publisher->create_datawriter(t, rmw_default(DATAWRITER_QOS_DEFAULT)) : nullptr;
     }
 
     DataReader* reader(const std::string& name, const char* type_name) {
-        DataReaderQos q = DATAREADER_QOS_DEFAULT;
-        q.reliability().kind = RELIABLE_RELIABILITY_QOS;
-        q.durability().kind = VOLATILE_DURABILITY_QOS;
-        q.history().kind = KEEP_LAST_HISTORY_QOS;
-        q.history().depth = 10;
-        q.data_sharing().off();
         Topic* t = topic(name, type_name);
-        return t ? subscriber->create_datareader(t, q) : nullptr;
+        return t ? subscriber->create_datareader(t, rmw_default(DATAREADER_QOS_DEFAULT)) : nullptr;
     }
 
     ~Node() {
