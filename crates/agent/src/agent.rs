@@ -132,6 +132,7 @@ fn ros2_options(
         offer_actions: NameFilter::new(&r.actions.offer, &[])?,
         discovery_period: r.discovery(),
         call_timeout: r.call_timeout(),
+        parameters: r.parameters,
     })
 }
 

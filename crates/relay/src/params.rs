@@ -61,6 +61,55 @@ impl ParamStore for MemoryParams {
     }
 }
 
+/// The rosapi parameter services an agent's ROS adapter may answer for its robot: name
+/// in the agent's call table, rosapi's type, its definition.
+pub const SERVICES: [(&str, &str, &str); 6] = [
+    (
+        "/rosapi/get_param",
+        "rosapi/srv/GetParam",
+        "string name\nstring default\n---\nstring value\n",
+    ),
+    (
+        "/rosapi/set_param",
+        "rosapi/srv/SetParam",
+        "string name\nstring value\n---\n",
+    ),
+    (
+        "/rosapi/has_param",
+        "rosapi/srv/HasParam",
+        "string name\n---\nbool exists\n",
+    ),
+    (
+        "/rosapi/delete_param",
+        "rosapi/srv/DeleteParam",
+        "string name\n---\n",
+    ),
+    (
+        "/rosapi/get_param_names",
+        "rosapi/srv/GetParamNames",
+        "---\nstring[] names\n",
+    ),
+    (
+        "/rosapi/search_param",
+        "rosapi/srv/SearchParam",
+        "string name\n---\nstring global_name\n",
+    ),
+];
+
+/// The schema a parameter service is advertised with.
+pub fn schema(type_name: &str, definition: &str) -> fleetlink_proto::Schema {
+    fleetlink_proto::Schema {
+        type_name: type_name.to_owned(),
+        encoding: "ros1msg".into(),
+        text: definition.to_owned(),
+    }
+}
+
+/// Whether `name` is one of the parameter services.
+pub fn is_param_service(name: &str) -> bool {
+    SERVICES.iter().any(|(n, _, _)| *n == name)
+}
+
 /// A parameter name as rosapi clients send it: leading `/` added, trailing `/` dropped.
 pub fn param_name(raw: &str) -> Result<String, String> {
     let t = raw.trim();
@@ -103,12 +152,17 @@ pub fn call_args(p: &fleetlink_proto::Payload) -> Option<Value> {
     }
 }
 
-/// `get_param`'s answer for a parameter that is not set: the caller's `default` (a JSON
-/// text), `null` without one.
+/// `get_param`'s answer for a parameter that is not set: the caller's default (a JSON
+/// text; rosapi names it `default` for ROS 1 and `default_value` for ROS 2), `null`
+/// without one.
 pub fn default_text(args: &Value) -> &str {
-    args.get("default")
-        .and_then(Value::as_str)
-        .filter(|d| !d.is_empty())
+    ["default", "default_value"]
+        .iter()
+        .find_map(|k| {
+            args.get(*k)
+                .and_then(Value::as_str)
+                .filter(|d| !d.is_empty())
+        })
         .unwrap_or("null")
 }
 

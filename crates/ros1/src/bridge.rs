@@ -77,11 +77,14 @@ pub async fn run(
         node.opts.master_uri
     );
     if node.opts.parameters {
-        for (name, ty, definition) in crate::params::SERVICES {
+        for (name, ty, definition) in fleetlink_relay::params::SERVICES {
             let name = TopicName::parse(name).expect("a valid service name");
-            router
-                .calls
-                .advertise(client, name, crate::params::schema(ty, definition), false);
+            router.calls.advertise(
+                client,
+                name,
+                fleetlink_relay::params::schema(ty, definition),
+                false,
+            );
         }
     }
     for re in &node.opts.offer.include {
@@ -343,7 +346,7 @@ async fn register_service(node: &Node, name: &str) {
 /// A fleet caller's call of a local ROS service.
 async fn serve_call(node: &Node, req: CallRequest) {
     let name = req.service.name.as_str();
-    if node.opts.parameters && crate::params::is_param_service(name) {
+    if node.opts.parameters && fleetlink_relay::params::is_param_service(name) {
         return crate::params::serve(node, &req).await;
     }
     let found = node

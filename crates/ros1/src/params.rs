@@ -13,7 +13,7 @@
 //! parameter client does it: integers that fit 32 bits are `i4`, other numbers `double`,
 //! objects `struct`s, arrays `array`s; `null` has no XML-RPC form and is refused.
 
-use fleetlink_proto::{Payload, Schema};
+use fleetlink_proto::Payload;
 use fleetlink_relay::calls::{CallRequest, CallStatus};
 use fleetlink_relay::params;
 use serde_json::{Value as Json, json};
@@ -21,54 +21,6 @@ use serde_json::{Value as Json, json};
 use crate::master::ApiError;
 use crate::node::Node;
 use crate::xmlrpc::Value;
-
-/// The parameter services: name in the agent's table, rosapi's type, its definition.
-pub const SERVICES: [(&str, &str, &str); 6] = [
-    (
-        "/rosapi/get_param",
-        "rosapi/srv/GetParam",
-        "string name\nstring default\n---\nstring value\n",
-    ),
-    (
-        "/rosapi/set_param",
-        "rosapi/srv/SetParam",
-        "string name\nstring value\n---\n",
-    ),
-    (
-        "/rosapi/has_param",
-        "rosapi/srv/HasParam",
-        "string name\n---\nbool exists\n",
-    ),
-    (
-        "/rosapi/delete_param",
-        "rosapi/srv/DeleteParam",
-        "string name\n---\n",
-    ),
-    (
-        "/rosapi/get_param_names",
-        "rosapi/srv/GetParamNames",
-        "---\nstring[] names\n",
-    ),
-    (
-        "/rosapi/search_param",
-        "rosapi/srv/SearchParam",
-        "string name\n---\nstring global_name\n",
-    ),
-];
-
-/// The schema a parameter service is advertised with.
-pub fn schema(type_name: &str, definition: &str) -> Schema {
-    Schema {
-        type_name: type_name.to_owned(),
-        encoding: "ros1msg".into(),
-        text: definition.to_owned(),
-    }
-}
-
-/// Whether `name` is one of the parameter services.
-pub fn is_param_service(name: &str) -> bool {
-    SERVICES.iter().any(|(n, _, _)| *n == name)
-}
 
 /// Answers one call of a parameter service.
 pub async fn serve(node: &Node, req: &CallRequest) {
@@ -220,12 +172,12 @@ mod tests {
 
     #[test]
     fn every_parameter_service_is_recognised_and_others_are_not() {
-        for (name, ty, def) in SERVICES {
-            assert!(is_param_service(name));
+        for (name, ty, def) in params::SERVICES {
+            assert!(params::is_param_service(name));
             assert!(ty.starts_with("rosapi/srv/"));
             assert!(def.contains("---"));
         }
-        assert!(!is_param_service("/rosapi/topics"));
+        assert!(!params::is_param_service("/rosapi/topics"));
         assert_eq!(
             params::param_name_or_root("max_speed").unwrap(),
             "/max_speed"

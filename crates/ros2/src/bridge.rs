@@ -101,6 +101,8 @@ pub(crate) struct State {
     pub(crate) offered_actions: HashMap<String, Arc<OfferedAction>>,
     /// Local clients' goals of fleet actions, by call id.
     pub(crate) offered_goals: HashMap<u64, Arc<OfferedAction>>,
+    /// Endpoints for nodes' parameter services, by node name.
+    pub(crate) params: HashMap<String, Arc<crate::params::NodeParams>>,
 }
 
 /// The bridge's shared half: the participant, the router client and the state.
@@ -258,6 +260,17 @@ pub async fn run(
         "ros2: joined DDS domain {domain} as participant {:?}",
         bridge.dp.guid().prefix
     );
+    if bridge.opts.parameters {
+        for (name, ty, definition) in fleetlink_relay::params::SERVICES {
+            let name = TopicName::parse(name).expect("a valid service name");
+            router.calls.advertise(
+                client,
+                name,
+                fleetlink_relay::params::schema(ty, definition),
+                false,
+            );
+        }
+    }
     for re in bridge
         .opts
         .offer
@@ -303,6 +316,9 @@ pub async fn run(
     }
     for a in st.offered_actions.values() {
         a.abort();
+    }
+    for p in st.params.values() {
+        p.abort();
     }
     router.disconnect(client);
     let s = &bridge.stats;

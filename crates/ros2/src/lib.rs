@@ -6,8 +6,9 @@
 //! topics as the CDR bytes that arrived (encapsulation header included), typed by their
 //! ROS 2 name; the definition comes from the agent's registry. Down (hub → robot), it
 //! writes router topics into the graph, converting once when a message is not CDR.
-//! Services use the request/reply topics of ROS 2's Cyclone DDS middleware (a 16-byte
-//! request header in the sample); actions are their three services and two topics.
+//! Services use ROS 2's request/reply topics in the mapping of the other side's
+//! middleware (Cyclone DDS's or Fast DDS's); actions are their three services and two
+//! topics; nodes' parameters answer rosapi's parameter services.
 //! docs/ros2.md has the design, the QoS table and the limits.
 //!
 //! # Layout
@@ -19,11 +20,13 @@
 //! - [`bridge`]: the participant, discovery, topics both ways ([`run`]).
 //! - [`services`]: services both ways, local action servers exposed to the fleet.
 //! - [`offered_actions`]: fleet actions served to local action clients.
+//! - [`params`]: nodes' parameters behind rosapi's parameter services.
 
 pub mod bridge;
 pub mod names;
 pub mod offered_actions;
 pub mod options;
+pub mod params;
 pub mod qos;
 pub mod raw;
 pub mod services;

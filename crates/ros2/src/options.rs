@@ -25,6 +25,8 @@ pub struct Ros2Options {
     pub discovery_period: Duration,
     /// How long a local caller's fleet call may take.
     pub call_timeout: Duration,
+    /// Answer rosapi's parameter services from the graph's nodes ([`crate::params`]).
+    pub parameters: bool,
 }
 
 impl Ros2Options {

@@ -25,10 +25,10 @@ use std::time::{Duration, Instant};
 
 use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
-use fleetlink_relay::TopicName;
 use fleetlink_relay::calls::{
     CallEvent, CallOptions, CallRequest, CallStatus, PeerMsg, ServiceChange,
 };
+use fleetlink_relay::{TopicName, params};
 use futures::StreamExt;
 use rustdds::{
     DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber, StatusEvented,
@@ -131,8 +131,23 @@ impl Endpoint {
         ))
     }
 
+    /// An endpoint of this bridge for `service` of a local server (type `type_base`,
+    /// in `mapping`), at most [`IN_FLIGHT`] requests unanswered, its replies read by a
+    /// task of its own.
+    pub(crate) fn start(
+        bridge: &Bridge,
+        service: &str,
+        type_base: &str,
+        mapping: Mapping,
+    ) -> Result<(Arc<Endpoint>, AbortHandle), String> {
+        let (call, reader) =
+            Endpoint::new(bridge, service, type_base, client_id(bridge), true, mapping)?;
+        let task = tokio::spawn(call.clone().pump(reader)).abort_handle();
+        Ok((call, task))
+    }
+
     /// Sends `msg` (a CDR request message) and waits for the reply message.
-    async fn request(&self, msg: &[u8]) -> Result<Bytes, String> {
+    pub(crate) async fn request(&self, msg: &[u8]) -> Result<Bytes, String> {
         // Held until the reply came or the call ended (timeout, cancel: dropped).
         let _slot = match &self.slots {
             Some(s) => Some(
@@ -428,12 +443,10 @@ fn expose(bridge: &Arc<Bridge>, name: &str, type_name: &str, action: bool, mappi
     let Ok(topic_name) = TopicName::parse(name) else {
         return;
     };
-    let client = client_id(bridge);
     let made = if action {
-        make_action(bridge, name, type_name, client, mapping)
+        make_action(bridge, name, type_name, client_id(bridge), mapping)
     } else {
-        Endpoint::new(bridge, name, type_name, client, true, mapping).map(|(call, reader)| {
-            let task = tokio::spawn(call.clone().pump(reader)).abort_handle();
+        Endpoint::start(bridge, name, type_name, mapping).map(|(call, task)| {
             (
                 RemoteKind::Service {
                     srv_type: type_name.to_owned(),
@@ -561,6 +574,12 @@ async fn pump_feedback(bridge: Arc<Bridge>, action: String, reader: RawReader) {
 /// The call table's messages for this bridge.
 pub(crate) fn on_peer(bridge: &Arc<Bridge>, m: PeerMsg) {
     match m {
+        PeerMsg::Call(req)
+            if bridge.opts.parameters && params::is_param_service(req.service.name.as_str()) =>
+        {
+            let bridge = bridge.clone();
+            tokio::spawn(async move { crate::params::serve(&bridge, &req).await });
+        }
         PeerMsg::Call(req) => {
             let remote = bridge
                 .lock()

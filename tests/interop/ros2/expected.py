@@ -64,6 +64,17 @@ TWIST = {"linear": {"x": 0.5, "y": -0.25, "z": 0.125}, "angular": {"x": 1.5, "y"
 ANNOUNCE = "hello fleet"  # the hub's latched /<robot>/announce
 GREETING = "hello from the fleet"  # the answer of the hub's /cloud/greet
 
+# A node's parameters on the robot: name -> (rcl_interfaces ParameterType, value).
+# "serial" is read-only.
+PARAMETER_NODE = "/nav_node"
+PARAMETERS = {
+    "max_speed": (3, 1.5),
+    "robot_name": (4, "robot-1"),
+    "use_sim_time": (1, False),
+    "waypoints": (7, [1, 2, 3]),
+    "serial": (4, "SN-42"),
+}
+
 
 def fibonacci(order):
     """The result of example_interfaces' Fibonacci example for `order` (int32 wrap-around,

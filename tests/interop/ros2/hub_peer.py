@@ -33,6 +33,10 @@ Modes (all take --hub-url URL --robot NAME):
                 then /<robot>/fdds_down ("from the hub N") is published at 10 Hz until
                 FILE has the peer's "down: from the hub" line (15 s at most); the Fast
                 DDS server /<robot>/fdds_add_two_ints answers three calls.
+  check-params  the parameters of the robot's node /nav_node (ros2_peer.py) through the
+                hub's rosapi as <node>:<parameter>: listed, read with roslibpy's Param,
+                changed (keeping the parameter's type), refusals with the node's reason,
+                deleted; clear errors for a missing node and a name without a node.
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -343,6 +347,67 @@ def check_gone(args):
 
 # ---------------------------------------------------------------- serve
 
+def rosapi(ros, call, **fields):
+    """One rosapi call through the hub: (True, answer) or (False, the error text)."""
+    svc = roslibpy.Service(ros, f"/rosapi/{call}", "rosapi_msgs/srv/X")
+    try:
+        return True, dict(svc.call(roslibpy.ServiceRequest(fields), timeout=15))
+    except Exception as e:
+        return False, str(e)
+
+
+def check_params(args):
+    """A node's parameters on the robot (ros2_peer.py's ParameterServer) through the
+    hub's rosapi, as Foxglove and roslibpy use it: names as <node>:<parameter> under the
+    robot's namespace."""
+    ros = connect(args.hub_url)
+    node = f"/{args.robot}{E.PARAMETER_NODE}"
+    want = sorted(f"{node}:{n}" for n in E.PARAMETERS)
+    # The agent finds the node in DDS discovery: retried while it does (bounded).
+    deadline, names = time.monotonic() + WAIT, []
+    while time.monotonic() < deadline:
+        ok, res = rosapi(ros, "get_param_names")
+        names = sorted(n for n in res.get("names", []) if n.startswith(node + ":")) if ok else []
+        if names == want:
+            break
+        time.sleep(0.3)
+    check(names == want, f"get_param_names lists the node's parameters: {short(names)}, want {want}")
+    for n, (_, v) in E.PARAMETERS.items():
+        try:
+            got = roslibpy.Param(ros, f"{node}:{n}").get(timeout=15)
+        except Exception as e:
+            got = f"error: {e}"
+        check(got == v, f"roslibpy Param {node}:{n} reads {got!r}, want {v!r}")
+    ok, res = rosapi(ros, "has_param", name=f"{node}:max_speed")
+    check(ok and res.get("exists") is True, f"has_param {node}:max_speed: {res}")
+    ok, res = rosapi(ros, "has_param", name=f"{node}:nope")
+    check(ok and res.get("exists") is False, f"has_param {node}:nope: {res}")
+    ok, res = rosapi(ros, "get_param", name=f"{node}:nope", default_value="7")
+    check(ok and res.get("value") == "7", f"get_param of a missing parameter gives the default: {res}")
+
+    # 2 to a double parameter stays a double (the node refuses a change of type).
+    try:
+        roslibpy.Param(ros, f"{node}:max_speed").set(2, timeout=15)
+        got = roslibpy.Param(ros, f"{node}:max_speed").get(timeout=15)
+    except Exception as e:
+        got = f"error: {e}"
+    check(got == 2.0 and isinstance(got, float), f"set {node}:max_speed to 2, then it reads {got!r}, want 2.0")
+    ok, res = rosapi(ros, "set_param", name=f"{node}:waypoints", value="[4, 5]")
+    check(ok, f"set {node}:waypoints to [4, 5]: {res}")
+    for name, value, why in ((f"{node}:serial", '"SN-1"', "read-only"),
+                             (f"{node}:max_speed", '"fast"', "has type")):
+        ok, res = rosapi(ros, "set_param", name=name, value=value)
+        check(not ok and why in res, f"set {name} to {value} is refused with the node's reason: {short(res)}")
+    ok, res = rosapi(ros, "delete_param", name=f"{node}:robot_name")
+    check(ok, f"delete_param {node}:robot_name: {res}")
+    ok, res = rosapi(ros, "has_param", name=f"{node}:robot_name")
+    check(ok and res.get("exists") is False, f"{node}:robot_name is gone after delete_param: {res}")
+    ok, res = rosapi(ros, "get_param", name=f"/{args.robot}/ghost_node:x")
+    check(not ok and "ghost_node" in res, f"get_param of a node that is not there names it: {short(res)}")
+    ok, res = rosapi(ros, "get_param", name=f"/{args.robot}/max_speed")
+    check(not ok and "<node>:<parameter>" in res, f"a name without a node says how to name one: {short(res)}")
+
+
 def serve_fib(args):
     """A fleet action server at the hub: /cloud/fib (example_interfaces/action/Fibonacci),
     spoken in plain rosbridge ops (roslibpy has no action server). One step per 0.1 s with
@@ -416,7 +481,7 @@ def serve(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds"])
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds", "check-params"])
     p.add_argument("out", nargs="?")
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
@@ -431,7 +496,8 @@ def main():
         p.error("check-fastdds needs --peer-log")
     {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
      "check-action": check_action, "check-late": check_late, "check-gone": check_gone,
-     "serve-fib": serve_fib, "check-fastdds": check_fastdds}[args.mode](args)
+     "serve-fib": serve_fib, "check-fastdds": check_fastdds,
+     "check-params": check_params}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

@@ -166,6 +166,63 @@ class ServiceClient:
                 del self.pending[seq]
 
 
+# ---------------------------------------------------------------- parameters
+
+class ParameterServer:
+    """A node's parameters as an rclcpp node serves them: `<node>/get_parameters`,
+    `set_parameters` and `list_parameters` (rcl_interfaces). `params` maps names to
+    ParameterValues. Like a node whose parameters are declared with types, it refuses a
+    change of type and a change of a read-only parameter, with a reason; setting
+    NOT_SET undeclares a parameter. Every change is logged in `changes` (name, value)."""
+
+    def __init__(self, node, name, params, read_only=()):
+        self.params = dict(params)
+        self.read_only = set(read_only)
+        self.changes = []
+        self.lock = threading.Lock()
+        ServiceServer(node, f"{name}/get_parameters", T.GetParametersRequest, T.GetParametersResponse, self._get)
+        ServiceServer(node, f"{name}/set_parameters", T.SetParametersRequest, T.SetParametersResponse, self._set)
+        ServiceServer(node, f"{name}/list_parameters", T.ListParametersRequest, T.ListParametersResponse, self._list)
+
+    def values(self):
+        """name -> plain value (what rosapi would give), for the suite's report."""
+        with self.lock:
+            return {n: v if not hasattr(v, "__len__") or isinstance(v, str) else list(v)
+                    for n, pv in self.params.items()
+                    for v in [getattr(pv, T.PARAMETER_FIELDS[pv.type])]}
+
+    def _get(self, req, reply):
+        with self.lock:
+            values = [self.params.get(n, T.parameter_value(0)) for n in req.names]
+        reply(values=values)
+
+    def _set(self, req, reply):
+        results = []
+        with self.lock:
+            for p in req.parameters:
+                old = self.params.get(p.name)
+                if p.name in self.read_only:
+                    results.append(T.SetParametersResult(successful=False, reason=f"{p.name} is read-only"))
+                elif p.value.type == 0:
+                    self.params.pop(p.name, None)
+                    self.changes.append((p.name, None))
+                    results.append(T.SetParametersResult(successful=True, reason=""))
+                elif old is not None and old.type != p.value.type:
+                    results.append(T.SetParametersResult(
+                        successful=False, reason=f"{p.name} has type {old.type}, not {p.value.type}"))
+                else:
+                    self.params[p.name] = p.value
+                    self.changes.append((p.name, p.value.type))
+                    results.append(T.SetParametersResult(successful=True, reason=""))
+        reply(results=results)
+
+    def _list(self, req, reply):
+        with self.lock:
+            names = sorted(n for n in self.params
+                           if not req.prefixes or any(n == x or n.startswith(x + ".") for x in req.prefixes))
+        reply(result=T.ListParametersResult(names=names, prefixes=[]))
+
+
 # ---------------------------------------------------------------- the Fibonacci action
 
 ZERO_UUID = bytes(16)

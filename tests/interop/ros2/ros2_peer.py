@@ -57,7 +57,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import expected as E  # noqa: E402
 from cyclonedds.core import DDSException  # noqa: E402
 import ros2_types as T  # noqa: E402
-from ros2_dds import (FibonacciClient, FibonacciServer, Node, ServiceClient, ServiceServer,  # noqa: E402
+from ros2_dds import (FibonacciClient, FibonacciServer, Node, ParameterServer, ServiceClient, ServiceServer,  # noqa: E402
                       topic_name, wait_until)
 
 
@@ -152,6 +152,17 @@ def representative_samples():
         T.CancelGoalRequest(guid=9, seq=3, goal_info=info),
         T.CancelGoalResponse(guid=9, seq=3, return_code=0, goals_canceling=[info, info]),
         T.GoalStatusArray(status_list=[T.GoalStatus(goal_info=info, status=T.EXECUTING)]),
+        T.GetParametersRequest(guid=4, seq=1, names=["max_speed", "waypoints"]),
+        T.GetParametersResponse(guid=4, seq=1, values=[T.parameter_value(t, v) for t, v in E.PARAMETERS.values()] + [
+            T.parameter_value(5, [0, 7, 255]), T.parameter_value(6, [True, False]),
+            T.parameter_value(8, [0.5, -1e300]), T.parameter_value(9, ["a", ""]), T.parameter_value(0)]),
+        T.SetParametersRequest(guid=4, seq=2, parameters=[
+            T.Parameter(name="max_speed", value=T.parameter_value(3, 2.0))]),
+        T.SetParametersResponse(guid=4, seq=2, results=[
+            T.SetParametersResult(successful=False, reason="read-only"),
+            T.SetParametersResult(successful=True, reason="")]),
+        T.ListParametersRequest(guid=4, seq=3, prefixes=["a"], depth=0),
+        T.ListParametersResponse(guid=4, seq=3, result=T.ListParametersResult(names=["x", "a.b"], prefixes=["a"])),
     ]
 
 
@@ -216,6 +227,9 @@ def graph(args):
     node.reader(topic_name("/chatter"), T.String, on_chatter)
     ServiceServer(node, "/add_two_ints", T.AddTwoIntsRequest, T.AddTwoIntsResponse, on_add)
     fib = FibonacciServer(node, "/fibonacci", step=0.1)
+    # A node's parameters, served as rclcpp serves them (step 6c reads and changes them).
+    params = ParameterServer(node, E.PARAMETER_NODE, {n: T.parameter_value(t, v) for n, (t, v) in E.PARAMETERS.items()},
+                             read_only=["serial"])
     scan_w = node.writer(topic_name("/scan"), T.LaserScan)
     cloud_w = node.writer(topic_name("/points"), T.PointCloud2)
     battery_w = node.writer(topic_name("/battery"), T.Battery)
@@ -256,6 +270,7 @@ def graph(args):
                     got["chatter_sent"] = k
         with lock:
             got["goals"] = fib.report()
+            got["params"] = params.values()
             snapshot = json.dumps(got)
         with open(args.out + ".tmp", "w") as f:
             f.write(snapshot)

@@ -20,7 +20,7 @@ import os
 import numpy as np
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl._main import get_extended_type_hints
-from cyclonedds.idl.types import array, float32, float64, int8, int16, int32, int64, sequence, uint8, uint32, uint64
+from cyclonedds.idl.types import array, byte, float32, float64, int8, int16, int32, int64, sequence, uint8, uint32, uint64
 from cyclonedds.qos import Policy, Qos
 from cyclonedds.util import duration
 
@@ -163,6 +163,98 @@ class TriggerResponse(IdlStruct, typename=dds_name("std_srvs/srv/Trigger_Respons
     message: str
 
 
+# ---------------------------------------------------------------- parameters (rcl_interfaces)
+
+@dataclasses.dataclass
+class ParameterValue(IdlStruct, typename=dds_name("rcl_interfaces/msg/ParameterValue")):
+    type: uint8
+    bool_value: bool
+    integer_value: int64
+    double_value: float64
+    string_value: str
+    byte_array_value: sequence[byte]
+    bool_array_value: sequence[bool]
+    integer_array_value: sequence[int64]
+    double_array_value: sequence[float64]
+    string_array_value: sequence[str]
+
+
+@dataclasses.dataclass
+class Parameter(IdlStruct, typename=dds_name("rcl_interfaces/msg/Parameter")):
+    name: str
+    value: ParameterValue
+
+
+@dataclasses.dataclass
+class SetParametersResult(IdlStruct, typename=dds_name("rcl_interfaces/msg/SetParametersResult")):
+    successful: bool
+    reason: str
+
+
+@dataclasses.dataclass
+class ListParametersResult(IdlStruct, typename=dds_name("rcl_interfaces/msg/ListParametersResult")):
+    names: sequence[str]
+    prefixes: sequence[str]
+
+
+@dataclasses.dataclass
+class GetParametersRequest(IdlStruct, typename=dds_name("rcl_interfaces/srv/GetParameters_Request")):
+    guid: uint64
+    seq: int64
+    names: sequence[str]
+
+
+@dataclasses.dataclass
+class GetParametersResponse(IdlStruct, typename=dds_name("rcl_interfaces/srv/GetParameters_Response")):
+    guid: uint64
+    seq: int64
+    values: sequence[ParameterValue]
+
+
+@dataclasses.dataclass
+class SetParametersRequest(IdlStruct, typename=dds_name("rcl_interfaces/srv/SetParameters_Request")):
+    guid: uint64
+    seq: int64
+    parameters: sequence[Parameter]
+
+
+@dataclasses.dataclass
+class SetParametersResponse(IdlStruct, typename=dds_name("rcl_interfaces/srv/SetParameters_Response")):
+    guid: uint64
+    seq: int64
+    results: sequence[SetParametersResult]
+
+
+@dataclasses.dataclass
+class ListParametersRequest(IdlStruct, typename=dds_name("rcl_interfaces/srv/ListParameters_Request")):
+    guid: uint64
+    seq: int64
+    prefixes: sequence[str]
+    depth: uint64
+
+
+@dataclasses.dataclass
+class ListParametersResponse(IdlStruct, typename=dds_name("rcl_interfaces/srv/ListParameters_Response")):
+    guid: uint64
+    seq: int64
+    result: ListParametersResult
+
+
+# rcl_interfaces/msg/ParameterType: the ParameterValue field each type uses.
+PARAMETER_FIELDS = [None, "bool_value", "integer_value", "double_value", "string_value", "byte_array_value",
+                    "bool_array_value", "integer_array_value", "double_array_value", "string_array_value"]
+
+
+def parameter_value(type_, value=None):
+    """A ParameterValue of `type_` holding `value` (the other fields at their defaults)."""
+    pv = ParameterValue(type=type_, bool_value=False, integer_value=0, double_value=0.0, string_value="",
+                        byte_array_value=[], bool_array_value=[], integer_array_value=[],
+                        double_array_value=[], string_array_value=[])
+    if PARAMETER_FIELDS[type_]:
+        setattr(pv, PARAMETER_FIELDS[type_], value)
+    return pv
+
+
 # ---------------------------------------------------------------- actions
 
 @dataclasses.dataclass
@@ -299,6 +391,9 @@ def typestore(battery_msg_text):
         ("example_interfaces/srv/AddTwoInts.srv", ["AddTwoInts_Request", "AddTwoInts_Response"]),
         ("std_srvs/srv/Trigger.srv", ["Trigger_Request", "Trigger_Response"]),
         ("action_msgs/srv/CancelGoal.srv", ["CancelGoal_Request", "CancelGoal_Response"]),
+        ("rcl_interfaces/srv/GetParameters.srv", ["GetParameters_Request", "GetParameters_Response"]),
+        ("rcl_interfaces/srv/SetParameters.srv", ["SetParameters_Request", "SetParameters_Response"]),
+        ("rcl_interfaces/srv/ListParameters.srv", ["ListParameters_Request", "ListParameters_Response"]),
         ("example_interfaces/action/Fibonacci.action", ["Fibonacci_Goal", "Fibonacci_Result", "Fibonacci_Feedback"]),
     ):
         with open(os.path.join(defs, path)) as f:

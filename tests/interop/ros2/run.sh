@@ -19,6 +19,9 @@
 #   5. a Cyclone client calls the hub's /cloud/greet (rmw_cyclonedds request/reply);
 #   6. the Cyclone action /fibonacci from a roslibpy action client: feedback and
 #      SUCCEEDED; a long goal cancelled ends CANCELED (seen on both sides);
+#   6c. a node's parameters (rcl_interfaces services, as rclcpp serves them) through
+#      the hub's rosapi: listed, read, changed with the parameter's type kept, refused
+#      with the node's reason, deleted; the node holds what the hub set;
 #   7. a participant started after the agent publishes /late_topic: it reaches the hub;
 #   8. /chatter both ways: after both sides stop and a quiet period, every message was
 #      seen exactly once on each side (no loop), at least 5 crossed each way.
@@ -262,6 +265,22 @@ ns_bg "$python" "$here/hub_peer.py" serve-fib --hub-url "$hub_url" --robot "$rob
 pids+=($!)
 wait_for_line "$tmp/fib.log" '^(serve-fib) ready$' "hub action server" "${pids[-1]}" >/dev/null || fail "serve-fib did not start"
 ns_run 60 "$python" "$here/ros2_peer.py" call-fib --wait 25 || fail "Cyclone action client of /cloud/fib"
+
+step "6c. a node's parameters on the robot, from the hub's rosapi"
+ns_run 90 "$python" "$here/hub_peer.py" check-params --hub-url "$hub_url" --robot "$robot" || fail "check-params (/nav_node's parameters)"
+# What the node itself holds now (the graph's report, rewritten every 0.2 s).
+deadline=$((SECONDS + 5))
+while :; do
+    params="$(robot_got 'sorted(g["params"].items())')"
+    case "$params" in *"('max_speed', 2.0)"*"('waypoints', [4, 5])"*) break ;; esac
+    [ "$SECONDS" -lt "$deadline" ] || break
+    sleep 0.2
+done
+case "$params" in
+    *"('max_speed', 2.0)"*"('robot_name'"*) fail "the node still has robot_name after delete_param: $params" ;;
+    *"('max_speed', 2.0)"*"('serial', 'SN-42')"*"('waypoints', [4, 5])"*) echo "ok: the node holds what the hub set: $params" ;;
+    *) fail "the node's parameters: $params, want max_speed 2.0, serial SN-42, waypoints [4, 5], no robot_name" ;;
+esac
 
 step "7. a participant started after the agent"
 ns_bg "$python" "$here/ros2_peer.py" late >"$tmp/late.log" 2>&1 &

@@ -25,6 +25,9 @@ pub struct Ros2Config {
     pub discovery_ms: u64,
     /// How long a local caller of a fleet service may wait. Default 10000.
     pub call_timeout_ms: u64,
+    /// Offer the graph's node parameters to the fleet (rosapi's parameter services under
+    /// `/<robot>/rosapi/`, names as `<node>:<parameter>`). Default true.
+    pub parameters: bool,
 }
 
 impl Default for Ros2Config {
@@ -37,6 +40,7 @@ impl Default for Ros2Config {
             actions: Ros2Actions::default(),
             discovery_ms: 250,
             call_timeout_ms: 10_000,
+            parameters: true,
         }
     }
 }

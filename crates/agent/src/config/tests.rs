@@ -451,6 +451,13 @@ fn ros2_section_becomes_bridge_options() {
     assert!(ros2.expose_actions.matches("/fibonacci"));
     assert_eq!(ros2.subscribe.len(), 1);
     assert_eq!(ros2.discovery_period, std::time::Duration::from_millis(250));
+    assert!(ros2.parameters, "nodes' parameters are offered by default");
+    let off = AgentConfig::from_str("ros2:\n  parameters: false\n", "robot.yaml").expect("valid");
+    let off = crate::AgentOptions::from_config(&off)
+        .expect("options")
+        .ros2
+        .expect("ros2");
+    assert!(!off.parameters);
 }
 
 #[test]
@@ -469,7 +476,7 @@ fn ros2_errors_name_the_field() {
     );
     assert_err(
         "ros2: { qos: 1 }\n",
-        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms",
+        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms, parameters",
     );
 }
 
@@ -486,6 +493,7 @@ fn ros2_examples_parse_and_become_options() {
     assert_eq!(ros2.domain_id, 0);
     assert!(ros2.publish.matches("/scan") && !ros2.publish.matches("/camera/raw"));
     assert!(ros2.expose.matches("/set_mode") && !ros2.expose.matches("/node/list_parameters"));
+    assert!(ros2.parameters, "the example offers the nodes' parameters");
     assert!(ros2.expose_actions.matches("/navigate_to_pose"));
     assert!(ros2.offer.matches("/cloud/plan") && ros2.offer_actions.matches("/cloud/dock"));
 
