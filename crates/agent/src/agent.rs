@@ -68,7 +68,11 @@ impl AgentOptions {
                 .as_ref()
                 .map(|r| ros1_options(r, &cfg.name))
                 .transpose()?,
-            ros2: cfg.ros2.as_ref().map(ros2_options).transpose()?,
+            ros2: cfg
+                .ros2
+                .as_ref()
+                .map(|r| ros2_options(r, &cfg.name))
+                .transpose()?,
         })
     }
 }
@@ -111,6 +115,7 @@ fn ros1_options(
 /// The ROS 2 bridge's options from the `ros2:` section (patterns were checked already).
 fn ros2_options(
     r: &crate::config::Ros2Config,
+    robot: &str,
 ) -> Result<fleetlink_ros2::Ros2Options, OptionsError> {
     use fleetlink_relay::names::NameFilter;
     use fleetlink_ros2::Ros2Options;
@@ -133,6 +138,15 @@ fn ros2_options(
         discovery_period: r.discovery(),
         call_timeout: r.call_timeout(),
         parameters: r.parameters,
+        node_name: r
+            .node_name
+            .clone()
+            .unwrap_or_else(|| format!("/fleetlink_{robot}")),
+        distro: r.distro.clone().or_else(|| {
+            std::env::var("ROS_DISTRO")
+                .ok()
+                .filter(|d| !d.trim().is_empty())
+        }),
     })
 }
 

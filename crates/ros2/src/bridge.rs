@@ -30,8 +30,71 @@ use crate::options::Ros2Options;
 use crate::raw::{RawAdapter, RawCdr};
 use crate::services::{self, Offered, Remote};
 
-pub type RawReader = DataReader<RawCdr, RawAdapter>;
-pub type RawWriter = DataWriter<RawCdr, RawAdapter>;
+/// A reader or writer of this bridge, listed among its node's endpoints while it lives.
+pub type RawReader = Tracked<DataReader<RawCdr, RawAdapter>>;
+pub type RawWriter = Tracked<DataWriter<RawCdr, RawAdapter>>;
+
+/// The GUIDs of the bridge's own readers and writers (`true`: a writer): what its node
+/// lists in `ros_discovery_info` ([`crate::node_info`]).
+#[derive(Debug, Default)]
+pub(crate) struct OwnEndpoints(Mutex<HashMap<GUID, bool>>);
+
+impl OwnEndpoints {
+    fn lock(&self) -> MutexGuard<'_, HashMap<GUID, bool>> {
+        self.0.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The readers' and the writers' GUIDs, each sorted.
+    pub(crate) fn list(&self) -> (Vec<GUID>, Vec<GUID>) {
+        let all = self.lock();
+        let mut readers: Vec<GUID> = all.iter().filter(|(_, w)| !**w).map(|(g, _)| *g).collect();
+        let mut writers: Vec<GUID> = all.iter().filter(|(_, w)| **w).map(|(g, _)| *g).collect();
+        readers.sort_by_key(|g| g.to_bytes());
+        writers.sort_by_key(|g| g.to_bytes());
+        (readers, writers)
+    }
+}
+
+/// A DDS entity of the bridge with its entry in [`OwnEndpoints`], removed when it is
+/// dropped (with the entity).
+pub struct Tracked<T> {
+    inner: T,
+    _entry: Entry,
+}
+
+#[derive(Debug)]
+struct Entry(Arc<OwnEndpoints>, GUID);
+
+impl Drop for Entry {
+    fn drop(&mut self) {
+        self.0.lock().remove(&self.1);
+    }
+}
+
+impl<T> std::ops::Deref for Tracked<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.inner
+    }
+}
+
+impl<T> std::ops::DerefMut for Tracked<T> {
+    fn deref_mut(&mut self) -> &mut T {
+        &mut self.inner
+    }
+}
+
+impl RawReader {
+    /// The reader's samples as a stream, which keeps the reader listed while it lives.
+    pub fn async_sample_stream(
+        self,
+    ) -> Tracked<rustdds::no_key::DataReaderStream<RawCdr, RawAdapter>> {
+        Tracked {
+            inner: self.inner.async_sample_stream(),
+            _entry: self._entry,
+        }
+    }
+}
 
 #[derive(Debug, thiserror::Error)]
 pub enum Ros2Error {
@@ -116,6 +179,8 @@ pub struct Bridge {
     pub(crate) subscriber: Subscriber,
     /// This participant's GUID prefix: endpoints and samples of its own are never bridged.
     pub(crate) own: GUID,
+    /// The readers and writers the bridge has made.
+    pub(crate) endpoints: Arc<OwnEndpoints>,
     state: Mutex<State>,
 }
 
@@ -152,10 +217,29 @@ impl Bridge {
         dds_type: &str,
         qos: QosPolicies,
     ) -> Result<RawReader, String> {
+        let reader = self.untracked_reader(dds_topic, dds_type, qos)?;
+        Ok(self.track(reader.guid(), false, reader))
+    }
+
+    /// A reader that is not one of the node's endpoints (the bridge's own bookkeeping).
+    pub(crate) fn untracked_reader(
+        &self,
+        dds_topic: &str,
+        dds_type: &str,
+        qos: QosPolicies,
+    ) -> Result<DataReader<RawCdr, RawAdapter>, String> {
         let topic = self.topic(dds_topic, dds_type, &qos)?;
         self.subscriber
             .create_datareader_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
             .map_err(|e| format!("reader of {dds_topic}: {e}"))
+    }
+
+    fn track<T>(&self, guid: GUID, writer: bool, inner: T) -> Tracked<T> {
+        self.endpoints.lock().insert(guid, writer);
+        Tracked {
+            inner,
+            _entry: Entry(self.endpoints.clone(), guid),
+        }
     }
 
     /// A DDS writer of raw samples on `dds_topic`.
@@ -165,6 +249,17 @@ impl Bridge {
         dds_type: &str,
         qos: QosPolicies,
     ) -> Result<RawWriter, String> {
+        let writer = self.untracked_writer(dds_topic, dds_type, qos)?;
+        Ok(self.track(writer.guid(), true, writer))
+    }
+
+    /// A writer that is not one of the node's endpoints (the bridge's own bookkeeping).
+    pub(crate) fn untracked_writer(
+        &self,
+        dds_topic: &str,
+        dds_type: &str,
+        qos: QosPolicies,
+    ) -> Result<DataWriter<RawCdr, RawAdapter>, String> {
         let topic = self.topic(dds_topic, dds_type, &qos)?;
         self.publisher
             .create_datawriter_no_key::<RawCdr, RawAdapter>(&topic, Some(qos))
@@ -254,11 +349,14 @@ pub async fn run(
         publisher,
         subscriber,
         own,
+        endpoints: Arc::default(),
         state: Mutex::new(State::default()),
     });
+    let mut node_info = crate::node_info::NodeInfo::new(&bridge).map_err(Ros2Error::Endpoint)?;
     tracing::info!(
-        "ros2: joined DDS domain {domain} as participant {:?}",
-        bridge.dp.guid().prefix
+        "ros2: joined DDS domain {domain} as participant {:?}, node {}",
+        bridge.dp.guid().prefix,
+        node_info.full_name()
     );
     if bridge.opts.parameters {
         for (name, ty, definition) in fleetlink_relay::params::SERVICES {
@@ -291,7 +389,10 @@ pub async fn run(
     loop {
         tokio::select! {
             _ = shutdown.cancelled() => break,
-            _ = tick.tick() => discover(&bridge),
+            _ = tick.tick() => {
+                discover(&bridge);
+                node_info.refresh(&bridge);
+            }
             _ = outbox.ready() => loop {
                 let batch = outbox.take(64, 8 << 20, Instant::now());
                 if batch.items.is_empty() {

@@ -21,9 +21,11 @@
 //! - [`services`]: services both ways, local action servers exposed to the fleet.
 //! - [`offered_actions`]: fleet actions served to local action clients.
 //! - [`params`]: nodes' parameters behind rosapi's parameter services.
+//! - [`node_info`]: the agent as a node in `ros_discovery_info` (`ros2 node list`).
 
 pub mod bridge;
 pub mod names;
+pub mod node_info;
 pub mod offered_actions;
 pub mod options;
 pub mod params;

@@ -27,6 +27,11 @@ pub struct Ros2Options {
     pub call_timeout: Duration,
     /// Answer rosapi's parameter services from the graph's nodes ([`crate::params`]).
     pub parameters: bool,
+    /// The agent's node in the graph (`ros2 node list`): a full ROS name.
+    pub node_name: String,
+    /// The robot's ROS 2 distribution (`ros2.distro`, else `ROS_DISTRO`), for the layout
+    /// of `ros_discovery_info` ([`crate::node_info`]); `None`: learned from the graph.
+    pub distro: Option<String>,
 }
 
 impl Ros2Options {

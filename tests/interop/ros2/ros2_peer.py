@@ -21,6 +21,11 @@ Modes:
                     a participant started late: a transient_local reader of /announce
                     must get the hub's latched "hello fleet", written before the reader
                     existed. Exit 0 when it did.
+  node-info --node NAME [--gid 16|24] [--wait S]
+                    reads ros_discovery_info as `ros2 node list` does, with GIDs of 16
+                    (Iron and newer) or 24 bytes (Humble and older): the agent's node NAME
+                    is listed under its participant, with its rt/cmd_vel writer among the
+                    node's writers. Exit 0 when so.
   call-greet [--wait S]
                     calls /cloud/greet (std_srvs/srv/Trigger) as a ROS 2 client; exit 0
                     when the fleet's answer came.
@@ -301,6 +306,63 @@ def announce(args):
             "not the writer's history (a re-publish?)")
         return 1
     log(f"ok: a late transient_local reader got /announce {E.ANNOUNCE!r}, written {age:.2f} s before it existed")
+    return 0
+
+
+def node_info(args):
+    """`ros2 node list`'s source: the agent's sample on ros_discovery_info, read with
+    GIDs of --gid bytes, must name node --node and list the agent's writer of
+    rt/cmd_vel among the node's writers (that writer's GUID as Cyclone's own discovery
+    knows it) under the agent's participant GID."""
+    from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication
+    from rosbags.typesys import Stores, get_typestore
+
+    _, _, Info = T.discovery_types(args.gid)
+    store = get_typestore(Stores.ROS2_HUMBLE if args.gid == 24 else Stores.ROS2_JAZZY)
+    node = Node()
+    infos = []
+    node.reader("ros_discovery_info", Info, infos.append, qos=T.qos(transient_local=True, depth=1))
+    publications = BuiltinDataReader(node.dp, BuiltinTopicDcpsPublication)
+    cmd_writers = {}
+
+    def agent_sample():
+        for s in publications.take(N=100):
+            if s.topic_name == "rt/cmd_vel":
+                cmd_writers[s.key.bytes] = s.participant_key.bytes
+        for info in list(infos):
+            for n in info.node_entities_info_seq:
+                if n.node_name == args.node.lstrip("/") and n.node_namespace == "/":
+                    return info, n
+        return None
+
+    if not wait_until(agent_sample, args.wait):
+        seen = [f"{n.node_namespace}/{n.node_name}" for i in infos for n in i.node_entities_info_seq]
+        log(f"FAIL: no node {args.node} on ros_discovery_info within {args.wait:.0f} s ({args.gid}-byte GIDs); "
+            f"nodes seen: {seen}")
+        return 1
+    info, entry = agent_sample()
+    problem = T.crosscheck(store, info)
+    if problem:
+        log(f"FAIL: the agent's sample re-serialized differs from rosbags' ({args.gid}-byte GIDs): {problem}")
+        return 1
+    gid = T.gid_bytes(info.gid)
+    writers = [T.gid_bytes(g) for g in entry.writer_gid_seq]
+    readers = [T.gid_bytes(g) for g in entry.reader_gid_seq]
+    if any(g[16:] != bytes(args.gid - 16) for g in [gid] + writers + readers):
+        log(f"FAIL: a {args.gid}-byte GID is not a GUID padded with zeros: {gid.hex()}")
+        return 1
+    wait_until(lambda: agent_sample() and any(w[:16] in cmd_writers for w in writers), 5)
+    mine = [w for w in writers if w[:16] in cmd_writers]
+    if not mine:
+        log(f"FAIL: the node's {len(writers)} writers do not include a writer of rt/cmd_vel "
+            f"(Cyclone knows {len(cmd_writers)}: {[k.hex() for k in cmd_writers]})")
+        return 1
+    if cmd_writers[mine[0][:16]] != gid[:16]:
+        log(f"FAIL: the node's rt/cmd_vel writer belongs to participant {cmd_writers[mine[0][:16]].hex()}, "
+            f"but the sample's GID is {gid[:16].hex()}")
+        return 1
+    log(f"ok: ros_discovery_info ({args.gid}-byte GIDs, equal to rosbags' layout) lists node {args.node} "
+        f"with {len(readers)} readers and {len(writers)} writers, among them its rt/cmd_vel writer")
     return 0
 
 
@@ -635,11 +697,13 @@ def delivery_check(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["msg-package", "graph", "announce", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
+    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
     p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT; delivery-check: (child, internal)")
     p.add_argument("--msg-path")
     p.add_argument("--chatter-stop")
     p.add_argument("--wait", type=float, default=20.0)
+    p.add_argument("--gid", type=int, choices=[16, 24], default=16, help="node-info: GID bytes")
+    p.add_argument("--node", help="node-info: the agent's node name")
     args = p.parse_args()
     if args.mode == "msg-package":
         msg_package(args.path)
@@ -649,7 +713,9 @@ def main():
             p.error("graph needs OUT, --msg-path and --chatter-stop")
         args.out = args.path
         return graph(args)
-    return {"announce": announce, "call-greet": call_greet, "call-fib": call_fib, "late": late,
+    if args.mode == "node-info" and not args.node:
+        p.error("node-info needs --node")
+    return {"announce": announce, "node-info": node_info, "call-greet": call_greet, "call-fib": call_fib, "late": late,
             "delivery-check": delivery_check, "selftest": selftest}[args.mode](args)
 
 

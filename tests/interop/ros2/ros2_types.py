@@ -20,7 +20,7 @@ import os
 import numpy as np
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl._main import get_extended_type_hints
-from cyclonedds.idl.types import array, byte, float32, float64, int8, int16, int32, int64, sequence, uint8, uint32, uint64
+from cyclonedds.idl.types import array, bounded_str, byte, float32, float64, int8, int16, int32, int64, sequence, uint8, uint32, uint64
 from cyclonedds.qos import Policy, Qos
 from cyclonedds.util import duration
 
@@ -255,6 +255,38 @@ def parameter_value(type_, value=None):
     return pv
 
 
+# ---------------------------------------------------------------- ros_discovery_info (rmw_dds_common)
+
+def discovery_types(gid_len):
+    """rmw_dds_common's Gid, NodeEntitiesInfo and ParticipantEntitiesInfo with `gid_len`-byte
+    GIDs: 24 up to Humble, 16 from Iron on (the type names did not change)."""
+
+    # The ROS type is char[N]; the binding reads a char as a signed byte and fails on
+    # bytes above 0x7f, so the bytes are read as uint8 (the same wire layout).
+    @dataclasses.dataclass
+    class Gid(IdlStruct, typename=dds_name("rmw_dds_common/msg/Gid")):
+        data: array[uint8, gid_len]
+
+    @dataclasses.dataclass
+    class NodeEntitiesInfo(IdlStruct, typename=dds_name("rmw_dds_common/msg/NodeEntitiesInfo")):
+        node_namespace: bounded_str[256]
+        node_name: bounded_str[256]
+        reader_gid_seq: sequence[Gid]
+        writer_gid_seq: sequence[Gid]
+
+    @dataclasses.dataclass
+    class ParticipantEntitiesInfo(IdlStruct, typename=dds_name("rmw_dds_common/msg/ParticipantEntitiesInfo")):
+        gid: Gid
+        node_entities_info_seq: sequence[NodeEntitiesInfo]
+
+    return Gid, NodeEntitiesInfo, ParticipantEntitiesInfo
+
+
+def gid_bytes(gid):
+    """A Gid's data as bytes."""
+    return bytes(gid.data)
+
+
 # ---------------------------------------------------------------- actions
 
 @dataclasses.dataclass
@@ -439,6 +471,8 @@ def idl_shape(hint):
         return (Nodetype.BASE, ("string", 0))
     if hint is bool:
         return (Nodetype.BASE, ("bool", 0))
+    if isinstance(hint, bounded_str):
+        return (Nodetype.BASE, ("string", hint.max_length))
     if getattr(hint, "__metadata__", None):  # Annotated[int, 'uint8'] and the like
         return (Nodetype.BASE, (hint.__metadata__[0], 0))
     if isinstance(hint, array):
@@ -448,6 +482,19 @@ def idl_shape(hint):
     if isinstance(hint, type) and issubclass(hint, IdlStruct):
         return (Nodetype.NAME, rosbags_name(hint))
     raise ValueError(f"no ROS 2 equivalent for the IDL type {hint}")
+
+
+def same_bytes(nt, det):
+    """A rosbags field type with ROS's `char` read as `uint8`: one unsigned byte on the
+    wire either way (see discovery_types for why the IDL side says uint8)."""
+    from rosbags.typesys.store import Nodetype
+
+    if nt == Nodetype.BASE and det[0] == "char":
+        return (nt, ("uint8", det[1]))
+    if nt in (Nodetype.ARRAY, Nodetype.SEQUENCE):
+        (ent, edet), size = det
+        return (nt, (same_bytes(ent, edet), size))
+    return (nt, det)
 
 
 def to_rosbags(store, name, obj, path):
@@ -475,7 +522,7 @@ def to_rosbags(store, name, obj, path):
     # padding looks like a uint16): compare the declared field types as well.
     hints = get_extended_type_hints(type(obj))
     for n, (nt, det) in fields:
-        if idl_shape(hints[n]) != (nt, det):
+        if idl_shape(hints[n]) != same_bytes(nt, det):
             raise ValueError(f"{path}.{n}: Cyclone type {hints[n]} but rosbags' {name} declares {(nt, det)}")
     kwargs = {n: value(nt, det, getattr(obj, n), f"{path}.{n}") for n, (nt, det) in fields}
     return store.types[name](**kwargs)

@@ -12,6 +12,8 @@
 #      reach roslibpy subscribers with equal values; the graph proved beforehand that
 #      Cyclone's bytes for every type equal rosbags' (the IDL types are the ROS 2 types);
 #   2. roslibpy's /robot1/cmd_vel reaches a Cyclone subscriber of rt/cmd_vel, equal;
+#   2b. the agent's node is on ros_discovery_info (what `ros2 node list` reads), in
+#      Iron+'s layout; after the restart of step 9 with ROS_DISTRO=humble, in Humble's;
 #   3. transient_local both ways: /robot_description reaches a late hub subscriber; the
 #      hub's latched /robot1/announce reaches a transient_local reader started later;
 #   4. the Cyclone service /add_two_ints answers roslibpy calls at the hub, 40 at once
@@ -232,6 +234,9 @@ else
     echo "ok: the Cyclone subscriber got /cmd_vel ($got_cmd messages, every field equal)"
 fi
 
+step "2b. the agent is a node in ros_discovery_info (ros2 node list)"
+ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 16 --wait 20 || fail "node-info (16-byte GIDs, no ROS_DISTRO)"
+
 step "3. transient_local both ways"
 ns_run 40 "$python" "$here/hub_peer.py" check-latched --hub-url "$hub_url" --robot "$robot" || fail "check-latched (/robot_description)"
 # The hub's latched /robot1/announce went out when serve started, before the /cmd_vel
@@ -356,11 +361,13 @@ ns_run 40 "$python" "$here/hub_peer.py" check-late --hub-url "$hub_url" --robot 
 # robot's service cross again.
 kill -0 "$agent_pid" 2>/dev/null && echo "ok: the agent is still running" || fail "the agent died"
 ns_kill "agent --config $tmp/agent.yaml"
-ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent2.log" 2>&1 &
+# Restarted as on a Humble robot: ros_discovery_info in Humble's layout (24-byte GIDs).
+ns_bg env ROS_DISTRO=humble "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent2.log" 2>&1 &
 pids+=($!)
 agent_pid=${pids[-1]}
 ns_run 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" || fail "check-up after the agent restarted"
 ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" || fail "check-calls after the agent restarted"
+ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 24 --wait 20 || fail "node-info (24-byte GIDs, ROS_DISTRO=humble)"
 
 kill -0 "$graph_pid" 2>/dev/null || fail "the Cyclone graph (ros2_peer.py graph) died"
 echo "ros2 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"

@@ -25,6 +25,12 @@ pub struct Ros2Config {
     pub discovery_ms: u64,
     /// How long a local caller of a fleet service may wait. Default 10000.
     pub call_timeout_ms: u64,
+    /// The agent's node name in the graph (`ros2 node list`). Default
+    /// `/fleetlink_<name>`.
+    pub node_name: Option<String>,
+    /// The robot's ROS 2 distribution (`humble`, `jazzy`, ...), for the layout of
+    /// `ros_discovery_info`. Default: `ROS_DISTRO`, else learned from the graph.
+    pub distro: Option<String>,
     /// Offer the graph's node parameters to the fleet (rosapi's parameter services under
     /// `/<robot>/rosapi/`, names as `<node>:<parameter>`). Default true.
     pub parameters: bool,
@@ -41,6 +47,8 @@ impl Default for Ros2Config {
             discovery_ms: 250,
             call_timeout_ms: 10_000,
             parameters: true,
+            node_name: None,
+            distro: None,
         }
     }
 }

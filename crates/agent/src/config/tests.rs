@@ -458,6 +458,21 @@ fn ros2_section_becomes_bridge_options() {
         .ros2
         .expect("ros2");
     assert!(!off.parameters);
+    assert_eq!(
+        ros2.node_name, "/fleetlink_robot1",
+        "named after the robot by default"
+    );
+    let named = AgentConfig::from_str(
+        "ros2:\n  node_name: /robot/bridge\n  distro: humble\n",
+        "robot.yaml",
+    )
+    .expect("valid");
+    let named = crate::AgentOptions::from_config(&named)
+        .expect("options")
+        .ros2
+        .expect("ros2");
+    assert_eq!(named.node_name, "/robot/bridge");
+    assert_eq!(named.distro.as_deref(), Some("humble"));
 }
 
 #[test]
@@ -471,12 +486,20 @@ fn ros2_errors_name_the_field() {
         "robot.yaml:2:23: ros2.actions.expose[0]: is not a valid pattern (error: unclosed group): \"/fib(\"",
     );
     assert_err(
+        "ros2: { node_name: 9lives }\n",
+        "robot.yaml:1:20: ros2.node_name: must be a ROS 2 node name such as fleetlink_agent or /robot/fleetlink_agent (letters, digits and _, not starting with a digit), got \"9lives\"",
+    );
+    assert_err(
+        "ros2: { distro: noetic }\n",
+        "robot.yaml:1:17: ros2.distro: is not a ROS 2 distribution the agent knows, got \"noetic\" (humble, iron, jazzy, kilted, rolling, ...; leave it out to learn it from the graph)",
+    );
+    assert_err(
         "ros2: { subscribe: [cmd_vel] }\n",
         "robot.yaml:1:21: ros2.subscribe[0]: must start with '/', got \"cmd_vel\"",
     );
     assert_err(
         "ros2: { qos: 1 }\n",
-        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms, parameters",
+        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms, node_name, distro, parameters",
     );
 }
 

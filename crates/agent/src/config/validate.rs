@@ -212,6 +212,28 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
             format!("must be a DDS domain id 0..=232 (ROS 2's usable range), got {d}"),
         ));
     }
+    if let Some(name) = &r.node_name
+        && !is_ros2_node_name(name)
+    {
+        return Err(problem(
+            at.key("node_name"),
+            format!(
+                "must be a ROS 2 node name such as fleetlink_agent or /robot/fleetlink_agent \
+                 (letters, digits and _, not starting with a digit), got {name:?}"
+            ),
+        ));
+    }
+    if let Some(d) = &r.distro
+        && fleetlink_ros2::node_info::gid_len(d).is_none()
+    {
+        return Err(problem(
+            at.key("distro"),
+            format!(
+                "is not a ROS 2 distribution the agent knows, got {d:?} (humble, iron, jazzy, \
+                 kilted, rolling, ...; leave it out to learn it from the graph)"
+            ),
+        ));
+    }
     let lists = [
         (at.key("publish").key("include"), &r.publish.include),
         (at.key("publish").key("exclude"), &r.publish.exclude),
@@ -224,6 +246,18 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
     ];
     check_patterns(lists)?;
     check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
+}
+
+/// A ROS 2 node name, maybe with its namespace: `/`-separated tokens of `[A-Za-z0-9_]`
+/// that do not start with a digit.
+fn is_ros2_node_name(name: &str) -> bool {
+    let t = name.strip_prefix('/').unwrap_or(name);
+    !t.is_empty()
+        && t.split('/').all(|c| {
+            !c.is_empty()
+                && !c.starts_with(|ch: char| ch.is_ascii_digit())
+                && c.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
+        })
 }
 
 /// Every entry of each list is a whole-name regular expression.
