@@ -164,8 +164,8 @@ pub(crate) struct State {
     pub(crate) offered_actions: HashMap<String, Arc<OfferedAction>>,
     /// Local clients' goals of fleet actions, by call id.
     pub(crate) offered_goals: HashMap<u64, Arc<OfferedAction>>,
-    /// Endpoints for nodes' parameter services, by node name.
-    pub(crate) params: HashMap<String, Arc<crate::params::NodeParams>>,
+    /// Endpoints for nodes' parameter services, by node name and service.
+    pub(crate) params: HashMap<(String, crate::params::Srv), crate::params::ParamEndpoint>,
 }
 
 /// The bridge's shared half: the participant, the router client and the state.
@@ -417,9 +417,6 @@ pub async fn run(
     }
     for a in st.offered_actions.values() {
         a.abort();
-    }
-    for p in st.params.values() {
-        p.abort();
     }
     router.disconnect(client);
     let s = &bridge.stats;

@@ -14,8 +14,8 @@
 //! refuses to change a parameter's type), else with the type the JSON says.
 //!
 //! The nodes are found in DDS discovery: every node whose `list_parameters` service has
-//! a reader. Its three services get endpoints of the bridge on first use, kept while the
-//! node is there.
+//! a reader. Each of a node's services gets an endpoint of the bridge when first called,
+//! kept while the node is there.
 
 use std::collections::BTreeMap;
 use std::sync::Arc;
@@ -60,20 +60,50 @@ const INTEGER_ARRAY: u8 = 7;
 const DOUBLE_ARRAY: u8 = 8;
 const STRING_ARRAY: u8 = 9;
 
-/// The bridge's endpoints for one node's parameter services.
-pub(crate) struct NodeParams {
-    get: Arc<Endpoint>,
-    set: Arc<Endpoint>,
-    list: Arc<Endpoint>,
-    tasks: Vec<AbortHandle>,
+/// A node's `rcl_interfaces` parameter services the bridge calls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(crate) enum Srv {
+    Get,
+    Set,
+    List,
 }
 
-impl NodeParams {
-    pub(crate) fn abort(&self) {
-        for t in &self.tasks {
-            t.abort();
+impl Srv {
+    fn type_name(self) -> &'static str {
+        match self {
+            Srv::Get => "GetParameters",
+            Srv::Set => "SetParameters",
+            Srv::List => "ListParameters",
         }
     }
+
+    fn service(self) -> &'static str {
+        match self {
+            Srv::Get => "get_parameters",
+            Srv::Set => "set_parameters",
+            Srv::List => "list_parameters",
+        }
+    }
+}
+
+/// The bridge's endpoint for one parameter service of one node; its reply reader stops
+/// when it is dropped.
+pub(crate) struct ParamEndpoint {
+    ep: Arc<Endpoint>,
+    task: AbortHandle,
+}
+
+impl Drop for ParamEndpoint {
+    fn drop(&mut self) {
+        self.task.abort();
+    }
+}
+
+/// A node of the graph that serves parameters, as the bridge calls it.
+struct Node<'a> {
+    bridge: &'a Bridge,
+    name: &'a str,
+    mapping: Mapping,
 }
 
 /// Answers one call of a rosapi parameter service.
@@ -133,35 +163,35 @@ async fn answer(bridge: &Arc<Bridge>, req: &CallRequest) -> Result<Json, String>
             )),
         };
     };
-    let ep = endpoints(bridge, &node, mapping)?;
     let full = format!("{node}:{param}");
+    let node = Node {
+        bridge,
+        name: &node,
+        mapping,
+    };
     Ok(match call {
-        "get_param" => match value_json(&get_value(bridge, &ep, &param).await?) {
+        "get_param" => match value_json(&node.get(&param).await?) {
             Some(v) => json!({"value": v.to_string()}),
             None => json!({"value": params::default_text(&args)}),
         },
-        "has_param" => {
-            let v = get_value(bridge, &ep, &param).await?;
-            json!({"exists": type_of(&v) != NOT_SET})
-        }
+        "has_param" => json!({"exists": type_of(&node.get(&param).await?) != NOT_SET}),
         "search_param" => {
-            let v = get_value(bridge, &ep, &param).await?;
-            let found = type_of(&v) != NOT_SET;
+            let found = type_of(&node.get(&param).await?) != NOT_SET;
             json!({"global_name": if found { full.as_str() } else { "" }})
         }
         "set_param" => {
             let (_, value) = params::value_to_set(&args, &full)?;
-            let current = type_of(&get_value(bridge, &ep, &param).await?);
+            let current = type_of(&node.get(&param).await?);
             let pv =
                 parameter_value(&value, current).map_err(|e| format!("value of {full}: {e}"))?;
-            set_value(bridge, &ep, &node, &param, pv).await?;
+            node.set(&param, pv).await?;
             json!({})
         }
         "delete_param" => {
-            if type_of(&get_value(bridge, &ep, &param).await?) == NOT_SET {
+            if type_of(&node.get(&param).await?) == NOT_SET {
                 return Err(format!("parameter {full} is not set"));
             }
-            set_value(bridge, &ep, &node, &param, typed(NOT_SET, None)).await?;
+            node.set(&param, typed(NOT_SET, None)).await?;
             json!({})
         }
         other => return Err(format!("{other} is not a parameter service")),
@@ -217,167 +247,121 @@ fn nodes(bridge: &Bridge) -> BTreeMap<String, Mapping> {
         }
     }
     // Endpoints of nodes that have gone are dropped here.
-    bridge.lock().params.retain(|node, ep| {
-        let live = nodes.contains_key(node);
-        if !live {
-            ep.abort();
-        }
-        live
-    });
+    bridge
+        .lock()
+        .params
+        .retain(|(node, _), _| nodes.contains_key(node));
     nodes
 }
 
-/// The bridge's endpoints for `node`'s parameter services, made on first use.
-fn endpoints(bridge: &Bridge, node: &str, mapping: Mapping) -> Result<Arc<NodeParams>, String> {
-    if let Some(ep) = bridge.lock().params.get(node) {
-        return Ok(ep.clone());
-    }
-    let mut tasks = Vec::new();
-    let mut start = |srv: &str| {
-        Endpoint::start(
-            bridge,
-            &format!("{node}/{}", srv_service(srv)),
-            &format!("rcl_interfaces/srv/{srv}"),
-            mapping,
-        )
-        .map(|(ep, task)| {
-            tasks.push(task);
-            ep
-        })
-    };
-    let made = (|| {
-        Ok::<_, String>((
-            start("GetParameters")?,
-            start("SetParameters")?,
-            start("ListParameters")?,
-        ))
-    })();
-    let (get, set, list) = match made {
-        Ok(m) => m,
-        Err(e) => {
-            for t in &tasks {
-                t.abort();
-            }
-            return Err(format!("cannot reach the parameters of {node}: {e}"));
+impl Node<'_> {
+    /// The bridge's endpoint for this node's `srv`, made on first use (only what is
+    /// called: listing a graph's names makes one endpoint per node, not three).
+    fn endpoint(&self, srv: Srv) -> Result<Arc<Endpoint>, String> {
+        let key = (self.name.to_owned(), srv);
+        if let Some(p) = self.bridge.lock().params.get(&key) {
+            return Ok(p.ep.clone());
         }
-    };
-    let ep = Arc::new(NodeParams {
-        get,
-        set,
-        list,
-        tasks,
-    });
-    let mut st = bridge.lock();
-    // Made twice at once: the first one stays.
-    let kept = st
-        .params
-        .entry(node.to_owned())
-        .or_insert_with(|| ep.clone());
-    if !Arc::ptr_eq(kept, &ep) {
-        ep.abort();
+        let (ep, task) = Endpoint::start(
+            self.bridge,
+            &format!("{}/{}", self.name, srv.service()),
+            &format!("rcl_interfaces/srv/{}", srv.type_name()),
+            self.mapping,
+        )
+        .map_err(|e| format!("cannot reach the parameters of {}: {e}", self.name))?;
+        // Made twice at once: the first one stays, the second is dropped (and stops).
+        let mut st = self.bridge.lock();
+        let kept = st.params.entry(key).or_insert(ParamEndpoint { ep, task });
+        Ok(kept.ep.clone())
     }
-    Ok(kept.clone())
-}
 
-/// `GetParameters` → `get_parameters`.
-fn srv_service(srv: &str) -> &'static str {
-    match srv {
-        "GetParameters" => "get_parameters",
-        "SetParameters" => "set_parameters",
-        _ => "list_parameters",
+    /// One call of `srv`, JSON both ways.
+    async fn call(&self, srv: Srv, request: Json) -> Result<Json, String> {
+        let ty = format!("rcl_interfaces/srv/{}", srv.type_name());
+        let body = self.bridge.to_cdr(
+            &format!("{ty}_Request"),
+            &Payload::json(serde_json::to_vec(&request).expect("JSON")),
+        )?;
+        let reply = self.endpoint(srv)?.request(&body).await?;
+        let schema = Schema {
+            type_name: format!("{ty}_Response"),
+            encoding: "ros2msg".into(),
+            text: String::new(),
+        };
+        let json = self
+            .bridge
+            .router
+            .transcoder()
+            .convert(&schema, &Payload::new(Encoding::Cdr, reply), Encoding::Json)
+            .map_err(|e| format!("the answer of {} cannot be read: {e}", srv.service()))?;
+        serde_json::from_slice(&json).map_err(|e| e.to_string())
     }
-}
 
-/// One call of an `rcl_interfaces` service (`srv`) through `ep`, JSON both ways.
-async fn call(bridge: &Bridge, ep: &Endpoint, srv: &str, request: Json) -> Result<Json, String> {
-    let ty = format!("rcl_interfaces/srv/{srv}");
-    let body = bridge.to_cdr(
-        &format!("{ty}_Request"),
-        &Payload::json(serde_json::to_vec(&request).expect("JSON")),
-    )?;
-    let reply = ep.request(&body).await?;
-    let schema = Schema {
-        type_name: format!("{ty}_Response"),
-        encoding: "ros2msg".into(),
-        text: String::new(),
-    };
-    let json = bridge
-        .router
-        .transcoder()
-        .convert(&schema, &Payload::new(Encoding::Cdr, reply), Encoding::Json)
-        .map_err(|e| format!("the answer of {srv} cannot be read: {e}"))?;
-    serde_json::from_slice(&json).map_err(|e| e.to_string())
-}
+    /// The `ParameterValue` of `param` (type NOT_SET when the node has no such
+    /// parameter).
+    async fn get(&self, param: &str) -> Result<Json, String> {
+        let reply = self.call(Srv::Get, json!({"names": [param]})).await?;
+        reply
+            .get("values")
+            .and_then(|v| v.get(0))
+            .cloned()
+            .ok_or_else(|| format!("get_parameters answered no value for {param}"))
+    }
 
-/// The `ParameterValue` of `param` (type NOT_SET when the node has no such parameter).
-async fn get_value(bridge: &Bridge, ep: &NodeParams, param: &str) -> Result<Json, String> {
-    let reply = call(bridge, &ep.get, "GetParameters", json!({"names": [param]})).await?;
-    reply
-        .get("values")
-        .and_then(|v| v.get(0))
-        .cloned()
-        .ok_or_else(|| format!("get_parameters answered no value for {param}"))
-}
+    /// Sets `param` to `value` (a `ParameterValue`); the node's refusal is the error.
+    async fn set(&self, param: &str, value: Json) -> Result<(), String> {
+        let request = json!({"parameters": [{"name": param, "value": value}]});
+        let reply = self.call(Srv::Set, request).await?;
+        let node = self.name;
+        match reply.get("results").and_then(|r| r.get(0)) {
+            Some(r) if r.get("successful").and_then(Json::as_bool) == Some(true) => Ok(()),
+            Some(r) => Err(format!(
+                "{node} refused to change {param}: {}",
+                r.get("reason")
+                    .and_then(Json::as_str)
+                    .filter(|s| !s.is_empty())
+                    .unwrap_or("no reason given")
+            )),
+            None => Err(format!("set_parameters of {node} answered no result")),
+        }
+    }
 
-/// Sets `param` to `value` (a `ParameterValue`); the node's refusal is the error.
-async fn set_value(
-    bridge: &Bridge,
-    ep: &NodeParams,
-    node: &str,
-    param: &str,
-    value: Json,
-) -> Result<(), String> {
-    let request = json!({"parameters": [{"name": param, "value": value}]});
-    let reply = call(bridge, &ep.set, "SetParameters", request).await?;
-    let result = reply.get("results").and_then(|r| r.get(0));
-    match result {
-        Some(r) if r.get("successful").and_then(Json::as_bool) == Some(true) => Ok(()),
-        Some(r) => Err(format!(
-            "{node} refused to change {param}: {}",
-            r.get("reason")
-                .and_then(Json::as_str)
-                .filter(|s| !s.is_empty())
-                .unwrap_or("no reason given")
-        )),
-        None => Err(format!("set_parameters of {node} answered no result")),
+    /// The node's parameters as `<node>:<parameter>`.
+    async fn names(&self) -> Result<Vec<String>, String> {
+        let reply = self
+            .call(Srv::List, json!({"prefixes": [], "depth": 0}))
+            .await?;
+        Ok(reply
+            .pointer("/result/names")
+            .and_then(Json::as_array)
+            .map(|names| {
+                names
+                    .iter()
+                    .filter_map(Json::as_str)
+                    .map(|p| format!("{}:{p}", self.name))
+                    .collect()
+            })
+            .unwrap_or_default())
     }
 }
 
 /// Every node's parameters as `<node>:<parameter>`, sorted; a node that does not answer
 /// within [`LIST_WAIT`] is left out.
 async fn all_names(bridge: &Bridge, nodes: &BTreeMap<String, Mapping>) -> Vec<String> {
-    let lists = nodes.iter().map(|(node, &mapping)| async move {
-        let listed = async {
-            let ep = endpoints(bridge, node, mapping)?;
-            let reply = call(
-                bridge,
-                &ep.list,
-                "ListParameters",
-                json!({"prefixes": [], "depth": 0}),
-            )
-            .await?;
-            Ok::<_, String>(
-                reply
-                    .pointer("/result/names")
-                    .and_then(Json::as_array)
-                    .map(|names| {
-                        names
-                            .iter()
-                            .filter_map(Json::as_str)
-                            .map(|p| format!("{node}:{p}"))
-                            .collect::<Vec<_>>()
-                    })
-                    .unwrap_or_default(),
-            )
+    let lists = nodes.iter().map(|(name, &mapping)| async move {
+        let node = Node {
+            bridge,
+            name,
+            mapping,
         };
-        match tokio::time::timeout(LIST_WAIT, listed).await {
+        match tokio::time::timeout(LIST_WAIT, node.names()).await {
             Ok(Ok(names)) => names,
             Ok(Err(e)) => {
-                tracing::debug!("ros2: listing the parameters of {node}: {e}");
+                tracing::debug!("ros2: listing the parameters of {name}: {e}");
                 Vec::new()
             }
             Err(_) => {
-                tracing::debug!("ros2: {node} did not list its parameters within {LIST_WAIT:?}");
+                tracing::debug!("ros2: {name} did not list its parameters within {LIST_WAIT:?}");
                 Vec::new()
             }
         }
