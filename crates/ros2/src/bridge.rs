@@ -20,7 +20,10 @@ use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
 use futures::StreamExt;
 use rustdds::no_key::{DataReader, DataWriter};
-use rustdds::{DomainParticipant, GUID, Publisher, QosPolicies, RTPSEntity, Subscriber, TopicKind};
+use rustdds::{
+    DomainParticipant, GUID, Publisher, QosPolicies, RTPSEntity, StatusEvented, Subscriber,
+    TopicKind,
+};
 use tokio::task::AbortHandle;
 use tokio_util::sync::CancellationToken;
 
@@ -146,6 +149,79 @@ struct Up {
 struct Down {
     writer: RawWriter,
     type_name: String,
+    /// Set while a new writer waits to be matched (see [`Held`]).
+    held: Option<Held>,
+}
+
+/// How long a new writer's first messages wait for the local readers DDS discovery knew
+/// of when the writer was made.
+const DOWN_MATCH_WAIT: std::time::Duration = std::time::Duration::from_millis(1000);
+
+/// A new writer's messages, held until it has matched the local readers of its topic
+/// that discovery knew of when it was made (or [`DOWN_MATCH_WAIT`] has passed). A
+/// volatile reader only gets what is written after it is matched: without this, a
+/// node waiting for a hub topic missed its first message, written while DDS was still
+/// matching the bridge's new writer with it.
+struct Held {
+    readers: i32,
+    until: Instant,
+    bodies: std::collections::VecDeque<Bytes>,
+}
+
+impl Down {
+    /// Whether held messages may go: every known reader matched, or waited long enough.
+    fn matched(&mut self, now: Instant) -> bool {
+        let Some(h) = &self.held else {
+            return true;
+        };
+        let mut matched = None;
+        while let Some(ev) = self.writer.try_recv_status() {
+            if let rustdds::DataWriterStatus::PublicationMatched { current, .. } = ev {
+                matched = Some(current.count());
+            }
+        }
+        matched.is_some_and(|m| m >= h.readers) || now >= h.until
+    }
+
+    /// Writes `body`, or holds it while the writer is not matched yet (the oldest held
+    /// message is dropped beyond the writer's depth, as its history would).
+    fn write(&mut self, body: Bytes, stats: &Stats) {
+        let now = Instant::now();
+        if !self.matched(now) {
+            let h = self.held.as_mut().expect("held while not matched");
+            h.bodies.push_back(body);
+            if h.bodies.len() > crate::qos::DEPTH as usize {
+                h.bodies.pop_front();
+                stats.dropped_down.fetch_add(1, Relaxed);
+            }
+            return;
+        }
+        for b in self.held.take().map(|h| h.bodies).unwrap_or_default() {
+            self.write_now(b, stats);
+        }
+        self.write_now(body, stats);
+    }
+
+    /// Sends what was held once the writer is matched or the wait is over.
+    fn release(&mut self, stats: &Stats) {
+        if self.held.is_some() && self.matched(Instant::now()) {
+            for b in self.held.take().map(|h| h.bodies).unwrap_or_default() {
+                self.write_now(b, stats);
+            }
+        }
+    }
+
+    fn write_now(&self, body: Bytes, stats: &Stats) {
+        match self.writer.write(RawCdr(body), None) {
+            Ok(()) => {
+                stats.messages_down.fetch_add(1, Relaxed);
+            }
+            Err(e) => {
+                stats.dropped_down.fetch_add(1, Relaxed);
+                tracing::debug!("ros2: writing a {} message: {e:?}", self.type_name);
+            }
+        }
+    }
 }
 
 #[derive(Default)]
@@ -386,6 +462,9 @@ pub async fn run(
     }
     let mut tick = tokio::time::interval(bridge.opts.discovery_period);
     tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    // While a new writer holds messages for its readers to be matched.
+    let mut held_tick = tokio::time::interval(std::time::Duration::from_millis(10));
+    held_tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
     loop {
         tokio::select! {
             _ = shutdown.cancelled() => break,
@@ -403,6 +482,7 @@ pub async fn run(
                 }
             },
             Some(m) = peer_rx.recv() => services::on_peer(&bridge, m),
+            _ = held_tick.tick(), if holding(&bridge) => release_held(&bridge),
         }
     }
     let st = std::mem::take(&mut *bridge.lock());
@@ -621,14 +701,23 @@ fn down(bridge: &Bridge, msg: &Message) {
             return;
         }
     };
-    match d.writer.write(RawCdr(body), None) {
-        Ok(()) => {
-            bridge.stats.messages_down.fetch_add(1, Relaxed);
-        }
-        Err(e) => {
-            bridge.stats.dropped_down.fetch_add(1, Relaxed);
-            tracing::debug!("ros2: writing {name}: {e:?}");
-        }
+    d.write(body, &bridge.stats);
+}
+
+/// Whether a new writer holds messages ([`Held`]).
+fn holding(bridge: &Bridge) -> bool {
+    bridge
+        .lock()
+        .down
+        .values()
+        .any(|d| d.as_ref().is_some_and(|d| d.held.is_some()))
+}
+
+/// Sends held messages of writers now matched (or done waiting).
+fn release_held(bridge: &Bridge) {
+    let mut st = bridge.lock();
+    for d in st.down.values_mut().flatten() {
+        d.release(&bridge.stats);
     }
 }
 
@@ -647,15 +736,33 @@ fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
         .router
         .topic(&msg.topic.name)
         .is_some_and(|t| t.is_latched());
-    match bridge.writer(&names::topic(name), &dds_type, crate::qos::writer(latched)) {
+    let dds_topic = names::topic(name);
+    match bridge.writer(&dds_topic, &dds_type, crate::qos::writer(latched)) {
         Ok(writer) => {
+            // Local readers already waiting for the topic: the first messages wait for
+            // them to be matched.
+            let readers = bridge
+                .dp
+                .discovered_readers()
+                .iter()
+                .filter(|r| {
+                    let s = &r.subscription_topic_data;
+                    s.topic_name() == &dds_topic && !bridge.is_own(s.key())
+                })
+                .count();
             tracing::info!(
-                "ros2: writing {name} ({type_name}{}) into the graph",
+                "ros2: writing {name} ({type_name}{}) into the graph, {readers} local reader(s) known",
                 if latched { ", transient local" } else { "" }
             );
+            let held = (readers > 0).then(|| Held {
+                readers: i32::try_from(readers).unwrap_or(i32::MAX),
+                until: Instant::now() + DOWN_MATCH_WAIT,
+                bodies: Default::default(),
+            });
             Some(Down {
                 writer,
                 type_name: type_name.clone(),
+                held,
             })
         }
         Err(e) => {

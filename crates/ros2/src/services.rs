@@ -31,7 +31,7 @@ use fleetlink_relay::calls::{
 use fleetlink_relay::{TopicName, params};
 use futures::StreamExt;
 use rustdds::{
-    DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber, StatusEvented,
+    DataReaderStatus, DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber, StatusEvented,
     WriteOptionsBuilder,
 };
 use tokio::sync::{Semaphore, oneshot};
@@ -42,8 +42,9 @@ use crate::names::{self, DdsName};
 use crate::qos;
 use crate::raw::{CDR_LE_HEADER, RawCdr, RequestHeader};
 
-/// How long a request waits for its server's reader to be matched before it is sent
-/// (a volatile request written before matching would be lost).
+/// How long a request waits for its server's request reader and reply writer to be
+/// matched before it is sent (a volatile request, or its reply, written before matching
+/// would be lost).
 const MATCH_WAIT: Duration = Duration::from_secs(3);
 
 /// How many requests one service of a local server has unanswered at once. A ROS 2
@@ -87,6 +88,9 @@ pub(crate) struct Endpoint {
     seq: AtomicI64,
     /// Readers matched to `writer` (the server's), from the writer's status events.
     matched: AtomicI32,
+    /// Writers matched to the reply reader (the server's), from the reader's events: a
+    /// reply written before its writer is matched with this reader would be lost.
+    reply_matched: AtomicI32,
     waiting: Mutex<HashMap<i64, oneshot::Sender<Bytes>>>,
     /// Unanswered requests allowed at once ([`IN_FLIGHT`]); `None`: no limit.
     slots: Option<Semaphore>,
@@ -124,6 +128,7 @@ impl Endpoint {
                 client,
                 seq: AtomicI64::new(0),
                 matched: AtomicI32::new(0),
+                reply_matched: AtomicI32::new(0),
                 waiting: Mutex::new(HashMap::new()),
                 slots: limited.then(|| Semaphore::new(IN_FLIGHT)),
             }),
@@ -158,7 +163,7 @@ impl Endpoint {
             None => None,
         };
         let started = Instant::now();
-        while !self.server_matched() {
+        while !(self.server_matched() && self.reply_matched.load(Relaxed) > 0) {
             if started.elapsed() > MATCH_WAIT {
                 return Err(format!(
                     "the server of {} is not reachable over DDS",
@@ -228,11 +233,25 @@ impl Endpoint {
         self.waiting.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// Hands replies meant for this bridge to their waiting requests.
+    /// Hands replies meant for this bridge to their waiting requests, and follows which
+    /// writers the reply reader is matched with.
     async fn pump(self: Arc<Self>, reader: RawReader) {
         let mut samples = reader.async_sample_stream();
+        let mut events = samples.async_event_stream();
         let own = [self.reply_reader, self.writer.guid()];
-        while let Some(r) = samples.next().await {
+        loop {
+            let r = tokio::select! {
+                r = samples.next() => match r {
+                    Some(r) => r,
+                    None => return,
+                },
+                Some(ev) = events.next() => {
+                    if let DataReaderStatus::SubscriptionMatched { current, .. } = ev {
+                        self.reply_matched.store(current.count(), Relaxed);
+                    }
+                    continue;
+                }
+            };
             let Ok(sample) = r else { continue };
             if self.mapping == Mapping::FastDds {
                 // Ours when the reply names this endpoint's reader (or writer).

@@ -63,6 +63,7 @@ TWIST = {"linear": {"x": 0.5, "y": -0.25, "z": 0.125}, "angular": {"x": 1.5, "y"
 
 ANNOUNCE = "hello fleet"  # the hub's latched /<robot>/announce
 GREETING = "hello from the fleet"  # the answer of the hub's /cloud/greet
+ONESHOT = "only once"  # the single message of the hub's /<robot>/oneshot
 
 # A node's parameters on the robot: name -> (rcl_interfaces ParameterType, value).
 # "serial" is read-only.

@@ -37,6 +37,7 @@ Modes (all take --hub-url URL --robot NAME):
                 hub's rosapi as <node>:<parameter>: listed, read with roslibpy's Param,
                 changed (keeping the parameter's type), refusals with the node's reason,
                 deleted; clear errors for a missing node and a name without a node.
+  publish-once  publishes /<robot>/oneshot (std_msgs/msg/String) once.
   serve-fib     stays running: serves the fleet action /cloud/fib (Fibonacci) in plain
                 rosbridge ops, one step per 0.1 s with feedback, cancel honoured. Prints
                 "serve-fib ready".
@@ -408,6 +409,17 @@ def check_params(args):
     check(not ok and "<node>:<parameter>" in res, f"a name without a node says how to name one: {short(res)}")
 
 
+def publish_once(args):
+    """Publishes /<robot>/oneshot once (a topic new to the hub), as a one-off command
+    would be. The rosapi call after it returns once the hub has handled the publish (a
+    connection's operations are handled in order)."""
+    ros = connect(args.hub_url)
+    roslibpy.Topic(ros, f"/{args.robot}/oneshot", "std_msgs/msg/String").publish(
+        roslibpy.Message({"data": E.ONESHOT}))
+    ok, res = rosapi(ros, "topics")
+    check(ok, f"/{args.robot}/oneshot published once (the hub answered the call after it: {short(res, 80)})")
+
+
 def serve_fib(args):
     """A fleet action server at the hub: /cloud/fib (example_interfaces/action/Fibonacci),
     spoken in plain rosbridge ops (roslibpy has no action server). One step per 0.1 s with
@@ -481,7 +493,7 @@ def serve(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds", "check-params"])
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds", "check-params", "publish-once"])
     p.add_argument("out", nargs="?")
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
@@ -497,7 +509,7 @@ def main():
     {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
      "check-action": check_action, "check-late": check_late, "check-gone": check_gone,
      "serve-fib": serve_fib, "check-fastdds": check_fastdds,
-     "check-params": check_params}[args.mode](args)
+     "check-params": check_params, "publish-once": publish_once}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

@@ -26,6 +26,10 @@ Modes:
                     (Iron and newer) or 24 bytes (Humble and older): the agent's node NAME
                     is listed under its participant, with its rt/cmd_vel writer among the
                     node's writers. Exit 0 when so.
+  first-message [--wait S]
+                    a volatile reader of /oneshot, started before the hub publishes it
+                    once: prints "first-message ready" when the agent is discovered,
+                    exit 0 when the single message arrived.
   call-greet [--wait S]
                     calls /cloud/greet (std_srvs/srv/Trigger) as a ROS 2 client; exit 0
                     when the fleet's answer came.
@@ -366,6 +370,38 @@ def node_info(args):
     return 0
 
 
+def first_message(args):
+    """A node waiting for a topic that the hub publishes once, later: its volatile reader
+    must get that one message, although the agent makes its writer only when the message
+    comes (and a volatile reader gets nothing written before it is matched)."""
+    from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication
+
+    node = Node()
+    got = []
+    node.reader(topic_name("/oneshot"), T.String, got.append)
+    publications = BuiltinDataReader(node.dp, BuiltinTopicDcpsPublication)
+    seen = set()
+
+    def agent_known():
+        seen.update(s.topic_name for s in publications.take(N=100))
+        return "rt/cmd_vel" in seen
+
+    # Discovery between this participant and the agent has happened both ways once the
+    # agent's writers are known here.
+    if not wait_until(agent_known, args.wait):
+        log(f"FAIL: the agent's rt/cmd_vel writer was not discovered within {args.wait:.0f} s")
+        return 1
+    log("first-message ready")
+    if not wait_until(lambda: got, args.wait):
+        log(f"FAIL: /oneshot: the hub's single message did not arrive within {args.wait:.0f} s")
+        return 1
+    if [m.data for m in got] != [E.ONESHOT]:
+        log(f"FAIL: /oneshot: got {[m.data for m in got]}, want [{E.ONESHOT!r}]")
+        return 1
+    log(f"ok: a reader waiting for /oneshot got the hub's single message {E.ONESHOT!r}")
+    return 0
+
+
 def call_greet(args):
     node = Node()
     client = ServiceClient(node, "/cloud/greet", T.TriggerRequest, T.TriggerResponse)
@@ -697,7 +733,7 @@ def delivery_check(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
+    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "first-message", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
     p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT; delivery-check: (child, internal)")
     p.add_argument("--msg-path")
     p.add_argument("--chatter-stop")
@@ -715,7 +751,7 @@ def main():
         return graph(args)
     if args.mode == "node-info" and not args.node:
         p.error("node-info needs --node")
-    return {"announce": announce, "node-info": node_info, "call-greet": call_greet, "call-fib": call_fib, "late": late,
+    return {"announce": announce, "node-info": node_info, "first-message": first_message, "call-greet": call_greet, "call-fib": call_fib, "late": late,
             "delivery-check": delivery_check, "selftest": selftest}[args.mode](args)
 
 

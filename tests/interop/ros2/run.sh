@@ -14,6 +14,7 @@
 #   2. roslibpy's /robot1/cmd_vel reaches a Cyclone subscriber of rt/cmd_vel, equal;
 #   2b. the agent's node is on ros_discovery_info (what `ros2 node list` reads), in
 #      Iron+'s layout; after the restart of step 9 with ROS_DISTRO=humble, in Humble's;
+#   2c. a Cyclone reader waiting for /oneshot gets the hub's single message of it;
 #   3. transient_local both ways: /robot_description reaches a late hub subscriber; the
 #      hub's latched /robot1/announce reaches a transient_local reader started later;
 #   4. the Cyclone service /add_two_ints answers roslibpy calls at the hub, 40 at once
@@ -191,7 +192,7 @@ token: $robot_token
 local_rosbridge: null
 ros2:
   publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up], exclude: [] }
-  subscribe: [/cmd_vel, /announce, /chatter, /fdds_down]
+  subscribe: [/cmd_vel, /announce, /chatter, /fdds_down, /oneshot]
   services: { expose: [/add_two_ints, /fdds_add_two_ints], offer: ["/cloud/.*"] }
   actions: { expose: [/fibonacci, /fdds_fibonacci], offer: ["/cloud/.*"] }
 EOF
@@ -237,6 +238,16 @@ fi
 step "2b. the agent is a node in ros_discovery_info (ros2 node list)"
 ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 16 --wait 20 || fail "node-info (16-byte GIDs, no ROS_DISTRO)"
 
+step "2c. a hub topic's first message reaches a local reader that was waiting for it"
+: >"$tmp/oneshot.log"
+ns_bg "$python" "$here/ros2_peer.py" first-message --wait 20 >"$tmp/oneshot.log" 2>&1 &
+pids+=($!)
+oneshot_pid=${pids[-1]}
+if wait_for_line "$tmp/oneshot.log" '^(first-message) ready$' "the /oneshot reader" "$oneshot_pid" >/dev/null; then
+    ns_run 30 "$python" "$here/hub_peer.py" publish-once --hub-url "$hub_url" --robot "$robot" || fail "publish-once (/oneshot)"
+fi
+if wait "$oneshot_pid"; then grep '^ok:' "$tmp/oneshot.log"; else cat "$tmp/oneshot.log"; fail "the first message of /oneshot"; fi
+
 step "3. transient_local both ways"
 ns_run 40 "$python" "$here/hub_peer.py" check-latched --hub-url "$hub_url" --robot "$robot" || fail "check-latched (/robot_description)"
 # The hub's latched /robot1/announce went out when serve started, before the /cmd_vel
@@ -277,15 +288,16 @@ ns_run 90 "$python" "$here/hub_peer.py" check-params --hub-url "$hub_url" --robo
 deadline=$((SECONDS + 5))
 while :; do
     params="$(robot_got 'sorted(g["params"].items())')"
-    case "$params" in *"('max_speed', 2.0)"*"('waypoints', [4, 5])"*) break ;; esac
+    want="[('max_speed', 2.0), ('serial', 'SN-42'), ('use_sim_time', False), ('waypoints', [4, 5])]"
+    [ "$params" = "$want" ] && break
     [ "$SECONDS" -lt "$deadline" ] || break
     sleep 0.2
 done
-case "$params" in
-    *"('max_speed', 2.0)"*"('robot_name'"*) fail "the node still has robot_name after delete_param: $params" ;;
-    *"('max_speed', 2.0)"*"('serial', 'SN-42')"*"('waypoints', [4, 5])"*) echo "ok: the node holds what the hub set: $params" ;;
-    *) fail "the node's parameters: $params, want max_speed 2.0, serial SN-42, waypoints [4, 5], no robot_name" ;;
-esac
+if [ "$params" = "$want" ]; then
+    echo "ok: the node holds what the hub set (robot_name deleted): $params"
+else
+    fail "the node's parameters: $params, want $want"
+fi
 
 step "7. a participant started after the agent"
 ns_bg "$python" "$here/ros2_peer.py" late >"$tmp/late.log" 2>&1 &
