@@ -190,7 +190,14 @@ fn create_publication(node: &Arc<Node>, msg: &Message) -> Option<Arc<Publication
         topic: name.to_owned(),
         identity,
         latched,
-        out: std::sync::Mutex::new(PubOut::default()),
+        out: std::sync::Mutex::new(PubOut {
+            held: (!latched).then(|| crate::node::Held {
+                expect: None,
+                until: std::time::Instant::now() + crate::node::HOLD_FOR_SUBSCRIBERS,
+                frames: Default::default(),
+            }),
+            ..PubOut::default()
+        }),
         dropped: AtomicU64::new(0),
         stats: node.stats.clone(),
     });
@@ -204,6 +211,15 @@ fn create_publication(node: &Arc<Node>, msg: &Message) -> Option<Arc<Publication
     );
     let (task_node, task_pub) = (node.clone(), publication.clone());
     tokio::spawn(async move { register_publication(&task_node, &task_pub).await });
+    if !latched {
+        // Whatever is still held goes when the wait is over.
+        let held = publication.clone();
+        tokio::spawn(async move {
+            tokio::time::sleep(crate::node::HOLD_FOR_SUBSCRIBERS).await;
+            let mut out = held.out.lock().unwrap_or_else(|p| p.into_inner());
+            held.release_held(&mut out);
+        });
+    }
     Some(publication)
 }
 
@@ -213,9 +229,21 @@ async fn register_publication(node: &Node, p: &Publication) {
         .register_publisher(&p.topic, &p.identity.type_name)
         .await
     {
-        Ok(_) => {
+        Ok(subscribers) => {
             node.lock().registered_pubs.insert(p.topic.clone());
             node.stats.master_registrations.fetch_add(1, Relaxed);
+            // The subscribers already waiting (not this node's own, if it subscribes
+            // the same topic): held messages wait for them to connect.
+            let own = node.master.caller_api.trim_end_matches('/');
+            let waiting = subscribers
+                .iter()
+                .filter(|s| s.trim_end_matches('/') != own)
+                .count();
+            let mut out = p.out.lock().unwrap_or_else(|e| e.into_inner());
+            if let Some(h) = &mut out.held {
+                h.expect = Some(waiting);
+            }
+            p.release_held(&mut out);
         }
         Err(e) => tracing::debug!("ros1: registering publisher {}: {e}", p.topic),
     }

@@ -125,6 +125,7 @@ async fn subscriber(node: &Node, mut stream: TcpStream, topic: &str, header: &He
             tx,
             queued: queued.clone(),
         });
+        publication.release_held(&mut out);
     }
     tracing::info!(
         "ros1: {} subscribed to {topic} ({})",

@@ -55,12 +55,63 @@ pub struct Publication {
 pub struct PubOut {
     pub conns: Vec<SubscriberTx>,
     pub last: Option<Bytes>,
+    /// Set while a new publication waits for the subscribers the master knew of.
+    pub held: Option<Held>,
 }
 
+/// How long a new publication's first messages wait for the local subscribers the
+/// master listed when it was registered.
+pub const HOLD_FOR_SUBSCRIBERS: std::time::Duration = std::time::Duration::from_secs(1);
+
+/// A new publication's messages, held until the subscribers the master listed when it
+/// was registered have connected (or [`HOLD_FOR_SUBSCRIBERS`] has passed). A ROS 1
+/// subscriber connects only after the master tells it of the publisher, so without this
+/// a node waiting for a hub topic missed its first message (latched topics are not
+/// held: a subscriber that connects gets their last message anyway).
+pub struct Held {
+    /// How many subscribers to wait for; `None` until the registration answered.
+    pub expect: Option<usize>,
+    pub until: std::time::Instant,
+    pub frames: std::collections::VecDeque<Bytes>,
+}
+
+/// How many messages a new publication holds at most (the oldest go first).
+const HELD_MAX: usize = 10;
+
 impl Publication {
-    /// Queues a framed message for every connected subscriber (never waits).
+    /// Queues a framed message for every connected subscriber (never waits), or holds it
+    /// while the publication waits for its subscribers ([`Held`]).
     pub fn publish(&self, frame: Bytes) {
         let mut out = self.out.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(h) = &mut out.held {
+            h.frames.push_back(frame);
+            if h.frames.len() > HELD_MAX {
+                h.frames.pop_front();
+                self.drop_one();
+            }
+            self.release_held(&mut out);
+            return;
+        }
+        self.send(&mut out, frame);
+    }
+
+    /// Sends the held messages once every expected subscriber has connected or the wait
+    /// is over.
+    pub fn release_held(&self, out: &mut PubOut) {
+        let Some(h) = &out.held else {
+            return;
+        };
+        let connected = h.expect.is_some_and(|n| out.conns.len() >= n);
+        if !connected && std::time::Instant::now() < h.until {
+            return;
+        }
+        let frames = out.held.take().map(|h| h.frames).unwrap_or_default();
+        for f in frames {
+            self.send(out, f);
+        }
+    }
+
+    fn send(&self, out: &mut PubOut, frame: Bytes) {
         out.conns.retain(|s| {
             let queued = s.queued.load(Relaxed);
             if queued > 0 && queued + frame.len() > SUBSCRIBER_QUEUE_BYTES {
@@ -428,20 +479,28 @@ async fn slave_connection(node: &Node, stream: tokio::net::TcpStream) {
 mod tests {
     use super::*;
 
-    #[test]
-    fn a_subscriber_that_stops_reading_holds_at_most_the_byte_bound() {
-        let publication = Publication {
-            topic: "/points".into(),
+    /// A publication not latched, `held` as given.
+    fn publication(held: Option<Held>) -> Publication {
+        Publication {
+            topic: "/t".into(),
             identity: Ros1Identity {
-                type_name: "sensor_msgs/PointCloud2".into(),
+                type_name: "std_msgs/String".into(),
                 md5sum: "x".into(),
                 definition: String::new(),
             },
             latched: false,
-            out: Mutex::new(PubOut::default()),
+            out: Mutex::new(PubOut {
+                held,
+                ..PubOut::default()
+            }),
             dropped: AtomicU64::new(0),
             stats: Arc::default(),
-        };
+        }
+    }
+
+    #[test]
+    fn a_subscriber_that_stops_reading_holds_at_most_the_byte_bound() {
+        let publication = publication(None);
         let (tx, mut rx) = mpsc::channel(SUBSCRIBER_QUEUE);
         let queued = Arc::new(std::sync::atomic::AtomicUsize::new(0));
         publication.out.lock().unwrap().conns.push(SubscriberTx {
@@ -470,6 +529,73 @@ mod tests {
         queued.store(0, Relaxed);
         publication.publish(Bytes::from(vec![0u8; SUBSCRIBER_QUEUE_BYTES + 1]));
         assert!(rx.try_recv().is_ok(), "an oversized frame is not starved");
+    }
+
+    #[test]
+    fn a_new_publication_holds_its_first_messages_for_the_subscribers_the_master_listed() {
+        let publication = publication(Some(Held {
+            expect: None,
+            until: std::time::Instant::now() + HOLD_FOR_SUBSCRIBERS,
+            frames: Default::default(),
+        }));
+        let frame = |n: u8| Bytes::from(vec![n]);
+        for n in 0..12 {
+            publication.publish(frame(n));
+        }
+        // The registration answers: two subscribers are waiting.
+        let mut rxs = Vec::new();
+        let mut connect = |conn| {
+            let (tx, rx) = mpsc::channel(SUBSCRIBER_QUEUE);
+            rxs.push(rx);
+            let mut out = publication.out.lock().unwrap();
+            out.conns.push(SubscriberTx {
+                conn,
+                tx,
+                queued: Arc::default(),
+            });
+            publication.release_held(&mut out);
+        };
+        publication
+            .out
+            .lock()
+            .unwrap()
+            .held
+            .as_mut()
+            .unwrap()
+            .expect = Some(2);
+        connect(1);
+        assert!(
+            publication.out.lock().unwrap().held.is_some(),
+            "still waiting for the second subscriber"
+        );
+        connect(2);
+        assert!(publication.out.lock().unwrap().held.is_none());
+        for rx in &mut rxs {
+            let got: Vec<u8> = std::iter::from_fn(|| rx.try_recv().ok().map(|b| b[0])).collect();
+            assert_eq!(got, (2..12).collect::<Vec<u8>>(), "the newest 10, in order");
+        }
+        assert_eq!(publication.dropped.load(Relaxed), 2, "the two oldest");
+        // After that, messages go straight out.
+        publication.publish(frame(99));
+        assert_eq!(rxs[0].try_recv().ok(), Some(frame(99)));
+    }
+
+    #[test]
+    fn held_messages_go_when_the_wait_is_over_even_if_a_subscriber_never_came() {
+        let publication = publication(Some(Held {
+            expect: Some(2),
+            until: std::time::Instant::now(),
+            frames: Default::default(),
+        }));
+        let (tx, mut rx) = mpsc::channel(SUBSCRIBER_QUEUE);
+        publication.out.lock().unwrap().conns.push(SubscriberTx {
+            conn: 1,
+            tx,
+            queued: Arc::default(),
+        });
+        publication.publish(Bytes::from_static(b"a"));
+        assert_eq!(rx.try_recv().ok(), Some(Bytes::from_static(b"a")));
+        assert!(publication.out.lock().unwrap().held.is_none());
     }
 
     fn done(id: CallId) -> CallEvent {

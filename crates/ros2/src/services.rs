@@ -31,8 +31,8 @@ use fleetlink_relay::calls::{
 use fleetlink_relay::{TopicName, params};
 use futures::StreamExt;
 use rustdds::{
-    DataReaderStatus, DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber, StatusEvented,
-    WriteOptionsBuilder,
+    DataReaderStatus, DataWriterStatus, GUID, RTPSEntity, SampleIdentity, SequenceNumber,
+    StatusEvented, WriteOptionsBuilder,
 };
 use tokio::sync::{Semaphore, oneshot};
 use tokio::task::AbortHandle;

@@ -16,6 +16,7 @@ Modes (all take --hub-url URL --robot NAME):
                 names under /<robot>/ (run.sh set /max_speed and /limits with rosparam):
                 get, set, has, search, delete, a default for a missing one; a hub
                 parameter outside any robot stays the hub's own.
+  publish-once  publishes /<robot>/oneshot once.
   check-status  the agent's status topic /<robot>/fleetlink/diagnostics
                 (diagnostic_msgs/DiagnosticArray) shows its ROS 1 part at WARN with the
                 /cmd_vel type mismatch named, both types in it.
@@ -234,6 +235,16 @@ def check_params(args):
     ros.close()
 
 
+def publish_once(args):
+    """Publishes /<robot>/oneshot (std_msgs/String, a topic new to the hub) once, as a
+    one-off command would be. The rosapi call after it returns once the hub has handled
+    the publish (a connection's operations are handled in order)."""
+    ros = connect(args.hub_url)
+    roslibpy.Topic(ros, f"/{args.robot}/oneshot", "std_msgs/String").publish(roslibpy.Message({"data": "only once"}))
+    got = rosapi(ros, "topics")
+    check("error" not in got, f"/{args.robot}/oneshot published once (then rosapi topics answered)")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("mode")
@@ -242,7 +253,7 @@ def main():
     p.add_argument("--robot", required=True)
     args = p.parse_args()
     {"serve": serve, "check-up": check_up, "check-after": check_after, "check-status": check_status,
-     "check-params": check_params}[args.mode](args)
+     "check-params": check_params, "publish-once": publish_once}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

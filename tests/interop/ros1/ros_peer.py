@@ -8,6 +8,8 @@ Modes:
               (example_interfaces/AddTwoInts). Writes what it received to OUT (JSON) every
               0.2 s.
   after       a node started after roscore restarted: publishes /after_restart.
+  oneshot     a node subscribed to /oneshot before the hub publishes it once: exit 0
+              when that single message arrived.
   wrongtype   a node that subscribes /cmd_vel with the wrong type (std_msgs/String) for
               3 s: the agent must refuse it and keep serving the right subscribers.
 
@@ -19,12 +21,15 @@ import os
 import struct
 import sys
 import threading
+import time
 
 import rospy
 from geometry_msgs.msg import Twist
 from sensor_msgs.msg import LaserScan, PointCloud2, PointField
 from std_msgs.msg import String
 from std_srvs.srv import SetBool, SetBoolResponse
+
+ONESHOT = "only once"  # the hub's single message on /<robot>/oneshot (hub_peer.py)
 
 POINTS = 100_000
 
@@ -122,6 +127,23 @@ def after():
         rate.sleep()
 
 
+def oneshot():
+    """A node waiting for /oneshot, which the hub publishes once, later: it must get
+    that one message, although the agent registers the publication only when the
+    message comes and a ROS 1 subscriber connects only after the master tells it."""
+    rospy.init_node("oneshot_listener", disable_signals=True)
+    got = []
+    rospy.Subscriber("/oneshot", String, lambda m: got.append(m.data))
+    print("oneshot ready", flush=True)
+    deadline = time.monotonic() + 20
+    while not got and time.monotonic() < deadline:
+        time.sleep(0.05)
+    if got[:1] != [ONESHOT]:
+        print(f"FAIL: /oneshot: got {got}, want [{ONESHOT!r}]", flush=True)
+        sys.exit(1)
+    print(f"ok: a rospy subscriber waiting for /oneshot got the hub's single message {ONESHOT!r}", flush=True)
+
+
 def wrongtype():
     rospy.init_node("wrong_type", disable_signals=True)
     rospy.Subscriber("/cmd_vel", String, lambda m: print(f"unexpected: {m}", flush=True))
@@ -134,6 +156,8 @@ if __name__ == "__main__":
         graph(sys.argv[2])
     elif sys.argv[1] == "after":
         after()
+    elif sys.argv[1] == "oneshot":
+        oneshot()
     elif sys.argv[1] == "wrongtype":
         wrongtype()
     else:

@@ -10,6 +10,7 @@
 #   2. roslibpy's /<robot>/cmd_vel reaches the rospy subscriber; `rostopic echo -n 1` sees
 #      a latched hub topic published before it started; `rosservice call` reaches a fleet
 #      service advertised on the hub;
+#   2a. a rospy subscriber waiting for /oneshot gets the hub's single message of it;
 #   2b. rosapi's parameter services at the hub reach the robot's master for /<robot>/...
 #      names (rosparam sets them on the robot, roslibpy reads, changes, searches and
 #      deletes them at the hub; rosparam sees the change);
@@ -116,7 +117,7 @@ ros1:
   master_uri: $ROS_MASTER_URI
   publish:
     include: [/scan, /points, /custom, /chatter, /after_restart]
-  subscribe: [/cmd_vel, /announce, /chatter]
+  subscribe: [/cmd_vel, /announce, /chatter, /oneshot]
   services:
     expose: [/set_enabled, /add_two_ints]
     offer: ["/cloud/.*"]
@@ -159,6 +160,15 @@ grep -q '/cmd_vel' <<<"$node_out" && grep -q '/scan' <<<"$node_out" \
 hz_out="$(timeout 6 rostopic hz -w 5 /cmd_vel 2>&1 || true)"
 grep -q 'average rate' <<<"$hz_out" && echo "ok: rostopic hz /cmd_vel: $(grep -m1 'average rate' <<<"$hz_out")" \
     || fail "rostopic hz /cmd_vel: $hz_out"
+
+step "2a. a hub topic's first message reaches a rospy subscriber that was waiting for it"
+"$rospython" "$here/ros_peer.py" oneshot >"$tmp/oneshot.log" 2>&1 &
+pids+=($!)
+oneshot_pid=${pids[-1]}
+if wait_for_line "$tmp/oneshot.log" '^(oneshot) ready$' "the /oneshot subscriber" "$oneshot_pid" >/dev/null; then
+    timeout --kill-after=5 30 "$python" "$here/hub_peer.py" publish-once --hub-url "$hub_url" --robot "$robot" || fail "publish-once (/oneshot)"
+fi
+if wait "$oneshot_pid"; then grep '^ok:' "$tmp/oneshot.log"; else cat "$tmp/oneshot.log"; fail "the first message of /oneshot"; fi
 
 step "2b. parameters: the hub's rosapi reaches the robot's master"
 timeout 20 rosparam set /max_speed 1.5 || fail "rosparam set /max_speed"
