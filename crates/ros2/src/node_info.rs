@@ -20,6 +20,8 @@ use crate::raw::{CDR_LE_HEADER, RawAdapter, RawCdr};
 
 pub const TOPIC: &str = "ros_discovery_info";
 const DDS_TYPE: &str = "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_";
+/// How many participants' samples the reader keeps between two looks.
+const PARTICIPANTS: i32 = 64;
 
 /// The GID size of a ROS 2 distribution (by its `ROS_DISTRO` name); `None`: not one the
 /// agent knows.
@@ -56,9 +58,16 @@ impl NodeInfo {
                  layout of ros_discovery_info is taken from the graph (set ros2.distro)"
             );
         }
+        // A no-key topic is one instance: a reader of depth 1 would keep only the latest
+        // sample of all participants (often the bridge's own), so room for many.
+        let reader_qos = crate::qos::reader_for(
+            qos.reliability(),
+            Some(rustdds::policy::Durability::TransientLocal),
+            PARTICIPANTS,
+        );
         let reader = match fixed {
             Some(_) => None,
-            None => Some(bridge.untracked_reader(TOPIC, DDS_TYPE, qos)?),
+            None => Some(bridge.untracked_reader(TOPIC, DDS_TYPE, reader_qos)?),
         };
         let (namespace, name) = split_node_name(&bridge.opts.node_name);
         Ok(NodeInfo {

@@ -26,6 +26,10 @@ Modes:
                     (Iron and newer) or 24 bytes (Humble and older): the agent's node NAME
                     is listed under its participant, with its rt/cmd_vel writer among the
                     node's writers. Exit 0 when so.
+  announce-node --node NAME [--gid 16|24]
+                    a node of another distribution: keeps its participant's sample on
+                    ros_discovery_info with GIDs of that size, naming node NAME, until
+                    stopped. Prints "announce-node ready: ...".
   first-message [--wait S]
                     a volatile reader of /oneshot, started before the hub publishes it
                     once: prints "first-message ready" when the agent is discovered,
@@ -368,6 +372,28 @@ def node_info(args):
     log(f"ok: ros_discovery_info ({args.gid}-byte GIDs, equal to rosbags' layout) lists node {args.node} "
         f"with {len(readers)} readers and {len(writers)} writers, among them its rt/cmd_vel writer")
     return 0
+
+
+def announce_node(args):
+    """A node of another distribution: writes this participant's ParticipantEntitiesInfo
+    on ros_discovery_info with --gid-byte GIDs (transient local, as rmw does) naming
+    node --node, then stays until stopped. An agent without ros2.distro or ROS_DISTRO
+    must take the GID size from it."""
+    Gid, NodeInfo, Info = T.discovery_types(args.gid)
+    node = Node()
+
+    def gid(raw16):
+        return Gid(data=list(raw16) + [0] * (args.gid - 16))
+
+    ns, _, name = args.node.rpartition("/")
+    sample = Info(gid=gid(node.dp.guid.bytes), node_entities_info_seq=[
+        NodeInfo(node_namespace=ns or "/", node_name=name, reader_gid_seq=[], writer_gid_seq=[])])
+    # Kept in a variable: a collected writer is deleted, and its kept sample with it.
+    writer = node.writer("ros_discovery_info", Info, qos=T.qos(transient_local=True, depth=1))
+    writer.write(sample)
+    log(f"announce-node ready: {args.node} with {args.gid}-byte GIDs")
+    while True:
+        time.sleep(1)
 
 
 def first_message(args):
@@ -733,7 +759,7 @@ def delivery_check(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "first-message", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
+    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "announce-node", "first-message", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
     p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT; delivery-check: (child, internal)")
     p.add_argument("--msg-path")
     p.add_argument("--chatter-stop")
@@ -749,9 +775,9 @@ def main():
             p.error("graph needs OUT, --msg-path and --chatter-stop")
         args.out = args.path
         return graph(args)
-    if args.mode == "node-info" and not args.node:
-        p.error("node-info needs --node")
-    return {"announce": announce, "node-info": node_info, "first-message": first_message, "call-greet": call_greet, "call-fib": call_fib, "late": late,
+    if args.mode in ("node-info", "announce-node") and not args.node:
+        p.error(f"{args.mode} needs --node")
+    return {"announce": announce, "node-info": node_info, "announce-node": announce_node, "first-message": first_message, "call-greet": call_greet, "call-fib": call_fib, "late": late,
             "delivery-check": delivery_check, "selftest": selftest}[args.mode](args)
 
 

@@ -13,7 +13,9 @@
 #      Cyclone's bytes for every type equal rosbags' (the IDL types are the ROS 2 types);
 #   2. roslibpy's /robot1/cmd_vel reaches a Cyclone subscriber of rt/cmd_vel, equal;
 #   2b. the agent's node is on ros_discovery_info (what `ros2 node list` reads), in
-#      Iron+'s layout; after the restart of step 9 with ROS_DISTRO=humble, in Humble's;
+#      Iron+'s layout; after the restart of step 9 with ROS_DISTRO=humble, in Humble's,
+#      and after one more restart without it, beside a node announcing itself in
+#      Humble's layout, in Humble's again (learned from that node);
 #   2c. a Cyclone reader waiting for /oneshot gets the hub's single message of it;
 #   3. transient_local both ways: /robot_description reaches a late hub subscriber; the
 #      hub's latched /robot1/announce reaches a transient_local reader started later;
@@ -55,6 +57,9 @@ python="${PYTHON:-$root/.venv/bin/python}"
 robot=robot1
 started=$SECONDS
 export ROS_DOMAIN_ID=23 PYTHONDONTWRITEBYTECODE=1
+# The agents here learn the GID size of ros_discovery_info from the graph (step 2b) unless
+# a step gives them ROS_DISTRO itself.
+unset ROS_DISTRO
 
 [ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
 [ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
@@ -380,6 +385,19 @@ agent_pid=${pids[-1]}
 ns_run 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" || fail "check-up after the agent restarted"
 ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" || fail "check-calls after the agent restarted"
 ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 24 --wait 20 || fail "node-info (24-byte GIDs, ROS_DISTRO=humble)"
+# Restarted once more without ROS_DISTRO, beside a Humble node announcing itself: the
+# agent takes the GID size from that node's sample.
+ns_bg "$python" "$here/ros2_peer.py" announce-node --node /humble_node --gid 24 >"$tmp/humble.log" 2>&1 &
+pids+=($!)
+wait_for_line "$tmp/humble.log" '^(announce-node) ready' "the Humble node's announcement" "${pids[-1]}" >/dev/null \
+    || fail "announce-node"
+ns_kill "agent --config $tmp/agent.yaml"
+ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent3.log" 2>&1 &
+pids+=($!)
+agent_pid=${pids[-1]}
+ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 24 --wait 20 || fail "node-info (24-byte GIDs learned from a Humble node)"
+grep -q "24-byte GIDs" "$tmp/agent3.log" && echo "ok: the agent logged the GID size it learned: $(grep -o 'the graph.s nodes use 24-byte GIDs.*' "$tmp/agent3.log" | head -n1)" \
+    || fail "the agent did not log learning 24-byte GIDs"
 
 kill -0 "$graph_pid" 2>/dev/null || fail "the Cyclone graph (ros2_peer.py graph) died"
 echo "ros2 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"
