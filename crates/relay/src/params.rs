@@ -96,12 +96,17 @@ pub const SERVICES: [(&str, &str, &str); 6] = [
     ),
 ];
 
-/// The schema a parameter service is advertised with.
-pub fn schema(type_name: &str, definition: &str) -> fleetlink_proto::Schema {
-    fleetlink_proto::Schema {
-        type_name: type_name.to_owned(),
-        encoding: "ros1msg".into(),
-        text: definition.to_owned(),
+/// Advertises every parameter service in the call table as `client`'s (an agent's ROS
+/// adapter that answers them for its robot).
+pub fn advertise_services(calls: &crate::calls::Calls, client: crate::ClientId) {
+    for (name, type_name, definition) in SERVICES {
+        let name = crate::TopicName::parse(name).expect("a valid service name");
+        let schema = fleetlink_proto::Schema {
+            type_name: type_name.to_owned(),
+            encoding: "ros1msg".into(),
+            text: definition.to_owned(),
+        };
+        calls.advertise(client, name, schema, false);
     }
 }
 

@@ -77,15 +77,7 @@ pub async fn run(
         node.opts.master_uri
     );
     if node.opts.parameters {
-        for (name, ty, definition) in fleetlink_relay::params::SERVICES {
-            let name = TopicName::parse(name).expect("a valid service name");
-            router.calls.advertise(
-                client,
-                name,
-                fleetlink_relay::params::schema(ty, definition),
-                false,
-            );
-        }
+        fleetlink_relay::params::advertise_services(&router.calls, client);
     }
     for re in &node.opts.offer.include {
         router.calls.watch(client, re.clone());

@@ -348,11 +348,7 @@ impl Bridge {
         if payload.encoding == Encoding::Cdr && RawCdr::is_le(&payload.bytes) {
             return Ok(payload.bytes.clone());
         }
-        let schema = Schema {
-            type_name: type_name.to_owned(),
-            encoding: "ros2msg".into(),
-            text: String::new(),
-        };
+        let schema = ros2_schema(type_name);
         let t = self.router.transcoder();
         let converted = if payload.encoding == Encoding::Cdr {
             // Big-endian CDR (rare): through JSON, since writers here are little-endian.
@@ -362,6 +358,36 @@ impl Bridge {
             t.convert(&schema, payload, Encoding::Cdr)
         };
         converted.map_err(|e| e.to_string())
+    }
+
+    /// A message of `type_name` as a JSON value (normalized when it was JSON already).
+    pub(crate) fn json_of(
+        &self,
+        type_name: &str,
+        payload: &Payload,
+    ) -> Result<serde_json::Value, String> {
+        let t = self.router.transcoder();
+        let s = ros2_schema(type_name);
+        let bytes = match payload.encoding {
+            Encoding::Json => match t.normalize(&s, payload).map_err(|e| e.to_string())? {
+                Some(p) => p.bytes,
+                None => payload.bytes.clone(),
+            },
+            _ => t
+                .convert(&s, payload, Encoding::Json)
+                .map_err(|e| e.to_string())?,
+        };
+        serde_json::from_slice(&bytes).map_err(|e| e.to_string())
+    }
+
+    /// `value` as CDR of `type_name`.
+    pub(crate) fn cdr_of(
+        &self,
+        type_name: &str,
+        value: &serde_json::Value,
+    ) -> Result<Bytes, String> {
+        let json = serde_json::to_vec(value).map_err(|e| e.to_string())?;
+        self.to_cdr(type_name, &Payload::new(Encoding::Json, json))
     }
 
     /// Logs `text` once per `key` (unknown types, mismatches): a robot left running
@@ -385,6 +411,15 @@ impl Bridge {
     /// The full ROS 2 definition of `ros_type`, if the registry knows it.
     pub(crate) fn schema(&self, ros_type: &str) -> Option<Schema> {
         self.router.transcoder().schema_for(ros_type)
+    }
+}
+
+/// The schema of ROS 2 type `type_name` as the registry knows it (no text of its own).
+fn ros2_schema(type_name: &str) -> Schema {
+    Schema {
+        type_name: type_name.to_owned(),
+        encoding: "ros2msg".into(),
+        text: String::new(),
     }
 }
 
@@ -435,15 +470,7 @@ pub async fn run(
         node_info.full_name()
     );
     if bridge.opts.parameters {
-        for (name, ty, definition) in fleetlink_relay::params::SERVICES {
-            let name = TopicName::parse(name).expect("a valid service name");
-            router.calls.advertise(
-                client,
-                name,
-                fleetlink_relay::params::schema(ty, definition),
-                false,
-            );
-        }
+        fleetlink_relay::params::advertise_services(&router.calls, client);
     }
     for re in bridge
         .opts

@@ -18,7 +18,7 @@ use std::sync::{Arc, Mutex};
 use std::time::SystemTime;
 
 use bytes::Bytes;
-use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_proto::{Encoding, Payload};
 use fleetlink_relay::TopicName;
 use fleetlink_relay::calls::{CallEvent, CallOptions, CallStatus};
 use futures::StreamExt;
@@ -89,44 +89,6 @@ fn now_stamp() -> (i32, u32) {
         i32::try_from(d.as_secs()).unwrap_or(i32::MAX),
         d.subsec_nanos(),
     )
-}
-
-fn schema(type_name: &str) -> Schema {
-    Schema {
-        type_name: type_name.to_owned(),
-        encoding: "ros2msg".into(),
-        text: String::new(),
-    }
-}
-
-/// A message of `type_name` as JSON (normalized when it was JSON already).
-fn json_of(bridge: &Bridge, type_name: &str, payload: &Payload) -> Result<Value, String> {
-    let t = bridge.router.transcoder();
-    let s = schema(type_name);
-    let bytes = match payload.encoding {
-        Encoding::Json => match t.normalize(&s, payload).map_err(|e| e.to_string())? {
-            Some(p) => p.bytes,
-            None => payload.bytes.clone(),
-        },
-        _ => t
-            .convert(&s, payload, Encoding::Json)
-            .map_err(|e| e.to_string())?,
-    };
-    serde_json::from_slice(&bytes).map_err(|e| e.to_string())
-}
-
-/// `value` as CDR of `type_name`.
-fn cdr_of(bridge: &Bridge, type_name: &str, value: &Value) -> Result<Bytes, String> {
-    let json = serde_json::to_vec(value).map_err(|e| e.to_string())?;
-    bridge
-        .router
-        .transcoder()
-        .convert(
-            &schema(type_name),
-            &Payload::new(Encoding::Json, json),
-            Encoding::Cdr,
-        )
-        .map_err(|e| e.to_string())
 }
 
 fn goal_info(uuid: &[u8; 16], stamp: (i32, u32)) -> Value {
@@ -299,12 +261,11 @@ fn send_goal(
             false
         }
     };
-    let answer = cdr_of(
-        bridge,
+    let answer = bridge.cdr_of(
         &format!("{}_SendGoal_Response", action.action_type),
         &json!({"accepted": accepted, "stamp": {"sec": stamp.0, "nanosec": stamp.1}}),
     )?;
-    header.reply(&action.writers.send_goal, &answer)?;
+    header.reply(&action.writers.send_goal, answer)?;
     publish_status(bridge, action);
     Ok(())
 }
@@ -323,7 +284,7 @@ fn get_result(action: &OfferedAction, header: ReplyTo, msg: &Bytes) -> Result<()
             .and_then(|e| e.result.clone())
     };
     match ready {
-        Some(result) => header.reply(&action.writers.get_result, &result),
+        Some(result) => header.reply(&action.writers.get_result, result),
         None => Err(format!(
             "get_result for a goal {} does not know",
             action.name
@@ -358,12 +319,11 @@ fn cancel_goal(
         .iter()
         .map(|(u, _, s)| goal_info(u, *s))
         .collect();
-    let answer = cdr_of(
-        bridge,
+    let answer = bridge.cdr_of(
         "action_msgs/srv/CancelGoal_Response",
         &json!({"return_code": return_code, "goals_canceling": infos}),
     )?;
-    header.reply(&action.writers.cancel_goal, &answer)
+    header.reply(&action.writers.cancel_goal, answer)
 }
 
 /// The status of every live and recently ended goal, as `GoalStatusArray`.
@@ -376,8 +336,7 @@ fn publish_status(bridge: &Bridge, action: &OfferedAction) {
             .map(|goal| json!({"goal_info": goal_info(&goal.uuid, goal.stamp), "status": goal.status}))
             .collect()
     };
-    match cdr_of(
-        bridge,
+    match bridge.cdr_of(
         "action_msgs/msg/GoalStatusArray",
         &json!({"status_list": list}),
     ) {
@@ -436,27 +395,29 @@ pub(crate) fn on_event(bridge: &Bridge, action: &OfferedAction, ev: CallEvent) {
             }
             let result_type = format!("{}_Result", action.action_type);
             let result = payload
-                .and_then(|p| json_of(bridge, &result_type, &p).ok())
+                .and_then(|p| bridge.json_of(&result_type, &p).ok())
                 .unwrap_or_else(|| json!({}));
-            let answer = cdr_of(
-                bridge,
-                &format!("{}_GetResult_Response", action.action_type),
-                &json!({"status": code, "result": result}),
-            )
-            .or_else(|_| {
-                // A result the registry cannot write (missing fields): the status alone.
-                let empty = cdr_of(bridge, &result_type, &json!({}))
-                    .ok()
-                    .and_then(|b| {
-                        json_of(bridge, &result_type, &Payload::new(Encoding::Cdr, b)).ok()
-                    })
-                    .unwrap_or_else(|| json!({}));
-                cdr_of(
-                    bridge,
+            let answer = bridge
+                .cdr_of(
                     &format!("{}_GetResult_Response", action.action_type),
-                    &json!({"status": code, "result": empty}),
+                    &json!({"status": code, "result": result}),
                 )
-            });
+                .or_else(|_| {
+                    // A result the registry cannot write (missing fields): the status alone.
+                    let empty = bridge
+                        .cdr_of(&result_type, &json!({}))
+                        .ok()
+                        .and_then(|b| {
+                            bridge
+                                .json_of(&result_type, &Payload::new(Encoding::Cdr, b))
+                                .ok()
+                        })
+                        .unwrap_or_else(|| json!({}));
+                    bridge.cdr_of(
+                        &format!("{}_GetResult_Response", action.action_type),
+                        &json!({"status": code, "result": empty}),
+                    )
+                });
             let waiting = {
                 let mut g = action.goals();
                 let Some(uuid) = g
@@ -480,7 +441,7 @@ pub(crate) fn on_event(bridge: &Bridge, action: &OfferedAction, ev: CallEvent) {
             match answer {
                 Ok(result) => {
                     for h in waiting {
-                        if let Err(e) = h.reply(&action.writers.get_result, &result) {
+                        if let Err(e) = h.reply(&action.writers.get_result, result.clone()) {
                             tracing::debug!("ros2: result of {}: {e}", action.name);
                         }
                     }

@@ -22,7 +22,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use base64::Engine as _;
-use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_proto::{Encoding, Payload};
 use fleetlink_relay::calls::{CallRequest, CallStatus};
 use fleetlink_relay::params;
 use serde_json::{Value as Json, json};
@@ -198,29 +198,26 @@ async fn answer(bridge: &Arc<Bridge>, req: &CallRequest) -> Result<Json, String>
     })
 }
 
-/// `<node>:<parameter>` → the node's full name and the parameter's.
+/// `<node>:<parameter>` → the node's full name and the parameter's (the whole name
+/// checked and given its leading `/` as any parameter name).
 fn split_name(raw: &str) -> Result<(String, String), String> {
-    let raw = raw.trim();
-    let Some((node, param)) = raw.split_once(':') else {
+    let full = params::param_name(raw)?;
+    let shown = || full.chars().take(64).collect::<String>();
+    let Some((node, param)) = full.split_once(':') else {
         return Err(format!(
             "{:?} names no ROS 2 node: name a parameter as <node>:<parameter>, e.g. \
              /camera:fps, as rosapi does (get_param_names lists them)",
-            raw.chars().take(64).collect::<String>()
+            shown()
         ));
     };
     let node = node.trim_end_matches('/');
-    if node.is_empty() || node == "/" || param.is_empty() {
+    if node.is_empty() || param.is_empty() {
         return Err(format!(
             "{:?}: both the node and the parameter must be named (<node>:<parameter>)",
-            raw.chars().take(64).collect::<String>()
+            shown()
         ));
     }
-    let node = if node.starts_with('/') {
-        node.to_owned()
-    } else {
-        format!("/{node}")
-    };
-    Ok((node, param.to_owned()))
+    Ok((node.to_owned(), param.to_owned()))
 }
 
 /// Whether the caller gave a default for a parameter that is not set.
@@ -278,23 +275,14 @@ impl Node<'_> {
     /// One call of `srv`, JSON both ways.
     async fn call(&self, srv: Srv, request: Json) -> Result<Json, String> {
         let ty = format!("rcl_interfaces/srv/{}", srv.type_name());
-        let body = self.bridge.to_cdr(
-            &format!("{ty}_Request"),
-            &Payload::json(serde_json::to_vec(&request).expect("JSON")),
-        )?;
-        let reply = self.endpoint(srv)?.request(&body).await?;
-        let schema = Schema {
-            type_name: format!("{ty}_Response"),
-            encoding: "ros2msg".into(),
-            text: String::new(),
-        };
-        let json = self
-            .bridge
-            .router
-            .transcoder()
-            .convert(&schema, &Payload::new(Encoding::Cdr, reply), Encoding::Json)
-            .map_err(|e| format!("the answer of {} cannot be read: {e}", srv.service()))?;
-        serde_json::from_slice(&json).map_err(|e| e.to_string())
+        let body = self.bridge.cdr_of(&format!("{ty}_Request"), &request)?;
+        let reply = self.endpoint(srv)?.request(body).await?;
+        self.bridge
+            .json_of(
+                &format!("{ty}_Response"),
+                &Payload::new(Encoding::Cdr, reply),
+            )
+            .map_err(|e| format!("the answer of {} cannot be read: {e}", srv.service()))
     }
 
     /// The `ParameterValue` of `param` (type NOT_SET when the node has no such

@@ -152,7 +152,7 @@ impl Endpoint {
     }
 
     /// Sends `msg` (a CDR request message) and waits for the reply message.
-    pub(crate) async fn request(&self, msg: &[u8]) -> Result<Bytes, String> {
+    pub(crate) async fn request(&self, msg: Bytes) -> Result<Bytes, String> {
         // Held until the reply came or the call ended (timeout, cancel: dropped).
         let _slot = match &self.slots {
             Some(s) => Some(
@@ -181,7 +181,7 @@ impl Endpoint {
                     client: self.client,
                     seq,
                 };
-                if let Err(e) = self.writer.write(RawCdr(header.prepend(msg)), None) {
+                if let Err(e) = self.writer.write(RawCdr(header.prepend(&msg)), None) {
                     self.lock().remove(&seq);
                     return Err(format!("sending a request to {}: {e:?}", self.service));
                 }
@@ -198,10 +198,7 @@ impl Endpoint {
                 let options = WriteOptionsBuilder::new()
                     .related_sample_identity(to)
                     .build();
-                match self
-                    .writer
-                    .write_with_options(RawCdr(Bytes::copy_from_slice(msg)), options)
-                {
+                match self.writer.write_with_options(RawCdr(msg), options) {
                     Ok(id) => {
                         let seq = i64::from(id.sequence_number);
                         waiting.insert(seq, tx);
@@ -364,17 +361,17 @@ impl ReplyTo {
     }
 
     /// Writes `body` (a CDR message with its encapsulation header) as the reply.
-    pub(crate) fn reply(&self, writer: &RawWriter, body: &[u8]) -> Result<(), String> {
+    pub(crate) fn reply(&self, writer: &RawWriter, body: Bytes) -> Result<(), String> {
         match self {
             ReplyTo::Cyclone(header) => writer
-                .write(RawCdr(header.prepend(body)), None)
+                .write(RawCdr(header.prepend(&body)), None)
                 .map_err(|e| format!("writing a reply: {e:?}")),
             ReplyTo::FastDds(to) => {
                 let options = WriteOptionsBuilder::new()
                     .related_sample_identity(*to)
                     .build();
                 writer
-                    .write_with_options(RawCdr(Bytes::copy_from_slice(body)), options)
+                    .write_with_options(RawCdr(body), options)
                     .map(|_| ())
                     .map_err(|e| format!("writing a reply: {e:?}"))
             }
@@ -689,7 +686,7 @@ async fn serve(bridge: &Bridge, remote: &Arc<Remote>, req: CallRequest) {
         match &remote.kind {
             RemoteKind::Service { srv_type, call } => {
                 let body = bridge.to_cdr(&format!("{srv_type}_Request"), &req.payload)?;
-                let reply = call.request(&body).await?;
+                let reply = call.request(body).await?;
                 Ok((
                     CallStatus::Ok,
                     Some(Payload::new(Encoding::Cdr, reply)),
@@ -747,7 +744,7 @@ async fn goal(bridge: &Bridge, remote: &Arc<Remote>, req: &CallRequest) -> Resul
         .unwrap_or_else(|p| p.into_inner())
         .insert(uuid, req.id);
     bridge.lock().goals.insert(req.id, (remote.clone(), uuid));
-    let accepted = send_goal.request(&msg).await?;
+    let accepted = send_goal.request(msg.into()).await?;
     if accepted.get(4).copied().unwrap_or(0) == 0 {
         return Ok((
             CallStatus::Failed,
@@ -758,20 +755,13 @@ async fn goal(bridge: &Bridge, remote: &Arc<Remote>, req: &CallRequest) -> Resul
     let mut ask = Vec::with_capacity(20);
     ask.extend_from_slice(&CDR_LE_HEADER);
     ask.extend_from_slice(&uuid);
-    let reply = get_result.request(&ask).await?;
+    let reply = get_result.request(ask.into()).await?;
     // `{int8 status, T_Result result}`: the result is not aligned as a message of its
     // own, so the registry reads the whole answer once.
-    let schema = Schema {
-        type_name: format!("{action_type}_GetResult_Response"),
-        encoding: "ros2msg".into(),
-        text: String::new(),
-    };
-    let json = bridge
-        .router
-        .transcoder()
-        .convert(&schema, &Payload::new(Encoding::Cdr, reply), Encoding::Json)
-        .map_err(|e| e.to_string())?;
-    let v: serde_json::Value = serde_json::from_slice(&json).map_err(|e| e.to_string())?;
+    let v = bridge.json_of(
+        &format!("{action_type}_GetResult_Response"),
+        &Payload::new(Encoding::Cdr, reply),
+    )?;
     let status = match v.get("status").and_then(|s| s.as_i64()) {
         Some(4) => CallStatus::Ok,
         Some(5) => CallStatus::Cancelled,
@@ -797,7 +787,7 @@ async fn cancel(remote: &Remote, uuid: [u8; 16]) {
     msg.extend_from_slice(&CDR_LE_HEADER);
     msg.extend_from_slice(&uuid);
     msg.extend_from_slice(&[0u8; 8]);
-    if let Err(e) = cancel_goal.request(&msg).await {
+    if let Err(e) = cancel_goal.request(msg.into()).await {
         tracing::debug!("ros2: cancelling a goal of {}: {e}", remote.name);
     }
 }
@@ -916,7 +906,7 @@ fn answer_local(bridge: &Bridge, ev: CallEvent) {
     };
     match bridge.to_cdr(&format!("{}_Response", offered.srv_type), &payload) {
         Ok(body) => {
-            if let Err(e) = call.reply.reply(&offered.replies, &body) {
+            if let Err(e) = call.reply.reply(&offered.replies, body) {
                 tracing::debug!("ros2: replying to a local call of {}: {e}", call.service);
             }
         }

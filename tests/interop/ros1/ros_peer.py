@@ -21,7 +21,6 @@ import os
 import struct
 import sys
 import threading
-import time
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -132,12 +131,10 @@ def oneshot():
     that one message, although the agent registers the publication only when the
     message comes and a ROS 1 subscriber connects only after the master tells it."""
     rospy.init_node("oneshot_listener", disable_signals=True)
-    got = []
-    rospy.Subscriber("/oneshot", String, lambda m: got.append(m.data))
+    got, arrived = [], threading.Event()
+    rospy.Subscriber("/oneshot", String, lambda m: (got.append(m.data), arrived.set()))
     print("oneshot ready", flush=True)
-    deadline = time.monotonic() + 20
-    while not got and time.monotonic() < deadline:
-        time.sleep(0.05)
+    arrived.wait(20)
     if got[:1] != [ONESHOT]:
         print(f"FAIL: /oneshot: got {got}, want [{ONESHOT!r}]", flush=True)
         sys.exit(1)
