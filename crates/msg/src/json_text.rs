@@ -547,14 +547,14 @@ impl<'a> Check<'a> {
             return None;
         }
         let start = self.pos + 1;
-        let len = self.b[start..]
-            .iter()
-            .position(|&c| c == b'"' || c == b'\\' || c < 0x20)?;
-        if self.b[start + len] != b'"' {
+        let len = memchr::memchr2(b'"', b'\\', &self.b[start..])?;
+        let s = &self.b[start..start + len];
+        // No raw control characters; a whole-slice fold the compiler vectorises.
+        if self.b[start + len] != b'"' || !s.iter().fold(true, |ok, &c| ok & (c >= 0x20)) {
             return None;
         }
         self.pos = start + len + 1;
-        std::str::from_utf8(&self.b[start..start + len]).ok()
+        std::str::from_utf8(s).ok()
     }
 
     /// A number in JSON's grammar: its text, and whether it has a fraction or exponent.

@@ -70,14 +70,18 @@ pub fn instant_to_unix_nanos(at: std::time::Instant) -> u64 {
     }
 }
 
-/// Stamps for a stream of messages from one clock read each: the monotonic clock, with
-/// the wall clock read again whenever 100 ms have passed (so a stamp is never more than
-/// 100 ms worth of clock slew away from the wall clock). A publisher's hot path reads
-/// the clock once per message instead of twice.
+/// Stamps for a stream of messages: the monotonic clock, with the wall clock read again
+/// whenever 100 ms have passed (so a stamp is never more than 100 ms worth of clock slew
+/// away from the wall clock). A publisher's hot path reads the clock at most once per
+/// message instead of twice, and [`StampClock::arrival`] shares one reading between the
+/// messages of one socket read.
 #[derive(Debug)]
 pub struct StampClock {
     base: std::time::Instant,
     base_unix: u64,
+    /// The reading [`StampClock::arrival`] hands out, and how many more times it may.
+    last: Option<(std::time::Instant, u64)>,
+    reuses: u32,
 }
 
 impl Default for StampClock {
@@ -85,12 +89,17 @@ impl Default for StampClock {
         StampClock {
             base: std::time::Instant::now(),
             base_unix: unix_nanos(),
+            last: None,
+            reuses: 0,
         }
     }
 }
 
 impl StampClock {
     const REFRESH: std::time::Duration = std::time::Duration::from_millis(100);
+    /// Messages that may share one reading. Between two readings the reader does no more
+    /// than handle that many operations already received (microseconds).
+    const SHARED: u32 = 32;
 
     /// Now, as an `Instant` and as Unix nanoseconds.
     pub fn now(&mut self) -> (std::time::Instant, u64) {
@@ -102,6 +111,32 @@ impl StampClock {
             return (now, self.base_unix);
         }
         (now, self.base_unix + since.as_nanos() as u64)
+    }
+
+    /// When the message being handled arrived: the reading taken for the operations
+    /// before it, unless the reader has waited since ([`StampClock::waited`]) or that
+    /// reading has served [`Self::SHARED`] messages. Operations that came in one socket
+    /// read arrived together; one clock read per message cost ~2 % of the hub's CPU for
+    /// a stream of small messages.
+    pub fn arrival(&mut self) -> (std::time::Instant, u64) {
+        match self.last {
+            Some(at) if self.reuses > 0 => {
+                self.reuses -= 1;
+                at
+            }
+            _ => {
+                let at = self.now();
+                self.last = Some(at);
+                self.reuses = Self::SHARED - 1;
+                at
+            }
+        }
+    }
+
+    /// Time has passed (the reader waited for the socket, or for room in a queue): the
+    /// next [`StampClock::arrival`] reads the clock.
+    pub fn waited(&mut self) {
+        self.last = None;
     }
 }
 
@@ -141,5 +176,22 @@ mod tests {
             // Within a refresh period of the wall clock (slew between refreshes).
             assert!(stamp + 100_000_000 >= before && stamp <= after + 100_000_000);
         }
+    }
+
+    #[test]
+    fn arrivals_share_a_reading_until_the_reader_waits() {
+        let mut clock = StampClock::default();
+        let first = clock.arrival();
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        // Same read: the same stamp, up to the bound.
+        for _ in 1..StampClock::SHARED {
+            assert_eq!(clock.arrival(), first);
+        }
+        let next = clock.arrival();
+        assert!(next.0 > first.0 && next.1 > first.1);
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        clock.waited();
+        let after_wait = clock.arrival();
+        assert!(after_wait.0 >= next.0 + std::time::Duration::from_millis(2));
     }
 }

@@ -1,14 +1,32 @@
 //! Arbitrary bytes as a rosbridge client frame, both as JSON text and as CBOR, and through
 //! the schema-less JSON/CBOR conversion. Errors are fine; panics, stack overflows and
-//! runaway allocations are the bugs this looks for.
+//! runaway allocations are the bugs this looks for. The publish short paths must read
+//! nothing the full parse refuses, and read it the same way.
 
 #![no_main]
 
 use fleetlink_proto::rosbridge::inbound::payload_bytes;
-use fleetlink_proto::rosbridge::{Request, convert};
+use fleetlink_proto::rosbridge::{Op, Publish, Request, convert};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    let frame = bytes::Bytes::copy_from_slice(data);
+    let short = match std::str::from_utf8(&frame) {
+        Ok(text) => Publish::from_json_text(text, &frame).map(|p| (p, Request::from_json(data))),
+        Err(_) => None,
+    };
+    let short = short.or_else(|| Publish::from_cbor_frame(&frame).map(|p| (p, Request::from_cbor(data))));
+    if let Some((p, full)) = short {
+        let full = full.expect("the full parse takes what the short path takes");
+        assert_eq!(p.id, full.id);
+        let Op::Publish { topic, msg } = full.op else {
+            panic!("the short path read a publish, the full parse something else")
+        };
+        assert_eq!(p.topic, topic);
+        if msg.encoding == p.msg.encoding {
+            assert_eq!(p.msg.bytes, msg.bytes);
+        }
+    }
     if let Ok(req) = Request::from_json(data)
         && let Some(msg) = payload_bytes(&req.op)
     {

@@ -202,22 +202,6 @@ impl ParseError {
     }
 }
 
-/// The fields of a `publish` as borrowed slices of the frame: the envelope is read without
-/// building a map, and the message stays the bytes it arrived in.
-#[derive(serde::Deserialize)]
-struct PublishFields<'a> {
-    #[serde(borrow)]
-    op: std::borrow::Cow<'a, str>,
-    /// Borrowed (`Option<Cow>` would always copy); a topic written with escapes fails
-    /// here and takes the full parse.
-    #[serde(borrow, default)]
-    topic: Option<&'a str>,
-    #[serde(borrow, default)]
-    msg: Option<&'a serde_json::value::RawValue>,
-    #[serde(borrow, default)]
-    id: Option<&'a serde_json::value::RawValue>,
-}
-
 /// A `publish` read on the short path, its topic borrowed from the frame: the operation
 /// that carries nearly all traffic costs no allocation before it reaches the router.
 #[derive(Debug)]
@@ -237,24 +221,23 @@ impl<'a> Publish<'a> {
         if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
             return None;
         }
-        let f: PublishFields<'a> = serde_json::from_str(text).ok()?;
-        if f.op != "publish" {
+        let e = super::scan::envelope(text)?;
+        if e.op? != "publish" {
             return None;
         }
-        let topic = f.topic?;
-        let msg = f.msg?;
-        if !msg.get().starts_with('{') || !valid_topic(topic) {
+        let topic = e.topic?;
+        let msg = e.msg?;
+        if text.as_bytes()[msg.start] != b'{' || !valid_topic(topic) {
             return None;
         }
-        let id = match f.id {
-            Some(raw) => Some(serde_json::from_str::<Value>(raw.get()).ok()?),
+        let id = match e.id {
+            Some(r) => Some(serde_json::from_str::<Value>(&text[r]).ok()?),
             None => None,
         };
-        let at = msg.get().as_ptr() as usize - text.as_ptr() as usize;
         Some(Publish {
             id,
             topic: topic.into(),
-            msg: Payload::json(frame.slice(at..at + msg.get().len())),
+            msg: Payload::json(frame.slice(msg)),
         })
     }
 

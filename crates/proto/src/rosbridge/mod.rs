@@ -11,5 +11,6 @@
 pub mod convert;
 pub mod inbound;
 pub mod outbound;
+mod scan;
 
 pub use inbound::{Compression, Op, ParseError, Publish, Request};

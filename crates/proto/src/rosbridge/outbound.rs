@@ -8,10 +8,21 @@ use serde_json::{Value, json};
 
 /// `{"op":"publish","topic":T,"msg":<msg_json>}` as JSON text.
 pub fn publish_json(topic: &str, msg_json: &[u8]) -> Bytes {
-    let topic = serde_json::to_string(topic).expect("a string serializes");
     let mut b = BytesMut::with_capacity(msg_json.len() + topic.len() + 40);
     b.put_slice(br#"{"op":"publish","topic":"#);
-    b.put_slice(topic.as_bytes());
+    // Topic names never need escapes in practice; written as they are, without the
+    // quoted copy serde_json would make for every message.
+    if topic.bytes().all(|c| c >= 0x20 && c != b'"' && c != b'\\') {
+        b.put_u8(b'"');
+        b.put_slice(topic.as_bytes());
+        b.put_u8(b'"');
+    } else {
+        b.put_slice(
+            serde_json::to_string(topic)
+                .expect("a string serializes")
+                .as_bytes(),
+        );
+    }
     b.put_slice(br#","msg":"#);
     b.put_slice(msg_json);
     b.put_u8(b'}');
@@ -167,9 +178,11 @@ mod tests {
 
     #[test]
     fn publish_json_is_valid_json_with_escaped_topic() {
-        let f = publish_json("/a\"b", br#"{"x":1}"#);
-        let v: Value = serde_json::from_slice(&f).unwrap();
-        assert_eq!(v, json!({"op":"publish","topic":"/a\"b","msg":{"x":1}}));
+        for topic in ["/a/b", "/é_1", "/a\"b", "/a\\b", "/a\u{1}b", "/a\nb"] {
+            let f = publish_json(topic, br#"{"x":1}"#);
+            let v: Value = serde_json::from_slice(&f).unwrap();
+            assert_eq!(v, json!({"op":"publish","topic":topic,"msg":{"x":1}}));
+        }
     }
 
     #[test]

@@ -77,7 +77,11 @@ pub async fn serve<S>(
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (peer, mut peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    let (sink, mut stream) = ws.split();
+    let (sink, stream) = ws.split();
+    let mut stream = Waits {
+        inner: stream,
+        waited: false,
+    };
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
     let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
     let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
@@ -139,6 +143,9 @@ pub async fn serve<S>(
             }
             _ = &mut cancelled => break,
         };
+        if std::mem::take(&mut stream.waited) {
+            session.clock.waited();
+        }
         if matches!(frame, Ok(WsMessage::Binary(_))) {
             session.calls.binary = true;
         }
@@ -201,6 +208,28 @@ pub async fn serve<S>(
     router.disconnect(client);
     drop(session);
     let _ = writer.await;
+}
+
+/// The client's frames, noting when the reader had to wait for the next one (then the
+/// next message's arrival is a new clock reading, see `StampClock::arrival`).
+struct Waits<S> {
+    inner: S,
+    waited: bool,
+}
+
+impl<S: Stream + Unpin> Stream for Waits<S> {
+    type Item = S::Item;
+
+    fn poll_next(
+        mut self: std::pin::Pin<&mut Self>,
+        cx: &mut std::task::Context<'_>,
+    ) -> std::task::Poll<Option<S::Item>> {
+        let r = std::pin::Pin::new(&mut self.inner).poll_next(cx);
+        if r.is_pending() {
+            self.waited = true;
+        }
+        r
+    }
 }
 
 /// An operation as read from a frame.
@@ -413,7 +442,9 @@ impl Session {
                 "publish: authentication required: send an 'auth' operation with a token first";
             return self.status("error", msg.into(), p.id.as_ref()).await;
         }
-        self.wait_for_room(&p.topic).await;
+        if self.wait_for_room(&p.topic).await {
+            self.clock.waited();
+        }
         if let Err(msg) = self.publish(&p.topic, p.msg) {
             self.status("error", msg, p.id.as_ref()).await;
         }
@@ -440,7 +471,9 @@ impl Session {
             } => self.advertise(&topic, &type_name, latch),
             Op::Unadvertise { topic } => self.unadvertise(&topic),
             Op::Publish { topic, msg } => {
-                self.wait_for_room(&topic).await;
+                if self.wait_for_room(&topic).await {
+                    self.clock.waited();
+                }
                 self.publish(&topic, msg)
             }
             Op::Subscribe {
@@ -595,8 +628,8 @@ impl Session {
     /// Backpressure for no-drop topics: while a subscriber's no-drop queue of this topic is
     /// full (the robot's link is down and nothing spills to disk), this client's next
     /// message waits here — and, because this loop is what reads the socket, the client's
-    /// own sends slow down with it — instead of being refused.
-    async fn wait_for_room(&self, topic: &str) {
+    /// own sends slow down with it — instead of being refused. True if it waited.
+    async fn wait_for_room(&self, topic: &str) -> bool {
         let found = match self.published.get(topic) {
             Some(p) => Some(p),
             None => TopicName::parse(topic)
@@ -604,13 +637,15 @@ impl Session {
                 .and_then(|n| self.published.get(&n)),
         };
         let Some(p) = found else {
-            return;
+            return false;
         };
         let flow = &p.topic.stats.no_drop_flow;
-        if flow.is_full() {
-            tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
-            flow.wait_room().await;
+        if !flow.is_full() {
+            return false;
         }
+        tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
+        flow.wait_room().await;
+        true
     }
 
     fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
@@ -645,7 +680,7 @@ impl Session {
             })?;
         p.seq += 1;
         let size = msg.len();
-        let (received, stamp) = self.clock.now();
+        let (received, stamp) = self.clock.arrival();
         p.topic.publish_at(self.client, p.seq, stamp, msg, received);
         if let Some(g) = self.gate.as_mut() {
             g.done(&name, GateOp::Publish, size);
