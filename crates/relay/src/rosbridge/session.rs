@@ -871,6 +871,9 @@ async fn write_loop<K>(
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
     let mut warned: HashMap<TopicName, ()> = HashMap::new();
+    // Frames written since the last flush, and whether this task has given the others a
+    // turn since (see below).
+    let (mut unflushed, mut yielded) = (false, false);
     loop {
         let mut wrote = false;
         while let Ok(r) = replies.try_recv() {
@@ -956,8 +959,21 @@ async fn write_loop<K>(
             }
             wrote = true;
         }
-        if wrote && sink.flush().await.is_err() {
-            return;
+        unflushed |= wrote;
+        // While messages keep coming (a publisher's burst being read), one turn for the
+        // other tasks before the flush lets the next run of them join this system call:
+        // each flush wakes the client, and on a busy hub those wake-ups cost more than
+        // the writes. Idle, the turn finds nothing new and the flush follows at once.
+        if took > 0 && unflushed && !yielded {
+            yielded = true;
+            tokio::task::yield_now().await;
+            continue;
+        }
+        if unflushed {
+            if sink.flush().await.is_err() {
+                return;
+            }
+            (unflushed, yielded) = (false, false);
         }
         if took > 0 {
             continue;
