@@ -210,8 +210,10 @@ impl<'a> Cursor<'a> {
         }
     }
 
-    /// `-? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?`
+    /// `-? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?`, and within `f64`'s range
+    /// as serde_json requires (it refuses `1e400` as out of range).
     fn number(&mut self) -> Option<()> {
+        let start = self.pos;
         if self.b.get(self.pos) == Some(&b'-') {
             self.pos += 1;
         }
@@ -224,12 +226,20 @@ impl<'a> Cursor<'a> {
             self.pos += 1;
             self.some_digits()?;
         }
+        let mut exponent = false;
         if let Some(b'e' | b'E') = self.b.get(self.pos) {
+            exponent = true;
             self.pos += 1;
             if let Some(b'+' | b'-') = self.b.get(self.pos) {
                 self.pos += 1;
             }
             self.some_digits()?;
+        }
+        // Only an exponent or more than 300 digits can leave the range: then the value is
+        // read (correctly rounded, as serde_json with `float_roundtrip` reads it).
+        if exponent || self.pos - start > 300 {
+            let v: f64 = self.text[start..self.pos].parse().ok()?;
+            return v.is_finite().then_some(());
         }
         Some(())
     }
@@ -318,6 +328,7 @@ mod tests {
             r#"{"op":"publish","topic":"/a","msg":{"a":.5}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":-}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":1e}}"#,
+            r#"{"op":"publish","topic":"/a","msg":{"a":-2.5e400}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":tru}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":truex}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":"\x"}}"#,
