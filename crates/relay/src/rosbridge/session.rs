@@ -190,8 +190,16 @@ pub async fn serve<S>(
         let step = async {
             match req {
                 Ok(Incoming::Publish(p)) => session.handle_publish(p).await,
-                Ok(Incoming::Other(req)) => session.handle(req).await,
-                Err(e) => session.parse_error(e).await,
+                // Other operations are rare and may wait (a reply queue, a call): the next
+                // message's arrival is read from the clock again.
+                Ok(Incoming::Other(req)) => {
+                    session.handle(req).await;
+                    session.clock.waited();
+                }
+                Err(e) => {
+                    session.parse_error(e).await;
+                    session.clock.waited();
+                }
             }
         };
         tokio::select! {
@@ -447,6 +455,7 @@ impl Session {
         }
         if let Err(msg) = self.publish(&p.topic, p.msg) {
             self.status("error", msg, p.id.as_ref()).await;
+            self.clock.waited();
         }
     }
 
