@@ -868,6 +868,9 @@ fn is_object(p: &Payload) -> bool {
     }
 }
 
+/// Messages taken in one go that mean a burst is being read (`write_loop`).
+const BURST: usize = 32;
+
 async fn write_loop<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -969,11 +972,12 @@ async fn write_loop<K>(
             wrote = true;
         }
         unflushed |= wrote;
-        // While messages keep coming (a publisher's burst being read), one turn for the
-        // other tasks before the flush lets the next run of them join this system call:
-        // each flush wakes the client, and on a busy hub those wake-ups cost more than
-        // the writes. Idle, the turn finds nothing new and the flush follows at once.
-        if took > 0 && unflushed && !yielded {
+        // While a burst is being read (a full run of a publisher's operations came in),
+        // one turn for the other tasks before the flush lets the next run join this
+        // system call: each flush wakes the client, and on a busy hub those wake-ups cost
+        // more than the writes. A trickle (a few messages per wake-up, as each of many
+        // subscribers of a topic sees) is flushed at once; the turn would only add work.
+        if took >= BURST && unflushed && !yielded {
             yielded = true;
             tokio::task::yield_now().await;
             continue;
