@@ -18,7 +18,7 @@ fuzz_target!(|data: &[u8]| {
     let short = short.or_else(|| Publish::from_cbor_frame(&frame).map(|p| (p, Request::from_cbor(data))));
     if let Some((p, full)) = short {
         let full = full.expect("the full parse takes what the short path takes");
-        assert_eq!(p.id, full.id);
+        assert_eq!(p.id.value(), full.id);
         let Op::Publish { topic, msg } = full.op else {
             panic!("the short path read a publish, the full parse something else")
         };

@@ -206,9 +206,33 @@ impl ParseError {
 /// that carries nearly all traffic costs no allocation before it reaches the router.
 #[derive(Debug)]
 pub struct Publish<'a> {
-    pub id: Option<Value>,
+    pub id: PublishId<'a>,
     pub topic: std::borrow::Cow<'a, str>,
     pub msg: Payload,
+}
+
+/// A publish's `id`. From JSON it stays text until asked for: roslibpy and roslibjs
+/// number every publish, and the id is only wanted when something goes wrong.
+#[derive(Debug)]
+pub struct PublishId<'a>(IdRepr<'a>);
+
+#[derive(Debug)]
+enum IdRepr<'a> {
+    None,
+    Value(Value),
+    /// Checked by the scan, so it parses.
+    Json(&'a str),
+}
+
+impl PublishId<'_> {
+    /// The `id` as the client sent it, for a `status` that echoes it.
+    pub fn value(&self) -> Option<Value> {
+        match &self.0 {
+            IdRepr::None => None,
+            IdRepr::Value(v) => Some(v.clone()),
+            IdRepr::Json(text) => serde_json::from_str(text).ok(),
+        }
+    }
 }
 
 impl<'a> Publish<'a> {
@@ -231,8 +255,8 @@ impl<'a> Publish<'a> {
             return None;
         }
         let id = match e.id {
-            Some(r) => Some(serde_json::from_str::<Value>(&text[r]).ok()?),
-            None => None,
+            Some(r) => PublishId(IdRepr::Json(&text[r])),
+            None => PublishId(IdRepr::None),
         };
         Some(Publish {
             id,
@@ -293,12 +317,12 @@ impl<'a> Publish<'a> {
             return None;
         }
         let id = match id {
-            Some(r) => Some(
+            Some(r) => PublishId(IdRepr::Value(
                 convert::parse_cbor(&frame[r])
                     .ok()
                     .and_then(|v| convert::cbor_value_to_json(v).ok())?,
-            ),
-            None => None,
+            )),
+            None => PublishId(IdRepr::None),
         };
         Some(Publish {
             id,
@@ -819,7 +843,7 @@ mod tests {
         let view = std::str::from_utf8(&frame).unwrap();
         let p = Publish::from_json_text(view, &frame).expect("a publish");
         assert!(matches!(p.topic, std::borrow::Cow::Borrowed("/a/b")));
-        assert_eq!(p.id, None);
+        assert_eq!(p.id.value(), None);
         let start = p.msg.bytes.as_ptr() as usize - frame.as_ptr() as usize;
         assert_eq!(&frame[start..start + p.msg.len()], br#"{"data":"h\u00e9"}"#);
         // Text that is not a view of the frame is not trusted: the caller parses the
@@ -844,7 +868,7 @@ mod tests {
         let text = std::str::from_utf8(frame).expect("a text frame");
         match Publish::from_json_text(text, frame) {
             Some(p) => Ok(Request {
-                id: p.id,
+                id: p.id.value(),
                 op: Op::Publish {
                     topic: p.topic.into_owned(),
                     msg: p.msg,
@@ -891,7 +915,7 @@ mod tests {
         ])));
         let p = Publish::from_cbor_frame(&frame).expect("the short path takes it");
         assert_eq!(p.topic, "/scan");
-        assert_eq!(p.id, Some(serde_json::json!("p1")));
+        assert_eq!(p.id.value(), Some(serde_json::json!("p1")));
         assert_eq!(p.msg.encoding, Encoding::Cbor);
         assert_eq!(&p.msg.bytes[..], &msg_bytes[..]);
         let start = p.msg.bytes.as_ptr() as usize - frame.as_ptr() as usize;
@@ -901,7 +925,7 @@ mod tests {
             "a slice, not a copy"
         );
         let full = Request::from_cbor(&frame).unwrap();
-        assert_eq!(full.id, p.id);
+        assert_eq!(full.id, p.id.value());
         let Op::Publish {
             topic,
             msg: full_msg,

@@ -13,4 +13,4 @@ pub mod inbound;
 pub mod outbound;
 mod scan;
 
-pub use inbound::{Compression, Op, ParseError, Publish, Request};
+pub use inbound::{Compression, Op, ParseError, Publish, PublishId, Request};

@@ -197,17 +197,35 @@ impl<'a> Cursor<'a> {
                 b'\\' => match *self.b.get(self.pos + 1)? {
                     b'"' | b'\\' | b'/' | b'b' | b'f' | b'n' | b'r' | b't' => self.pos += 2,
                     b'u' => {
-                        let hex = self.b.get(self.pos + 2..self.pos + 6)?;
-                        if !hex.iter().all(u8::is_ascii_hexdigit) {
+                        let code = self.hex4(self.pos + 2)?;
+                        self.pos += 6;
+                        // serde_json refuses a surrogate that is not half of a pair.
+                        if (0xDC00..0xE000).contains(&code) {
                             return None;
                         }
-                        self.pos += 6;
+                        if (0xD800..0xDC00).contains(&code) {
+                            if self.b.get(self.pos..self.pos + 2)? != b"\\u" {
+                                return None;
+                            }
+                            let low = self.hex4(self.pos + 2)?;
+                            if !(0xDC00..0xE000).contains(&low) {
+                                return None;
+                            }
+                            self.pos += 6;
+                        }
                     }
                     _ => return None,
                 },
                 _ => unreachable!("memchr2 finds a quote or a backslash"),
             }
         }
+    }
+
+    /// The value of the four hex digits of a `\u` escape at `at`.
+    fn hex4(&self, at: usize) -> Option<u32> {
+        let hex = self.b.get(at..at + 4)?;
+        hex.iter()
+            .try_fold(0u32, |v, &b| Some(v << 4 | (b as char).to_digit(16)?))
     }
 
     /// `-? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?`, and within `f64`'s range
@@ -287,6 +305,11 @@ mod tests {
             let Some(f) = &theirs else {
                 panic!("scan took what serde refuses: {text:?}");
             };
+            // And the full parse, which reads every value (surrogate pairs, number range).
+            assert!(
+                serde_json::from_str::<serde_json::Value>(text).is_ok(),
+                "scan took what the full parse refuses: {text:?}"
+            );
             assert_eq!(e.op, Some(&*f.op), "op of {text:?}");
             assert_eq!(e.topic, f.topic, "topic of {text:?}");
             assert_eq!(
@@ -307,6 +330,7 @@ mod tests {
             r#"{"op":"publish","topic":"/a","msg":{"a":[1,-2.5e3,0.0,true,false,null,"\u00e9\n\""],"b":{}},"latch":false}"#,
             r#"{"msg":{},"topic":"/a","op":"publish","id":{"n":[1,{"x":null}]}}"#,
             r#"{"op":"publish","topic":"/é","msg":{"s":"日本"},"extra":[[],[[]],{"k":"v"}]}"#,
+            r#"{"op":"publish","topic":"/a","msg":{"emoji":"\ud83d\ude00","x":"\uFFFF"}}"#,
             "{\"op\":\"publish\",\r\n\t\"topic\":\"/a\",\"msg\":{\"e\":1E+2,\"f\":-0.5e-1}}",
         ] {
             assert!(agrees(text), "not read: {text}");
@@ -333,6 +357,11 @@ mod tests {
             r#"{"op":"publish","topic":"/a","msg":{"a":truex}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":"\x"}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":"\u12g4"}}"#,
+            // Surrogates that are not half of a pair.
+            r#"{"op":"publish","topic":"/a","msg":{"a":"\ud800"}}"#,
+            r#"{"op":"publish","topic":"/a","msg":{"a":"\ud800\u0041"}}"#,
+            r#"{"op":"publish","topic":"/a","msg":{"a":"\udc00"}}"#,
+            r#"{"op":"publish","topic":"/a","msg":{"a":"\ud800x"}}"#,
             "{\"op\":\"publish\",\"topic\":\"/a\",\"msg\":{\"a\":\"tab\there\"}}",
             r#"{"op":"publish","topic":"/a","msg":{"a":[1,]}}"#,
             r#"{"op":"publish","topic":"/a","msg":{"a":1,}}"#,

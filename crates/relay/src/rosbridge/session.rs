@@ -448,13 +448,15 @@ impl Session {
         if self.gate.is_none() {
             let msg =
                 "publish: authentication required: send an 'auth' operation with a token first";
-            return self.status("error", msg.into(), p.id.as_ref()).await;
+            return self
+                .status("error", msg.into(), p.id.value().as_ref())
+                .await;
         }
         if self.wait_for_room(&p.topic).await {
             self.clock.waited();
         }
         if let Err(msg) = self.publish(&p.topic, p.msg) {
-            self.status("error", msg, p.id.as_ref()).await;
+            self.status("error", msg, p.id.value().as_ref()).await;
             self.clock.waited();
         }
     }

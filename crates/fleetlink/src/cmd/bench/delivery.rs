@@ -84,6 +84,10 @@ pub struct Args {
     /// Print the summary as one JSON object.
     #[arg(long)]
     json: bool,
+    /// rosbridge runs: every publish carries an `id`, as roslibpy and roslibjs send one
+    /// (`"publish:<topic>:<n>"`).
+    #[arg(long)]
+    with_id: bool,
 }
 
 /// Topic of the rosbridge and MQTT runs (the native run uses the relay bench's topic).
@@ -230,7 +234,10 @@ async fn open_publisher(args: &Args) -> anyhow::Result<Publisher> {
             let mut ws = ws_connect(&with_token(&args.server, &args.token)).await?;
             let adv = json!({"op": "advertise", "topic": TOPIC, "type": "std_msgs/String"});
             ws.send(WsMessage::text(adv.to_string())).await?;
-            let publish = json!({"op": "publish", "topic": TOPIC, "msg": {"data": data}});
+            let mut publish = json!({"op": "publish", "topic": TOPIC, "msg": {"data": data}});
+            if args.with_id {
+                publish["id"] = json!(format!("publish:{TOPIC}:1"));
+            }
             let frame = if args.protocol == Protocol::RosbridgeJson {
                 WsMessage::text(publish.to_string())
             } else {
