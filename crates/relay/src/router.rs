@@ -146,12 +146,15 @@ impl Topic {
         stamp_ns: u64,
         payload: Payload,
     ) -> Arc<Message> {
-        self.publish_at(origin, seq, stamp_ns, payload, std::time::Instant::now())
+        let now = std::time::Instant::now();
+        self.publish_at(self.meta(), origin, seq, stamp_ns, payload, now)
     }
 
-    /// [`Topic::publish`] of a message received at `received`.
+    /// [`Topic::publish`] of a message received at `received`, with the topic as the
+    /// publisher saw it when it checked the message (`meta`, from [`Topic::meta`]).
     pub fn publish_at(
         &self,
+        meta: Arc<TopicMeta>,
         origin: ClientId,
         seq: u64,
         stamp_ns: u64,
@@ -159,12 +162,7 @@ impl Topic {
         received: std::time::Instant,
     ) -> Arc<Message> {
         let msg = Arc::new(Message::received_at(
-            self.meta.load_full(),
-            seq,
-            stamp_ns,
-            origin,
-            payload,
-            received,
+            meta, seq, stamp_ns, origin, payload, received,
         ));
         self.deliver(&msg);
         msg

@@ -149,15 +149,16 @@ pub async fn serve<S>(
         if matches!(frame, Ok(WsMessage::Binary(_))) {
             session.calls.binary = true;
         }
-        let (text, bytes, binary);
+        let (text, binary);
         let req = match frame {
             Ok(WsMessage::Text(t)) => {
                 text = t;
-                bytes = bytes::Bytes::from(text.clone());
+                // The frame's own buffer (no new reference to it until a slice is taken).
+                let bytes: &bytes::Bytes = text.as_ref();
                 // Nearly all traffic: a publish, its topic borrowed from the frame.
-                match Publish::from_json_text(text.as_str(), &bytes) {
+                match Publish::from_json_text(text.as_str(), bytes) {
                     Some(p) => Ok(Incoming::Publish(p)),
-                    None => match Request::from_json(&bytes) {
+                    None => match Request::from_json(bytes) {
                         Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
                             Some(whole) => whole.map(Incoming::Other),
                             None => continue,
@@ -679,10 +680,11 @@ impl Session {
         }
         let p = self.published.get_mut(&*name).expect("inserted above");
         // Checked and completed once here, for every subscriber.
+        let meta = p.topic.meta();
         let msg = self
             .router
             .transcoder()
-            .normalize_cached(&p.topic.meta().schema, msg, &mut p.normalize)
+            .normalize_cached(&meta.schema, msg, &mut p.normalize)
             .map_err(|e| {
                 format!(
                     "publish {name}: the message does not fit its type: {}",
@@ -692,7 +694,8 @@ impl Session {
         p.seq += 1;
         let size = msg.len();
         let (received, stamp) = self.clock.arrival();
-        p.topic.publish_at(self.client, p.seq, stamp, msg, received);
+        p.topic
+            .publish_at(meta, self.client, p.seq, stamp, msg, received);
         if let Some(g) = self.gate.as_mut() {
             g.done(&name, GateOp::Publish, size);
         }
