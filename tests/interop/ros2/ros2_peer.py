@@ -59,6 +59,7 @@ import itertools
 import json
 import os
 import random
+import signal
 import subprocess
 import sys
 import tempfile
@@ -392,8 +393,7 @@ def announce_node(args):
     writer = node.writer("ros_discovery_info", Info, qos=T.qos(transient_local=True, depth=1))
     writer.write(sample)
     log(f"announce-node ready: {args.node} with {args.gid}-byte GIDs")
-    while True:
-        time.sleep(1)
+    signal.pause()
 
 
 def first_message(args):

@@ -133,33 +133,22 @@ impl<'a> Cursor<'a> {
     /// nesting may open.
     fn value(&mut self, depth: usize) -> Option<()> {
         match self.peek()? {
-            b'{' => {
+            open @ (b'{' | b'[') => {
+                // An object's members are `key: value`, an array's just values; `}` and
+                // `]` are two code points after their openers.
+                let (object, close) = (open == b'{', open + 2);
                 self.pos += 1;
                 let depth = depth.checked_sub(1)?;
-                if self.eat(b'}') {
+                if self.eat(close) {
                     return Some(());
                 }
                 loop {
-                    self.string()?;
-                    if !self.eat(b':') {
+                    if object && (self.string().is_none() || !self.eat(b':')) {
                         return None;
                     }
                     self.value(depth)?;
                     if !self.eat(b',') {
-                        return self.eat(b'}').then_some(());
-                    }
-                }
-            }
-            b'[' => {
-                self.pos += 1;
-                let depth = depth.checked_sub(1)?;
-                if self.eat(b']') {
-                    return Some(());
-                }
-                loop {
-                    self.value(depth)?;
-                    if !self.eat(b',') {
-                        return self.eat(b']').then_some(());
+                        return self.eat(close).then_some(());
                     }
                 }
             }
