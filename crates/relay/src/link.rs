@@ -343,6 +343,8 @@ pub async fn write_link<K>(
     let mut next_ping = tokio::time::Instant::now() + heartbeat;
     // Small frames are packed into one WebSocket message up to this size.
     const PACK: usize = 64 * 1024;
+    // The outbox batch, kept across rounds so a busy writer does not allocate one per round.
+    let mut items: Vec<crate::outbox::Taken> = Vec::new();
     loop {
         // 1. Control frames first: they are small and often answers the peer waits for.
         loop {
@@ -442,8 +444,9 @@ pub async fn write_link<K>(
             }
         }
         // 3. A batch from the outbox.
-        let taken = outbox.take(512, 4 << 20, Instant::now());
-        for (_, _, msg) in &taken.items {
+        outbox.take_into(&mut items, 512, 4 << 20, Instant::now());
+        let took = items.len();
+        for (_, _, msg) in items.drain(..) {
             // Checked on delivery, so a rule change reaches live subscriptions.
             if let Some(g) = gate.as_mut()
                 && !g.allows(msg.topic.name.as_str(), crate::gate::Op::Subscribe)
@@ -456,10 +459,10 @@ pub async fn write_link<K>(
                 unadvertise.retain(|(t, since)| *t != tid || msg.received <= *since);
             }
             if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
-                lane.waiting.push_back(msg.clone());
+                lane.waiting.push_back(msg);
                 continue;
             }
-            if !announce(&mut buf, &mut advertised, msg, &namer, &outbox) {
+            if !announce(&mut buf, &mut advertised, &msg, &namer, &outbox) {
                 continue;
             }
             // Per message on the hub's fan-out path: these calls read no clock and take no
@@ -477,7 +480,7 @@ pub async fn write_link<K>(
                 outbox.on_written(msg.payload.len());
             } else {
                 outbox.hold(tid.0, true, Instant::now());
-                lanes.push(Lane::start(tid, msg.clone(), sized.is_some()));
+                lanes.push(Lane::start(tid, msg, sized.is_some()));
             }
         }
         // 4. Topics whose publishers are gone, after their last message.
@@ -499,10 +502,7 @@ pub async fn write_link<K>(
         if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
             return;
         }
-        if !taken.items.is_empty()
-            || !sequences.is_empty()
-            || (!lanes.is_empty() && gated.is_none())
-        {
+        if took > 0 || !sequences.is_empty() || (!lanes.is_empty() && gated.is_none()) {
             continue;
         }
         if outbox.is_closed() {

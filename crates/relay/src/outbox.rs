@@ -125,9 +125,12 @@ pub struct Outbox {
     scheduled: bool,
 }
 
+/// A message taken by the writer: its slot, how to deliver it, the message.
+pub type Taken = (SlotId, Delivery, Arc<Message>);
+
 /// A batch taken by the writer.
 pub struct Batch {
-    pub items: Vec<(SlotId, Delivery, Arc<Message>)>,
+    pub items: Vec<Taken>,
     /// When throttled slots will next have something (if any are waiting).
     pub wake_at: Option<Instant>,
 }
@@ -615,9 +618,25 @@ impl Outbox {
     /// Takes up to `max_items` / about `max_bytes` of messages: one per ready slot per
     /// round (round-robin), or in the scheduler's order.
     pub fn take(&self, max_items: usize, max_bytes: usize, now: Instant) -> Batch {
+        let mut items = Vec::new();
+        let wake_at = self.take_into(&mut items, max_items, max_bytes, now);
+        Batch { items, wake_at }
+    }
+
+    /// [`Outbox::take`] appending to `items`, a vector the writer keeps across batches so
+    /// a busy writer does not allocate one per batch. Returns the batch's `wake_at`.
+    pub fn take_into(
+        &self,
+        items: &mut Vec<Taken>,
+        max_items: usize,
+        max_bytes: usize,
+        now: Instant,
+    ) -> Option<Instant> {
+        let max_items = max_items.saturating_add(items.len());
+        let before = items.len();
         let mut st = self.lock();
         let st = &mut *st;
-        let mut items = Vec::with_capacity(max_items.min(st.queued));
+        items.reserve((max_items - before).min(st.queued));
         let mut bytes = 0usize;
         let mut wake_at: Option<Instant> = None;
         match &mut st.service {
@@ -686,8 +705,8 @@ impl Outbox {
                 }
             }
         }
-        self.sent.fetch_add(items.len() as u64, Relaxed);
-        Batch { items, wake_at }
+        self.sent.fetch_add((items.len() - before) as u64, Relaxed);
+        wake_at
     }
 
     /// Messages queued across all slots.

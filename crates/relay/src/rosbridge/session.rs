@@ -891,6 +891,8 @@ async fn write_loop<K>(
     // Frames written since the last flush, and whether this task has given the others a
     // turn since (see below).
     let (mut unflushed, mut yielded) = (false, false);
+    // The batch, kept across rounds so a busy writer does not allocate one per round.
+    let mut items: Vec<crate::outbox::Taken> = Vec::new();
     loop {
         let mut wrote = false;
         while let Ok(r) = replies.try_recv() {
@@ -908,8 +910,8 @@ async fn write_loop<K>(
             }
         }
         let now = Instant::now();
-        let mut taken = outbox.take(batch, 8 << 20, now);
-        let took = taken.items.len();
+        let wake_at = outbox.take_into(&mut items, batch, 8 << 20, now);
+        let took = items.len();
         // Checked on delivery, so a rule change reaches live subscriptions.
         {
             let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
@@ -917,7 +919,7 @@ async fn write_loop<K>(
                 Some(g) => {
                     // A batch mostly holds runs of one topic: ask once per run.
                     let mut last = None;
-                    taken.items.retain(|(_, _, m)| match last {
+                    items.retain(|(_, _, m)| match last {
                         Some((id, ok)) if id == m.topic.id => ok,
                         _ => {
                             let ok = g.allows(m.topic.name.as_str(), GateOp::Subscribe);
@@ -926,10 +928,10 @@ async fn write_loop<K>(
                         }
                     })
                 }
-                None => taken.items.clear(),
+                None => items.clear(),
             }
         }
-        for (slot, delivery, msg) in &taken.items {
+        for (slot, delivery, msg) in items.drain(..) {
             let kind = match delivery.compression {
                 Compression::Cbor => FrameKind::RosbridgeCbor,
                 Compression::CborRaw => FrameKind::RosbridgeCborRaw,
@@ -944,7 +946,7 @@ async fn write_loop<K>(
             let frame = match frame {
                 Ok(f) => f,
                 Err(e) => {
-                    outbox.record_drop(*slot, DropReason::Encode);
+                    outbox.record_drop(slot, DropReason::Encode);
                     let wants = level.load(std::sync::atomic::Ordering::Relaxed) <= 1;
                     if wants && warned.insert(msg.topic.name.clone(), ()).is_none() {
                         let text = outbound::status("warning", &e.to_string(), None);
@@ -1000,7 +1002,7 @@ async fn write_loop<K>(
             let _ = sink.close().await;
             return;
         }
-        let wake = taken.wake_at.map(tokio::time::Instant::from_std);
+        let wake = wake_at.map(tokio::time::Instant::from_std);
         tokio::select! {
             r = replies.recv() => match r {
                 Some(Reply::Frame(m)) => {
