@@ -453,10 +453,7 @@ impl Session {
                 .status("error", msg.into(), p.id.value().as_ref())
                 .await;
         }
-        if self.wait_for_room(&p.topic).await {
-            self.clock.waited();
-        }
-        if let Err(msg) = self.publish(&p.topic, p.msg) {
+        if let Err(msg) = self.publish(&p.topic, p.msg).await {
             self.status("error", msg, p.id.value().as_ref()).await;
             self.clock.waited();
         }
@@ -482,12 +479,7 @@ impl Session {
                 ..
             } => self.advertise(&topic, &type_name, latch),
             Op::Unadvertise { topic } => self.unadvertise(&topic),
-            Op::Publish { topic, msg } => {
-                if self.wait_for_room(&topic).await {
-                    self.clock.waited();
-                }
-                self.publish(&topic, msg)
-            }
+            Op::Publish { topic, msg } => self.publish(&topic, msg).await,
             Op::Subscribe {
                 topic,
                 type_name,
@@ -641,29 +633,35 @@ impl Session {
     /// full (the robot's link is down and nothing spills to disk), this client's next
     /// message waits here — and, because this loop is what reads the socket, the client's
     /// own sends slow down with it — instead of being refused. True if it waited.
-    async fn wait_for_room(&self, topic: &str) -> bool {
-        let found = match self.published.get(topic) {
-            Some(p) => Some(p),
-            None => TopicName::parse(topic)
-                .ok()
-                .and_then(|n| self.published.get(&n)),
-        };
-        let Some(p) = found else {
-            return false;
-        };
-        let flow = &p.topic.stats.no_drop_flow;
-        if !flow.is_full() {
-            return false;
+    /// Publishes `msg` on `topic`, first waiting for room if it is a no-drop topic whose
+    /// queue is full.
+    async fn publish(&mut self, topic: &str, mut msg: Payload) -> Result<(), String> {
+        loop {
+            match self.try_publish(topic, msg)? {
+                None => return Ok(()),
+                Some(back) => {
+                    msg = back;
+                    if let Some(p) = self.published.get(topic).or_else(|| {
+                        TopicName::parse(topic)
+                            .ok()
+                            .and_then(|n| self.published.get(&n))
+                    }) {
+                        tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
+                        p.topic.stats.no_drop_flow.wait_room().await;
+                    }
+                    self.clock.waited();
+                }
+            }
         }
-        tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
-        flow.wait_room().await;
-        true
     }
 
-    fn publish(&mut self, topic: &str, msg: Payload) -> Result<(), String> {
+    /// Publishes `msg` on `topic` unless it is a no-drop topic whose queue is full; then
+    /// hands the message back to wait with.
+    fn try_publish(&mut self, topic: &str, msg: Payload) -> Result<Option<Payload>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // two lookups by the client's spelling, no parse, no copy of the name.
-        let name: std::borrow::Cow<'_, str> = if self.published.contains_key(topic) {
+        let known = self.published.contains_key(topic);
+        let name: std::borrow::Cow<'_, str> = if known {
             topic.into()
         } else {
             let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
@@ -675,10 +673,13 @@ impl Session {
         // Asked for every message: rules can change while a client publishes, and the
         // gate's cache makes the repeat question cheap.
         self.check("publish", &name, GateOp::Publish)?;
-        if !self.published.contains_key(&*name) {
+        if !known && !self.published.contains_key(&*name) {
             self.start_publishing(&name)?;
         }
         let p = self.published.get_mut(&*name).expect("inserted above");
+        if p.topic.stats.no_drop_flow.is_full() {
+            return Ok(Some(msg));
+        }
         // Checked and completed once here, for every subscriber.
         let meta = p.topic.meta();
         let msg = self
@@ -699,7 +700,7 @@ impl Session {
         if let Some(g) = self.gate.as_mut() {
             g.done(&name, GateOp::Publish, size);
         }
-        Ok(())
+        Ok(None)
     }
 
     /// The first publish on `name` without an `advertise`: rosbridge allows it on a topic
