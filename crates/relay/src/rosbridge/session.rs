@@ -629,12 +629,10 @@ impl Session {
         Ok(())
     }
 
-    /// Backpressure for no-drop topics: while a subscriber's no-drop queue of this topic is
-    /// full (the robot's link is down and nothing spills to disk), this client's next
-    /// message waits here — and, because this loop is what reads the socket, the client's
-    /// own sends slow down with it — instead of being refused. True if it waited.
-    /// Publishes `msg` on `topic`, first waiting for room if it is a no-drop topic whose
-    /// queue is full.
+    /// Publishes `msg` on `topic`. Backpressure for no-drop topics: while a subscriber's
+    /// no-drop queue of this topic is full (the robot's link is down and nothing spills to
+    /// disk), the message waits here for room — and, because this loop is what reads the
+    /// socket, the client's own sends slow down with it — instead of being refused.
     async fn publish(&mut self, topic: &str, mut msg: Payload) -> Result<(), String> {
         loop {
             match self.try_publish(topic, msg)? {
