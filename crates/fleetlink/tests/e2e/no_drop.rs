@@ -243,66 +243,8 @@ async fn issue9_a_full_no_drop_queue_slows_the_local_rosbridge_publisher_instead
         local.send(send(n)).await;
     }
     agent.wait_disconnected().await;
-    proxy.restore();
-    agent.wait_connected().await;
-    assert_eq!(
-        received_until(&mut op, 80).await,
-        (2..=80).collect::<Vec<_>>(),
-        "the publisher was held back, not dropped"
-    );
-    let topic = agent
-        .router
-        .topic(&TopicName::parse(TOPIC).unwrap())
-        .expect("topic");
-    assert_eq!(
-        topic.stats.drops(fleetlink_relay::DropReason::Backpressure),
-        0
-    );
-    agent.shutdown().await;
-    hub.shutdown().await;
-}
-
-/// A rosbridge client on the robot publishing a no-drop topic faster than a dead link
-/// drains it: once the topic's queue is full its publishes wait for room (its later
-/// operations with them), and nothing is refused or lost when the link returns.
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn a_local_rosbridge_publisher_on_a_full_no_drop_queue_waits_and_loses_nothing() {
-    let small_queue = |hub: &TestHub, proxy: &Blackhole| {
-        let mut cfg = no_drop_config(hub, proxy);
-        cfg.topic_qos[0].1.queue = Some(20);
-        cfg
-    };
-    let Fleet {
-        hub,
-        proxy,
-        agent,
-        mut op,
-    } = setup(small_queue, true).await;
-    let mut local = Rosbridge::connect(&agent.local_url()).await;
-    local
-        .send(json!({"op": "advertise", "topic": TOPIC, "type": "std_msgs/String"}))
-        .await;
-    local
-        .send_all(
-            (1..=3u64)
-                .map(|n| json!({"op": "publish", "topic": TOPIC, "msg": {"data": n.to_string()}})),
-        )
-        .await;
-    assert_eq!(
-        received_until(&mut op, 3).await,
-        (1..=3).collect::<Vec<_>>()
-    );
-
-    // The link goes dark; five times the queue is published at once, then a call whose
-    // answer can only come once the session got past every publish before it.
-    proxy.cut();
-    agent.wait_disconnected().await;
-    local
-        .send_all(
-            (4..=100u64)
-                .map(|n| json!({"op": "publish", "topic": TOPIC, "msg": {"data": n.to_string()}})),
-        )
-        .await;
+    // A call after the publishes can only be answered once the session got past all of
+    // them: while the queue is full, it is not.
     local
         .send(
             json!({"op": "call_service", "service": "/rosapi/get_time", "args": {}, "id": "after"}),
@@ -317,16 +259,22 @@ async fn a_local_rosbridge_publisher_on_a_full_no_drop_queue_waits_and_loses_not
         early.is_err(),
         "the session answered past a full no-drop queue instead of waiting: {early:?}"
     );
-
     proxy.restore();
     agent.wait_connected().await;
     assert_eq!(
-        received_until(&mut op, 100).await,
-        (4..=100).collect::<Vec<_>>(),
-        "every publish made while the queue was full arrives, in order"
+        received_until(&mut op, 80).await,
+        (2..=80).collect::<Vec<_>>(),
+        "the publisher was held back, not dropped"
     );
-    let v = local.recv_op("service_response").await;
-    assert_eq!(v["id"], "after");
+    assert_eq!(local.recv_op("service_response").await["id"], "after");
+    let topic = agent
+        .router
+        .topic(&TopicName::parse(TOPIC).unwrap())
+        .expect("topic");
+    assert_eq!(
+        topic.stats.drops(fleetlink_relay::DropReason::Backpressure),
+        0
+    );
     agent.shutdown().await;
     hub.shutdown().await;
 }
