@@ -1,9 +1,11 @@
 //! The hub's parameters: served from memory, written through to the database so they
 //! survive a restart. Writes go to one writer thread in order, so a `set_param` never
-//! waits for the disk on the session's task; a failed write is logged.
+//! waits for the disk on the session's task; a failed write is logged. A stopping hub
+//! waits for the writer ([`ParamStore::flush`]), so a change answered `true` just before
+//! the stop is still there after the restart.
 
 use std::collections::BTreeMap;
-use std::sync::mpsc::{Sender, channel};
+use std::sync::mpsc::{Sender, SyncSender, channel, sync_channel};
 
 use fleetlink_relay::params::{MemoryParams, ParamStore};
 
@@ -12,6 +14,8 @@ use crate::store::{Store, StoreError};
 enum Write {
     Set(String, String),
     Delete(String),
+    /// Answered once everything sent before it is written.
+    Flush(SyncSender<()>),
 }
 
 pub struct DurableParams {
@@ -31,6 +35,10 @@ impl DurableParams {
                     let r = match &w {
                         Write::Set(n, v) => store.set_param(n, v),
                         Write::Delete(n) => store.delete_params(n),
+                        Write::Flush(done) => {
+                            let _ = done.send(());
+                            Ok(())
+                        }
                     };
                     if let Err(e) = r {
                         tracing::error!("parameters: cannot write to the database: {e}");
@@ -58,5 +66,11 @@ impl ParamStore for DurableParams {
     fn delete(&self, name: &str) -> bool {
         let _ = self.tx.send(Write::Delete(name.to_owned()));
         self.mem.delete(name)
+    }
+    fn flush(&self) {
+        let (done_tx, done_rx) = sync_channel(1);
+        if self.tx.send(Write::Flush(done_tx)).is_ok() {
+            let _ = done_rx.recv();
+        }
     }
 }

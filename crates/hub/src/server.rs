@@ -297,6 +297,14 @@ impl Hub {
         token.cancel();
         housekeeping.abort();
         capacity.abort();
+        // What was answered before the stop is on disk when `run` returns: parameters
+        // and the audit log are written by their own threads.
+        let (params, audit) = (state.router.params.clone(), state.security.clone());
+        let _ = tokio::task::spawn_blocking(move || {
+            params.flush();
+            audit.audit.flush();
+        })
+        .await;
         Ok(())
     }
 }

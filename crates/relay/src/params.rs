@@ -23,6 +23,9 @@ pub trait ParamStore: Send + Sync {
     fn set(&self, name: &str, value_json: String);
     /// Deletes `name` and everything under it; false if nothing was there.
     fn delete(&self, name: &str) -> bool;
+    /// Blocks until every change made before this call is durable. For shutdown only —
+    /// never on an async worker thread.
+    fn flush(&self) {}
 }
 
 /// Parameters in memory only (an agent, tests).
