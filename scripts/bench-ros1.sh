@@ -7,7 +7,8 @@
 # Debian's rospy) feeds a roslibpy client, and a plain rospy subscriber on the robot gives
 # the floor. Reports each bridge's CPU (% of one core, utime+stime from /proc/<pid>/stat
 # over the measured window), memory (VmRSS at the end, VmHWM), the CPU ratio, and latency
-# p50/p99 of each path.
+# p50/p99 of each path. A plain TCP relay of a stream of the same size and rate
+# (`fleetlink bench copy-floor`) runs in the same window: the CPU no bridge can go below.
 #
 #   sudo ROSBRIDGE_SRC=/path/to/rosbridge_suite scripts/bench-ros1.sh [SECONDS] [POINTS]
 #
@@ -168,6 +169,11 @@ floor=$!
 wait_line "$tmp/hubsub.log" "ready"
 wait_line "$tmp/rbsub.log" "ready"
 wait_line "$tmp/floor.log" "ready"
+# The floor under any bridge's CPU: a plain TCP relay moving a stream of the same size and
+# rate between two loopback sockets, nothing else (its own 2 s warm-up, then the same span).
+in_ns "$bin" bench copy-floor --size "$((npoints * 16 + 111))" --rate 10 --seconds "$seconds" --json \
+    >"$tmp/copyfloor.log" 2>&1 &
+copyfloor=$!
 
 ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
 thread_ticks() { for t in /proc/"$1"/task/*; do printf '%s %s %s\n' "${t##*/}" "$(tr ' ' _ <"$t/comm")" "$(awk '{print $14 + $15}' "$t/stat")"; done 2>/dev/null; }
@@ -179,6 +185,8 @@ wait "$hubsub" "$rbsub" "$floor" || true
 t1=$(date +%s.%N); a1=$(ticks "$agent_pid"); r1=$(ticks "$rb_pid"); h1=$(ticks "$hub_pid")
 thread_ticks "$agent_pid" >"$tmp/threads1"
 load1="$(cut -d' ' -f1-3 /proc/loadavg)"
+wait "$copyfloor" || true
+copy_cpu="$(sed -n 's/.*"relay_cpu_percent":\([0-9.]*\).*/\1/p' "$tmp/copyfloor.log" | awk '{printf "%.2f", $1}')"
 mem() { awk '/^VmRSS|^VmHWM/ {v[$1] = $2} END {printf "%7.1f MB %7.1f MB", v["VmRSS:"]/1024, v["VmHWM:"]/1024}' "/proc/$1/status"; }
 pct() { awk -v a="$1" -v b="$2" -v t0="$t0" -v t1="$t1" -v hz="$hz" 'BEGIN {printf "%.2f", 100 * (b - a) / hz / (t1 - t0)}'; }
 lat() { # log -> "p50 / p99 ms (n)" from the client's JSON line
@@ -203,7 +211,9 @@ printf '%-56s %9s  %s  %s\n' "$agent_label" "$agent_cpu" "$(mem "$agent_pid")" "
 printf '%-56s %9s  %s  %s\n' "rosbridge_server $rb_version ($rb_client)" "$rb_cpu" "$(mem "$rb_pid")" "$(lat "$tmp/rbsub.log")"
 printf '%-56s %9s  %21s  %s\n' "rospy subscriber on the robot (floor, no bridge)" "-" "" "$(lat "$tmp/floor.log")"
 printf '%-56s %9s  %s\n' "hub (cloud side, not robot cost)" "$(pct "$h0" "$h1")" "$(mem "$hub_pid")"
+printf '%-56s %9s\n' "plain TCP relay of the same stream (floor, copy-floor)" "${copy_cpu:--}"
 echo "CPU is % of one core. rosbridge / agent CPU ratio: ${ratio}x"
+[ -n "$copy_cpu" ] && echo "floor: rosbridge / plain relay: $(awk -v r="$rb_cpu" -v c="$copy_cpu" 'BEGIN {if (c > 0) printf "%.1f", r / c; else print "inf"}')x; 15x would need the agent at $(awk -v r="$rb_cpu" 'BEGIN {printf "%.2f", r / 15}') %"
 echo "targets: agent CPU <= 1 %: $(met "$agent_cpu" "<=" 1); agent RSS <= 30 MB: $(met "$agent_hwm_mb" "<=" 30) (VmHWM; VmRSS $(met "$agent_rss_mb" "<=" 30)); ratio >= 15x: $(met "$ratio" ">=" 15)"
 kill -TERM "$pub_pid" 2>/dev/null || true
 wait_line "$tmp/pub.log" '"sent"'

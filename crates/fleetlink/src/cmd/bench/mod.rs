@@ -10,11 +10,14 @@
 //! - [`conn`]: a bench client's `fleetlink.v1` connection and setup handshake.
 //! - [`publisher`], [`subscriber`]: the two kinds of client and their hot loops.
 //! - [`report`]: the progress line and the final summary.
+//! - [`copy_floor`]: the `copy-floor` subcommand: the CPU of a plain loopback TCP relay,
+//!   the floor under a bridge's figure.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
 
 mod calls;
 mod conn;
+mod copy_floor;
 mod delivery;
 mod publisher;
 mod reconnect;
@@ -43,6 +46,9 @@ enum Command {
     /// rosbridge JSON or CBOR, fleetlink.v1, NATS or MQTT: the server's CPU per delivered
     /// message, from /proc.
     Delivery(delivery::Args),
+    /// A plain loopback TCP relay (blocking reads and writes, nothing else) carrying
+    /// messages of a given size and rate: its CPU, the floor under any bridge's figure.
+    CopyFloor(copy_floor::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
@@ -51,5 +57,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Reconnect(a) => reconnect::run(a),
         Command::Calls(a) => calls::run(a),
         Command::Delivery(a) => delivery::run(a),
+        Command::CopyFloor(a) => copy_floor::run(a),
     }
 }
