@@ -330,25 +330,36 @@ def node_info(args):
     store = get_typestore(Stores.ROS2_HUMBLE if args.gid == 24 else Stores.ROS2_JAZZY)
     node = Node()
     infos = []
-    node.reader("ros_discovery_info", Info, infos.append, qos=T.qos(transient_local=True, depth=1))
+    # ros_discovery_info has no key: every participant's sample is one instance, so a
+    # reader of depth 1 keeps only whichever arrived last between two takes (the Humble
+    # node's sample can displace the agent's). Room for many, as rmw keeps.
+    node.reader("ros_discovery_info", Info, infos.append, qos=T.qos(transient_local=True, depth=64))
     publications = BuiltinDataReader(node.dp, BuiltinTopicDcpsPublication)
     cmd_writers = {}
 
     def agent_sample():
+        """The agent's newest sample naming the node: (info, entry), or None."""
         for s in publications.take(N=100):
             if s.topic_name == "rt/cmd_vel":
                 cmd_writers[s.key.bytes] = s.participant_key.bytes
-        for info in list(infos):
+        for info in reversed(list(infos)):
             for n in info.node_entities_info_seq:
                 if n.node_name == args.node.lstrip("/") and n.node_namespace == "/":
                     return info, n
         return None
+
+    def lists_cmd_writer():
+        got = agent_sample()
+        return got is not None and any(T.gid_bytes(g)[:16] in cmd_writers for g in got[1].writer_gid_seq)
 
     if not wait_until(agent_sample, args.wait):
         seen = [f"{n.node_namespace}/{n.node_name}" for i in infos for n in i.node_entities_info_seq]
         log(f"FAIL: no node {args.node} on ros_discovery_info within {args.wait:.0f} s ({args.gid}-byte GIDs); "
             f"nodes seen: {seen}")
         return 1
+    # The node's sample is rewritten as its endpoints appear: judge the newest one once
+    # it lists the rt/cmd_vel writer (or after 5 s, the newest there is).
+    wait_until(lists_cmd_writer, 5)
     info, entry = agent_sample()
     problem = T.crosscheck(store, info)
     if problem:
@@ -360,7 +371,6 @@ def node_info(args):
     if any(g[16:] != bytes(args.gid - 16) for g in [gid] + writers + readers):
         log(f"FAIL: a {args.gid}-byte GID is not a GUID padded with zeros: {gid.hex()}")
         return 1
-    wait_until(lambda: agent_sample() and any(w[:16] in cmd_writers for w in writers), 5)
     mine = [w for w in writers if w[:16] in cmd_writers]
     if not mine:
         log(f"FAIL: the node's {len(writers)} writers do not include a writer of rt/cmd_vel "
