@@ -14,6 +14,7 @@ stamp=.venv/.fleetlink-ros2-requirements
 apt_missing=()
 command -v ip >/dev/null || apt_missing+=(iproute2)
 command -v g++ >/dev/null || apt_missing+=(g++)
+command -v strace >/dev/null || apt_missing+=(strace)
 [ -f /usr/include/fastdds/dds/domain/DomainParticipant.hpp ] || apt_missing+=(libfastrtps-dev)
 if [ ${#apt_missing[@]} -ne 0 ]; then
     sudo_cmd=()

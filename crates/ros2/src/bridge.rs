@@ -118,6 +118,8 @@ pub struct Stats {
     pub dropped_down: AtomicU64,
     pub unknown_types: AtomicU64,
     pub type_mismatches: AtomicU64,
+    /// Times the participant was rebuilt after rustdds' threads ended ([`run`]).
+    pub participant_restarts: AtomicU64,
     /// Each unknown type and type mismatch as its log line says it.
     pub problems: Problems,
 }
@@ -131,6 +133,7 @@ impl AdapterReport for Stats {
             ("dropped_down", get(&self.dropped_down)),
             ("unknown_types", get(&self.unknown_types)),
             ("type_mismatches", get(&self.type_mismatches)),
+            ("participant_restarts", get(&self.participant_restarts)),
         ]
     }
 
@@ -423,13 +426,67 @@ fn ros2_schema(type_name: &str) -> Schema {
     }
 }
 
+/// How often the bridge checks that rustdds' threads still run.
+const LIVENESS_PERIOD: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// How one participant's bridging ended.
+enum End {
+    Shutdown,
+    /// rustdds' own threads have ended: nothing more arrives or leaves.
+    ParticipantStopped,
+}
+
 /// Bridges the ROS 2 graph of `opts.domain_id` with `router` until `shutdown`.
+///
+/// rustdds ends its network and discovery threads at the first `poll` that returns an
+/// error, and `poll` returns `EINTR` when the agent is stopped and continued (Ctrl-Z and
+/// `fg`, SIGSTOP and SIGCONT, a suspend and resume, a container paused) or a debugger or
+/// `strace` attaches; the participant then looks alive but carries nothing. The bridge checks every
+/// [`LIVENESS_PERIOD`] that the discovery thread still takes commands, and when it does
+/// not, leaves the graph (the router's topics and services go) and joins it again with a
+/// new participant, after 1 s, doubling to 30 s while participants keep stopping within a
+/// minute of starting.
 pub async fn run(
     opts: Ros2Options,
     router: Arc<Router>,
     stats: Arc<Stats>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros2Error> {
+    let mut pause = std::time::Duration::from_secs(1);
+    loop {
+        let started = Instant::now();
+        match run_participant(opts.clone(), &router, &stats, &shutdown).await? {
+            End::Shutdown => return Ok(()),
+            End::ParticipantStopped => {
+                if started.elapsed() > std::time::Duration::from_secs(60) {
+                    pause = std::time::Duration::from_secs(1);
+                }
+                stats.participant_restarts.fetch_add(1, Relaxed);
+                let text = format!(
+                    "the DDS participant's threads stopped (rustdds ends them when a poll is \
+                     interrupted: the agent stopped and continued, the machine suspended and \
+                     resumed, a debugger or strace attached); rejoining DDS domain {} in {} s",
+                    opts.domain_id,
+                    pause.as_secs()
+                );
+                tracing::error!("ros2: {text}");
+                stats.problems.note(&text);
+                tokio::select! {
+                    _ = shutdown.cancelled() => return Ok(()),
+                    _ = tokio::time::sleep(pause) => {}
+                }
+                pause = (pause * 2).min(std::time::Duration::from_secs(30));
+            }
+        }
+    }
+}
+
+async fn run_participant(
+    opts: Ros2Options,
+    router: &Arc<Router>,
+    stats: &Arc<Stats>,
+    shutdown: &CancellationToken,
+) -> Result<End, Ros2Error> {
     let domain = opts.domain_id;
     let dp = DomainParticipant::new(domain).map_err(|e| Ros2Error::Participant {
         domain,
@@ -455,7 +512,7 @@ pub async fn run(
         opts,
         router: router.clone(),
         client,
-        stats,
+        stats: stats.clone(),
         dp,
         publisher,
         subscriber,
@@ -492,9 +549,18 @@ pub async fn run(
     // While a new writer holds messages for its readers to be matched.
     let mut held_tick = tokio::time::interval(std::time::Duration::from_millis(10));
     held_tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
-    loop {
+    let mut alive_tick = tokio::time::interval(LIVENESS_PERIOD);
+    alive_tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    let end = loop {
         tokio::select! {
-            _ = shutdown.cancelled() => break,
+            _ = shutdown.cancelled() => break End::Shutdown,
+            _ = alive_tick.tick() => {
+                // A command to the discovery thread (it only marks the participant's
+                // manual liveliness as asserted); refused once that thread has ended.
+                if bridge.dp.assert_liveliness().is_err() {
+                    break End::ParticipantStopped;
+                }
+            }
             _ = tick.tick() => {
                 discover(&bridge);
                 node_info.refresh(&bridge);
@@ -511,7 +577,7 @@ pub async fn run(
             Some(m) = peer_rx.recv() => services::on_peer(&bridge, m),
             _ = held_tick.tick(), if holding(&bridge) => release_held(&bridge),
         }
-    }
+    };
     let st = std::mem::take(&mut *bridge.lock());
     for up in st.up.values() {
         up.task.abort();
@@ -533,7 +599,7 @@ pub async fn run(
         s.messages_down.load(Relaxed),
         s.dropped_down.load(Relaxed)
     );
-    Ok(())
+    Ok(end)
 }
 
 /// One look at what discovery knows: starts and stops bridged topics, exposed services

@@ -40,6 +40,9 @@
 #   9. restarts: the late participant killed -> /late_topic leaves the hub's topics;
 #      started again -> it is bridged again; the agent killed and started again ->
 #      topics and /add_two_ints cross again.
+#  10. the agent stopped (SIGSTOP) and continued (SIGCONT), then traced by strace for a
+#      second (which ends rustdds' threads: the bridge rejoins the graph by itself);
+#      /add_two_ints and the topics cross again after each.
 # Every step runs under `timeout`, every background process under a longer one; on exit
 # (trap) the processes are stopped and the namespace is deleted. Under 3 minutes.
 # Step 0 checks the Cyclone peers' own plumbing before any of that.
@@ -398,6 +401,41 @@ agent_pid=${pids[-1]}
 ns_run 40 "$python" "$here/ros2_peer.py" node-info --node "/fleetlink_$robot" --gid 24 --wait 20 || fail "node-info (24-byte GIDs learned from a Humble node)"
 grep -q "24-byte GIDs" "$tmp/agent3.log" && echo "ok: the agent logged the GID size it learned: $(grep -o 'the graph.s nodes use 24-byte GIDs.*' "$tmp/agent3.log" | head -n1)" \
     || fail "the agent did not log learning 24-byte GIDs"
+
+step "10. the agent stopped and continued, then a debugger (strace) attached and detached"
+# rustdds ends its threads at the first interrupted poll, which a debugger or strace
+# attaching causes: the bridge must notice and rejoin the graph by itself. A service call
+# needs the DDS side alive when it is made (nothing queued before can stand in for it).
+# $agent_pid is the shell around the agent's `timeout`: find the agent itself, the
+# namespace's process running our binary with this configuration.
+agent_proc=""
+bin_path="$(readlink -f "$bin")"
+for pid in $(ip netns pids "$netns"); do
+    [ "$(readlink "/proc/$pid/exe" 2>/dev/null)" = "$bin_path" ] \
+        && tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null | grep -qF -- "agent --config $tmp/agent.yaml" \
+        && agent_proc=$pid
+done
+[ -n "$agent_proc" ] || fail "the agent's process not found among the namespace's"
+if [ -n "$agent_proc" ]; then
+    kill -STOP "$agent_proc"
+    sleep 1
+    kill -CONT "$agent_proc"
+    ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" \
+        || fail "check-calls after the agent was stopped (SIGSTOP) and continued (SIGCONT)"
+    rejoins_before="$(grep -c "rejoining DDS domain" "$tmp/agent3.log" || true)"
+    timeout -s INT 1 strace -f -p "$agent_proc" -o /dev/null 2>/dev/null || true
+    ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" \
+        || fail "check-calls after strace attached to the agent and detached"
+    ns_run 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" \
+        || fail "check-up after strace attached to the agent and detached"
+    rejoins="$(grep -c "rejoining DDS domain" "$tmp/agent3.log" || true)"
+    if [ "$rejoins" -gt "$rejoins_before" ]; then
+        echo "ok: the agent noticed and said so: $(sed 's/\x1b\[[0-9;]*m//g' "$tmp/agent3.log" | grep -o 'ros2: the DDS participant.*' | tail -n1 | cut -c1-150)"
+    else
+        echo "note: strace did not end rustdds' threads this time (nothing to rejoin)"
+    fi
+    kill -0 "$agent_proc" 2>/dev/null || fail "the agent died after being stopped, continued and traced"
+fi
 
 kill -0 "$graph_pid" 2>/dev/null || fail "the Cyclone graph (ros2_peer.py graph) died"
 echo "ros2 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"
