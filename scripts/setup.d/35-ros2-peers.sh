@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Peers of the ROS 2 bridge interop suite (tests/interop/ros2): Cyclone DDS's Python
 # binding and rosbags (tests/interop/ros2/requirements.txt) in the repo's .venv (made by
-# 10-python-venv.sh), Fast DDS (libfastrtps-dev, g++), and `ip` (iproute2) for the
-# suite's network namespace. Idempotent:
+# 10-python-venv.sh), Fast DDS (libfastrtps-dev, g++), `ip` (iproute2) for the
+# suite's network namespace, and strace (step 10 attaches it to the agent). Idempotent:
 # quiet and quick when everything is already there; waits for another apt's lock.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 req=tests/interop/ros2/requirements.txt
 stamp=.venv/.fleetlink-ros2-requirements
 
-# Debian packages: iproute2, and Fast DDS (eProsima's libfastrtps, the DDS under ROS 2's
-# default middleware) with a C++ compiler for the suite's Fast DDS node (fastdds_peer.cpp).
+# Debian packages: iproute2, strace, and Fast DDS (eProsima's libfastrtps, the DDS under
+# ROS 2's default middleware) with a C++ compiler for the suite's Fast DDS node
+# (fastdds_peer.cpp).
 apt_missing=()
 command -v ip >/dev/null || apt_missing+=(iproute2)
 command -v g++ >/dev/null || apt_missing+=(g++)

@@ -441,11 +441,11 @@ enum End {
 /// rustdds ends its network and discovery threads at the first `poll` that returns an
 /// error, and `poll` returns `EINTR` when the agent is stopped and continued (Ctrl-Z and
 /// `fg`, SIGSTOP and SIGCONT, a suspend and resume, a container paused) or a debugger or
-/// `strace` attaches; the participant then looks alive but carries nothing. The bridge checks every
-/// [`LIVENESS_PERIOD`] that the discovery thread still takes commands, and when it does
-/// not, leaves the graph (the router's topics and services go) and joins it again with a
-/// new participant, after 1 s, doubling to 30 s while participants keep stopping within a
-/// minute of starting.
+/// `strace` attaches; the participant then looks alive but carries nothing. The bridge
+/// checks every [`LIVENESS_PERIOD`] that the discovery thread still takes commands, and
+/// when it does not, leaves the graph (the router's topics and services go) and joins it
+/// again with a new participant, after 1 s, doubling to 30 s while participants keep
+/// stopping within a minute of starting.
 pub async fn run(
     opts: Ros2Options,
     router: Arc<Router>,
@@ -465,11 +465,11 @@ pub async fn run(
                 let text = format!(
                     "the DDS participant's threads stopped (rustdds ends them when a poll is \
                      interrupted: the agent stopped and continued, the machine suspended and \
-                     resumed, a debugger or strace attached); rejoining DDS domain {} in {} s",
-                    opts.domain_id,
-                    pause.as_secs()
+                     resumed, a debugger or strace attached); rejoining DDS domain {}",
+                    opts.domain_id
                 );
-                tracing::error!("ros2: {text}");
+                tracing::error!("ros2: {text} in {} s", pause.as_secs());
+                // One entry however often it happens (the counter says how often).
                 stats.problems.note(&text);
                 tokio::select! {
                     _ = shutdown.cancelled() => return Ok(()),

@@ -423,6 +423,7 @@ if [ -n "$agent_proc" ]; then
     ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" \
         || fail "check-calls after the agent was stopped (SIGSTOP) and continued (SIGCONT)"
     rejoins_before="$(grep -c "rejoining DDS domain" "$tmp/agent3.log" || true)"
+    command -v strace >/dev/null || fail "strace is not installed (scripts/setup.d/35-ros2-peers.sh installs it)"
     timeout -s INT 1 strace -f -p "$agent_proc" -o /dev/null 2>/dev/null || true
     ns_run 60 "$python" "$here/hub_peer.py" check-calls --hub-url "$hub_url" --robot "$robot" \
         || fail "check-calls after strace attached to the agent and detached"
