@@ -74,3 +74,32 @@ impl ParamStore for DurableParams {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flush_returns_once_every_change_is_in_the_database() {
+        let dir = std::env::temp_dir().join(format!(
+            "fleetlink-params-{}-{:?}",
+            std::process::id(),
+            std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .unwrap_or_default()
+                .as_nanos()
+        ));
+        let params = DurableParams::open(Store::open(&dir).unwrap()).unwrap();
+        for i in 0..2000 {
+            params.set(&format!("/p/{i:04}"), i.to_string());
+        }
+        assert!(params.delete("/p/0000"));
+        params.flush();
+        // A second connection, as a restarted hub would open.
+        let stored = Store::open(&dir).unwrap().params().unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(stored.len(), 1999, "changes missing after flush");
+        assert_eq!(stored.get("/p/1999").map(String::as_str), Some("1999"));
+        assert!(!stored.contains_key("/p/0000"));
+    }
+}
