@@ -637,16 +637,10 @@ impl Session {
         loop {
             match self.try_publish(topic, msg)? {
                 None => return Ok(()),
-                Some(back) => {
+                Some((back, full)) => {
                     msg = back;
-                    if let Some(p) = self.published.get(topic).or_else(|| {
-                        TopicName::parse(topic)
-                            .ok()
-                            .and_then(|n| self.published.get(&n))
-                    }) {
-                        tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
-                        p.topic.stats.no_drop_flow.wait_room().await;
-                    }
+                    tracing::debug!("publish {topic}: no-drop queue full, waiting for room");
+                    full.stats.no_drop_flow.wait_room().await;
                     self.clock.waited();
                 }
             }
@@ -654,8 +648,12 @@ impl Session {
     }
 
     /// Publishes `msg` on `topic` unless it is a no-drop topic whose queue is full; then
-    /// hands the message back to wait with.
-    fn try_publish(&mut self, topic: &str, msg: Payload) -> Result<Option<Payload>, String> {
+    /// hands the message back, with the topic to wait on.
+    fn try_publish(
+        &mut self,
+        topic: &str,
+        msg: Payload,
+    ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // two lookups by the client's spelling, no parse, no copy of the name.
         let known = self.published.contains_key(topic);
@@ -676,7 +674,7 @@ impl Session {
         }
         let p = self.published.get_mut(&*name).expect("inserted above");
         if p.topic.stats.no_drop_flow.is_full() {
-            return Ok(Some(msg));
+            return Ok(Some((msg, p.topic.clone())));
         }
         // Checked and completed once here, for every subscriber.
         let meta = p.topic.meta();

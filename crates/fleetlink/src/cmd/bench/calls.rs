@@ -157,14 +157,20 @@ async fn caller(
     Ok(rtts)
 }
 
-/// CPU seconds (user + system) and resident kB of a process, from /proc.
-pub(super) fn proc_figures(pid: u32) -> Option<(f64, u64)> {
-    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+/// CPU seconds (user + system) from a `/proc/.../stat` file: a process's, or one
+/// thread's (`/proc/self/task/<tid>/stat`).
+pub(super) fn stat_cpu_seconds(path: &str) -> Option<f64> {
+    let stat = std::fs::read_to_string(path).ok()?;
     // Fields after the command name (which may contain spaces) start after ") ".
     let rest = &stat[stat.rfind(')')? + 2..];
     let f: Vec<&str> = rest.split_whitespace().collect();
     let ticks: f64 = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
-    let hz = rustix::param::clock_ticks_per_second() as f64;
+    Some(ticks / rustix::param::clock_ticks_per_second() as f64)
+}
+
+/// CPU seconds (user + system) and resident kB of a process, from /proc.
+pub(super) fn proc_figures(pid: u32) -> Option<(f64, u64)> {
+    let cpu = stat_cpu_seconds(&format!("/proc/{pid}/stat"))?;
     let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
     let rss = status
         .lines()
@@ -173,7 +179,7 @@ pub(super) fn proc_figures(pid: u32) -> Option<(f64, u64)> {
         .next()?
         .parse()
         .ok()?;
-    Some((ticks / hz, rss))
+    Some((cpu, rss))
 }
 
 struct Phase {

@@ -128,18 +128,8 @@ fn this_thread_id() -> anyhow::Result<u32> {
 /// CPU seconds (user + system) of one thread of this process.
 fn thread_cpu_seconds(tid: u32) -> anyhow::Result<f64> {
     let path = format!("/proc/self/task/{tid}/stat");
-    let stat = std::fs::read_to_string(&path).with_context(|| format!("reading {path}"))?;
-    let rest = stat
-        .rfind(')')
-        .map(|i| &stat[i + 2..])
-        .context("unexpected /proc stat format")?;
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks: f64 = f
-        .get(11)
-        .zip(f.get(12))
-        .and_then(|(u, s)| Some(u.parse::<f64>().ok()? + s.parse::<f64>().ok()?))
-        .context("unexpected /proc stat format")?;
-    Ok(ticks / rustix::param::clock_ticks_per_second() as f64)
+    super::calls::stat_cpu_seconds(&path)
+        .with_context(|| format!("cannot read CPU time from {path}"))
 }
 
 #[cfg(test)]
