@@ -417,6 +417,8 @@ for pid in $(ip netns pids "$netns"); do
 done
 [ -n "$agent_proc" ] || fail "the agent's process not found among the namespace's"
 if [ -n "$agent_proc" ]; then
+    # The stimulus itself: the agent stays stopped for a second (not a wait for an
+    # event; what follows waits for the calls under a timeout).
     kill -STOP "$agent_proc"
     sleep 1
     kill -CONT "$agent_proc"
