@@ -120,6 +120,8 @@ pub struct Stats {
     pub type_mismatches: AtomicU64,
     /// Times the participant was rebuilt after rustdds' threads ended ([`run`]).
     pub participant_restarts: AtomicU64,
+    /// Times the bridge rejoined the graph because a network address appeared ([`run`]).
+    pub network_rejoins: AtomicU64,
     /// Each unknown type and type mismatch as its log line says it.
     pub problems: Problems,
 }
@@ -134,6 +136,7 @@ impl AdapterReport for Stats {
             ("unknown_types", get(&self.unknown_types)),
             ("type_mismatches", get(&self.type_mismatches)),
             ("participant_restarts", get(&self.participant_restarts)),
+            ("network_rejoins", get(&self.network_rejoins)),
         ]
     }
 
@@ -434,50 +437,138 @@ enum End {
     Shutdown,
     /// rustdds' own threads have ended: nothing more arrives or leaves.
     ParticipantStopped,
+    /// Addresses appeared that the participant does not use (see [`DdsAddresses`]).
+    NetworkChanged(Vec<DdsAddress>),
+}
+
+/// One IPv4 address of a multicast-capable interface: where rustdds joins DDS discovery.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+struct DdsAddress {
+    interface: String,
+    /// The interface's index: a device removed and added again is a new one (its
+    /// multicast memberships went with the old device).
+    index: u32,
+    addr: std::net::Ipv4Addr,
+}
+
+impl std::fmt::Display for DdsAddress {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} {}", self.interface, self.addr)
+    }
+}
+
+/// The host's addresses as rustdds sees them when a participant starts.
+///
+/// rustdds joins DDS multicast and picks the unicast addresses it announces once, when a
+/// participant is created, from the interfaces then up. An agent started before the robot's
+/// network (at boot, before DHCP; a USB Ethernet plugged in later; a Wi-Fi address that
+/// changed) would never discover the participants on the new network, nor be discovered by
+/// them. The bridge compares the addresses with the last look every [`LIVENESS_PERIOD`]
+/// and rejoins the graph when one appeared. One that only went away changes nothing.
+#[derive(Debug, Default)]
+struct DdsAddresses {
+    seen: std::collections::BTreeSet<DdsAddress>,
+}
+
+impl DdsAddresses {
+    /// The addresses now; `None` when the system cannot say (nothing is concluded then).
+    fn now() -> Option<DdsAddresses> {
+        use nix::net::if_::InterfaceFlags;
+        let mut seen = std::collections::BTreeSet::new();
+        // getifaddrs(3): tens of microseconds (netdev, which rustdds uses, also reads
+        // each interface's files in /sys: ten times that).
+        for a in nix::ifaddrs::getifaddrs().ok()? {
+            // As rustdds chooses where to join multicast: the flag, IPv4 only.
+            if !a.flags.contains(InterfaceFlags::IFF_MULTICAST) {
+                continue;
+            }
+            let Some(v4) = a.address.as_ref().and_then(|s| s.as_sockaddr_in()) else {
+                continue;
+            };
+            let index = nix::net::if_::if_nametoindex(a.interface_name.as_str()).unwrap_or(0);
+            seen.insert(DdsAddress {
+                interface: a.interface_name,
+                index,
+                addr: v4.ip(),
+            });
+        }
+        Some(DdsAddresses { seen })
+    }
+
+    /// Takes a new look; returns the addresses that appeared since the last one.
+    fn appeared(&mut self, now: Option<DdsAddresses>) -> Vec<DdsAddress> {
+        let Some(now) = now else {
+            return Vec::new();
+        };
+        let new = now.seen.difference(&self.seen).cloned().collect();
+        *self = now;
+        new
+    }
 }
 
 /// Bridges the ROS 2 graph of `opts.domain_id` with `router` until `shutdown`.
 ///
-/// rustdds ends its network and discovery threads at the first `poll` that returns an
-/// error, and `poll` returns `EINTR` when the agent is stopped and continued (Ctrl-Z and
-/// `fg`, SIGSTOP and SIGCONT, a suspend and resume, a container paused) or a debugger or
-/// `strace` attaches; the participant then looks alive but carries nothing. The bridge
-/// checks every [`LIVENESS_PERIOD`] that the discovery thread still takes commands, and
-/// when it does not, leaves the graph (the router's topics and services go) and joins it
-/// again with a new participant, after 1 s, doubling to 30 s while participants keep
-/// stopping within a minute of starting.
+/// The participant is made again (the router's topics and services go and come back) when:
+/// - rustdds' threads have ended. rustdds ends its network and discovery threads at the
+///   first `poll` that returns an error, and `poll` returns `EINTR` when the agent is
+///   stopped and continued (Ctrl-Z and `fg`, SIGSTOP and SIGCONT, a suspend and resume, a
+///   container paused) or a debugger or `strace` attaches; the participant then looks
+///   alive but carries nothing. The bridge checks every [`LIVENESS_PERIOD`] that the
+///   discovery thread still takes commands.
+/// - a network address appeared ([`DdsAddresses`]).
+/// - making it failed (no port free, for example): tried again.
+///
+/// Each time after 1 s, doubling to 30 s while participants keep ending within a minute.
 pub async fn run(
     opts: Ros2Options,
     router: Arc<Router>,
     stats: Arc<Stats>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros2Error> {
-    let mut pause = std::time::Duration::from_secs(1);
+    const FIRST_PAUSE: std::time::Duration = std::time::Duration::from_secs(1);
+    let mut pause = FIRST_PAUSE;
     loop {
         let started = Instant::now();
-        match run_participant(opts.clone(), &router, &stats, &shutdown).await? {
-            End::Shutdown => return Ok(()),
-            End::ParticipantStopped => {
-                if started.elapsed() > std::time::Duration::from_secs(60) {
-                    pause = std::time::Duration::from_secs(1);
-                }
+        let ended = run_participant(opts.clone(), &router, &stats, &shutdown).await;
+        if started.elapsed() > std::time::Duration::from_secs(60) {
+            pause = FIRST_PAUSE;
+        }
+        let (domain, secs) = (opts.domain_id, pause.as_secs());
+        match ended {
+            Ok(End::Shutdown) => return Ok(()),
+            Ok(End::ParticipantStopped) => {
                 stats.participant_restarts.fetch_add(1, Relaxed);
                 let text = format!(
                     "the DDS participant's threads stopped (rustdds ends them when a poll is \
                      interrupted: the agent stopped and continued, the machine suspended and \
-                     resumed, a debugger or strace attached); rejoining DDS domain {}",
-                    opts.domain_id
+                     resumed, a debugger or strace attached); rejoining DDS domain {domain}"
                 );
-                tracing::error!("ros2: {text} in {} s", pause.as_secs());
+                tracing::error!("ros2: {text} in {secs} s");
                 // One entry however often it happens (the counter says how often).
                 stats.problems.note(&text);
-                tokio::select! {
-                    _ = shutdown.cancelled() => return Ok(()),
-                    _ = tokio::time::sleep(pause) => {}
-                }
-                pause = (pause * 2).min(std::time::Duration::from_secs(30));
             }
+            Ok(End::NetworkChanged(new)) => {
+                stats.network_rejoins.fetch_add(1, Relaxed);
+                let new: Vec<String> = new.iter().map(ToString::to_string).collect();
+                tracing::info!(
+                    "ros2: network address {} appeared: rejoining DDS domain {domain} in \
+                     {secs} s, so that participants there and the agent discover each other",
+                    new.join(", ")
+                );
+            }
+            Err(e @ Ros2Error::Participant { .. }) => {
+                tracing::error!("{e}; trying again in {secs} s");
+                stats
+                    .problems
+                    .note(e.to_string().trim_start_matches("ros2: "));
+            }
+            Err(e) => return Err(e),
         }
+        tokio::select! {
+            _ = shutdown.cancelled() => return Ok(()),
+            _ = tokio::time::sleep(pause) => {}
+        }
+        pause = (pause * 2).min(std::time::Duration::from_secs(30));
     }
 }
 
@@ -488,6 +579,9 @@ async fn run_participant(
     shutdown: &CancellationToken,
 ) -> Result<End, Ros2Error> {
     let domain = opts.domain_id;
+    // Before the participant looks: an address that appears in between is taken for new
+    // at the first check (one rejoin too many), never missed.
+    let mut addresses = DdsAddresses::now().unwrap_or_default();
     let dp = DomainParticipant::new(domain).map_err(|e| Ros2Error::Participant {
         domain,
         cause: e.to_string(),
@@ -559,6 +653,10 @@ async fn run_participant(
                 // manual liveliness as asserted); refused once that thread has ended.
                 if bridge.dp.assert_liveliness().is_err() {
                     break End::ParticipantStopped;
+                }
+                let new = addresses.appeared(DdsAddresses::now());
+                if !new.is_empty() {
+                    break End::NetworkChanged(new);
                 }
             }
             _ = tick.tick() => {
@@ -862,5 +960,51 @@ fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
             tracing::warn!("ros2: cannot write {name} into the graph: {e}");
             None
         }
+    }
+}
+#[cfg(test)]
+mod tests {
+    use super::{DdsAddress, DdsAddresses};
+
+    fn set(list: &[(&str, u32, [u8; 4])]) -> Option<DdsAddresses> {
+        let seen = list
+            .iter()
+            .map(|(interface, index, a)| DdsAddress {
+                interface: (*interface).into(),
+                index: *index,
+                addr: (*a).into(),
+            })
+            .collect();
+        Some(DdsAddresses { seen })
+    }
+
+    #[test]
+    fn an_address_that_appears_is_reported_once_and_one_that_goes_is_not() {
+        let mut a = DdsAddresses::default();
+        let lo = ("lo", 1, [127, 0, 0, 1]);
+        let wlan = ("wlan0", 3, [10, 0, 0, 5]);
+        assert_eq!(
+            a.appeared(set(&[lo])).len(),
+            1,
+            "the first look after an empty one"
+        );
+        assert!(a.appeared(set(&[lo])).is_empty());
+        let new = a.appeared(set(&[lo, wlan]));
+        assert_eq!(new.len(), 1);
+        assert_eq!(new[0].to_string(), "wlan0 10.0.0.5");
+        assert!(a.appeared(set(&[lo, wlan])).is_empty(), "reported once");
+        assert!(a.appeared(set(&[lo])).is_empty(), "gone: nothing to join");
+        assert_eq!(a.appeared(set(&[lo, wlan])).len(), 1, "back: joined again");
+        let replugged = ("wlan0", 4, [10, 0, 0, 5]);
+        assert_eq!(
+            a.appeared(set(&[lo, replugged])).len(),
+            1,
+            "the same address on a new device (its memberships went with the old one)"
+        );
+        assert!(
+            a.appeared(None).is_empty(),
+            "no answer from the system: no conclusion"
+        );
+        assert!(a.appeared(set(&[lo, replugged])).is_empty());
     }
 }

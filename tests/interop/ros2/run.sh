@@ -43,6 +43,14 @@
 #  10. the agent stopped (SIGSTOP) and continued (SIGCONT), then traced by strace for a
 #      second (which ends rustdds' threads: the bridge rejoins the graph by itself);
 #      /add_two_ints and the topics cross again after each.
+#  11. the robot's network up after the agent: a second robot's agent starts in a
+#      namespace of its own with no multicast-capable interface (its hub link on a veth
+#      with multicast off, as before DHCP brings up the robot's LAN), then the robot's
+#      LAN appears (a veth to a third namespace, another computer of the robot, where a
+#      Cyclone node publishes /late_topic): the agent rejoins DDS on it by itself and
+#      /robot2/late_topic reaches roslibpy at the hub. Before, the agent alone for 3 s
+#      with no network at all: rustdds' warning about its locators (several a second
+#      then) is in its log once, not hundreds of times.
 # Every step runs under `timeout`, every background process under a longer one; on exit
 # (trap) the processes are stopped and the namespace is deleted. Under 3 minutes.
 # Step 0 checks the Cyclone peers' own plumbing before any of that.
@@ -113,9 +121,14 @@ ros2_cleanup() {
         for pid in $(ip netns pids "$netns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
         ip netns del "$netns" 2>/dev/null || echo "warning: could not delete network namespace $netns" >&2
     fi
+    for ns in "${more_netns[@]}"; do # step 11's
+        for pid in $(ip netns pids "$ns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
+        ip netns del "$ns" 2>/dev/null || echo "warning: could not delete network namespace $ns" >&2
+    done
     (exit "$rc")
     interop_cleanup
 }
+more_netns=()
 trap ros2_cleanup EXIT
 ip netns add "$netns" || { echo "FAIL: cannot create network namespace $netns (root with CAP_SYS_ADMIN needed)" >&2; exit 1; }
 netns_made=1
@@ -164,6 +177,7 @@ py "$here/ros2_peer.py" msg-package "$tmp/msgs"
 # --- hub, with tokens; robots may call the cloud's services
 admin() { ns_run 30 "$bin" admin --data-dir "$tmp/hub-data" "$@"; }
 robot_token="$(admin token robot "$robot")"
+robot2_token="$(admin token robot robot2)" # step 11's robot
 op_token="$(admin token operator interop --group admin)"
 admin rules import - >/dev/null <<'RULES'
 rules:
@@ -172,9 +186,11 @@ rules:
     ops: [call_service, send_action_goal]
 RULES
 : >"$tmp/hub.log"; : >"$tmp/agent.log"; : >"$tmp/graph.log"; : >"$tmp/serve.log"
-ns_bg "$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
+# Every address of the namespace: step 11's robot reaches the hub over a veth.
+ns_bg "$bin" hub --listen 0.0.0.0:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
 pids+=($!)
-hub_addr="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on ([0-9.:]+)$' "hub start" "${pids[-1]}")"
+hub_port="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on [0-9.]+:([0-9]+)$' "hub start" "${pids[-1]}")"
+hub_addr="127.0.0.1:$hub_port"
 hub_url="ws://$hub_addr/?token=$op_token"
 echo "hub: ws://$hub_addr/"
 
@@ -438,6 +454,66 @@ if [ -n "$agent_proc" ]; then
         echo "note: strace did not end rustdds' threads this time (nothing to rejoin)"
     fi
     kill -0 "$agent_proc" 2>/dev/null || fail "the agent died after being stopped, continued and traced"
+fi
+
+step "11. the robot's network comes up after the agent started"
+# Namespaces: R, robot2's computer (lo, no multicast); L, another computer of robot2.
+ns_r="flr2-$$"; ns_l="fll2-$$"
+ip netns add "$ns_r" && more_netns+=("$ns_r")
+ip netns add "$ns_l" && more_netns+=("$ns_l")
+in_r=(ip netns exec "$ns_r"); in_l=(ip netns exec "$ns_l")
+cat >"$tmp/agent-r2.yaml" <<EOF
+hub: ws://10.231.0.1:$hub_port/
+name: robot2
+token: $robot2_token
+local_rosbridge: null
+ros2:
+  publish: { include: [/late_topic], exclude: [] }
+EOF
+"${in_r[@]}" ip link set lo up
+"${in_l[@]}" ip link set lo up
+# First with no network at all (a robot at boot): rustdds warns several times a second
+# about its own discovery readers then, each line over a kilobyte. The stimulus is three
+# seconds of that; the agent's log must hold the warning once, not hundreds of times.
+"${in_r[@]}" timeout -s INT 3 "$bin" agent --config "$tmp/agent-r2.yaml" >"$tmp/agent-r2-bare.log" 2>&1 || true
+locator_lines="$(grep -c 'No locators' "$tmp/agent-r2-bare.log" || true)"
+log_bytes="$(wc -c <"$tmp/agent-r2-bare.log")"
+if [ "$locator_lines" -le 1 ] && [ "$log_bytes" -lt 20000 ]; then
+    echo "ok: 3 s without a network: rustdds' repeated warning logged $locator_lines time(s), $log_bytes bytes of log"
+else
+    fail "3 s without a network: rustdds' 'No locators' warning logged $locator_lines times, $log_bytes bytes of log (a flood fills a robot's disk)"
+fi
+# The hub link: a veth with multicast off, so no interface of R carries DDS yet.
+ip link add "flu$$a" type veth peer name "flu$$b"
+ip link set "flu$$a" netns "$netns"; ip link set "flu$$b" netns "$ns_r"
+"${in_ns[@]}" ip addr add 10.231.0.1/30 dev "flu$$a"
+"${in_r[@]}" ip addr add 10.231.0.2/30 dev "flu$$b"
+"${in_ns[@]}" ip link set "flu$$a" up multicast off
+"${in_r[@]}" ip link set "flu$$b" up multicast off
+"${in_r[@]}" timeout --kill-after=5 120 "$bin" agent --config "$tmp/agent-r2.yaml" >"$tmp/agent-r2.log" 2>&1 &
+pids+=($!)
+wait_for_line "$tmp/agent-r2.log" '(joined DDS domain)' "robot2's agent joining DDS" "${pids[-1]}" >/dev/null \
+    || fail "robot2's agent did not join DDS"
+# The stimulus: three seconds without a network for DDS (rustdds warns about its own
+# discovery readers several times a second then); what follows waits under timeouts.
+sleep 3
+# The robot's LAN appears: a veth to L, multicast on, where a Cyclone node publishes.
+ip link add "fls$$a" type veth peer name "fls$$b"
+ip link set "fls$$a" netns "$ns_r"; ip link set "fls$$b" netns "$ns_l"
+"${in_r[@]}" ip addr add 10.231.1.1/24 dev "fls$$a"
+"${in_l[@]}" ip addr add 10.231.1.2/24 dev "fls$$b"
+"${in_r[@]}" ip link set "fls$$a" up multicast on
+"${in_l[@]}" ip link set "fls$$b" up multicast on
+"${in_l[@]}" ip route add 224.0.0.0/4 dev "fls$$b"
+"${in_l[@]}" timeout --kill-after=5 90 "$python" "$here/ros2_peer.py" late >"$tmp/late-r2.log" 2>&1 &
+pids+=($!)
+ns_run 60 "$python" "$here/hub_peer.py" check-late --hub-url "$hub_url" --robot robot2 \
+    || fail "/robot2/late_topic from a computer on a network that came up after the agent started"
+clean_r2="$(sed 's/\x1b\[[0-9;]*m//g' "$tmp/agent-r2.log")"
+if grep -q "network address fls$$a 10.231.1.1 appeared" <<<"$clean_r2"; then
+    echo "ok: the agent said why it rejoined: $(grep -o 'ros2: network address.*' <<<"$clean_r2" | head -n1 | cut -c1-120)"
+else
+    fail "robot2's agent did not log the address that appeared"
 fi
 
 kill -0 "$graph_pid" 2>/dev/null || fail "the Cyclone graph (ros2_peer.py graph) died"
