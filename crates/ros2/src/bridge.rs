@@ -122,6 +122,9 @@ pub struct Stats {
     pub participant_restarts: AtomicU64,
     /// Times the bridge rejoined the graph because a network address appeared ([`run`]).
     pub network_rejoins: AtomicU64,
+    /// Times it rejoined because rustdds had lost a participant that still announced
+    /// itself ([`crate::lost_peers`]).
+    pub stranded_peer_rejoins: AtomicU64,
     /// Each unknown type and type mismatch as its log line says it.
     pub problems: Problems,
 }
@@ -137,6 +140,7 @@ impl AdapterReport for Stats {
             ("type_mismatches", get(&self.type_mismatches)),
             ("participant_restarts", get(&self.participant_restarts)),
             ("network_rejoins", get(&self.network_rejoins)),
+            ("stranded_peer_rejoins", get(&self.stranded_peer_rejoins)),
         ]
     }
 
@@ -439,6 +443,9 @@ enum End {
     ParticipantStopped,
     /// Addresses appeared that the participant does not use (see [`DdsAddresses`]).
     NetworkChanged(Vec<DdsAddress>),
+    /// rustdds lost this participant by lease and does not take it back, though it still
+    /// announces itself (see [`crate::lost_peers`]).
+    StrandedPeer(crate::lost_peers::Prefix),
 }
 
 /// One IPv4 address of a multicast-capable interface: where rustdds joins DDS discovery.
@@ -516,6 +523,8 @@ impl DdsAddresses {
 ///   alive but carries nothing. The bridge checks every [`LIVENESS_PERIOD`] that the
 ///   discovery thread still takes commands.
 /// - a network address appeared ([`DdsAddresses`]).
+/// - rustdds lost a participant by lease that still announces itself, as after a short
+///   outage of the robot's network ([`crate::lost_peers`]).
 /// - making it failed (no port free, for example): tried again.
 ///
 /// Each time after 1 s, doubling to 30 s while participants keep ending within a minute.
@@ -554,6 +563,15 @@ pub async fn run(
                     "ros2: network address {} appeared: rejoining DDS domain {domain} in \
                      {secs} s, so that participants there and the agent discover each other",
                     new.join(", ")
+                );
+            }
+            Ok(End::StrandedPeer(prefix)) => {
+                stats.stranded_peer_rejoins.fetch_add(1, Relaxed);
+                let prefix: String = prefix.iter().map(|b| format!("{b:02x}")).collect();
+                tracing::warn!(
+                    "ros2: participant {prefix} still announces itself, but rustdds dropped it \
+                     when its lease ran out (a network outage?) and does not take it back: \
+                     rejoining DDS domain {domain} in {secs} s so that it is discovered again"
                 );
             }
             Err(e @ Ros2Error::Participant { .. }) => {
@@ -645,6 +663,20 @@ async fn run_participant(
     held_tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
     let mut alive_tick = tokio::time::interval(LIVENESS_PERIOD);
     alive_tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    let status = bridge.dp.status_listener();
+    let mut events = status.as_async_status_stream();
+    let mut lost = crate::lost_peers::LostPeers::default();
+    let mut announcements =
+        match crate::lost_peers::Announcements::open(domain, addresses.seen.iter().map(|a| a.addr))
+        {
+            Ok(a) => Some(a),
+            Err(e) => {
+                // Without a network there is nothing to lose; the rejoin on a new address
+                // opens it again.
+                tracing::debug!("ros2: not listening to discovery announcements: {e}");
+                None
+            }
+        };
     let end = loop {
         tokio::select! {
             _ = shutdown.cancelled() => break End::Shutdown,
@@ -657,6 +689,9 @@ async fn run_participant(
                 let new = addresses.appeared(DdsAddresses::now());
                 if !new.is_empty() {
                     break End::NetworkChanged(new);
+                }
+                if let Some(p) = lost.stranded(Instant::now()) {
+                    break End::StrandedPeer(p);
                 }
             }
             _ = tick.tick() => {
@@ -673,6 +708,14 @@ async fn run_participant(
                 }
             },
             Some(m) = peer_rx.recv() => services::on_peer(&bridge, m),
+            Some(ev) = events.next() => lost.on_event(&ev, Instant::now()),
+            heard = crate::lost_peers::next(&mut announcements) => match heard {
+                Ok(sender) => lost.heard(sender, Instant::now()),
+                Err(e) => {
+                    tracing::debug!("ros2: discovery announcements: {e}; not listening any more");
+                    announcements = None;
+                }
+            },
             _ = held_tick.tick(), if holding(&bridge) => release_held(&bridge),
         }
     };

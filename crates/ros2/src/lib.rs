@@ -24,6 +24,7 @@
 //! - [`node_info`]: the agent as a node in `ros_discovery_info` (`ros2 node list`).
 
 pub mod bridge;
+mod lost_peers;
 pub mod names;
 pub mod node_info;
 pub mod offered_actions;
