@@ -1005,6 +1005,7 @@ fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
         }
     }
 }
+
 #[cfg(test)]
 mod tests {
     use super::{DdsAddress, DdsAddresses};
