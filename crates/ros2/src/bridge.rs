@@ -167,30 +167,43 @@ struct Down {
 /// of when the writer was made.
 const DOWN_MATCH_WAIT: std::time::Duration = std::time::Duration::from_millis(1000);
 
+/// How long held messages still wait once the bridge's writer has matched the readers:
+/// matching is two-sided, and DDS tells only the writer's side. The reader's side takes
+/// the writer's announcement on its own discovery thread (Cyclone: a queue of its own),
+/// and until it has, it drops what the writer sends. On a loaded machine that took
+/// longer than sending the first message right after the writer's side matched (the
+/// ROS 2 suite's step 2c failed once in CI that way).
+const DOWN_REMOTE_GRACE: std::time::Duration = std::time::Duration::from_millis(150);
+
 /// A new writer's messages, held until it has matched the local readers of its topic
-/// that discovery knew of when it was made (or [`DOWN_MATCH_WAIT`] has passed). A
-/// volatile reader only gets what is written after it is matched: without this, a
-/// node waiting for a hub topic missed its first message, written while DDS was still
-/// matching the bridge's new writer with it.
+/// that discovery knew of when it was made, and [`DOWN_REMOTE_GRACE`] more (or until
+/// [`DOWN_MATCH_WAIT`] has passed). A volatile reader only gets what is written after it
+/// is matched: without this, a node waiting for a hub topic missed its first message,
+/// written while DDS was still matching the bridge's new writer with it.
 struct Held {
     readers: i32,
     until: Instant,
+    /// When the writer's side had matched every known reader.
+    matched_at: Option<Instant>,
     bodies: std::collections::VecDeque<Bytes>,
 }
 
 impl Down {
     /// Whether held messages may go: every known reader matched, or waited long enough.
     fn matched(&mut self, now: Instant) -> bool {
-        let Some(h) = &self.held else {
+        let Some(h) = &mut self.held else {
             return true;
         };
-        let mut matched = None;
         while let Some(ev) = self.writer.try_recv_status() {
-            if let rustdds::DataWriterStatus::PublicationMatched { current, .. } = ev {
-                matched = Some(current.count());
+            if let rustdds::DataWriterStatus::PublicationMatched { current, .. } = ev
+                && current.count() >= h.readers
+            {
+                h.matched_at.get_or_insert(now);
             }
         }
-        matched.is_some_and(|m| m >= h.readers) || now >= h.until
+        h.matched_at
+            .is_some_and(|t| now.duration_since(t) >= DOWN_REMOTE_GRACE)
+            || now >= h.until
     }
 
     /// Writes `body`, or holds it while the writer is not matched yet (the oldest held
@@ -991,6 +1004,7 @@ fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
             let held = (readers > 0).then(|| Held {
                 readers: i32::try_from(readers).unwrap_or(i32::MAX),
                 until: Instant::now() + DOWN_MATCH_WAIT,
+                matched_at: None,
                 bodies: Default::default(),
             });
             Some(Down {
