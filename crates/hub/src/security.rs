@@ -58,10 +58,11 @@ pub struct HubGate {
     /// The robot an agent link speaks for (its HELLO name): what it publishes under that
     /// namespace is the robot's own output, not an input to audit.
     acting_as: Option<String>,
-    /// The last [`HubGate::robot_input`] answer: the robot name asked about, the
-    /// registry's generation then, and the answer. A client mostly publishes on one
-    /// namespace, so this saves a registry lookup per message.
-    last_robot: Option<(String, u64, bool)>,
+    /// The last [`HubGate::robot_input`] answer: the topic asked about, the registry's
+    /// generation then, and the answer. A client mostly publishes one topic after
+    /// another, so this saves splitting the name and a registry lookup per message (the
+    /// identity and `acting_as` never change for a gate).
+    last_input: Option<(String, u64, bool)>,
 }
 
 impl HubGate {
@@ -72,7 +73,7 @@ impl HubGate {
             registry,
             reported: Default::default(),
             acting_as: None,
-            last_robot: None,
+            last_input: None,
         }
     }
 
@@ -96,6 +97,28 @@ impl HubGate {
     /// Whether `name` is an input of some online robot: a topic in its namespace that the
     /// robot did not publish itself. Publishing there acts on a robot and is audited.
     fn robot_input(&mut self, name: &str) -> bool {
+        let generation = self.registry.generation();
+        if let Some((topic, g, answer)) = &self.last_input
+            && *g == generation
+            && topic == name
+        {
+            return *answer;
+        }
+        let answer = self.robot_input_now(name);
+        match &mut self.last_input {
+            // The same allocation for the next name, most of the time.
+            Some((topic, g, a)) => {
+                topic.clear();
+                topic.push_str(name);
+                (*g, *a) = (generation, answer);
+            }
+            None => self.last_input = Some((name.to_owned(), generation, answer)),
+        }
+        answer
+    }
+
+    /// [`HubGate::robot_input`] without the cache.
+    fn robot_input_now(&self, name: &str) -> bool {
         let Some(first) = name.strip_prefix('/').and_then(|n| n.split('/').next()) else {
             return false;
         };
@@ -107,16 +130,7 @@ impl HubGate {
         if self.acting_as.as_deref() == Some(first) {
             return false;
         }
-        let generation = self.registry.generation();
-        if let Some((robot, g, online)) = &self.last_robot
-            && *g == generation
-            && robot == first
-        {
-            return *online;
-        }
-        let online = self.registry.is_online(first);
-        self.last_robot = Some((first.to_owned(), generation, online));
-        online
+        self.registry.is_online(first)
     }
 }
 
@@ -178,7 +192,7 @@ impl Gate for HubGate {
             registry: self.registry.clone(),
             reported: Default::default(),
             acting_as: self.acting_as.clone(),
-            last_robot: None,
+            last_input: None,
         })
     }
 
