@@ -485,13 +485,18 @@ if [ "$locator_lines" -le 1 ] && [ "$log_bytes" -lt 20000 ]; then
 else
     fail "3 s without a network: rustdds' 'No locators' warning logged $locator_lines times, $log_bytes bytes of log (a flood fills a robot's disk)"
 fi
+# veth NAME NS_A ADDR_A NS_B ADDR_B on|off: a cable NAMEa (in NS_A) - NAMEb (in NS_B),
+# both ends up, multicast on or off.
+veth() {
+    ip link add "$1a" type veth peer name "$1b"
+    ip link set "$1a" netns "$2"; ip link set "$1b" netns "$4"
+    ip netns exec "$2" ip addr add "$3" dev "$1a"
+    ip netns exec "$4" ip addr add "$5" dev "$1b"
+    ip netns exec "$2" ip link set "$1a" up multicast "$6"
+    ip netns exec "$4" ip link set "$1b" up multicast "$6"
+}
 # The hub link: a veth with multicast off, so no interface of R carries DDS yet.
-ip link add "flu$$a" type veth peer name "flu$$b"
-ip link set "flu$$a" netns "$netns"; ip link set "flu$$b" netns "$ns_r"
-"${in_ns[@]}" ip addr add 10.231.0.1/30 dev "flu$$a"
-"${in_r[@]}" ip addr add 10.231.0.2/30 dev "flu$$b"
-"${in_ns[@]}" ip link set "flu$$a" up multicast off
-"${in_r[@]}" ip link set "flu$$b" up multicast off
+veth "flu$$" "$netns" 10.231.0.1/30 "$ns_r" 10.231.0.2/30 off
 "${in_r[@]}" timeout --kill-after=5 120 "$bin" agent --config "$tmp/agent-r2.yaml" >"$tmp/agent-r2.log" 2>&1 &
 pids+=($!)
 wait_for_line "$tmp/agent-r2.log" '(joined DDS domain)' "robot2's agent joining DDS" "${pids[-1]}" >/dev/null \
@@ -500,12 +505,7 @@ wait_for_line "$tmp/agent-r2.log" '(joined DDS domain)' "robot2's agent joining 
 # discovery readers several times a second then); what follows waits under timeouts.
 sleep 3
 # The robot's LAN appears: a veth to L, multicast on, where a Cyclone node publishes.
-ip link add "fls$$a" type veth peer name "fls$$b"
-ip link set "fls$$a" netns "$ns_r"; ip link set "fls$$b" netns "$ns_l"
-"${in_r[@]}" ip addr add 10.231.1.1/24 dev "fls$$a"
-"${in_l[@]}" ip addr add 10.231.1.2/24 dev "fls$$b"
-"${in_r[@]}" ip link set "fls$$a" up multicast on
-"${in_l[@]}" ip link set "fls$$b" up multicast on
+veth "fls$$" "$ns_r" 10.231.1.1/24 "$ns_l" 10.231.1.2/24 on
 "${in_l[@]}" ip route add 224.0.0.0/4 dev "fls$$b"
 "${in_l[@]}" timeout --kill-after=5 90 "$python" "$here/ros2_peer.py" late >"$tmp/late-r2.log" 2>&1 &
 pids+=($!)
