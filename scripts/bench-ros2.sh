@@ -6,6 +6,10 @@
 # a rosbridge-style bridge (decode, JSON with base64 data, WebSocket) feeds its own client.
 # Reports each bridge's CPU (% of one core, from /proc/<pid>/stat over the measured
 # window) and memory (VmRSS at the end, VmHWM), and latency p50/p99.
+# The floor under any bridge of this stream, in the same window: what Cyclone DDS's own (C)
+# threads spend receiving it in a plain subscriber on the robot, plus what writing the
+# same bytes from memory into a loopback TCP connection costs (`fleetlink bench
+# copy-floor`, its sender thread).
 #
 #   cargo build --release -p fleetlink && sudo scripts/bench-ros2.sh [SECONDS] [POINTS]
 #
@@ -79,20 +83,55 @@ peer hub-sub --url "ws://127.0.0.1:18081/?token=$op_token" --seconds "$seconds" 
 pids+=($!)
 hubsub=$!
 # The floor: a Cyclone subscriber on the robot, no bridge at all.
-peer dds-sub --seconds "$seconds" >"$tmp/ddssub.log" 2>&1 &
+# It outlives the window by a few seconds: its Cyclone threads are counted at both ends.
+peer dds-sub --seconds "$((seconds + 5))" >"$tmp/ddssub.log" 2>&1 &
 pids+=($!)
+ddssub=$!
 if [ -n "${LOCAL_PROBE:-}" ]; then peer hub-sub --url "ws://127.0.0.1:18083/" --topic /points --seconds "$seconds" >"$tmp/localsub.log" 2>&1 & pids+=($!); fi
 peer style-sub --url "ws://127.0.0.1:18082/" --seconds "$seconds" >"$tmp/stylesub.log" 2>&1 &
 pids+=($!)
 stylesub=$!
 wait_line "$tmp/hubsub.log" "ready"
 wait_line "$tmp/stylesub.log" "ready"
+wait_line "$tmp/ddssub.log" "ready"
+dds_pid="$(in_this_ns "bench_peer.py dds-sub")"
+[ -n "$dds_pid" ] || { echo "the Cyclone subscriber's process was not found" >&2; exit 1; }
+# Writing the stream from memory to a loopback TCP connection: the least a bridge pays to
+# hand the bytes on (the CDR of the cloud plus its header is a little over the data).
+in_ns "$bin" bench copy-floor --size "$((npoints * 16 + 128))" --rate 10 --seconds "$seconds" --json \
+    >"$tmp/copyfloor.log" 2>&1 &
+pids+=($!)
+copyfloor=$!
 
 ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
+# The threads Cyclone DDS names itself (recv, tev, dq.builtins, ...), not the Python
+# interpreter's, which carry the process's own name; the comm field may hold spaces.
+thread_ticks() { sed 's/.*) //' "$1/stat" 2>/dev/null | awk '{print $12 + $13}' || echo 0; }
+cyclone_ticks() {
+    local main t sum=0
+    main="$(cat "/proc/$1/comm")"
+    for t in /proc/"$1"/task/*; do
+        [ "$(cat "$t/comm" 2>/dev/null)" = "$main" ] && continue
+        sum=$((sum + $(thread_ticks "$t")))
+    done
+    echo "$sum"
+}
+# The agent's rustdds threads (named "RustDDS ..."): its DDS side, beside the uplink.
+rustdds_ticks() {
+    local t sum=0
+    for t in /proc/"$1"/task/*; do
+        case "$(cat "$t/comm" 2>/dev/null)" in RustDDS*) sum=$((sum + $(thread_ticks "$t"))) ;; esac
+    done
+    echo "$sum"
+}
 hz="$(getconf CLK_TCK)"
-t0=$(date +%s.%N); a0=$(ticks "$agent_pid"); s0=$(ticks "$style_pid")
+t0=$(date +%s.%N); a0=$(ticks "$agent_pid"); s0=$(ticks "$style_pid"); d0=$(cyclone_ticks "$dds_pid")
+r0=$(rustdds_ticks "$agent_pid")
 wait "$hubsub" "$stylesub" || true
-t1=$(date +%s.%N); a1=$(ticks "$agent_pid"); s1=$(ticks "$style_pid")
+t1=$(date +%s.%N); a1=$(ticks "$agent_pid"); s1=$(ticks "$style_pid"); d1=$(cyclone_ticks "$dds_pid")
+r1=$(rustdds_ticks "$agent_pid")
+wait "$copyfloor" "$ddssub" || true
+write_cpu="$(sed -n 's/.*"sender_cpu_percent":\([0-9.]*\).*/\1/p' "$tmp/copyfloor.log" | awk '{printf "%.2f", $1}')"
 mem() { awk '/^VmRSS|^VmHWM/ {printf "%s %.1f MB  ", $1, $2/1024}' "/proc/$1/status"; }
 cpu() { awk -v a="$1" -v b="$2" -v t0="$t0" -v t1="$t1" -v hz="$hz" 'BEGIN {printf "%.2f", 100 * (b - a) / hz / (t1 - t0)}'; }
 
@@ -100,8 +139,15 @@ size=$((npoints * 16))
 echo "ROS 2 bridging, PointCloud2 of $npoints points ($size data bytes) at 10 Hz, ${seconds} s measured"
 echo "machine: $(nproc) cores, $(awk -F: '/model name/ {print $2; exit}' /proc/cpuinfo | sed 's/^ *//')"
 printf '%-34s cpu %6s %% of one core  %s latency %s\n' "fleetlink agent (+ hub)" "$(cpu "$a0" "$a1")" "$(mem "$agent_pid")" "$(tail -n1 "$tmp/hubsub.log")"
+printf '%-34s cpu %6s %% of one core\n' "  its rustdds threads" "$(cpu "$r0" "$r1")"
 printf '%-34s cpu %6s %% of one core  %s latency %s\n' "rosbridge-style Python bridge" "$(cpu "$s0" "$s1")" "$(mem "$style_pid")" "$(tail -n1 "$tmp/stylesub.log")"
 printf '%-34s latency %s\n' "DDS subscriber on the robot (floor)" "$(tail -n1 "$tmp/ddssub.log")"
+dds_cpu="$(cpu "$d0" "$d1")"
+printf '%-34s cpu %6s %% of one core\n' "  its Cyclone DDS threads (C)" "$dds_cpu"
+printf '%-34s cpu %6s %% of one core\n' "writing the stream to loopback TCP" "${write_cpu:--}"
+[ -n "$write_cpu" ] && printf '%-34s cpu %6s %% of one core (agent / floor: %sx)\n' "floor for any bridge (sum)" \
+    "$(awk -v a="$dds_cpu" -v b="$write_cpu" 'BEGIN {printf "%.2f", a + b}')" \
+    "$(awk -v x="$(cpu "$a0" "$a1")" -v a="$dds_cpu" -v b="$write_cpu" 'BEGIN {if (a + b > 0) printf "%.1f", x / (a + b); else print "inf"}')"
 # The publisher's own time from stamp to the end of write() is inside every latency above.
 wait "$pub_pid" 2>/dev/null || true
 printf '%-34s %s\n' "publisher: stamp -> write() done" "$(grep '"sent"' "$tmp/pub.log" | tail -n1)"

@@ -11,6 +11,11 @@
 //! acknowledgement or scheduling — so a bridge carrying the same stream cannot cost less,
 //! and its figure minus this one is what its own work costs. `scripts/bench-ros1.sh`
 //! runs it beside the agent and rosbridge, in the same measured window.
+//!
+//! The sender's thread is measured too: writing the stream from memory into a loopback
+//! connection is the least any bridge pays to hand its bytes to a hub, whatever it read
+//! them from. `scripts/bench-ros2.sh` adds that to what Cyclone DDS's own threads spend
+//! receiving the stream.
 
 use std::io::{Read, Write};
 use std::net::{TcpListener, TcpStream};
@@ -66,6 +71,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
     });
     let tid = tid_rx.recv().context("the relay thread did not start")?;
+    let sender_tid = this_thread_id()?;
     let mut tx = TcpStream::connect(relay_addr).context("connecting to the relay")?;
     tx.set_nodelay(true)?;
     let mut message = vec![0x5a_u8; 4 + args.size];
@@ -73,15 +79,20 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let period = Duration::from_secs_f64(1.0 / args.rate);
     let start = Instant::now();
     let mut next = start;
-    let mut window: Option<(Instant, f64)> = None;
+    // (start, relay CPU, sender CPU)
+    let mut window: Option<(Instant, f64, f64)> = None;
     let mut sent = 0u64;
     loop {
         let now = Instant::now();
         if window.is_none() && now >= start + WARMUP {
-            window = Some((now, thread_cpu_seconds(tid)?));
+            window = Some((
+                now,
+                thread_cpu_seconds(tid)?,
+                thread_cpu_seconds(sender_tid)?,
+            ));
             sent = 0;
         }
-        if let Some((t0, _)) = window
+        if let Some((t0, _, _)) = window
             && now >= t0 + Duration::from_secs_f64(args.seconds)
         {
             break;
@@ -93,23 +104,26 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             std::thread::sleep(wait);
         }
     }
-    let (t0, cpu0) = window.expect("the window opens before it closes");
+    let (t0, cpu0, send0) = window.expect("the window opens before it closes");
     let cpu1 = thread_cpu_seconds(tid)?;
+    let send1 = thread_cpu_seconds(sender_tid)?;
     let secs = t0.elapsed().as_secs_f64();
     drop(tx);
     relay_thread
         .join()
         .map_err(|_| anyhow::anyhow!("the relay thread panicked"))??;
     let percent = (cpu1 - cpu0) * 100.0 / secs;
+    let sender = (send1 - send0) * 100.0 / secs;
     if args.json {
         println!(
             "{}",
             json!({"size": args.size, "rate": args.rate, "seconds": secs, "messages": sent,
-                   "relay_cpu_percent": percent})
+                   "relay_cpu_percent": percent, "sender_cpu_percent": sender})
         );
     } else {
         println!(
-            "plain TCP relay, {sent} messages of {} bytes in {secs:.1} s: {percent:.2} % of one core",
+            "plain TCP relay, {sent} messages of {} bytes in {secs:.1} s: {percent:.2} % of one core; \
+             writing them from memory: {sender:.2} %",
             args.size
         );
     }
