@@ -11,7 +11,9 @@ use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Instant;
 
-use fleetlink_proto::rosbridge::{Compression, Op, ParseError, Publish, Request, outbound};
+use fleetlink_proto::rosbridge::{
+    Compression, Op, ParseError, Publish, PublishId, Request, outbound,
+};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
 use serde_json::Value;
@@ -157,7 +159,13 @@ pub async fn serve<S>(
                 let bytes: &bytes::Bytes = text.as_ref();
                 // Nearly all traffic: a publish, its topic borrowed from the frame.
                 match Publish::from_json_text(text.as_str(), bytes) {
-                    Some(p) => Ok(Incoming::Publish(p)),
+                    Some(p) => match session.publish_now(p) {
+                        Some(rest) => Ok(rest),
+                        None => {
+                            tokio::task::consume_budget().await;
+                            continue;
+                        }
+                    },
                     None => match Request::from_json(bytes) {
                         Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
                             Some(whole) => whole.map(Incoming::Other),
@@ -170,7 +178,13 @@ pub async fn serve<S>(
             Ok(WsMessage::Binary(b)) => {
                 binary = b;
                 match Publish::from_cbor_frame(&binary) {
-                    Some(p) => Ok(Incoming::Publish(p)),
+                    Some(p) => match session.publish_now(p) {
+                        Some(rest) => Ok(rest),
+                        None => {
+                            tokio::task::consume_budget().await;
+                            continue;
+                        }
+                    },
                     None => Request::from_cbor(&binary).map(Incoming::Other),
                 }
             }
@@ -191,6 +205,16 @@ pub async fn serve<S>(
         let step = async {
             match req {
                 Ok(Incoming::Publish(p)) => session.handle_publish(p).await,
+                Ok(Incoming::Refused(id, msg)) => {
+                    session.status("error", msg, id.value().as_ref()).await;
+                    session.clock.waited();
+                }
+                Ok(Incoming::Full(p, topic)) => {
+                    tracing::debug!("publish {}: no-drop queue full, waiting for room", p.topic);
+                    topic.stats.no_drop_flow.wait_room().await;
+                    session.clock.waited();
+                    session.handle_publish(p).await;
+                }
                 // Other operations are rare and may wait (a reply queue, a call): the next
                 // message's arrival is read from the clock again.
                 Ok(Incoming::Other(req)) => {
@@ -241,10 +265,16 @@ impl<S: Stream + Unpin> Stream for Waits<S> {
     }
 }
 
-/// An operation as read from a frame.
+/// An operation as read from a frame, when it needs more than the short path of a
+/// publish (`Session::publish_now`): something to wait for or to answer.
 enum Incoming<'a> {
-    /// The short path for a `publish` (JSON text or CBOR).
+    /// A `publish` read on the short path (JSON text or CBOR) from a client that has not
+    /// authenticated yet.
     Publish(Publish<'a>),
+    /// A publish refused, with the `status` text to answer it with.
+    Refused(PublishId<'a>, String),
+    /// A publish on a no-drop topic whose queue is full: sent once there is room.
+    Full(Publish<'a>, Arc<Topic>),
     Other(Request),
 }
 
@@ -445,6 +475,21 @@ impl Session {
     }
 
     /// A `publish` from the short path: what [`Session::handle`] does for one.
+    /// The short path of nearly every frame: a publish the topic takes at once is done
+    /// here, without the future and the select of the waiting path (whose state is
+    /// hundreds of bytes moved for each message). What it cannot finish comes back.
+    fn publish_now<'a>(&mut self, p: Publish<'a>) -> Option<Incoming<'a>> {
+        if self.gate.is_none() {
+            return Some(Incoming::Publish(p));
+        }
+        let Publish { id, topic, msg } = p;
+        match self.try_publish(&topic, msg) {
+            Ok(None) => None,
+            Ok(Some((msg, full))) => Some(Incoming::Full(Publish { id, topic, msg }, full)),
+            Err(text) => Some(Incoming::Refused(id, text)),
+        }
+    }
+
     async fn handle_publish(&mut self, p: Publish<'_>) {
         if self.gate.is_none() {
             let msg =
