@@ -542,6 +542,12 @@ impl<'a> Check<'a> {
 
     /// A string without escapes or control characters, as valid UTF-8.
     fn plain_string(&mut self) -> Option<&'a str> {
+        std::str::from_utf8(self.plain_bytes()?).ok()
+    }
+
+    /// The bytes of a string without escapes or control characters, not checked as UTF-8:
+    /// for keys and names compared with ASCII ones, which need no check.
+    fn plain_bytes(&mut self) -> Option<&'a [u8]> {
         self.ws();
         if self.b.get(self.pos) != Some(&b'"') {
             return None;
@@ -554,7 +560,7 @@ impl<'a> Check<'a> {
             return None;
         }
         self.pos = start + len + 1;
-        std::str::from_utf8(s).ok()
+        Some(s)
     }
 
     /// A number in JSON's grammar: its text, and whether it has a fraction or exponent.
@@ -623,10 +629,10 @@ impl<'a> Check<'a> {
         let mut seen = 0u64;
         if !self.eat(b'}') {
             loop {
-                let Some(key) = self.plain_string() else {
+                let Some(key) = self.plain_bytes() else {
                     return false;
                 };
-                let Some(i) = layout.fields.iter().position(|f| *f.name == *key) else {
+                let Some(i) = layout.fields.iter().position(|f| f.name.as_bytes() == key) else {
                     return false;
                 };
                 if seen & (1 << i) != 0 || !self.eat(b':') {
@@ -660,9 +666,9 @@ impl<'a> Check<'a> {
         if let Elem::Scalar(Scalar::U8) = f.elem {
             // JSON writes uint8[] as base64 text.
             use base64::Engine as _;
-            return self.plain_string().is_some_and(|text| {
+            return self.plain_bytes().is_some_and(|text| {
                 base64::engine::general_purpose::STANDARD
-                    .decode(text.as_bytes())
+                    .decode(text)
                     .is_ok_and(|b| len_ok(b.len()))
             });
         }
@@ -711,9 +717,9 @@ impl<'a> Check<'a> {
                 }
                 let (mut sec, mut nanosec) = (false, false);
                 for i in 0..2 {
-                    let slot = match self.plain_string() {
-                        Some("sec") if !sec => &mut sec,
-                        Some("nanosec") if !nanosec => &mut nanosec,
+                    let slot = match self.plain_bytes() {
+                        Some(b"sec") if !sec => &mut sec,
+                        Some(b"nanosec") if !nanosec => &mut nanosec,
                         _ => return false,
                     };
                     if !self.eat(b':') || !part(self) {

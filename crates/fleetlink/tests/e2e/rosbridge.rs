@@ -700,3 +700,45 @@ async fn parameters_are_kept_by_the_hub_across_restarts_checked_and_audited() {
         page.records
     );
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn publishes_under_another_spelling_arrive_and_bad_ones_are_answered_with_their_id() {
+    let hub = start_hub().await;
+    let mut c = Rosbridge::connect(&hub.ws_url()).await;
+    c.send(json!({"op": "advertise", "topic": "/spelled", "type": "std_msgs/msg/String"}))
+        .await;
+    c.send(json!({"op": "subscribe", "topic": "/spelled", "id": "s"}))
+        .await;
+    // The same topic without its leading slash, then as advertised: both are delivered
+    // (the short path knows the client's spellings one by one).
+    for (i, topic) in ["spelled", "/spelled", "spelled"].iter().enumerate() {
+        c.send(json!({"op": "publish", "topic": topic, "msg": {"data": format!("m{i}")}}))
+            .await;
+        let m = c.recv_op("publish").await;
+        assert_eq!(m["topic"], "/spelled", "{m}");
+        assert_eq!(m["msg"]["data"], format!("m{i}"), "{m}");
+    }
+    // A message of the wrong shape on a known topic, and one on a topic nobody
+    // advertised: each gets an error naming the topic and echoing the publish's id.
+    c.send(json!({"op": "publish", "id": "bad-1", "topic": "/spelled", "msg": {"data": 5}}))
+        .await;
+    let s = c.recv_op("status").await;
+    assert_eq!(s["id"], "bad-1", "{s}");
+    let text = s["msg"].as_str().unwrap();
+    assert!(text.contains("/spelled") && text.contains("data"), "{text}");
+    c.send(json!({"op": "publish", "id": "bad-2", "topic": "nowhere", "msg": {"data": "x"}}))
+        .await;
+    let s = c.recv_op("status").await;
+    assert_eq!(s["id"], "bad-2", "{s}");
+    let text = s["msg"].as_str().unwrap();
+    assert!(
+        text.contains("/nowhere") && text.contains("advertise"),
+        "{text}"
+    );
+    // The session keeps serving after both.
+    c.send(json!({"op": "publish", "topic": "/spelled", "msg": {"data": "after"}}))
+        .await;
+    let m = c.recv_op("publish").await;
+    assert_eq!(m["msg"]["data"], "after", "{m}");
+    hub.shutdown().await;
+}

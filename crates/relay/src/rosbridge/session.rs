@@ -278,6 +278,14 @@ enum Incoming<'a> {
     Other(Request),
 }
 
+/// What [`Session::publish_on_known`] did.
+enum Known {
+    /// The topic is one this client publishes: the publish's outcome.
+    Done(Result<Option<(Payload, Arc<Topic>)>, String>),
+    /// It is not (under that spelling): the message, untouched.
+    Not(Payload),
+}
+
 enum Reply {
     Frame(WsMessage),
     Close(CloseFrame),
@@ -700,48 +708,76 @@ impl Session {
         msg: Payload,
     ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
-        // two lookups by the client's spelling, no parse, no copy of the name.
-        let known = self.published.contains_key(topic);
-        let name: std::borrow::Cow<'_, str> = if known {
-            topic.into()
-        } else {
-            let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
-            name.as_str().to_owned().into()
+        // one lookup by the client's spelling, no parse, no copy of the name.
+        let msg = match self.publish_on_known(topic, msg) {
+            Known::Done(r) => return r,
+            Known::Not(msg) => msg,
         };
+        let name = TopicName::parse(topic).map_err(|e| format!("publish: {e}"))?;
         if !is_object(&msg) {
             return Err(format!("publish {name}: field 'msg' must be an object"));
         }
-        // Asked for every message: rules can change while a client publishes, and the
-        // gate's cache makes the repeat question cheap.
-        self.check("publish", &name, GateOp::Publish)?;
-        if !known && !self.published.contains_key(&*name) {
-            self.start_publishing(&name)?;
+        self.check("publish", name.as_str(), GateOp::Publish)?;
+        if !self.published.contains_key(name.as_str()) {
+            self.start_publishing(name.as_str())?;
         }
-        let p = self.published.get_mut(&*name).expect("inserted above");
-        if p.topic.stats.no_drop_flow.is_full() {
-            return Ok(Some((msg, p.topic.clone())));
+        match self.publish_on_known(name.as_str(), msg) {
+            Known::Done(r) => r,
+            Known::Not(_) => unreachable!("{name} was added to the published topics above"),
         }
-        // Checked and completed once here, for every subscriber.
-        let meta = p.topic.meta();
-        let msg = self
-            .router
-            .transcoder()
-            .normalize_cached(&meta.schema, msg, &mut p.normalize)
-            .map_err(|e| {
-                format!(
-                    "publish {name}: the message does not fit its type: {}",
-                    e.cause_text()
-                )
-            })?;
-        p.seq += 1;
-        let size = msg.len();
-        let (received, stamp) = self.clock.arrival();
-        p.topic
-            .publish_at(meta, self.client, p.seq, stamp, msg, received);
-        if let Some(g) = self.gate.as_mut() {
-            g.done(&name, GateOp::Publish, size);
-        }
-        Ok(None)
+    }
+
+    /// [`Session::try_publish`] on a topic this client publishes under exactly this
+    /// spelling; the message comes back untouched when it does not.
+    fn publish_on_known(&mut self, name: &str, msg: Payload) -> Known {
+        let Session {
+            published,
+            gate,
+            router,
+            clock,
+            client,
+            ..
+        } = self;
+        let Some(p) = published.get_mut(name) else {
+            return Known::Not(msg);
+        };
+        Known::Done((|| {
+            if !is_object(&msg) {
+                return Err(format!("publish {name}: field 'msg' must be an object"));
+            }
+            // Asked for every message: rules can change while a client publishes, and the
+            // gate's cache makes the repeat question cheap.
+            let gate = gate
+                .as_mut()
+                .ok_or_else(|| format!("publish {name}: authentication required"))?;
+            if !gate.allows(name, GateOp::Publish) {
+                return Err(format!(
+                    "publish {name}: not allowed for {}",
+                    gate.principal()
+                ));
+            }
+            if p.topic.stats.no_drop_flow.is_full() {
+                return Ok(Some((msg, p.topic.clone())));
+            }
+            // Checked and completed once here, for every subscriber.
+            let meta = p.topic.meta();
+            let msg = router
+                .transcoder()
+                .normalize_cached(&meta.schema, msg, &mut p.normalize)
+                .map_err(|e| {
+                    format!(
+                        "publish {name}: the message does not fit its type: {}",
+                        e.cause_text()
+                    )
+                })?;
+            p.seq += 1;
+            let size = msg.len();
+            let (received, stamp) = clock.arrival();
+            p.topic
+                .publish_at(meta, *client, p.seq, stamp, msg, received);
+            gate.done(name, GateOp::Publish, size);
+            Ok(None)
+        })())
     }
 
     /// The first publish on `name` without an `advertise`: rosbridge allows it on a topic
