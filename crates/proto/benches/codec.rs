@@ -7,7 +7,7 @@ use bytes::{Bytes, BytesMut};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fleetlink_proto::frame::{self, Frame, chunk_frames, encode_message};
 use fleetlink_proto::reassembly::Reassembler;
-use fleetlink_proto::rosbridge::{Request, outbound};
+use fleetlink_proto::rosbridge::{Publish, Request, outbound};
 
 fn message_frame(c: &mut Criterion) {
     let payload = vec![0x5a; 64];
@@ -116,6 +116,30 @@ fn rosbridge_parse(c: &mut Criterion) {
     c.bench_function("request_from_json_small_publish", |b| {
         b.iter(|| black_box(Request::from_json(black_box(text)).expect("valid request")));
     });
+    // The hub's short path for the publish of `fleetlink bench delivery` (64 bytes of
+    // data) and for roslibjs' shape of the same (an id before the topic).
+    let data = "x".repeat(64);
+    for (name, text) in [
+        (
+            "publish_from_json_text_64B",
+            format!(r#"{{"op":"publish","topic":"/bench","msg":{{"data":"{data}"}}}}"#),
+        ),
+        (
+            "publish_from_json_text_64B_with_id",
+            format!(
+                r#"{{"op":"publish","id":"publish:/bench:17","topic":"/bench","msg":{{"data":"{data}"}},"latch":false}}"#
+            ),
+        ),
+    ] {
+        // `from_json_text` wants the text as a view of the frame's own bytes.
+        let frame = Bytes::from(text);
+        let view = std::str::from_utf8(&frame).expect("ASCII");
+        c.bench_function(name, |b| {
+            b.iter(|| {
+                black_box(Publish::from_json_text(black_box(view), &frame).expect("a publish"))
+            });
+        });
+    }
 }
 
 criterion_group!(
