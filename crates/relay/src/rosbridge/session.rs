@@ -482,7 +482,6 @@ impl Session {
         self.status("error", msg, e.id.as_ref()).await;
     }
 
-    /// A `publish` from the short path: what [`Session::handle`] does for one.
     /// The short path of nearly every frame: a publish the topic takes at once is done
     /// here, without the future and the select of the waiting path (whose state is
     /// hundreds of bytes moved for each message). What it cannot finish comes back.
@@ -498,6 +497,7 @@ impl Session {
         }
     }
 
+    /// A `publish` from the short path: what [`Session::handle`] does for one.
     async fn handle_publish(&mut self, p: Publish<'_>) {
         if self.gate.is_none() {
             let msg =
@@ -643,18 +643,7 @@ impl Session {
 
     /// Whether the client may do `op` on `name`; the refusal text names both.
     pub(super) fn check(&mut self, verb: &str, name: &str, op: GateOp) -> Result<(), String> {
-        let gate = self
-            .gate
-            .as_mut()
-            .ok_or_else(|| format!("{verb} {name}: authentication required"))?;
-        if gate.allows(name, op) {
-            Ok(())
-        } else {
-            Err(format!(
-                "{verb} {name}: not allowed for {}",
-                gate.principal()
-            ))
-        }
+        check(&mut self.gate, verb, name, op).map(|_| ())
     }
 
     fn advertise(&mut self, topic: &str, type_name: &str, latch: bool) -> Result<(), String> {
@@ -747,15 +736,7 @@ impl Session {
             }
             // Asked for every message: rules can change while a client publishes, and the
             // gate's cache makes the repeat question cheap.
-            let gate = gate
-                .as_mut()
-                .ok_or_else(|| format!("publish {name}: authentication required"))?;
-            if !gate.allows(name, GateOp::Publish) {
-                return Err(format!(
-                    "publish {name}: not allowed for {}",
-                    gate.principal()
-                ));
-            }
+            let gate = check(gate, "publish", name, GateOp::Publish)?;
             if p.topic.stats.no_drop_flow.is_full() {
                 return Ok(Some((msg, p.topic.clone())));
             }
@@ -943,6 +924,27 @@ fn subscription_qos(
 }
 
 /// A message object is a JSON object or a CBOR map.
+/// Whether the session's client may do `op` on `name` (the gate, when it has
+/// authenticated); the refusal text names both.
+fn check<'g>(
+    gate: &'g mut Option<Box<dyn Gate>>,
+    verb: &str,
+    name: &str,
+    op: GateOp,
+) -> Result<&'g mut Box<dyn Gate>, String> {
+    let gate = gate
+        .as_mut()
+        .ok_or_else(|| format!("{verb} {name}: authentication required"))?;
+    if gate.allows(name, op) {
+        Ok(gate)
+    } else {
+        Err(format!(
+            "{verb} {name}: not allowed for {}",
+            gate.principal()
+        ))
+    }
+}
+
 fn is_object(p: &Payload) -> bool {
     match p.encoding {
         Encoding::Json => p.bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{'),
