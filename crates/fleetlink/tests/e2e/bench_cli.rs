@@ -100,3 +100,33 @@ async fn bench_relay_reports_an_unreachable_hub() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("cannot connect"), "{stderr}");
 }
+
+/// `bench copy-floor` (the floor rows of scripts/bench-ros1.sh and bench-ros2.sh): the
+/// messages go through in the window and both measured threads are reported. (The CPU
+/// figures themselves are clock ticks and may be zero over one second.)
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bench_copy_floor_reports_the_relay_and_the_sender() {
+    let out = tokio::time::timeout(
+        Duration::from_secs(60),
+        tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
+            .args(["bench", "copy-floor", "--size", "200000", "--rate", "20"])
+            .args(["--seconds", "1", "--json"])
+            .kill_on_drop(true)
+            .output(),
+    )
+    .await
+    .expect("fleetlink bench copy-floor finishes")
+    .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "bench failed: {stderr}");
+    let s: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    assert_eq!(s["size"], 200000, "{s}");
+    assert!(s["messages"].as_u64().expect("messages") > 0, "{s}");
+    for field in ["relay_cpu_percent", "sender_cpu_percent"] {
+        let v = s[field].as_f64().unwrap_or(-1.0);
+        assert!(
+            (0.0..=400.0).contains(&v),
+            "{field} missing or out of range: {s}"
+        );
+    }
+}
