@@ -106,7 +106,8 @@ copyfloor=$!
 ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
 # The threads Cyclone DDS names itself (recv, tev, dq.builtins, ...), not the Python
 # interpreter's, which carry the process's own name; the comm field may hold spaces.
-thread_ticks() { sed 's/.*) //' "$1/stat" 2>/dev/null | awk '{print $12 + $13}' || echo 0; }
+# (0 for a thread that has just ended.)
+thread_ticks() { sed 's/.*) //' "$1/stat" 2>/dev/null | awk '{t = $12 + $13} END {print t + 0}' || :; }
 cyclone_ticks() {
     local main t sum=0
     main="$(cat "/proc/$1/comm")"

@@ -9,38 +9,56 @@ use serde_json::Value;
 
 use crate::util::*;
 
-#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
-async fn bench_relay_json_summary_counts_every_delivery() {
-    let hub = start_hub().await;
-    let url = hub.agent_url();
+/// Runs `fleetlink bench <args> --json` as a user would and gives its one-line summary.
+async fn bench_json(args: &[&str]) -> Value {
     let out = tokio::time::timeout(
         Duration::from_secs(60),
         tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
-            .args([
-                "bench",
-                "relay",
-                "--hub",
-                &url,
-                "--token",
-                &hub.operator_token,
-            ])
-            .args(["--publishers", "1", "--subscribers", "2", "--size", "64"])
-            .args(["--rate", "1000", "--duration", "1", "--warmup", "0.2"])
-            // A queue that holds the whole run: a stalled test machine may delay messages
-            // but must not make the hub drop them.
-            .args(["--queue-length", "100000", "--json"])
+            .arg("bench")
+            .args(args)
+            .arg("--json")
             .kill_on_drop(true)
             .output(),
     )
     .await
-    .expect("fleetlink bench relay finishes")
+    .unwrap_or_else(|_| panic!("fleetlink bench {} finishes", args[0]))
     .expect("the binary runs");
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "bench failed: {stderr}");
     let stdout = String::from_utf8(out.stdout).expect("UTF-8 output");
     let lines: Vec<&str> = stdout.lines().collect();
     assert_eq!(lines.len(), 1, "one JSON object on stdout, got {stdout:?}");
-    let s: Value = serde_json::from_str(lines[0]).expect("valid JSON");
+    serde_json::from_str(lines[0]).expect("valid JSON")
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bench_relay_json_summary_counts_every_delivery() {
+    let hub = start_hub().await;
+    let url = hub.agent_url();
+    let s = bench_json(&[
+        "relay",
+        "--hub",
+        &url,
+        "--token",
+        &hub.operator_token,
+        "--publishers",
+        "1",
+        "--subscribers",
+        "2",
+        "--size",
+        "64",
+        "--rate",
+        "1000",
+        "--duration",
+        "1",
+        "--warmup",
+        "0.2",
+        // A queue that holds the whole run: a stalled test machine may delay messages
+        // but must not make the hub drop them.
+        "--queue-length",
+        "100000",
+    ])
+    .await;
 
     assert_eq!(s["publishers"], 1);
     assert_eq!(s["subscribers"], 2);
@@ -106,20 +124,16 @@ async fn bench_relay_reports_an_unreachable_hub() {
 /// figures themselves are clock ticks and may be zero over one second.)
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn bench_copy_floor_reports_the_relay_and_the_sender() {
-    let out = tokio::time::timeout(
-        Duration::from_secs(60),
-        tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
-            .args(["bench", "copy-floor", "--size", "200000", "--rate", "20"])
-            .args(["--seconds", "1", "--json"])
-            .kill_on_drop(true)
-            .output(),
-    )
-    .await
-    .expect("fleetlink bench copy-floor finishes")
-    .expect("the binary runs");
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "bench failed: {stderr}");
-    let s: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    let s = bench_json(&[
+        "copy-floor",
+        "--size",
+        "200000",
+        "--rate",
+        "20",
+        "--seconds",
+        "1",
+    ])
+    .await;
     assert_eq!(s["size"], 200000, "{s}");
     assert!(s["messages"].as_u64().expect("messages") > 0, "{s}");
     for field in ["relay_cpu_percent", "sender_cpu_percent"] {

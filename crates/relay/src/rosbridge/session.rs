@@ -209,12 +209,6 @@ pub async fn serve<S>(
                     session.status("error", msg, id.value().as_ref()).await;
                     session.clock.waited();
                 }
-                Ok(Incoming::Full(p, topic)) => {
-                    tracing::debug!("publish {}: no-drop queue full, waiting for room", p.topic);
-                    topic.stats.no_drop_flow.wait_room().await;
-                    session.clock.waited();
-                    session.handle_publish(p).await;
-                }
                 // Other operations are rare and may wait (a reply queue, a call): the next
                 // message's arrival is read from the clock again.
                 Ok(Incoming::Other(req)) => {
@@ -268,13 +262,12 @@ impl<S: Stream + Unpin> Stream for Waits<S> {
 /// An operation as read from a frame, when it needs more than the short path of a
 /// publish (`Session::publish_now`): something to wait for or to answer.
 enum Incoming<'a> {
-    /// A `publish` read on the short path (JSON text or CBOR) from a client that has not
-    /// authenticated yet.
+    /// A `publish` read on the short path (JSON text or CBOR) that must wait: the client
+    /// has not authenticated yet, or the topic is a no-drop one with a full queue
+    /// ([`Session::handle_publish`] answers the one and waits for room for the other).
     Publish(Publish<'a>),
     /// A publish refused, with the `status` text to answer it with.
     Refused(PublishId<'a>, String),
-    /// A publish on a no-drop topic whose queue is full: sent once there is room.
-    Full(Publish<'a>, Arc<Topic>),
     Other(Request),
 }
 
@@ -492,7 +485,7 @@ impl Session {
         let Publish { id, topic, msg } = p;
         match self.try_publish(&topic, msg) {
             Ok(None) => None,
-            Ok(Some((msg, full))) => Some(Incoming::Full(Publish { id, topic, msg }, full)),
+            Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish { id, topic, msg })),
             Err(text) => Some(Incoming::Refused(id, text)),
         }
     }
