@@ -949,6 +949,11 @@ fn is_object(p: &Payload) -> bool {
 /// Messages taken in one go that mean a burst is being read (`write_loop`).
 const BURST: usize = 32;
 
+/// Turns a writer gives the reader of a burst before it flushes (`write_loop`): each is
+/// at most one tokio budget (128 operations) read, so a burst of up to about 500 small
+/// messages goes out in one write, and nothing waits longer than four budgets' work.
+const BURST_TURNS: u32 = 4;
+
 async fn write_loop<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
@@ -961,9 +966,9 @@ async fn write_loop<K>(
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
     let mut warned: HashMap<TopicName, ()> = HashMap::new();
-    // Frames written since the last flush, and whether this task has given the others a
-    // turn since (see below).
-    let (mut unflushed, mut yielded) = (false, false);
+    // Frames written since the last flush, and the turns this task has given the others
+    // since (see below).
+    let (mut unflushed, mut turns) = (false, 0u32);
     // The batch, kept across rounds so a busy writer does not allocate one per round.
     let mut items: Vec<crate::outbox::Taken> = Vec::new();
     loop {
@@ -1053,12 +1058,15 @@ async fn write_loop<K>(
         }
         unflushed |= wrote;
         // While a burst is being read (a full run of a publisher's operations came in),
-        // one turn for the other tasks before the flush lets the next run join this
-        // system call: each flush wakes the client, and on a busy hub those wake-ups cost
-        // more than the writes. A trickle (a few messages per wake-up, as each of many
-        // subscribers of a topic sees) is flushed at once; the turn would only add work.
-        if took >= BURST && unflushed && !yielded {
-            yielded = true;
+        // a turn for the other tasks before the flush lets the next run join this system
+        // call: each flush wakes the client, and on a busy hub those wake-ups cost more
+        // than the writes. A publisher's read yields after tokio's budget of operations,
+        // so a burst of a few hundred comes as several runs; turns continue while runs
+        // keep coming, up to `BURST_TURNS` (a bound on what waits unflushed). A trickle
+        // (a few messages per wake-up, as each of many subscribers of a topic sees) is
+        // flushed at once; a turn would only add work.
+        if took >= BURST && unflushed && turns < BURST_TURNS {
+            turns += 1;
             tokio::task::yield_now().await;
             continue;
         }
@@ -1066,7 +1074,7 @@ async fn write_loop<K>(
             if sink.flush().await.is_err() {
                 return;
             }
-            (unflushed, yielded) = (false, false);
+            (unflushed, turns) = (false, 0);
         }
         if took > 0 {
             continue;
