@@ -5,7 +5,10 @@
 # generator (`fleetlink bench delivery`). Each server's CPU comes from /proc over the
 # measured window, so a generator that saturates first does not bend the figure. Servers
 # run on core 0 and the generator on core 1 (taskset) when there are two cores or more.
-# Rounds alternate the systems; the table gives the median of the rounds.
+# Rounds alternate the systems; the table gives the median of the rounds. The floor row
+# is `fleetlink bench ws-floor`, a bare WebSocket relay with the hub's shape and none of
+# its work (no parsing, checks or routing), driven as rosbridge JSON: the hub's JSON
+# figure minus the floor's is what the hub's own work costs per message.
 #
 #   cargo build --release -p fleetlink && scripts/bench-delivery.sh [ROUNDS] [RATES] [SECONDS]
 #   e.g. scripts/bench-delivery.sh 3 "100000 300000" 5
@@ -54,7 +57,10 @@ nats_pid=$!; pids+=($nats_pid)
 mqtt_port="$(free_port)"
 "${server_cpu[@]}" mosquitto -p "$mqtt_port" >"$tmp/mosquitto.log" 2>&1 &
 mqtt_pid=$!; pids+=($mqtt_pid)
-wait_port "$hub_port"; wait_port "$nats_port"; wait_port "$mqtt_port"
+floor_port="$(free_port)"
+"${server_cpu[@]}" "$bin" bench ws-floor --listen "127.0.0.1:$floor_port" >"$tmp/floor.log" 2>&1 &
+floor_pid=$!; pids+=($floor_pid)
+wait_port "$hub_port"; wait_port "$nats_port"; wait_port "$mqtt_port"; wait_port "$floor_port"
 
 run() { # protocol server pid rate
     "${gen_cpu[@]}" "$bin" bench delivery --protocol "$1" --server "$2" --token "$token" \
@@ -65,6 +71,8 @@ for round in $(seq "$rounds"); do
         run rosbridge-json "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
         run rosbridge-cbor "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
         run native "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
+        run rosbridge-json "ws://127.0.0.1:$floor_port" "$floor_pid" "$rate" |
+            sed 's/"protocol":"RosbridgeJson"/"protocol":"WsFloor"/'
         run nats "127.0.0.1:$nats_port" "$nats_pid" "$rate"
         run mqtt "127.0.0.1:$mqtt_port" "$mqtt_pid" "$rate"
     done
@@ -77,7 +85,8 @@ python3 - "$tmp/results.jsonl" <<'EOF'
 import json, statistics, sys
 rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 names = {"RosbridgeJson": "fleetlink rosbridge JSON", "RosbridgeCbor": "fleetlink rosbridge CBOR",
-         "Native": "fleetlink native", "Nats": "nats-server", "Mqtt": "mosquitto (MQTT QoS 0)"}
+         "Native": "fleetlink native", "WsFloor": "floor: bare WebSocket relay",
+         "Nats": "nats-server", "Mqtt": "mosquitto (MQTT QoS 0)"}
 print(f"{'system':28} {'rate':>8} {'delivered/s':>12} {'server CPU':>11} {'µs/delivery (median, min-max)':>32}")
 for rate in sorted({r["rate"] for r in rows}):
     for proto in names:

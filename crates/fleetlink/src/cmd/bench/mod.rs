@@ -12,6 +12,8 @@
 //! - [`report`]: the progress line and the final summary.
 //! - [`copy_floor`]: the `copy-floor` subcommand: the CPU of a plain loopback TCP relay,
 //!   the floor under a bridge's figure.
+//! - [`ws_floor`]: the `ws-floor` subcommand: a bare WebSocket relay, the floor under the
+//!   hub's figure in `delivery`.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
 
@@ -24,6 +26,7 @@ mod reconnect;
 mod relay;
 mod report;
 mod subscriber;
+mod ws_floor;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -49,6 +52,10 @@ enum Command {
     /// A plain loopback TCP relay (blocking reads and writes, nothing else) carrying
     /// messages of a given size and rate: its CPU, the floor under any bridge's figure.
     CopyFloor(copy_floor::Args),
+    /// A bare WebSocket relay (each text frame passed to every subscriber as it is, no
+    /// parsing, checks or routing) serving until killed: measured with `delivery
+    /// --protocol rosbridge-json`, the floor under the hub's figure.
+    WsFloor(ws_floor::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
@@ -58,5 +65,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Calls(a) => calls::run(a),
         Command::Delivery(a) => delivery::run(a),
         Command::CopyFloor(a) => copy_floor::run(a),
+        Command::WsFloor(a) => ws_floor::run(a),
     }
 }

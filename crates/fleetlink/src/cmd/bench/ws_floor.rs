@@ -1,0 +1,92 @@
+//! `fleetlink bench ws-floor`: the least a rosbridge-style WebSocket server does to pass
+//! each message on — the floor under the hub's figure in `fleetlink bench delivery`.
+//!
+//! It serves WebSocket connections on `--listen` until it is killed. A text frame that
+//! contains `"subscribe"` makes its connection a subscriber, one that contains
+//! `"advertise"` is ignored, and every other text frame is sent on, as the same bytes, to
+//! every subscriber. It does not parse JSON, check types, authenticate, keep topics or
+//! queue with a policy. What it keeps is the shape the hub has, so the two figures
+//! compare: tungstenite on tokio, the same 64 KiB read buffer, a reader task and a
+//! writer task per connection, the reader giving way after each tokio budget of
+//! operations, and the writer flushing when it has nothing more to write. Run it where
+//! `fleetlink bench delivery --protocol rosbridge-json --server-pid <pid>` can measure it:
+//! the hub's figure minus this one is what the hub's own work costs per message.
+
+use std::net::SocketAddr;
+use std::sync::{Arc, Mutex};
+
+use anyhow::Context;
+use futures_util::{SinkExt, StreamExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::Message;
+use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Address to serve on; port 0 picks a free one. The address taken is printed on
+    /// stdout.
+    #[arg(long, default_value = "127.0.0.1:0")]
+    listen: SocketAddr,
+}
+
+type Subscribers = Arc<Mutex<Vec<mpsc::UnboundedSender<Message>>>>;
+
+pub fn run(args: Args) -> anyhow::Result<()> {
+    let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
+    rt.block_on(async {
+        let listener = tokio::net::TcpListener::bind(args.listen)
+            .await
+            .with_context(|| format!("binding {}", args.listen))?;
+        println!("listening on {}", listener.local_addr()?);
+        let subscribers = Subscribers::default();
+        loop {
+            let (tcp, _) = listener.accept().await.context("accepting")?;
+            tcp.set_nodelay(true)?;
+            tokio::spawn(serve(tcp, subscribers.clone()));
+        }
+    })
+}
+
+async fn serve(tcp: tokio::net::TcpStream, subscribers: Subscribers) {
+    let cfg = WebSocketConfig::default().read_buffer_size(64 * 1024);
+    let Ok(ws) = tokio_tungstenite::accept_async_with_config(tcp, Some(cfg)).await else {
+        return;
+    };
+    let (mut sink, mut stream) = ws.split();
+    let (tx, mut rx) = mpsc::unbounded_channel::<Message>();
+    tokio::spawn(async move {
+        while let Some(m) = rx.recv().await {
+            if sink.feed(m).await.is_err() {
+                return;
+            }
+            while let Ok(m) = rx.try_recv() {
+                if sink.feed(m).await.is_err() {
+                    return;
+                }
+            }
+            if sink.flush().await.is_err() {
+                return;
+            }
+        }
+    });
+    // The subscribers as of this connection's last publish; taken again after a new
+    // subscription anywhere would need a shared generation, which a floor can do without:
+    // the bench subscribes before it publishes.
+    let mut targets = Vec::new();
+    while let Some(Ok(m)) = stream.next().await {
+        if let Message::Text(text) = &m {
+            let text = text.as_str();
+            if text.contains("\"subscribe\"") {
+                subscribers.lock().expect("not poisoned").push(tx.clone());
+            } else if !text.contains("\"advertise\"") {
+                if targets.is_empty() {
+                    targets = subscribers.lock().expect("not poisoned").clone();
+                }
+                for t in &targets {
+                    let _ = t.send(m.clone());
+                }
+            }
+        }
+        tokio::task::consume_budget().await;
+    }
+}
