@@ -916,7 +916,6 @@ fn subscription_qos(
         .map_err(|e| format!("field 'qos': {e}"))
 }
 
-/// A message object is a JSON object or a CBOR map.
 /// Whether the session's client may do `op` on `name` (the gate, when it has
 /// authenticated); the refusal text names both.
 fn check<'g>(
@@ -938,6 +937,7 @@ fn check<'g>(
     }
 }
 
+/// A message object is a JSON object or a CBOR map.
 fn is_object(p: &Payload) -> bool {
     match p.encoding {
         Encoding::Json => p.bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{'),

@@ -41,7 +41,8 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let subscribers = Subscribers::default();
         loop {
             let (tcp, _) = listener.accept().await.context("accepting")?;
-            tcp.set_nodelay(true)?;
+            // As the hub does; a connection where it fails is still served.
+            let _ = tcp.set_nodelay(true);
             tokio::spawn(serve(tcp, subscribers.clone()));
         }
     })
