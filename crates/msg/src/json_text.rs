@@ -540,11 +540,6 @@ impl<'a> Check<'a> {
         }
     }
 
-    /// A string without escapes or control characters, as valid UTF-8.
-    fn plain_string(&mut self) -> Option<&'a str> {
-        std::str::from_utf8(self.plain_bytes()?).ok()
-    }
-
     /// The bytes of a string without escapes or control characters, not checked as UTF-8:
     /// for keys and names compared with ASCII ones, which need no check.
     fn plain_bytes(&mut self) -> Option<&'a [u8]> {
@@ -553,14 +548,12 @@ impl<'a> Check<'a> {
             return None;
         }
         let start = self.pos + 1;
-        let len = memchr::memchr2(b'"', b'\\', &self.b[start..])?;
-        let s = &self.b[start..start + len];
-        // No raw control characters; a whole-slice fold the compiler vectorises.
-        if self.b[start + len] != b'"' || !s.iter().fold(true, |ok, &c| ok & (c >= 0x20)) {
+        let end = crate::json_scan::string_stop(self.b, start);
+        if self.b.get(end) != Some(&b'"') {
             return None;
         }
-        self.pos = start + len + 1;
-        Some(s)
+        self.pos = end + 1;
+        Some(&self.b[start..end])
     }
 
     /// A number in JSON's grammar: its text, and whether it has a fraction or exponent.
@@ -704,7 +697,10 @@ impl<'a> Check<'a> {
             Scalar::Bool => self.lit(b"true") || self.lit(b"false"),
             Scalar::F64 => self.float().is_some(),
             Scalar::F32 => self.float().is_some_and(f32_is_normal),
-            Scalar::String | Scalar::WString => self.plain_string().is_some(),
+            // ASCII, as most strings are, needs no UTF-8 check.
+            Scalar::String | Scalar::WString => self
+                .plain_bytes()
+                .is_some_and(|s| s.is_ascii() || std::str::from_utf8(s).is_ok()),
             Scalar::Time | Scalar::Duration => {
                 let (lo, hi) = if s == Scalar::Time {
                     (0, i128::from(u32::MAX))

@@ -39,6 +39,7 @@ pub mod cbor;
 pub mod error;
 pub mod ident;
 pub mod json;
+pub mod json_scan;
 mod json_text;
 mod layout;
 mod loose;

@@ -161,8 +161,25 @@ impl Topic {
         payload: Payload,
         received: std::time::Instant,
     ) -> Arc<Message> {
-        let msg = Arc::new(Message::received_at(
-            meta, seq, stamp_ns, origin, payload, received,
+        self.publish_framed(meta, origin, seq, stamp_ns, payload, received, None)
+    }
+
+    /// [`Topic::publish_at`] of a message whose rosbridge JSON frame the caller built
+    /// (`json`, see [`Message::framed`]).
+    #[allow(clippy::too_many_arguments)]
+    pub fn publish_framed(
+        &self,
+        meta: Arc<TopicMeta>,
+        origin: ClientId,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Payload,
+        received: std::time::Instant,
+        json: Option<String>,
+    ) -> Arc<Message> {
+        // Built in place: a message is a few hundred bytes, not worth moving twice.
+        let msg = Arc::new(Message::framed(
+            meta, seq, stamp_ns, origin, payload, received, json,
         ));
         self.deliver(&msg);
         msg

@@ -10,23 +10,55 @@ use serde_json::{Value, json};
 pub fn publish_json(topic: &str, msg_json: &[u8]) -> Bytes {
     let mut b = BytesMut::with_capacity(msg_json.len() + topic.len() + 40);
     b.put_slice(br#"{"op":"publish","topic":"#);
-    // Topic names never need escapes in practice; written as they are, without the
-    // quoted copy serde_json would make for every message.
-    if topic.bytes().all(|c| c >= 0x20 && c != b'"' && c != b'\\') {
-        b.put_u8(b'"');
-        b.put_slice(topic.as_bytes());
-        b.put_u8(b'"');
-    } else {
-        b.put_slice(
-            serde_json::to_string(topic)
-                .expect("a string serializes")
-                .as_bytes(),
-        );
+    match escaped(topic) {
+        None => {
+            b.put_u8(b'"');
+            b.put_slice(topic.as_bytes());
+            b.put_u8(b'"');
+        }
+        Some(quoted) => b.put_slice(quoted.as_bytes()),
     }
     b.put_slice(br#","msg":"#);
     b.put_slice(msg_json);
     b.put_u8(b'}');
     b.freeze()
+}
+
+/// [`publish_json`] of a message that is already text: the frame is a `String`, which a
+/// text WebSocket message takes without checking its UTF-8 again.
+pub fn publish_json_text(topic: &str, msg_json: &str) -> String {
+    const HEAD: &str = r#"{"op":"publish","topic":"#;
+    const MSG: &str = r#","msg":"#;
+    let quoted = escaped(topic);
+    let topic_len = quoted.as_ref().map_or(topic.len() + 2, String::len);
+    // Exactly the frame's length: a `String` whose capacity is its length becomes the
+    // message's bytes without another allocation.
+    let mut s = String::with_capacity(HEAD.len() + topic_len + MSG.len() + msg_json.len() + 1);
+    s.push_str(HEAD);
+    match quoted {
+        None => {
+            s.push('"');
+            s.push_str(topic);
+            s.push('"');
+        }
+        Some(quoted) => s.push_str(&quoted),
+    }
+    s.push_str(MSG);
+    s.push_str(msg_json);
+    s.push('}');
+    debug_assert_eq!(s.len(), s.capacity());
+    s
+}
+
+/// A topic name as a JSON string when it needs escapes; `None` when it can be written as
+/// it is between quotes. Names never need escapes in practice, and this spares every
+/// message the quoted copy serde_json would make.
+fn escaped(topic: &str) -> Option<String> {
+    if topic.bytes().all(|c| c >= 0x20 && c != b'"' && c != b'\\') {
+        None
+    } else {
+        Some(serde_json::to_string(topic).expect("a string serializes"))
+    }
 }
 
 /// The same publish as a CBOR map, with `msg_cbor` spliced in as the `msg` value.
@@ -182,6 +214,8 @@ mod tests {
             let f = publish_json(topic, br#"{"x":1}"#);
             let v: Value = serde_json::from_slice(&f).unwrap();
             assert_eq!(v, json!({"op":"publish","topic":topic,"msg":{"x":1}}));
+            // The frame built from text is the same frame.
+            assert_eq!(publish_json_text(topic, r#"{"x":1}"#).as_bytes(), &f[..]);
         }
     }
 

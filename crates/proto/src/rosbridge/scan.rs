@@ -12,6 +12,8 @@
 
 use std::ops::Range;
 
+use fleetlink_msg::json_scan::string_stop;
+
 /// Most levels of nesting taken, the envelope's own included: serde_json refuses the
 /// 128th.
 const MAX_DEPTH: usize = 127;
@@ -64,12 +66,6 @@ pub(crate) fn envelope(text: &str) -> Option<Envelope<'_>> {
     (c.pos == c.b.len()).then_some(e)
 }
 
-/// JSON strings hold no raw control characters. (A whole-slice check the compiler
-/// vectorises, after a SIMD search for the string's end.)
-fn no_controls(s: &[u8]) -> bool {
-    s.iter().fold(true, |ok, &b| ok & (b >= 0x20))
-}
-
 /// A key seen twice is left to the full parse (serde refuses it).
 fn set<T>(slot: &mut Option<T>, v: T) -> Option<()> {
     if slot.is_some() {
@@ -112,13 +108,13 @@ impl<'a> Cursor<'a> {
             return None;
         }
         let start = self.pos;
-        let len = memchr::memchr2(b'"', b'\\', &self.b[start..])?;
-        if self.b[start + len] != b'"' || !no_controls(&self.b[start..start + len]) {
+        let end = string_stop(self.b, start);
+        if self.b.get(end) != Some(&b'"') {
             return None;
         }
-        self.pos = start + len + 1;
+        self.pos = end + 1;
         // Both ends are ASCII quotes, so both are character boundaries.
-        Some(&self.text[start..start + len])
+        Some(&self.text[start..end])
     }
 
     /// Steps over one value and gives where it lies.
@@ -173,12 +169,8 @@ impl<'a> Cursor<'a> {
             return None;
         }
         loop {
-            let skip = memchr::memchr2(b'"', b'\\', &self.b[self.pos..])?;
-            if !no_controls(&self.b[self.pos..self.pos + skip]) {
-                return None;
-            }
-            self.pos += skip;
-            match self.b[self.pos] {
+            self.pos = string_stop(self.b, self.pos);
+            match *self.b.get(self.pos)? {
                 b'"' => {
                     self.pos += 1;
                     return Some(());
@@ -205,7 +197,8 @@ impl<'a> Cursor<'a> {
                     }
                     _ => return None,
                 },
-                _ => unreachable!("memchr2 finds a quote or a backslash"),
+                // A raw control character.
+                _ => return None,
             }
         }
     }

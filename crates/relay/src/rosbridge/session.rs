@@ -27,7 +27,7 @@ use tokio_util::sync::CancellationToken;
 
 use crate::calls::ChannelPeer;
 use crate::gate::{Gate, Guard, Op as GateOp, SessionAuth};
-use crate::message::FrameKind;
+use crate::message::{FrameKind, Message};
 use crate::names::{ClientId, TopicName};
 use crate::outbox::{Delivery, Outbox};
 use crate::queue::DropReason;
@@ -159,7 +159,7 @@ pub async fn serve<S>(
                 let bytes: &bytes::Bytes = text.as_ref();
                 // Nearly all traffic: a publish, its topic borrowed from the frame.
                 match Publish::from_json_text(text.as_str(), bytes) {
-                    Some(p) => match session.publish_now(p) {
+                    Some(p) => match session.publish_now(p, Some(text.as_str())) {
                         Some(rest) => Ok(rest),
                         None => {
                             tokio::task::consume_budget().await;
@@ -178,7 +178,7 @@ pub async fn serve<S>(
             Ok(WsMessage::Binary(b)) => {
                 binary = b;
                 match Publish::from_cbor_frame(&binary) {
-                    Some(p) => match session.publish_now(p) {
+                    Some(p) => match session.publish_now(p, None) {
                         Some(rest) => Ok(rest),
                         None => {
                             tokio::task::consume_budget().await;
@@ -478,12 +478,13 @@ impl Session {
     /// The short path of nearly every frame: a publish the topic takes at once is done
     /// here, without the future and the select of the waiting path (whose state is
     /// hundreds of bytes moved for each message). What it cannot finish comes back.
-    fn publish_now<'a>(&mut self, p: Publish<'a>) -> Option<Incoming<'a>> {
+    /// `text` is the frame's text when it is a JSON text frame.
+    fn publish_now<'a>(&mut self, p: Publish<'a>, text: Option<&str>) -> Option<Incoming<'a>> {
         if self.gate.is_none() {
             return Some(Incoming::Publish(p));
         }
         let Publish { id, topic, msg } = p;
-        match self.try_publish(&topic, msg) {
+        match self.try_publish(&topic, msg, text) {
             Ok(None) => None,
             Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish { id, topic, msg })),
             Err(text) => Some(Incoming::Refused(id, text)),
@@ -670,7 +671,7 @@ impl Session {
     /// socket, the client's own sends slow down with it — instead of being refused.
     async fn publish(&mut self, topic: &str, mut msg: Payload) -> Result<(), String> {
         loop {
-            match self.try_publish(topic, msg)? {
+            match self.try_publish(topic, msg, None)? {
                 None => return Ok(()),
                 Some((back, full)) => {
                     msg = back;
@@ -683,15 +684,17 @@ impl Session {
     }
 
     /// Publishes `msg` on `topic` unless it is a no-drop topic whose queue is full; then
-    /// hands the message back, with the topic to wait on.
+    /// hands the message back, with the topic to wait on. `text` is the text of the frame
+    /// `msg` came in, if it came in one (see [`Session::publish_on_known`]).
     fn try_publish(
         &mut self,
         topic: &str,
         msg: Payload,
+        text: Option<&str>,
     ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // one lookup by the client's spelling, no parse, no copy of the name.
-        let msg = match self.publish_on_known(topic, msg) {
+        let msg = match self.publish_on_known(topic, msg, text) {
             Known::Done(r) => return r,
             Known::Not(msg) => msg,
         };
@@ -703,15 +706,17 @@ impl Session {
         if !self.published.contains_key(name.as_str()) {
             self.start_publishing(name.as_str())?;
         }
-        match self.publish_on_known(name.as_str(), msg) {
+        match self.publish_on_known(name.as_str(), msg, text) {
             Known::Done(r) => r,
             Known::Not(_) => unreachable!("{name} was added to the published topics above"),
         }
     }
 
     /// [`Session::try_publish`] on a topic this client publishes under exactly this
-    /// spelling; the message comes back untouched when it does not.
-    fn publish_on_known(&mut self, name: &str, msg: Payload) -> Known {
+    /// spelling; the message comes back untouched when it does not. When `msg` is still
+    /// the JSON text it came in (`text` is that frame's text, and the type check left
+    /// the message as it was), the outgoing JSON frame is built from the text here.
+    fn publish_on_known(&mut self, name: &str, msg: Payload, text: Option<&str>) -> Known {
         let Session {
             published,
             gate,
@@ -747,8 +752,12 @@ impl Session {
             p.seq += 1;
             let size = msg.len();
             let (received, stamp) = clock.arrival();
+            let frame = text
+                .filter(|_| size <= EAGER_JSON_FRAME)
+                .and_then(|t| text_of(t, &msg))
+                .map(|m| outbound::publish_json_text(meta.name.as_str(), m));
             p.topic
-                .publish_at(meta, *client, p.seq, stamp, msg, received);
+                .publish_framed(meta, *client, p.seq, stamp, msg, received, frame);
             gate.done(name, GateOp::Publish, size);
             Ok(None)
         })())
@@ -946,6 +955,21 @@ fn is_object(p: &Payload) -> bool {
     }
 }
 
+/// Largest message whose JSON frame the publisher builds (`Session::publish_on_known`).
+/// Small messages are where the writers' conversion and UTF-8 check weigh; a large one
+/// is framed when a subscriber first asks, so that no frame is built that nobody wants.
+const EAGER_JSON_FRAME: usize = 16 << 10;
+
+/// `p`'s text when `p` is JSON lying within `text` (a slice of the frame it came in).
+fn text_of<'t>(text: &'t str, p: &Payload) -> Option<&'t str> {
+    if p.encoding != Encoding::Json {
+        return None;
+    }
+    // Live buffers do not overlap: bytes inside the frame's are a slice of that frame.
+    let start = (p.bytes.as_ptr() as usize).checked_sub(text.as_ptr() as usize)?;
+    text.get(start..start.checked_add(p.len())?)
+}
+
 /// Messages taken in one go that mean a burst is being read (`write_loop`).
 const BURST: usize = 32;
 
@@ -1016,6 +1040,24 @@ async fn write_loop<K>(
                 Compression::Png => FrameKind::RosbridgePng,
                 Compression::None => FrameKind::RosbridgeJson,
             };
+            let fragment = delivery
+                .fragment_size
+                .map(|s| s as usize)
+                .filter(|s| *s > 0);
+            // Most messages: a frame the publisher built, sent whole.
+            let msg = match fragment {
+                None => match Message::take_built_frame(msg, kind) {
+                    Ok(frame) => {
+                        if sink.feed(frame).await.is_err() {
+                            return;
+                        }
+                        wrote = true;
+                        continue;
+                    }
+                    Err(msg) => msg,
+                },
+                Some(_) => msg,
+            };
             let mut frame = msg.rosbridge_frame(kind, router.transcoder());
             if frame.is_err() && kind == FrameKind::RosbridgeCborRaw {
                 // No raw serialization for this message: the CBOR form is the closest.
@@ -1035,10 +1077,6 @@ async fn write_loop<K>(
                     continue;
                 }
             };
-            let fragment = delivery
-                .fragment_size
-                .map(|s| s as usize)
-                .filter(|s| *s > 0);
             match (fragment, &frame) {
                 (Some(size), WsMessage::Text(t)) if t.len() > size => {
                     let fid = format!("{}_{}", msg.topic.name, msg.seq);
