@@ -6,7 +6,7 @@
 //! the topic, string fields — and most of those strings are a few bytes long.
 
 /// Bytes looked at a word at a time before a vector search takes over.
-const SHORT: usize = 32;
+const SHORT: usize = 64;
 
 const ONES: u64 = 0x0101_0101_0101_0101;
 const HIGHS: u64 = 0x8080_8080_8080_8080;
@@ -25,39 +25,47 @@ fn stops(v: u64) -> u64 {
 /// The index of the first quote, backslash or control character in `b` at or after
 /// `from`, or `b.len()` when there is none. Called just inside a string, it is where the
 /// string ends when `b[index]` is a quote.
-#[inline]
+#[inline(always)]
 pub fn string_stop(b: &[u8], from: usize) -> usize {
+    let Some(rest) = b.get(from..) else {
+        return b.len();
+    };
     // Most strings end within a few bytes: eight at a time, they are passed before a
     // vector search would have been set up.
-    let short = b.len().min(from.saturating_add(SHORT));
+    let head = &rest[..rest.len().min(SHORT)];
+    let mut words = head.chunks_exact(8);
     let mut i = from;
-    while i + 8 <= short {
-        let word = u64::from_le_bytes(b[i..i + 8].try_into().expect("eight bytes"));
-        let m = stops(word);
+    for w in words.by_ref() {
+        let m = stops(u64::from_le_bytes(w.try_into().expect("eight bytes")));
         if m != 0 {
             return i + (m.trailing_zeros() / 8) as usize;
         }
         i += 8;
     }
-    if short < b.len() {
-        let end = i + memchr::memchr2(b'"', b'\\', &b[i..]).unwrap_or(b.len() - i);
-        let run = &b[i..end];
-        // A whole-run test the compiler vectorises; the position only when one is there.
-        return if run.iter().fold(true, |ok, &c| ok & (c >= 0x20)) {
-            end
-        } else {
-            i + run.iter().position(|&c| c < 0x20).unwrap_or(run.len())
-        };
+    if head.len() < rest.len() {
+        return long_stop(b, i);
     }
     // The last few bytes of the text.
-    while i < b.len() {
-        let c = b[i];
+    for &c in words.remainder() {
         if c == b'"' || c == b'\\' || c < 0x20 {
             return i;
         }
         i += 1;
     }
     b.len()
+}
+
+/// [`string_stop`] past the first `SHORT` bytes of a string.
+#[inline(never)]
+fn long_stop(b: &[u8], from: usize) -> usize {
+    let end = from + memchr::memchr2(b'"', b'\\', &b[from..]).unwrap_or(b.len() - from);
+    let run = &b[from..end];
+    // A whole-run test the compiler vectorises; the position only when one is there.
+    if run.iter().fold(true, |ok, &c| ok & (c >= 0x20)) {
+        end
+    } else {
+        from + run.iter().position(|&c| c < 0x20).unwrap_or(run.len())
+    }
 }
 
 #[cfg(test)]

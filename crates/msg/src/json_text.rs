@@ -514,6 +514,7 @@ struct Check<'a> {
 }
 
 impl<'a> Check<'a> {
+    #[inline(always)]
     fn ws(&mut self) {
         while let Some(b' ' | b'\n' | b'\r' | b'\t') = self.b.get(self.pos) {
             self.pos += 1;
@@ -521,6 +522,7 @@ impl<'a> Check<'a> {
     }
 
     /// Skips whitespace, then takes `byte` if it is next.
+    #[inline(always)]
     fn eat(&mut self, byte: u8) -> bool {
         self.ws();
         if self.b.get(self.pos) == Some(&byte) {
@@ -542,6 +544,7 @@ impl<'a> Check<'a> {
 
     /// The bytes of a string without escapes or control characters, not checked as UTF-8:
     /// for keys and names compared with ASCII ones, which need no check.
+    #[inline(always)]
     fn plain_bytes(&mut self) -> Option<&'a [u8]> {
         self.ws();
         if self.b.get(self.pos) != Some(&b'"') {

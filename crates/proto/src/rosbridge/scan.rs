@@ -82,17 +82,20 @@ struct Cursor<'a> {
 }
 
 impl<'a> Cursor<'a> {
+    #[inline(always)]
     fn ws(&mut self) {
         while let Some(b' ' | b'\t' | b'\n' | b'\r') = self.b.get(self.pos) {
             self.pos += 1;
         }
     }
 
+    #[inline(always)]
     fn peek(&mut self) -> Option<u8> {
         self.ws();
         self.b.get(self.pos).copied()
     }
 
+    #[inline(always)]
     fn eat(&mut self, byte: u8) -> bool {
         if self.peek() == Some(byte) {
             self.pos += 1;
@@ -103,6 +106,7 @@ impl<'a> Cursor<'a> {
     }
 
     /// A string with no escapes, as a slice of the text.
+    #[inline(always)]
     fn plain_string(&mut self) -> Option<&'a str> {
         if !self.eat(b'"') {
             return None;
@@ -164,6 +168,7 @@ impl<'a> Cursor<'a> {
 
     /// Any string: escapes checked, raw control characters refused (the text is already
     /// known to be UTF-8).
+    #[inline(always)]
     fn string(&mut self) -> Option<()> {
         if !self.eat(b'"') {
             return None;
