@@ -88,6 +88,8 @@ pub trait OutboundQueue: Send {
 pub struct QosQueue {
     queue: TopicQueue<Arc<Message>>,
     origin: Instant,
+    /// The last time read on the queue's clock ([`QosQueue::nanos`]).
+    last: Option<(Instant, Nanos)>,
     /// Payload bytes queued, and the most allowed (the oldest messages go first; the
     /// newest one always stays).
     bytes: usize,
@@ -107,14 +109,24 @@ impl QosQueue {
         QosQueue {
             queue: TopicQueue::new(qos),
             origin: Instant::now(),
+            last: None,
             bytes: 0,
             max_bytes,
             evicted: 0,
         }
     }
 
-    fn nanos(&self, now: Instant) -> Nanos {
-        Nanos::since(self.origin, now)
+    /// `now` on the queue's clock. A burst's messages share their arrival time and a
+    /// writer's batch its `now`, so the last reading is kept.
+    fn nanos(&mut self, now: Instant) -> Nanos {
+        match self.last {
+            Some((at, t)) if at == now => t,
+            _ => {
+                let t = Nanos::since(self.origin, now);
+                self.last = Some((now, t));
+                t
+            }
+        }
     }
 }
 
