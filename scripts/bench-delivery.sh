@@ -5,10 +5,11 @@
 # generator (`fleetlink bench delivery`). Each server's CPU comes from /proc over the
 # measured window, so a generator that saturates first does not bend the figure. Servers
 # run on core 0 and the generator on core 1 (taskset) when there are two cores or more.
-# Rounds alternate the systems; the table gives the median of the rounds. The floor row
-# is `fleetlink bench ws-floor`, a bare WebSocket relay with the hub's shape and none of
-# its work (no parsing, checks or routing), driven as rosbridge JSON: the hub's JSON
-# figure minus the floor's is what the hub's own work costs per message.
+# Rounds alternate the systems; the table gives the median of the rounds. The floor rows
+# are `fleetlink bench ws-floor`, a bare WebSocket relay with the hub's shape and none of
+# its work (no parsing, checks or routing), driven as rosbridge JSON: on the hub's own
+# WebSocket layer (the hub's JSON figure minus this one is what the hub's own work costs
+# per message) and on tokio-tungstenite (what that library would cost instead).
 #
 #   cargo build --release -p fleetlink && scripts/bench-delivery.sh [ROUNDS] [RATES] [SECONDS]
 #   e.g. scripts/bench-delivery.sh 3 "100000 300000" 5
@@ -60,7 +61,12 @@ mqtt_pid=$!; pids+=($mqtt_pid)
 floor_port="$(free_port)"
 "${server_cpu[@]}" "$bin" bench ws-floor --listen "127.0.0.1:$floor_port" >"$tmp/floor.log" 2>&1 &
 floor_pid=$!; pids+=($floor_pid)
+tung_port="$(free_port)"
+"${server_cpu[@]}" "$bin" bench ws-floor --websocket tungstenite --listen "127.0.0.1:$tung_port" \
+    >"$tmp/floor-tungstenite.log" 2>&1 &
+tung_pid=$!; pids+=($tung_pid)
 wait_port "$hub_port"; wait_port "$nats_port"; wait_port "$mqtt_port"; wait_port "$floor_port"
+wait_port "$tung_port"
 
 run() { # protocol server pid rate
     "${gen_cpu[@]}" "$bin" bench delivery --protocol "$1" --server "$2" --token "$token" \
@@ -73,6 +79,8 @@ for round in $(seq "$rounds"); do
         run native "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
         run rosbridge-json "ws://127.0.0.1:$floor_port" "$floor_pid" "$rate" |
             sed 's/"protocol":"RosbridgeJson"/"protocol":"WsFloor"/'
+        run rosbridge-json "ws://127.0.0.1:$tung_port" "$tung_pid" "$rate" |
+            sed 's/"protocol":"RosbridgeJson"/"protocol":"WsFloorTungstenite"/'
         run nats "127.0.0.1:$nats_port" "$nats_pid" "$rate"
         run mqtt "127.0.0.1:$mqtt_port" "$mqtt_pid" "$rate"
     done
@@ -86,6 +94,7 @@ import json, statistics, sys
 rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 names = {"RosbridgeJson": "fleetlink rosbridge JSON", "RosbridgeCbor": "fleetlink rosbridge CBOR",
          "Native": "fleetlink native", "WsFloor": "floor: bare WebSocket relay",
+         "WsFloorTungstenite": "floor on tokio-tungstenite",
          "Nats": "nats-server", "Mqtt": "mosquitto (MQTT QoS 0)"}
 print(f"{'system':28} {'rate':>8} {'delivered/s':>12} {'server CPU':>11} {'µs/delivery (median, min-max)':>32}")
 for rate in sorted({r["rate"] for r in rows}):

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../../tests/interop/rosbridge"
 stamp=node_modules/.fleetlink-lock
-if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp" && [ -d node_modules/roslib ]; then
+if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp" && [ -f node_modules/roslib/package.json ]; then
     echo "node packages up to date"
     exit 0
 fi

@@ -35,10 +35,14 @@ pub async fn serve(
         let _ = tcp.set_nodelay(true);
         let (router, cfg, shutdown) = (router.clone(), cfg.clone(), shutdown.clone());
         tokio::spawn(async move {
+            // tungstenite answers the handshake; the session then runs on the socket's
+            // own halves (a client sends nothing more before the handshake's answer).
             match tokio_tungstenite::accept_async_with_config(tcp, Some(ws_config)).await {
                 Ok(ws) => {
                     let auth = fleetlink_relay::gate::SessionAuth::open();
-                    rosbridge::serve(ws, router, Some(addr), cfg, shutdown, auth).await
+                    let max = cfg.max_message_size;
+                    let (sink, stream) = fleetlink_relay::websocket::server(ws.into_inner(), max);
+                    rosbridge::serve(sink, stream, router, Some(addr), cfg, shutdown, auth).await
                 }
                 Err(e) => tracing::debug!("local client {addr}: WebSocket handshake failed: {e}"),
             }

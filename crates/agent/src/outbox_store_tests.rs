@@ -30,16 +30,16 @@ impl Drop for Dir {
 }
 
 fn meta(name: &str) -> TopicMeta {
-    TopicMeta {
-        id: TopicId(1),
-        name: TopicName::parse(name).unwrap(),
-        schema: Schema {
+    TopicMeta::new(
+        TopicId(1),
+        TopicName::parse(name).unwrap(),
+        Schema {
             type_name: "std_msgs/msg/String".into(),
             encoding: "ros2msg".into(),
             text: "string data".into(),
         },
-        latched: false,
-    }
+        false,
+    )
 }
 
 fn payload(s: &str) -> Payload {

@@ -33,12 +33,13 @@ pub use crate::connection::ConnMeta;
 use crate::agents::{AgentContext, Registry};
 use crate::store::{Store, StoreError};
 
-/// Bytes a WebSocket session (an agent's or a rosbridge client's) reads at most at a
-/// time. tungstenite zeroes the free part of its read buffer before every read, so an
-/// idle connection keeps all of it resident: with the 128 KiB default an idle rosbridge
-/// connection held ~150 kB of the hub's memory, with 64 KiB ~90 kB. Smaller costs CPU
-/// under load (16 KiB: 16 % more per delivery at 300,000 msg/s, the writers getting
-/// smaller batches); 64 KiB measured the same as the default (docs/benchmarks.md).
+/// Bytes an agent's WebSocket session (tungstenite's) reads at most at a time.
+/// tungstenite zeroes the free part of its read buffer before every read, so an idle
+/// connection keeps all of it resident: with the 128 KiB default an idle connection held
+/// ~150 kB of the hub's memory, with 64 KiB ~90 kB. Smaller costs CPU under load (16 KiB:
+/// 16 % more per delivery at 300,000 msg/s); 64 KiB measured the same as the default
+/// (docs/benchmarks.md). Rosbridge sessions read with `fleetlink_relay::websocket`, which
+/// reads as much at a time without zeroing.
 const SESSION_READ_BUFFER: usize = 64 * 1024;
 
 /// Hub settings (`fleetlink hub` flags).
@@ -449,10 +450,9 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         }
         // Held until the session ends: the connection counts against the limits.
         let _open = open;
-        let ws =
-            WebSocketStream::from_raw_socket(TokioIo::new(upgraded), Role::Server, Some(ws_config))
-                .await;
         if agent {
+            let io = TokioIo::new(upgraded);
+            let ws = WebSocketStream::from_raw_socket(io, Role::Server, Some(ws_config)).await;
             let ws = crate::connection::UntilFirstReply::new(ws, slot);
             crate::agents::serve_agent(ws, st.agents.clone(), Some(addr), conn).await;
         } else {
@@ -473,8 +473,11 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 gate,
                 guard: Some(Arc::new(guard)),
             };
+            let max = st.rosbridge.max_message_size;
+            let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
             rosbridge::serve(
-                ws,
+                sink,
+                stream,
                 st.router.clone(),
                 Some(addr),
                 st.rosbridge.clone(),

@@ -78,12 +78,12 @@ fn fanout(c: &mut Criterion) {
 }
 
 fn message(payload: &Bytes) -> Message {
-    let meta = Arc::new(TopicMeta {
-        id: TopicId(7),
-        name: TopicName::parse("/bench/topic").expect("valid name"),
-        schema: Schema::named("geometry_msgs/msg/Twist"),
-        latched: false,
-    });
+    let meta = Arc::new(TopicMeta::new(
+        TopicId(7),
+        TopicName::parse("/bench/topic").expect("valid name"),
+        Schema::named("geometry_msgs/msg/Twist"),
+        false,
+    ));
     Message::new(
         meta,
         42,

@@ -34,6 +34,8 @@
 //! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
 //!   `/rosapi` services the hub answers itself.
+//! - [`websocket`]: the server side of a WebSocket connection as a lock-free reader and
+//!   writer pair, which rosbridge sessions run on.
 
 pub mod calls;
 pub mod gate;
@@ -51,6 +53,7 @@ pub mod rosbridge;
 pub mod router;
 pub mod stats;
 pub mod transcode;
+pub mod websocket;
 
 pub use message::Message;
 pub use names::{ClientId, NameError, TopicId, TopicName};

@@ -27,6 +27,27 @@ pub struct TopicMeta {
     /// A publisher advertised the topic latched: links announce it so (`ADVERTISE_LATCHED`),
     /// and the far side latches it too.
     pub latched: bool,
+    /// What a rosbridge JSON `publish` of this topic starts with (see
+    /// [`outbound::publish_json_head`]): made once per topic, not per message.
+    json_head: Box<str>,
+}
+
+impl TopicMeta {
+    pub fn new(id: TopicId, name: TopicName, schema: Schema, latched: bool) -> TopicMeta {
+        let json_head = outbound::publish_json_head(name.as_str()).into();
+        TopicMeta {
+            id,
+            name,
+            schema,
+            latched,
+            json_head,
+        }
+    }
+
+    /// `{"op":"publish","topic":<name>,"msg":`.
+    pub fn json_head(&self) -> &str {
+        &self.json_head
+    }
 }
 
 /// The frame kinds a message can be delivered as.
@@ -52,9 +73,11 @@ pub struct Message {
     /// Who published it; it is never delivered back to its origin.
     pub origin: ClientId,
     pub payload: Payload,
-    /// The JSON frame when the publisher built it ([`Message::framed`]); not a `OnceLock`
-    /// set at once, which costs the lock's whole initialization per message.
-    json_built: Option<WsMessage>,
+    /// The payload is the JSON text of the message as a rosbridge client sent it, checked
+    /// as UTF-8 and against its type ([`Message::framed`]): its `publish` frame is the
+    /// topic's head, the payload and a brace ([`Message::json_parts`]), written by each
+    /// subscriber's writer straight into its socket buffer.
+    json_text: bool,
     json: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor_raw: OnceLock<Result<WsMessage, TranscodeError>>,
@@ -82,13 +105,12 @@ impl Message {
         payload: Payload,
         received: Instant,
     ) -> Message {
-        Self::framed(topic, seq, stamp_ns, origin, payload, received, None)
+        Self::framed(topic, seq, stamp_ns, origin, payload, received, false)
     }
 
-    /// [`Message::received_at`] with its rosbridge JSON frame already built, if `json`
-    /// is that frame's text (see [`outbound::publish_json_text`]): a publisher that sent
-    /// the message as JSON text has it at hand, and the writers then need neither a
-    /// conversion nor a second UTF-8 check.
+    /// [`Message::received_at`] of a message whose payload is the JSON text a rosbridge
+    /// client sent (`json_text`: valid UTF-8, and the object as it goes out): a writer
+    /// then needs neither a conversion nor a frame built for it.
     pub fn framed(
         topic: Arc<TopicMeta>,
         seq: u64,
@@ -96,7 +118,7 @@ impl Message {
         origin: ClientId,
         payload: Payload,
         received: Instant,
-        json: Option<String>,
+        json_text: bool,
     ) -> Message {
         Message {
             topic,
@@ -104,14 +126,27 @@ impl Message {
             stamp_ns,
             received,
             origin,
+            json_text: json_text && payload.encoding == Encoding::Json,
             payload,
-            json_built: json.map(|f| WsMessage::Text(Utf8Bytes::from(f))),
             json: OnceLock::new(),
             cbor: OnceLock::new(),
             cbor_raw: OnceLock::new(),
             png: OnceLock::new(),
             link: OnceLock::new(),
         }
+    }
+
+    /// The rosbridge JSON `publish` frame of a message published as JSON text, in the
+    /// three pieces it is made of: the topic's head, the message object and `}`. Together
+    /// they are UTF-8.
+    pub fn json_parts(&self) -> Option<[&[u8]; 3]> {
+        self.json_text.then(|| {
+            [
+                self.topic.json_head.as_bytes(),
+                &self.payload.bytes[..],
+                b"}".as_slice(),
+            ]
+        })
     }
 
     /// The same message numbered `seq` (a no-drop stream's own numbering, see
@@ -142,13 +177,6 @@ impl Message {
         mut this: Arc<Message>,
         kind: FrameKind,
     ) -> Result<WsMessage, Arc<Message>> {
-        if kind == FrameKind::RosbridgeJson && this.json_built.is_some() {
-            return Ok(match Arc::get_mut(&mut this) {
-                Some(m) => m.json_built.take(),
-                None => this.json_built.clone(),
-            }
-            .expect("checked above"));
-        }
         if !matches!(this.cell(kind).get(), Some(Ok(_))) {
             return Err(this);
         }
@@ -188,23 +216,24 @@ impl Message {
         kind: FrameKind,
         tc: &dyn Transcoder,
     ) -> Result<WsMessage, TranscodeError> {
-        if let (FrameKind::RosbridgeJson, Some(built)) = (kind, &self.json_built) {
-            return Ok(built.clone());
-        }
         let topic = self.topic.name.as_str();
         self.cell(kind)
             .get_or_init(|| match kind {
                 FrameKind::RosbridgeJson => {
-                    let body = tc.convert(&self.topic.schema, &self.payload, Encoding::Json)?;
-                    let text =
-                        Utf8Bytes::try_from(outbound::publish_json(topic, &body)).map_err(|e| {
-                            TranscodeError::Invalid {
-                                type_name: self.topic.schema.type_name.clone(),
-                                from: self.payload.encoding,
-                                to: Encoding::Json,
-                                cause: format!("JSON is not UTF-8: {e}"),
-                            }
-                        })?;
+                    let frame = match self.json_parts() {
+                        Some(parts) => Bytes::from(parts.concat()),
+                        None => {
+                            let body =
+                                tc.convert(&self.topic.schema, &self.payload, Encoding::Json)?;
+                            outbound::publish_json(topic, &body)
+                        }
+                    };
+                    let text = Utf8Bytes::try_from(frame).map_err(|e| TranscodeError::Invalid {
+                        type_name: self.topic.schema.type_name.clone(),
+                        from: self.payload.encoding,
+                        to: Encoding::Json,
+                        cause: format!("JSON is not UTF-8: {e}"),
+                    })?;
                     Ok(WsMessage::Text(text))
                 }
                 FrameKind::RosbridgeCbor => {
@@ -278,15 +307,15 @@ mod tests {
     use crate::GenericTranscoder;
 
     fn meta() -> Arc<TopicMeta> {
-        Arc::new(TopicMeta {
-            id: TopicId(3),
-            name: TopicName::parse("/chatter").expect("valid name"),
-            schema: Schema::named("std_msgs/msg/String"),
-            latched: false,
-        })
+        Arc::new(TopicMeta::new(
+            TopicId(3),
+            TopicName::parse("/chatter").expect("valid name"),
+            Schema::named("std_msgs/msg/String"),
+            false,
+        ))
     }
 
-    fn message(json: Option<String>) -> Message {
+    fn message(json_text: bool) -> Message {
         let body = r#"{"data":"hi"}"#;
         Message::framed(
             meta(),
@@ -295,56 +324,65 @@ mod tests {
             ClientId(1),
             Payload::json(body),
             Instant::now(),
-            json,
+            json_text,
         )
     }
 
     #[test]
-    fn a_frame_built_by_the_publisher_is_the_frame_the_writers_would_build() {
-        let built = outbound::publish_json_text("/chatter", r#"{"data":"hi"}"#);
-        let lazy = message(None)
+    fn the_pieces_of_a_json_text_message_make_the_frame_a_conversion_builds() {
+        let converted = message(false)
             .rosbridge_frame(FrameKind::RosbridgeJson, &GenericTranscoder)
             .expect("converts");
-        let eager = message(Some(built))
-            .rosbridge_frame(FrameKind::RosbridgeJson, &GenericTranscoder)
-            .expect("built");
-        assert_eq!(eager, lazy);
+        assert!(message(false).json_parts().is_none());
+        let text = message(true);
+        let parts = text.json_parts().expect("published as text").concat();
+        assert_eq!(
+            WsMessage::text(String::from_utf8(parts).unwrap()),
+            converted
+        );
+        assert_eq!(
+            text.rosbridge_frame(FrameKind::RosbridgeJson, &GenericTranscoder)
+                .expect("framed"),
+            converted
+        );
         // PNG is made from the JSON frame, whichever way that was built.
         let png = |m: Message| m.rosbridge_frame(FrameKind::RosbridgePng, &GenericTranscoder);
-        let built = outbound::publish_json_text("/chatter", r#"{"data":"hi"}"#);
         assert_eq!(
-            png(message(Some(built))).expect("png"),
-            png(message(None)).expect("png")
+            png(message(true)).expect("png"),
+            png(message(false)).expect("png")
         );
+        // Only JSON payloads are JSON text.
+        let cbor = Message::framed(
+            meta(),
+            1,
+            7,
+            ClientId(1),
+            Payload::new(fleetlink_proto::Encoding::Cbor, Bytes::from_static(&[0xa0])),
+            Instant::now(),
+            true,
+        );
+        assert!(cbor.json_parts().is_none());
     }
 
     #[test]
     fn the_last_holder_takes_the_built_frame_and_others_share_it() {
-        let frame = || Some(outbound::publish_json_text("/chatter", r#"{"data":"hi"}"#));
         let kind = FrameKind::RosbridgeJson;
-        // Shared: a clone of the frame, the message keeps its own.
-        let m = Arc::new(message(frame()));
-        let other = m.clone();
-        let shared = Message::take_built_frame(m, kind).expect("built");
-        assert_eq!(Some(&shared), other.json_built.as_ref());
-        // Last holder: the frame is moved out.
-        let mut last = other;
-        let taken = Message::take_built_frame(last.clone(), kind).expect("built");
-        assert_eq!(taken, shared);
-        assert!(Arc::get_mut(&mut last).is_some(), "the clone was dropped");
-        let moved = Message::take_built_frame(last, kind).expect("built");
-        assert_eq!(moved, shared);
         // Not built: the message comes back, for the writer to build the frame.
-        let m = Arc::new(message(None));
+        let m = Arc::new(message(false));
         let back = Message::take_built_frame(m, kind).expect_err("nothing built");
         let made = back
             .rosbridge_frame(kind, &GenericTranscoder)
             .expect("converts");
-        assert_eq!(made, shared);
-        // Once made, it is built.
-        assert_eq!(
-            Message::take_built_frame(back, kind).expect("built"),
-            shared
-        );
+        // Shared: a clone of the frame, the message keeps its own.
+        let other = back.clone();
+        let shared = Message::take_built_frame(back, kind).expect("built");
+        assert_eq!(shared, made);
+        // Last holder: the frame is moved out.
+        let mut last = other;
+        let taken = Message::take_built_frame(last.clone(), kind).expect("built");
+        assert_eq!(taken, made);
+        assert!(Arc::get_mut(&mut last).is_some(), "the clone was dropped");
+        let moved = Message::take_built_frame(last, kind).expect("built");
+        assert_eq!(moved, made);
     }
 }

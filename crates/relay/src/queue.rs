@@ -204,12 +204,12 @@ mod tests {
     use fleetlink_proto::{Encoding, Payload, Schema};
 
     fn msg(size: usize, seq: u64) -> Arc<Message> {
-        let meta = Arc::new(TopicMeta {
-            id: TopicId(1),
-            name: TopicName::parse("/t").unwrap(),
-            schema: Schema::default(),
-            latched: false,
-        });
+        let meta = Arc::new(TopicMeta::new(
+            TopicId(1),
+            TopicName::parse("/t").unwrap(),
+            Schema::default(),
+            false,
+        ));
         let body = bytes::Bytes::from(vec![b'x'; size]);
         Arc::new(Message::new(
             meta,

@@ -165,12 +165,12 @@ mod tests {
     use crate::names::{ClientId, TopicId};
 
     fn meta(name: &str, id: u32) -> Arc<TopicMeta> {
-        Arc::new(TopicMeta {
-            id: TopicId(id),
-            name: TopicName::parse(name).unwrap(),
-            schema: Schema::default(),
-            latched: false,
-        })
+        Arc::new(TopicMeta::new(
+            TopicId(id),
+            TopicName::parse(name).unwrap(),
+            Schema::default(),
+            false,
+        ))
     }
 
     fn msg(m: &Arc<TopicMeta>, publisher_seq: u64) -> Message {

@@ -161,11 +161,11 @@ impl Topic {
         payload: Payload,
         received: std::time::Instant,
     ) -> Arc<Message> {
-        self.publish_framed(meta, origin, seq, stamp_ns, payload, received, None)
+        self.publish_framed(meta, origin, seq, stamp_ns, payload, received, false)
     }
 
-    /// [`Topic::publish_at`] of a message whose rosbridge JSON frame the caller built
-    /// (`json`, see [`Message::framed`]).
+    /// [`Topic::publish_at`] of a message that may be the JSON text a rosbridge client
+    /// sent (`json_text`, see [`Message::framed`]).
     #[allow(clippy::too_many_arguments)]
     pub fn publish_framed(
         &self,
@@ -175,11 +175,11 @@ impl Topic {
         stamp_ns: u64,
         payload: Payload,
         received: std::time::Instant,
-        json: Option<String>,
+        json_text: bool,
     ) -> Arc<Message> {
         // Built in place: a message is a few hundred bytes, not worth moving twice.
         let msg = Arc::new(Message::framed(
-            meta, seq, stamp_ns, origin, payload, received, json,
+            meta, seq, stamp_ns, origin, payload, received, json_text,
         ));
         self.deliver(&msg);
         msg
@@ -406,12 +406,12 @@ impl Router {
                     || !same_type(known, &schema.type_name)
                     || (meta.schema.text.is_empty() && !schema.text.is_empty())
                 {
-                    t.meta.store(Arc::new(TopicMeta {
-                        id: meta.id,
-                        name: name.clone(),
+                    t.meta.store(Arc::new(TopicMeta::new(
+                        meta.id,
+                        name.clone(),
                         schema,
-                        latched: meta.latched,
-                    }));
+                        meta.latched,
+                    )));
                 }
                 t
             }
@@ -422,10 +422,12 @@ impl Router {
             // Messages carry the flag from now on, so links announce the topic latched.
             let meta = topic.meta();
             if !meta.latched {
-                topic.meta.store(Arc::new(TopicMeta {
-                    latched: true,
-                    ..TopicMeta::clone(&meta)
-                }));
+                topic.meta.store(Arc::new(TopicMeta::new(
+                    meta.id,
+                    meta.name.clone(),
+                    meta.schema.clone(),
+                    true,
+                )));
             }
         }
         let pubs = st.publishers.entry(name.clone()).or_default();
@@ -457,12 +459,7 @@ impl Router {
     fn create_topic(&self, st: &mut State, name: &TopicName, schema: Schema) -> Arc<Topic> {
         let id = TopicId(self.next_topic.fetch_add(1, Relaxed));
         let topic = Arc::new(Topic {
-            meta: ArcSwap::from_pointee(TopicMeta {
-                id,
-                name: name.clone(),
-                schema,
-                latched: false,
-            }),
+            meta: ArcSwap::from_pointee(TopicMeta::new(id, name.clone(), schema, false)),
             stats: Arc::new(TopicStats::default()),
             subscribers: ArcSwap::from_pointee(Vec::new()),
             latched: Mutex::new(None),

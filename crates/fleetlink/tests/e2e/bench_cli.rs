@@ -146,48 +146,58 @@ async fn bench_copy_floor_reports_the_relay_and_the_sender() {
 }
 
 /// The floor relay serves rosbridge's publish and subscribe well enough for the delivery
-/// bench to measure it: every message reaches the subscriber, and the relay's CPU is read.
+/// bench to measure it, on both WebSocket layers: every message reaches the subscriber,
+/// and the relay's CPU is read.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn bench_ws_floor_relays_the_delivery_bench_and_its_cpu_is_measured() {
     use tokio::io::AsyncBufReadExt;
-    let mut floor = tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
-        .args(["bench", "ws-floor", "--listen", "127.0.0.1:0"])
-        .stdout(std::process::Stdio::piped())
-        .kill_on_drop(true)
-        .spawn()
-        .expect("the binary runs");
-    let pid = floor.id().expect("running").to_string();
-    let mut lines = tokio::io::BufReader::new(floor.stdout.take().expect("piped")).lines();
-    let line = tokio::time::timeout(Duration::from_secs(10), lines.next_line())
-        .await
-        .expect("the floor relay says where it listens")
-        .expect("readable")
-        .expect("a line");
-    let addr = line
-        .strip_prefix("listening on ")
-        .unwrap_or_else(|| panic!("unexpected first line {line:?}"));
-    let s = bench_json(&[
-        "delivery",
-        "--protocol",
-        "rosbridge-json",
-        "--server",
-        &format!("ws://{addr}"),
-        "--server-pid",
-        &pid,
-        "--rate",
-        "2000",
-        "--duration",
-        "1",
-        "--warmup",
-        "1",
-    ])
-    .await;
-    let sent = s["sent_per_sec"].as_f64().expect("sent");
-    let delivered = s["delivered_per_sec"].as_f64().expect("delivered");
-    assert!(sent > 500.0, "{s}");
-    // Nothing is dropped on the way: what arrives in the window is what was sent in it,
-    // give or take the messages in flight at its edges.
-    assert!((delivered - sent).abs() <= sent * 0.1, "{s}");
-    let us = s["server_cpu_us_per_delivery"].as_f64().unwrap_or(-1.0);
-    assert!(us >= 0.0, "no CPU figure for the floor relay: {s}");
+    for layer in ["fleetlink", "tungstenite"] {
+        let mut floor = tokio::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"))
+            .args([
+                "bench",
+                "ws-floor",
+                "--listen",
+                "127.0.0.1:0",
+                "--websocket",
+                layer,
+            ])
+            .stdout(std::process::Stdio::piped())
+            .kill_on_drop(true)
+            .spawn()
+            .expect("the binary runs");
+        let pid = floor.id().expect("running").to_string();
+        let mut lines = tokio::io::BufReader::new(floor.stdout.take().expect("piped")).lines();
+        let line = tokio::time::timeout(Duration::from_secs(10), lines.next_line())
+            .await
+            .expect("the floor relay says where it listens")
+            .expect("readable")
+            .expect("a line");
+        let addr = line
+            .strip_prefix("listening on ")
+            .unwrap_or_else(|| panic!("unexpected first line {line:?}"));
+        let s = bench_json(&[
+            "delivery",
+            "--protocol",
+            "rosbridge-json",
+            "--server",
+            &format!("ws://{addr}"),
+            "--server-pid",
+            &pid,
+            "--rate",
+            "2000",
+            "--duration",
+            "1",
+            "--warmup",
+            "1",
+        ])
+        .await;
+        let sent = s["sent_per_sec"].as_f64().expect("sent");
+        let delivered = s["delivered_per_sec"].as_f64().expect("delivered");
+        assert!(sent > 500.0, "{layer}: {s}");
+        // Nothing is dropped on the way: what arrives in the window is what was sent in
+        // it, give or take the messages in flight at its edges.
+        assert!((delivered - sent).abs() <= sent * 0.1, "{layer}: {s}");
+        let us = s["server_cpu_us_per_delivery"].as_f64().unwrap_or(-1.0);
+        assert!(us >= 0.0, "{layer}: no CPU figure for the floor relay: {s}");
+    }
 }

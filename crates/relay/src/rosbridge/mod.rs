@@ -2,8 +2,9 @@
 //! local programs.
 //!
 //! - [`session`]: one connection: reads operations, answers errors with `status`, writes
-//!   the client's outbox to the socket. Generic over any WebSocket `Stream`/`Sink`, so it
-//!   is tested over channels as well as real sockets.
+//!   the client's outbox to the socket. Generic over any WebSocket `Stream`/`Sink` pair
+//!   (the hub's and the agent's are [`crate::websocket`]'s halves), so it is tested over
+//!   channels as well as real sockets.
 //! - [`calls`]: services and actions: the client as caller and as provider.
 //! - [`rosapi`]: the `/rosapi` services answered from the router's own tables.
 

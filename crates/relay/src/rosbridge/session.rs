@@ -34,6 +34,7 @@ use crate::queue::DropReason;
 use crate::rosbridge::rosapi::{self, Answer};
 use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
 use crate::transcode::NormalizeCache;
+use crate::websocket::PartsSink;
 
 /// Settings shared by all rosbridge sessions of one server.
 #[derive(Debug, Clone)]
@@ -60,26 +61,28 @@ impl Default for SessionConfig {
 /// without reading the answers is slowed down, nobody else is.
 const REPLY_QUEUE: usize = 256;
 
-/// Runs a session until the client leaves. `ws` is an accepted WebSocket.
+/// Runs a session until the client leaves: `stream` gives the client's messages, `sink`
+/// takes what is sent to it (an accepted WebSocket's halves, see [`crate::websocket`]).
 /// Ends when the client leaves or `shutdown` is cancelled.
-pub async fn serve<S>(
-    ws: S,
+///
+/// Control frames are answered here: a `Ping` with a `Pong`, a `Close` with a `Close`
+/// echoing its code; a frame that breaks the protocol closes the connection with the
+/// code that says why (1002, 1007 for text that is not UTF-8, 1009 when too large).
+pub async fn serve<K, S>(
+    sink: K,
+    stream: S,
     router: Arc<Router>,
     addr: Option<SocketAddr>,
     cfg: Arc<SessionConfig>,
     shutdown: CancellationToken,
     auth: SessionAuth,
 ) where
-    S: Stream<Item = Result<WsMessage, WsError>>
-        + Sink<WsMessage, Error = WsError>
-        + Unpin
-        + Send
-        + 'static,
+    K: PartsSink + Send + 'static,
+    S: Stream<Item = Result<WsMessage, WsError>> + Unpin + Send,
 {
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (peer, mut peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    let (sink, stream) = ws.split();
     let mut stream = Waits {
         inner: stream,
         waited: false,
@@ -188,17 +191,34 @@ pub async fn serve<S>(
                     None => Request::from_cbor(&binary).map(Incoming::Other),
                 }
             }
-            Ok(WsMessage::Close(_)) => break,
-            Ok(_) => continue,
-            Err(WsError::Capacity(e)) => {
-                let close = CloseFrame {
-                    code: CloseCode::Size,
-                    reason: format!("frame too large: {e}").into(),
-                };
-                let _ = session.replies.send(Reply::Close(close)).await;
+            Ok(WsMessage::Ping(p)) => {
+                session.send(WsMessage::Pong(p)).await;
+                continue;
+            }
+            Ok(WsMessage::Close(c)) => {
+                // The close handshake: the client's code echoed back.
+                let echo = c.map(|c| CloseFrame {
+                    code: c.code,
+                    reason: "".into(),
+                });
+                let _ = session.replies.send(Reply::Close(echo)).await;
                 break;
             }
-            Err(_) => break,
+            Ok(_) => continue,
+            Err(e) => {
+                let (code, reason) = match &e {
+                    WsError::Capacity(e) => (CloseCode::Size, format!("frame too large: {e}")),
+                    WsError::Protocol(e) => (CloseCode::Protocol, e.to_string()),
+                    WsError::Utf8(e) => (CloseCode::Invalid, e.clone()),
+                    _ => break,
+                };
+                let close = CloseFrame {
+                    code,
+                    reason: reason.into(),
+                };
+                let _ = session.replies.send(Reply::Close(Some(close))).await;
+                break;
+            }
         };
         // A publish may wait for room on a no-drop topic (`Session::wait_for_room`); a
         // shutdown must not wait for it. `biased`: the step nearly always finishes at once.
@@ -281,7 +301,8 @@ enum Known {
 
 enum Reply {
     Frame(WsMessage),
-    Close(CloseFrame),
+    /// Sent last: the writer then closes the connection.
+    Close(Option<CloseFrame>),
 }
 
 struct Published {
@@ -752,12 +773,10 @@ impl Session {
             p.seq += 1;
             let size = msg.len();
             let (received, stamp) = clock.arrival();
-            let frame = text
-                .filter(|_| size <= EAGER_JSON_FRAME)
-                .and_then(|t| text_of(t, &msg))
-                .map(|m| outbound::publish_json_text(meta.name.as_str(), m));
+            // Still the text it came in: writers frame it as it is.
+            let json_text = text.and_then(|t| text_of(t, &msg)).is_some();
             p.topic
-                .publish_framed(meta, *client, p.seq, stamp, msg, received, frame);
+                .publish_framed(meta, *client, p.seq, stamp, msg, received, json_text);
             gate.done(name, GateOp::Publish, size);
             Ok(None)
         })())
@@ -955,11 +974,6 @@ fn is_object(p: &Payload) -> bool {
     }
 }
 
-/// Largest message whose JSON frame the publisher builds (`Session::publish_on_known`).
-/// Small messages are where the writers' conversion and UTF-8 check weigh; a large one
-/// is framed when a subscriber first asks, so that no frame is built that nobody wants.
-const EAGER_JSON_FRAME: usize = 16 << 10;
-
 /// `p`'s text when `p` is JSON lying within `text` (a slice of the frame it came in).
 fn text_of<'t>(text: &'t str, p: &Payload) -> Option<&'t str> {
     if p.encoding != Encoding::Json {
@@ -978,7 +992,7 @@ const BURST: usize = 32;
 /// messages goes out in one write, and nothing waits longer than four budgets' work.
 const BURST_TURNS: u32 = 4;
 
-async fn write_loop<K>(
+async fn write_loop<K: PartsSink>(
     mut sink: K,
     outbox: Arc<Outbox>,
     mut replies: mpsc::Receiver<Reply>,
@@ -986,9 +1000,7 @@ async fn write_loop<K>(
     batch: usize,
     gate: Arc<Mutex<Option<Box<dyn Gate>>>>,
     level: Arc<std::sync::atomic::AtomicU8>,
-) where
-    K: Sink<WsMessage, Error = WsError> + Unpin,
-{
+) {
     let mut warned: HashMap<TopicName, ()> = HashMap::new();
     // Frames written since the last flush, and the turns this task has given the others
     // since (see below).
@@ -1005,10 +1017,7 @@ async fn write_loop<K>(
                     }
                     wrote = true;
                 }
-                Reply::Close(c) => {
-                    let _ = sink.send(WsMessage::Close(Some(c))).await;
-                    return;
-                }
+                Reply::Close(c) => return close_with(&mut sink, c).await,
             }
         }
         let now = Instant::now();
@@ -1044,7 +1053,24 @@ async fn write_loop<K>(
                 .fragment_size
                 .map(|s| s as usize)
                 .filter(|s| *s > 0);
-            // Most messages: a frame the publisher built, sent whole.
+            // Most messages: JSON text as its publisher sent it, framed into the socket
+            // buffer; or a frame already built, sent whole. A large message is framed
+            // once for all its subscribers instead (below), and each writes that frame
+            // from where it lies.
+            if fragment.is_none()
+                && kind == FrameKind::RosbridgeJson
+                && let Some(parts) = msg.json_parts()
+                && msg.payload.len() <= crate::websocket::COPY_UP_TO
+            {
+                if crate::websocket::feed_parts(&mut sink, &parts)
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+                wrote = true;
+                continue;
+            }
             let msg = match fragment {
                 None => match Message::take_built_frame(msg, kind) {
                     Ok(frame) => {
@@ -1129,10 +1155,7 @@ async fn write_loop<K>(
                         return;
                     }
                 }
-                Some(Reply::Close(c)) => {
-                    let _ = sink.send(WsMessage::Close(Some(c))).await;
-                    return;
-                }
+                Some(Reply::Close(c)) => return close_with(&mut sink, c).await,
                 None => {
                     // The reader is gone: flush what is queued and stop.
                     let _ = sink.close().await;
@@ -1148,4 +1171,13 @@ async fn write_loop<K>(
             } => {}
         }
     }
+}
+
+/// Sends `c` as the last frame and closes the connection.
+async fn close_with<K>(sink: &mut K, c: Option<CloseFrame>)
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    let _ = sink.send(WsMessage::Close(c)).await;
+    let _ = sink.close().await;
 }

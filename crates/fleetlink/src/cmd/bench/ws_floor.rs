@@ -6,20 +6,23 @@
 //! `"advertise"` is ignored, and every other text frame is sent on, as the same bytes, to
 //! every subscriber. It does not parse JSON, check types, authenticate, keep topics or
 //! queue with a policy. What it keeps is the shape the hub has, so the two figures
-//! compare: tungstenite on tokio, the same 64 KiB read buffer, a reader task and a
-//! writer task per connection, the reader giving way after each tokio budget of
-//! operations, and the writer flushing when it has nothing more to write. Run it where
-//! `fleetlink bench delivery --protocol rosbridge-json --server-pid <pid>` can measure it:
-//! the hub's figure minus this one is what the hub's own work costs per message.
+//! compare: tokio, a reader task and a writer task per connection, the reader giving way
+//! after each tokio budget of operations, and the writer flushing when it has nothing
+//! more to write. `--websocket` picks the WebSocket layer: `fleetlink`, the one the hub's
+//! rosbridge sessions run on (`fleetlink_relay::websocket`), or `tungstenite`
+//! (tokio-tungstenite's stream, split, with the 64 KiB read buffer the hub used), to
+//! measure what each costs. Run it where `fleetlink bench delivery --protocol
+//! rosbridge-json --server-pid <pid>` can measure it: the hub's figure minus this one is
+//! what the hub's own work costs per message.
 
 use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 
 use anyhow::Context;
-use futures_util::{SinkExt, StreamExt};
+use futures_util::{Sink, SinkExt, Stream, StreamExt};
 use tokio::sync::mpsc;
-use tokio_tungstenite::tungstenite::Message;
 use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -27,9 +30,23 @@ pub struct Args {
     /// stdout.
     #[arg(long, default_value = "127.0.0.1:0")]
     listen: SocketAddr,
+    /// The WebSocket layer under the relay.
+    #[arg(long, value_enum, default_value_t = Layer::Fleetlink)]
+    websocket: Layer,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum Layer {
+    /// The hub's own reader and writer halves (`fleetlink_relay::websocket`).
+    Fleetlink,
+    /// tokio-tungstenite's `WebSocketStream`, split into its two halves.
+    Tungstenite,
 }
 
 type Subscribers = Arc<Mutex<Vec<mpsc::UnboundedSender<Message>>>>;
+
+/// Largest message the relay takes, as the hub's default.
+const MAX_MESSAGE: usize = 16 << 20;
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
@@ -43,17 +60,33 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             let (tcp, _) = listener.accept().await.context("accepting")?;
             // As the hub does; a connection where it fails is still served.
             let _ = tcp.set_nodelay(true);
-            tokio::spawn(serve(tcp, subscribers.clone()));
+            tokio::spawn(accept(tcp, args.websocket, subscribers.clone()));
         }
     })
 }
 
-async fn serve(tcp: tokio::net::TcpStream, subscribers: Subscribers) {
+async fn accept(tcp: tokio::net::TcpStream, layer: Layer, subscribers: Subscribers) {
     let cfg = WebSocketConfig::default().read_buffer_size(64 * 1024);
     let Ok(ws) = tokio_tungstenite::accept_async_with_config(tcp, Some(cfg)).await else {
         return;
     };
-    let (mut sink, mut stream) = ws.split();
+    match layer {
+        Layer::Fleetlink => {
+            let (sink, stream) = fleetlink_relay::websocket::server(ws.into_inner(), MAX_MESSAGE);
+            relay(sink, stream, subscribers).await
+        }
+        Layer::Tungstenite => {
+            let (sink, stream) = ws.split();
+            relay(sink, stream, subscribers).await
+        }
+    }
+}
+
+async fn relay<K, S>(mut sink: K, mut stream: S, subscribers: Subscribers)
+where
+    K: Sink<Message, Error = WsError> + Unpin + Send + 'static,
+    S: Stream<Item = Result<Message, WsError>> + Unpin,
+{
     let (tx, mut rx) = mpsc::unbounded_channel::<Message>();
     tokio::spawn(async move {
         while let Some(m) = rx.recv().await {

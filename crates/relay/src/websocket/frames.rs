@@ -1,0 +1,470 @@
+//! RFC 6455 frames as a server reads and writes them, without I/O.
+//!
+//! [`Decoder::decode`] takes whole messages off the front of a read buffer: it checks
+//! each frame header, unmasks the payload in place and hands the payload on as a slice
+//! of that buffer (no copy), putting fragmented messages together up to the size limit.
+//! [`encode_header`] writes a server frame's header (servers never mask).
+//!
+//! ```text
+//!  byte 0: FIN | RSV1 RSV2 RSV3 | opcode (4 bits)     0x0 continue, 0x1 text, 0x2 binary,
+//!                                                     0x8 close, 0x9 ping, 0xA pong
+//!  byte 1: MASK | length (7 bits)                     126: u16 follows, 127: u64 follows
+//!  [2 or 8 bytes of length, big-endian] [4 bytes of mask key when MASK] payload
+//! ```
+//!
+//! A frame is refused when it breaks the protocol (reserved bits or opcodes, a client
+//! frame without a mask, a control frame that is fragmented or over 125 bytes, a
+//! continuation without a start), when its message would exceed the limit — before any
+//! of its payload is buffered — and when a text message or a close reason is not UTF-8.
+
+use bytes::{Buf, BufMut, BytesMut};
+use tokio_tungstenite::tungstenite::error::{CapacityError, ProtocolError};
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::protocol::frame::coding::{CloseCode, Data};
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage, Utf8Bytes};
+
+/// Longest control frame payload (RFC 6455, 5.5).
+const MAX_CONTROL: usize = 125;
+
+/// Reads client frames into messages.
+#[derive(Debug)]
+pub struct Decoder {
+    max_message: usize,
+    /// A fragmented message being put together: whether it is text, and its bytes so far.
+    partial: Option<(bool, BytesMut)>,
+}
+
+/// What a frame header says, once checked.
+struct Header {
+    fin: bool,
+    opcode: u8,
+    /// Bytes the header takes, mask key included.
+    len: usize,
+    payload: usize,
+    mask: [u8; 4],
+}
+
+impl Decoder {
+    /// A decoder that refuses messages (whole, after reassembly) over `max_message` bytes.
+    pub fn new(max_message: usize) -> Decoder {
+        Decoder {
+            max_message,
+            partial: None,
+        }
+    }
+
+    /// Bytes the next frame needs in all (header and payload) when `buf` holds less, so
+    /// the reader can make room for it in one go.
+    pub fn wanted(&self, buf: &[u8]) -> Option<usize> {
+        match parse_header(buf) {
+            Ok(Some(h)) => Some(h.len.saturating_add(h.payload)),
+            _ => None,
+        }
+    }
+
+    /// Whether a fragmented message is waiting for more frames.
+    pub fn in_message(&self) -> bool {
+        self.partial.is_some()
+    }
+
+    /// Takes the next whole message off the front of `buf`, or `None` when `buf` does not
+    /// hold one yet (nothing is consumed then, except completed fragments of a message).
+    /// Control frames come out as they arrive, also between the fragments of a message.
+    pub fn decode(&mut self, buf: &mut BytesMut) -> Result<Option<WsMessage>, WsError> {
+        loop {
+            let Some(h) = parse_header(buf)? else {
+                return Ok(None);
+            };
+            let so_far = match (&self.partial, h.opcode) {
+                (Some((_, b)), 0x0) => b.len(),
+                _ => 0,
+            };
+            if h.opcode < 8 && so_far.saturating_add(h.payload) > self.max_message {
+                return Err(WsError::Capacity(CapacityError::MessageTooLong {
+                    size: so_far.saturating_add(h.payload),
+                    max_size: self.max_message,
+                }));
+            }
+            if buf.len() - h.len < h.payload {
+                return Ok(None);
+            }
+            buf.advance(h.len);
+            let mut payload = buf.split_to(h.payload);
+            unmask(&mut payload, h.mask);
+            let text = match h.opcode {
+                0x1 => true,
+                0x2 => false,
+                0x0 => {
+                    let Some((text, mut whole)) = self.partial.take() else {
+                        return Err(WsError::Protocol(ProtocolError::UnexpectedContinueFrame));
+                    };
+                    whole.extend_from_slice(&payload);
+                    if !h.fin {
+                        self.partial = Some((text, whole));
+                        continue;
+                    }
+                    return data(text, whole).map(Some);
+                }
+                0x8 => return close(payload).map(|c| Some(WsMessage::Close(c))),
+                0x9 => return Ok(Some(WsMessage::Ping(payload.freeze()))),
+                0xA => return Ok(Some(WsMessage::Pong(payload.freeze()))),
+                _ => unreachable!("parse_header refuses other opcodes"),
+            };
+            if let Some((was_text, _)) = self.partial {
+                let kind = if was_text { Data::Text } else { Data::Binary };
+                return Err(WsError::Protocol(ProtocolError::ExpectedFragment(kind)));
+            }
+            if !h.fin {
+                self.partial = Some((text, payload));
+                continue;
+            }
+            return data(text, payload).map(Some);
+        }
+    }
+}
+
+/// A whole data message.
+fn data(text: bool, payload: BytesMut) -> Result<WsMessage, WsError> {
+    if !text {
+        return Ok(WsMessage::Binary(payload.freeze()));
+    }
+    Utf8Bytes::try_from(payload.freeze())
+        .map(WsMessage::Text)
+        .map_err(|e| WsError::Utf8(format!("a text message is not UTF-8: {e}")))
+}
+
+/// A close frame's code and reason (RFC 6455, 5.5.1 and 7.4).
+fn close(payload: BytesMut) -> Result<Option<CloseFrame>, WsError> {
+    match payload.len() {
+        0 => Ok(None),
+        1 => Err(WsError::Protocol(ProtocolError::InvalidCloseSequence)),
+        _ => {
+            let code = CloseCode::from(u16::from_be_bytes([payload[0], payload[1]]));
+            if !code.is_allowed() {
+                return Err(WsError::Protocol(ProtocolError::InvalidCloseSequence));
+            }
+            let reason = Utf8Bytes::try_from(payload.freeze().slice(2..))
+                .map_err(|e| WsError::Utf8(format!("a close reason is not UTF-8: {e}")))?;
+            Ok(Some(CloseFrame { code, reason }))
+        }
+    }
+}
+
+/// The header at the front of `buf`, checked; `None` while it is incomplete.
+#[inline]
+fn parse_header(buf: &[u8]) -> Result<Option<Header>, WsError> {
+    let [b0, b1, ..] = *buf else {
+        return Ok(None);
+    };
+    let (fin, opcode) = (b0 & 0x80 != 0, b0 & 0x0F);
+    if b0 & 0x70 != 0 {
+        return Err(WsError::Protocol(ProtocolError::NonZeroReservedBits));
+    }
+    match opcode {
+        0x0..=0x2 => {}
+        0x3..=0x7 => {
+            return Err(WsError::Protocol(ProtocolError::UnknownDataFrameType(
+                opcode,
+            )));
+        }
+        0x8..=0xA => {
+            if !fin {
+                return Err(WsError::Protocol(ProtocolError::FragmentedControlFrame));
+            }
+            if usize::from(b1 & 0x7F) > MAX_CONTROL {
+                return Err(WsError::Protocol(ProtocolError::ControlFrameTooBig));
+            }
+        }
+        _ => {
+            return Err(WsError::Protocol(ProtocolError::UnknownControlFrameType(
+                opcode,
+            )));
+        }
+    }
+    if b1 & 0x80 == 0 {
+        return Err(WsError::Protocol(ProtocolError::UnmaskedFrameFromClient));
+    }
+    let (extra, payload) = match b1 & 0x7F {
+        126 => match buf.get(2..4) {
+            Some(b) => (2, usize::from(u16::from_be_bytes([b[0], b[1]]))),
+            None => return Ok(None),
+        },
+        127 => match buf.get(2..10) {
+            Some(b) => {
+                // A length beyond memory (or with the top bit set, which RFC 6455 5.2
+                // forbids) is over any limit: the caller refuses it as too long.
+                let n = u64::from_be_bytes(b.try_into().expect("eight bytes"));
+                (8, usize::try_from(n).unwrap_or(usize::MAX))
+            }
+            None => return Ok(None),
+        },
+        n => (0, usize::from(n)),
+    };
+    let Some(key) = buf.get(2 + extra..6 + extra) else {
+        return Ok(None);
+    };
+    Ok(Some(Header {
+        fin,
+        opcode,
+        len: 6 + extra,
+        payload,
+        mask: key.try_into().expect("four bytes"),
+    }))
+}
+
+/// Unmasks a client payload in place, eight bytes at a time.
+#[inline]
+fn unmask(payload: &mut [u8], key: [u8; 4]) {
+    let [a, b, c, d] = key;
+    let word = u64::from_ne_bytes([a, b, c, d, a, b, c, d]);
+    let mut words = payload.chunks_exact_mut(8);
+    for w in &mut words {
+        let v = u64::from_ne_bytes((&*w).try_into().expect("eight bytes")) ^ word;
+        w.copy_from_slice(&v.to_ne_bytes());
+    }
+    for (i, x) in words.into_remainder().iter_mut().enumerate() {
+        *x ^= key[i & 3];
+    }
+}
+
+/// Writes the header of an unmasked (server) frame: `opcode` with FIN set.
+#[inline]
+pub fn encode_header(out: &mut BytesMut, opcode: u8, len: usize) {
+    let b0 = 0x80 | opcode;
+    if len <= 125 {
+        out.put_slice(&[b0, len as u8]);
+    } else if let Ok(n) = u16::try_from(len) {
+        out.put_slice(&[b0, 126]);
+        out.put_u16(n);
+    } else {
+        out.put_slice(&[b0, 127]);
+        out.put_u64(len as u64);
+    }
+}
+
+/// The opcode and payload of a message as a server sends it; `None` for raw frames,
+/// which a server session never writes.
+pub fn opcode_of(m: &WsMessage) -> Option<u8> {
+    Some(match m {
+        WsMessage::Text(_) => 0x1,
+        WsMessage::Binary(_) => 0x2,
+        WsMessage::Close(_) => 0x8,
+        WsMessage::Ping(_) => 0x9,
+        WsMessage::Pong(_) => 0xA,
+        WsMessage::Frame(_) => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A client frame: masked with `key`.
+    fn frame(fin: bool, opcode: u8, payload: &[u8], key: [u8; 4]) -> Vec<u8> {
+        let mut out = vec![if fin { 0x80 } else { 0 } | opcode];
+        match payload.len() {
+            n if n <= 125 => out.push(0x80 | n as u8),
+            n if n <= 0xFFFF => {
+                out.push(0x80 | 126);
+                out.extend_from_slice(&(n as u16).to_be_bytes());
+            }
+            n => {
+                out.push(0x80 | 127);
+                out.extend_from_slice(&(n as u64).to_be_bytes());
+            }
+        }
+        out.extend_from_slice(&key);
+        out.extend(payload.iter().enumerate().map(|(i, b)| b ^ key[i % 4]));
+        out
+    }
+
+    const KEY: [u8; 4] = [0x37, 0xfa, 0x21, 0x3d];
+
+    fn decode_all(bytes: &[u8], max: usize) -> Result<Vec<WsMessage>, WsError> {
+        let mut d = Decoder::new(max);
+        let mut buf = BytesMut::from(bytes);
+        let mut out = Vec::new();
+        while let Some(m) = d.decode(&mut buf)? {
+            out.push(m);
+        }
+        assert!(buf.is_empty(), "all bytes taken");
+        Ok(out)
+    }
+
+    #[test]
+    fn messages_of_every_length_format_come_out_unmasked() {
+        for len in [0, 1, 7, 8, 9, 125, 126, 127, 65_535, 65_536, 200_000] {
+            let body: Vec<u8> = (0..len).map(|i| (i * 7 % 251) as u8).collect();
+            let got = decode_all(&frame(true, 0x2, &body, KEY), 1 << 20).expect("valid");
+            assert_eq!(got, vec![WsMessage::Binary(body.into())], "length {len}");
+        }
+    }
+
+    #[test]
+    fn a_message_arriving_byte_by_byte_comes_out_once_whole() {
+        let bytes = frame(true, 0x1, br#"{"op":"publish"}"#, KEY);
+        let mut d = Decoder::new(1024);
+        let mut buf = BytesMut::new();
+        for (i, b) in bytes.iter().enumerate() {
+            assert_eq!(d.decode(&mut buf).expect("valid so far"), None, "byte {i}");
+            buf.put_u8(*b);
+        }
+        assert_eq!(
+            d.decode(&mut buf).expect("valid"),
+            Some(WsMessage::text(r#"{"op":"publish"}"#))
+        );
+    }
+
+    #[test]
+    fn fragments_are_joined_and_control_frames_between_them_pass() {
+        let mut bytes = frame(false, 0x1, "héllo ".as_bytes(), KEY);
+        bytes.extend(frame(true, 0x9, b"are you there", KEY));
+        // A code point split across fragments is whole once joined.
+        let e = "é".as_bytes();
+        bytes.extend(frame(false, 0x0, &[b'w', e[0]], KEY));
+        bytes.extend(frame(true, 0x0, &[e[1], b'!'], KEY));
+        let got = decode_all(&bytes, 1024).expect("valid");
+        assert_eq!(
+            got,
+            vec![
+                WsMessage::Ping("are you there".into()),
+                WsMessage::text("héllo wé!"),
+            ]
+        );
+    }
+
+    #[test]
+    fn close_frames_carry_their_code_and_reason() {
+        let mut body = 1000u16.to_be_bytes().to_vec();
+        body.extend_from_slice(b"bye");
+        let got = decode_all(&frame(true, 0x8, &body, KEY), 1024).expect("valid");
+        assert_eq!(
+            got,
+            vec![WsMessage::Close(Some(CloseFrame {
+                code: CloseCode::Normal,
+                reason: "bye".into()
+            }))]
+        );
+        let got = decode_all(&frame(true, 0x8, b"", KEY), 1024).expect("valid");
+        assert_eq!(got, vec![WsMessage::Close(None)]);
+    }
+
+    fn refused(bytes: &[u8], max: usize) -> WsError {
+        decode_all(bytes, max).expect_err("refused")
+    }
+
+    #[test]
+    fn malformed_frames_are_refused_with_the_rule_they_break() {
+        use ProtocolError as P;
+        let proto = |e: WsError| match e {
+            WsError::Protocol(p) => p,
+            other => panic!("not a protocol error: {other:?}"),
+        };
+        // Reserved bits: no extension is negotiated.
+        let mut f = frame(true, 0x1, b"x", KEY);
+        f[0] |= 0x40;
+        assert_eq!(proto(refused(&f, 64)), P::NonZeroReservedBits);
+        // Reserved opcodes.
+        assert_eq!(
+            proto(refused(&frame(true, 0x3, b"", KEY), 64)),
+            P::UnknownDataFrameType(3)
+        );
+        assert_eq!(
+            proto(refused(&frame(true, 0xB, b"", KEY), 64)),
+            P::UnknownControlFrameType(0xB)
+        );
+        // A client must mask.
+        let mut f = frame(true, 0x1, b"x", KEY);
+        f[1] &= 0x7F;
+        assert_eq!(proto(refused(&f, 64)), P::UnmaskedFrameFromClient);
+        // Control frames: whole and short.
+        assert_eq!(
+            proto(refused(&frame(false, 0x9, b"", KEY), 64)),
+            P::FragmentedControlFrame
+        );
+        assert_eq!(
+            proto(refused(&frame(true, 0x9, &[0; 126], KEY), 1024)),
+            P::ControlFrameTooBig
+        );
+        // Continuation without a start; a new message before the last one ended.
+        assert_eq!(
+            proto(refused(&frame(true, 0x0, b"x", KEY), 64)),
+            P::UnexpectedContinueFrame
+        );
+        let mut f = frame(false, 0x1, b"x", KEY);
+        f.extend(frame(true, 0x2, b"y", KEY));
+        assert_eq!(proto(refused(&f, 64)), P::ExpectedFragment(Data::Text));
+        // A one-byte close body, a close code no endpoint may send.
+        assert_eq!(
+            proto(refused(&frame(true, 0x8, &[3], KEY), 64)),
+            P::InvalidCloseSequence
+        );
+        assert_eq!(
+            proto(refused(&frame(true, 0x8, &1005u16.to_be_bytes(), KEY), 64)),
+            P::InvalidCloseSequence
+        );
+        // A 64-bit length with its top bit set is over any limit.
+        let mut f = vec![0x82, 0x80 | 127];
+        f.extend_from_slice(&(1u64 << 63).to_be_bytes());
+        f.extend_from_slice(&KEY);
+        assert!(matches!(refused(&f, 64), WsError::Capacity(_)));
+    }
+
+    #[test]
+    fn text_that_is_not_utf8_is_refused_whole_or_fragmented() {
+        assert!(matches!(
+            refused(&frame(true, 0x1, &[0xC3, 0x28], KEY), 64),
+            WsError::Utf8(_)
+        ));
+        let mut f = frame(false, 0x1, b"ok", KEY);
+        f.extend(frame(true, 0x0, &[0xFF], KEY));
+        assert!(matches!(refused(&f, 64), WsError::Utf8(_)));
+        let mut close = 1000u16.to_be_bytes().to_vec();
+        close.push(0xFF);
+        assert!(matches!(
+            refused(&frame(true, 0x8, &close, KEY), 64),
+            WsError::Utf8(_)
+        ));
+    }
+
+    #[test]
+    fn an_oversized_message_is_refused_from_its_header_alone() {
+        // Only the header of a 1 MB frame: refused before its payload is waited for.
+        let f = frame(true, 0x2, &vec![0; 1 << 20], KEY);
+        let mut d = Decoder::new(1000);
+        let mut buf = BytesMut::from(&f[..14]);
+        match d.decode(&mut buf) {
+            Err(WsError::Capacity(CapacityError::MessageTooLong { size, max_size })) => {
+                assert_eq!((size, max_size), (1 << 20, 1000));
+            }
+            other => panic!("expected too long, got {other:?}"),
+        }
+        // Fragments count together.
+        let mut f = frame(false, 0x2, &[0; 600], KEY);
+        f.extend(frame(true, 0x0, &[0; 600], KEY));
+        assert!(matches!(refused(&f, 1000), WsError::Capacity(_)));
+        // Exactly at the limit is fine.
+        assert_eq!(
+            decode_all(&frame(true, 0x2, &[0; 1000], KEY), 1000)
+                .unwrap()
+                .len(),
+            1
+        );
+    }
+
+    #[test]
+    fn headers_written_are_headers_read() {
+        for len in [0usize, 5, 125, 126, 65_535, 65_536, 1 << 20] {
+            let mut out = BytesMut::new();
+            encode_header(&mut out, 0x2, len);
+            // Read back as a client frame would be: add a zero mask key.
+            let mut masked = out.to_vec();
+            masked[1] |= 0x80;
+            masked.extend_from_slice(&[0; 4]);
+            let h = parse_header(&masked).expect("valid").expect("whole");
+            assert_eq!((h.payload, h.len), (len, out.len() + 4), "length {len}");
+            assert!(h.fin);
+            assert_eq!(h.opcode, 0x2);
+        }
+    }
+}
