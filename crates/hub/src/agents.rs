@@ -627,7 +627,7 @@ impl AgentSession {
                         // message's own receive time: no second clock read).
                         if let Some(off) = self.live.clock_offset_ns() {
                             let origin = stamp_ns as i128 + off as i128;
-                            let at = fleetlink_relay::instant_to_unix_nanos(msg.received) as i128;
+                            let at = msg.received_unix_ns() as i128;
                             if at >= origin {
                                 p.topic.stats.record_latency((at - origin) as u64);
                             }

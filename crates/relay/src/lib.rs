@@ -62,14 +62,29 @@ pub use queue::{DropReason, OutboundQueue, QosQueue};
 pub use router::{ClientInfo, ClientKind, Router, Topic};
 pub use transcode::{GenericTranscoder, TranscodeError, Transcoder};
 
+/// One reading of both clocks, taken at first use: the pair that converts between them.
+fn clock_base() -> (std::time::Instant, u64) {
+    static BASE: std::sync::OnceLock<(std::time::Instant, u64)> = std::sync::OnceLock::new();
+    *BASE.get_or_init(|| (std::time::Instant::now(), unix_nanos()))
+}
+
 /// The Unix time of an `Instant`, from one reading of both clocks taken at first use:
 /// cheaper than reading the system clock for every message, and monotonic.
 pub fn instant_to_unix_nanos(at: std::time::Instant) -> u64 {
-    static BASE: std::sync::OnceLock<(std::time::Instant, u64)> = std::sync::OnceLock::new();
-    let (i0, u0) = *BASE.get_or_init(|| (std::time::Instant::now(), unix_nanos()));
+    let (i0, u0) = clock_base();
     match at.checked_duration_since(i0) {
         Some(d) => u0 + d.as_nanos() as u64,
         None => u0.saturating_sub(i0.duration_since(at).as_nanos() as u64),
+    }
+}
+
+/// The `Instant` of a Unix time made by [`instant_to_unix_nanos`]: the same instant,
+/// to the nanosecond.
+pub fn unix_nanos_to_instant(ns: u64) -> std::time::Instant {
+    let (i0, u0) = clock_base();
+    match ns.checked_sub(u0) {
+        Some(after) => i0 + std::time::Duration::from_nanos(after),
+        None => i0 - std::time::Duration::from_nanos(u0 - ns),
     }
 }
 
@@ -165,6 +180,18 @@ mod tests {
         let p = fleetlink_proto::rosbridge::Publish::from_json_text(text.as_str(), &bytes)
             .expect("the short path");
         assert_eq!(&p.msg.bytes[..], br#"{"data":1}"#);
+    }
+
+    #[test]
+    fn an_instant_survives_the_trip_through_unix_nanoseconds() {
+        let now = std::time::Instant::now();
+        for at in [
+            now,
+            now + std::time::Duration::from_nanos(123_456_789),
+            now - std::time::Duration::from_millis(1500),
+        ] {
+            assert_eq!(unix_nanos_to_instant(instant_to_unix_nanos(at)), at);
+        }
     }
 
     #[test]

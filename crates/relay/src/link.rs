@@ -456,7 +456,7 @@ pub async fn write_link<K>(
             let tid = msg.topic.id;
             if !unadvertise.is_empty() {
                 // Published again since it was seen without a publisher: keep it.
-                unadvertise.retain(|(t, since)| *t != tid || msg.received <= *since);
+                unadvertise.retain(|(t, since)| *t != tid || msg.received() <= *since);
             }
             if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
                 lane.waiting.push_back(msg);

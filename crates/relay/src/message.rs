@@ -68,8 +68,10 @@ pub struct Message {
     pub seq: u64,
     /// When the message was created at its origin (Unix nanoseconds).
     pub stamp_ns: u64,
-    /// When this router received it; queue lag is measured from here.
-    pub received: Instant,
+    /// When this router received it ([`Message::received`]), as Unix nanoseconds on the
+    /// router's monotonic clock ([`crate::instant_to_unix_nanos`]): half the size of an
+    /// `Instant`, which keeps a message within the allocator's small sizes.
+    received_ns: u64,
     /// Who published it; it is never delivered back to its origin.
     pub origin: ClientId,
     pub payload: Payload,
@@ -78,11 +80,40 @@ pub struct Message {
     /// topic's head, the payload and a brace ([`Message::json_parts`]), written by each
     /// subscriber's writer straight into its socket buffer.
     json_text: bool,
+    /// Frames built for subscribers, made when the first one is needed: a message whose
+    /// subscribers all take it as JSON text never allocates them, and stays small (it is
+    /// allocated once per message and held in every subscriber's queue).
+    frames: OnceLock<Box<Frames>>,
+}
+
+/// The frames of one message, each built the first time a subscriber needs it.
+#[derive(Debug, Default)]
+struct Frames {
     json: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor: OnceLock<Result<WsMessage, TranscodeError>>,
     cbor_raw: OnceLock<Result<WsMessage, TranscodeError>>,
     png: OnceLock<Result<WsMessage, TranscodeError>>,
     link: OnceLock<Arc<[Bytes]>>,
+}
+
+impl Frames {
+    fn cell(&self, kind: FrameKind) -> &OnceLock<Result<WsMessage, TranscodeError>> {
+        match kind {
+            FrameKind::RosbridgeJson => &self.json,
+            FrameKind::RosbridgeCbor => &self.cbor,
+            FrameKind::RosbridgeCborRaw => &self.cbor_raw,
+            FrameKind::RosbridgePng => &self.png,
+        }
+    }
+
+    fn cell_mut(&mut self, kind: FrameKind) -> &mut OnceLock<Result<WsMessage, TranscodeError>> {
+        match kind {
+            FrameKind::RosbridgeJson => &mut self.json,
+            FrameKind::RosbridgeCbor => &mut self.cbor,
+            FrameKind::RosbridgeCborRaw => &mut self.cbor_raw,
+            FrameKind::RosbridgePng => &mut self.png,
+        }
+    }
 }
 
 impl Message {
@@ -124,15 +155,11 @@ impl Message {
             topic,
             seq,
             stamp_ns,
-            received,
+            received_ns: crate::instant_to_unix_nanos(received),
             origin,
             json_text: json_text && payload.encoding == Encoding::Json,
             payload,
-            json: OnceLock::new(),
-            cbor: OnceLock::new(),
-            cbor_raw: OnceLock::new(),
-            png: OnceLock::new(),
-            link: OnceLock::new(),
+            frames: OnceLock::new(),
         }
     }
 
@@ -154,7 +181,7 @@ impl Message {
     pub fn resequenced(&self, seq: u64) -> Message {
         Message {
             seq,
-            received: self.received,
+            received_ns: self.received_ns,
             ..Message::new(
                 self.topic.clone(),
                 seq,
@@ -163,6 +190,16 @@ impl Message {
                 self.payload.clone(),
             )
         }
+    }
+
+    /// When this router received it; queue lag is measured from here.
+    pub fn received(&self) -> Instant {
+        crate::unix_nanos_to_instant(self.received_ns)
+    }
+
+    /// [`Message::received`] as Unix nanoseconds (see [`crate::instant_to_unix_nanos`]).
+    pub fn received_unix_ns(&self) -> u64 {
+        self.received_ns
     }
 
     pub fn wire_len(&self) -> usize {
@@ -177,36 +214,29 @@ impl Message {
         mut this: Arc<Message>,
         kind: FrameKind,
     ) -> Result<WsMessage, Arc<Message>> {
-        if !matches!(this.cell(kind).get(), Some(Ok(_))) {
+        let built = |m: &Message| {
+            m.frames
+                .get()
+                .is_some_and(|f| matches!(f.cell(kind).get(), Some(Ok(_))))
+        };
+        if !built(&this) {
             return Err(this);
         }
         if let Some(m) = Arc::get_mut(&mut this)
-            && let Some(Ok(frame)) = m.cell_mut(kind).take()
+            && let Some(f) = m.frames.get_mut()
+            && let Some(Ok(frame)) = f.cell_mut(kind).take()
         {
             return Ok(frame);
         }
-        match this.cell(kind).get() {
+        match this.frames.get().and_then(|f| f.cell(kind).get()) {
             Some(Ok(frame)) => Ok(frame.clone()),
             _ => Err(this),
         }
     }
 
-    fn cell(&self, kind: FrameKind) -> &OnceLock<Result<WsMessage, TranscodeError>> {
-        match kind {
-            FrameKind::RosbridgeJson => &self.json,
-            FrameKind::RosbridgeCbor => &self.cbor,
-            FrameKind::RosbridgeCborRaw => &self.cbor_raw,
-            FrameKind::RosbridgePng => &self.png,
-        }
-    }
-
-    fn cell_mut(&mut self, kind: FrameKind) -> &mut OnceLock<Result<WsMessage, TranscodeError>> {
-        match kind {
-            FrameKind::RosbridgeJson => &mut self.json,
-            FrameKind::RosbridgeCbor => &mut self.cbor,
-            FrameKind::RosbridgeCborRaw => &mut self.cbor_raw,
-            FrameKind::RosbridgePng => &mut self.png,
-        }
+    /// The frame cache, made on first use.
+    fn frames(&self) -> &Frames {
+        self.frames.get_or_init(Box::default)
     }
 
     /// The rosbridge `publish` frame of this message in the given form, built once. JSON
@@ -217,7 +247,8 @@ impl Message {
         tc: &dyn Transcoder,
     ) -> Result<WsMessage, TranscodeError> {
         let topic = self.topic.name.as_str();
-        self.cell(kind)
+        self.frames()
+            .cell(kind)
             .get_or_init(|| match kind {
                 FrameKind::RosbridgeJson => {
                     let frame = match self.json_parts() {
@@ -267,7 +298,8 @@ impl Message {
     /// one `MESSAGE`, or `CHUNK`s when the payload is larger than the chunk size. Built
     /// once; the same bytes go to every downstream link.
     pub fn link_frames(&self) -> Arc<[Bytes]> {
-        self.link
+        self.frames()
+            .link
             .get_or_init(|| {
                 let alias = self.topic.id.0;
                 let p = &self.payload.bytes;
@@ -362,6 +394,18 @@ mod tests {
             true,
         );
         assert!(cbor.json_parts().is_none());
+    }
+
+    #[test]
+    fn a_message_stays_small_until_a_frame_is_built_for_it() {
+        // Allocated once per message and held in every subscriber's queue: kept within
+        // the allocator's small sizes (glibc's fast bins take chunks of up to 128 bytes:
+        // the message, the `Arc`'s two counts and malloc's own word).
+        assert!(
+            std::mem::size_of::<Message>() <= 120,
+            "{}",
+            std::mem::size_of::<Message>()
+        );
     }
 
     #[test]

@@ -176,7 +176,7 @@ impl OutboundQueue for QosQueue {
     }
 
     fn oldest(&self) -> Option<Instant> {
-        self.queue.peek().map(|m| m.received)
+        self.queue.peek().map(|m| m.received())
     }
 }
 

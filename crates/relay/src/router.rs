@@ -19,7 +19,7 @@ use regex::Regex;
 use crate::message::{Message, TopicMeta};
 use crate::names::{ClientId, TopicId, TopicName};
 use crate::outbox::{Delivery, Outbox, SlotId};
-use crate::stats::TopicStats;
+use crate::stats::{StatsBatch, TopicStats};
 use crate::transcode::{GenericTranscoder, Transcoder};
 
 /// Largest compiled regex accepted for a pattern subscription, in bytes of program.
@@ -161,11 +161,18 @@ impl Topic {
         payload: Payload,
         received: std::time::Instant,
     ) -> Arc<Message> {
-        self.publish_framed(meta, origin, seq, stamp_ns, payload, received, false)
+        let msg = Arc::new(Message::received_at(
+            meta, seq, stamp_ns, origin, payload, received,
+        ));
+        self.deliver(&msg);
+        msg
     }
 
-    /// [`Topic::publish_at`] of a message that may be the JSON text a rosbridge client
-    /// sent (`json_text`, see [`Message::framed`]).
+    /// A rosbridge client's publish: [`Topic::publish_at`] of a message that may be the
+    /// JSON text the client sent (`json_text`, see [`Message::framed`]), without handing
+    /// the message back. The last subscriber's queue takes the message without a new
+    /// reference to it, and the topic's counters are added up in the publisher's
+    /// `counts` until it flushes them ([`TopicStats::flush`]).
     #[allow(clippy::too_many_arguments)]
     pub fn publish_framed(
         &self,
@@ -176,22 +183,42 @@ impl Topic {
         payload: Payload,
         received: std::time::Instant,
         json_text: bool,
-    ) -> Arc<Message> {
-        // Built in place: a message is a few hundred bytes, not worth moving twice.
+        counts: &mut StatsBatch,
+    ) {
         let msg = Arc::new(Message::framed(
             meta, seq, stamp_ns, origin, payload, received, json_text,
         ));
-        self.deliver(&msg);
-        msg
+        let now = received;
+        self.last_encoding
+            .store(msg.payload.encoding as u8, Relaxed);
+        self.stats
+            .batch_publish(counts, msg.payload.len(), msg.received_unix_ns());
+        if self.latch.load(Relaxed) {
+            *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
+        }
+        let subscribers = self.subscribers.load();
+        let mut targets = subscribers
+            .iter()
+            .filter(|s| s.client != msg.origin || s.own);
+        let Some(mut last) = targets.next() else {
+            return;
+        };
+        for s in targets {
+            last.outbox.push(last.slot, msg.clone(), now);
+            counts.deliveries += 1;
+            last = s;
+        }
+        last.outbox.push(last.slot, msg, now);
+        counts.deliveries += 1;
     }
 
     /// Fans an existing message out (used when a message is re-published unchanged).
     pub fn deliver(&self, msg: &Arc<Message>) {
-        let now = msg.received;
+        let now = msg.received();
         self.last_encoding
             .store(msg.payload.encoding as u8, Relaxed);
         self.stats
-            .record_publish(msg.payload.len(), crate::instant_to_unix_nanos(now));
+            .record_publish(msg.payload.len(), msg.received_unix_ns());
         let mut pushed = 0u64;
         for s in self.subscribers.load().iter() {
             if s.client != msg.origin || s.own {

@@ -56,6 +56,28 @@ impl NoDropFlow {
     }
 }
 
+/// What one publisher published on one topic since it last added it to the topic's
+/// [`TopicStats`] ([`TopicStats::flush`]): a busy publisher then updates the shared
+/// counters (five atomic additions a message) once per batch. Its owner flushes it
+/// before it waits for more to publish, and at least every few dozen messages.
+#[derive(Debug, Default)]
+pub struct StatsBatch {
+    messages: u64,
+    bytes: u64,
+    /// Deliveries to subscribers' queues.
+    pub deliveries: u64,
+    /// The second the counted messages fall in.
+    second: u64,
+    last_ns: u64,
+}
+
+impl StatsBatch {
+    /// Whether nothing is counted yet.
+    pub fn is_empty(&self) -> bool {
+        self.messages == 0 && self.deliveries == 0
+    }
+}
+
 #[derive(Default)]
 pub struct TopicStats {
     pub messages: AtomicU64,
@@ -76,8 +98,14 @@ pub struct TopicStats {
 
 impl TopicStats {
     pub fn record_publish(&self, bytes: usize, now_ns: u64) {
-        self.messages.fetch_add(1, Relaxed);
-        self.bytes.fetch_add(bytes as u64, Relaxed);
+        self.add_publishes(1, bytes as u64, now_ns);
+    }
+
+    /// `messages` published in the second of `now_ns`, `bytes` in all, the newest at
+    /// `now_ns`.
+    fn add_publishes(&self, messages: u64, bytes: u64, now_ns: u64) {
+        self.messages.fetch_add(messages, Relaxed);
+        self.bytes.fetch_add(bytes, Relaxed);
         self.last_message_ns.store(now_ns, Relaxed);
         let second = now_ns / 1_000_000_000;
         if self.first_second.load(Relaxed) == 0 {
@@ -91,8 +119,32 @@ impl TopicStats {
             b.messages.store(0, Relaxed);
             b.bytes.store(0, Relaxed);
         }
-        b.messages.fetch_add(1, Relaxed);
-        b.bytes.fetch_add(bytes as u64, Relaxed);
+        b.messages.fetch_add(messages, Relaxed);
+        b.bytes.fetch_add(bytes, Relaxed);
+    }
+
+    /// Counts one message of `bytes` published at `now_ns` in a publisher's `batch`,
+    /// adding the batch to these counters first when the message falls in another second.
+    pub fn batch_publish(&self, batch: &mut StatsBatch, bytes: usize, now_ns: u64) {
+        let second = now_ns / 1_000_000_000;
+        if batch.messages > 0 && batch.second != second {
+            self.flush(batch);
+        }
+        batch.messages += 1;
+        batch.bytes += bytes as u64;
+        batch.second = second;
+        batch.last_ns = now_ns;
+    }
+
+    /// Adds what `batch` counted to these counters and empties it.
+    pub fn flush(&self, batch: &mut StatsBatch) {
+        if batch.messages > 0 {
+            self.add_publishes(batch.messages, batch.bytes, batch.last_ns);
+        }
+        if batch.deliveries > 0 {
+            self.deliveries.fetch_add(batch.deliveries, Relaxed);
+        }
+        *batch = StatsBatch::default();
     }
 
     /// Folds one end-to-end latency sample into the average (weight 1/8).

@@ -88,6 +88,21 @@ pub trait Transcoder: Send + Sync + 'static {
         Ok(self.normalize(schema, &payload)?.unwrap_or(payload))
     }
 
+    /// [`Transcoder::normalize_cached`] of a JSON message whose syntax was not checked on
+    /// arrival (a publish read by its envelope's shape): the syntax is checked too — by
+    /// the check against the type where the type is known, on its own where not. The
+    /// error does not say which failed; the caller reads such a message again the full
+    /// way for that.
+    fn normalize_unchecked(
+        &self,
+        schema: &Schema,
+        payload: Payload,
+        cache: &mut NormalizeCache,
+    ) -> Result<Payload, TranscodeError> {
+        check_syntax(schema, &payload)?;
+        self.normalize_cached(schema, payload, cache)
+    }
+
     /// Every message type this side knows (rosapi `interfaces`).
     fn type_names(&self) -> Vec<String> {
         Vec::new()
@@ -99,6 +114,21 @@ pub trait Transcoder: Send + Sync + 'static {
     fn typedefs(&self, _type_name: &str) -> Option<Vec<serde_json::Value>> {
         None
     }
+}
+
+/// A JSON payload that is not exactly one JSON value is refused.
+fn check_syntax(schema: &Schema, payload: &Payload) -> Result<(), TranscodeError> {
+    if payload.encoding != Encoding::Json
+        || fleetlink_proto::rosbridge::is_json_value(&payload.bytes)
+    {
+        return Ok(());
+    }
+    Err(TranscodeError::Invalid {
+        type_name: schema.type_name.clone(),
+        from: Encoding::Json,
+        to: Encoding::Json,
+        cause: "not one well-formed JSON value".into(),
+    })
 }
 
 /// State a transcoder keeps for one publisher's topic between
@@ -135,6 +165,71 @@ impl RegistryTranscoder {
 
     pub fn registry(&self) -> &fleetlink_msg::Registry {
         &self.registry
+    }
+}
+
+impl RegistryTranscoder {
+    /// `normalize_cached`; `syntax_checked` says whether a JSON payload's syntax was
+    /// checked on arrival (see [`Transcoder::normalize_unchecked`]).
+    fn normalize_with(
+        &self,
+        schema: &Schema,
+        payload: Payload,
+        cache: &mut NormalizeCache,
+        syntax_checked: bool,
+    ) -> Result<Payload, TranscodeError> {
+        let enc = payload.encoding;
+        if !matches!(enc, Encoding::Json | Encoding::Cbor) {
+            return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
+        }
+        let reg = &self.registry;
+        let ty = schema.type_name.as_str();
+        let dialect = dialect_of(schema, enc);
+        let invalid = |cause: String| TranscodeError::Invalid {
+            type_name: ty.to_owned(),
+            from: enc,
+            to: enc,
+            cause,
+        };
+        let cached = cache
+            .0
+            .as_ref()
+            .and_then(|c| c.downcast_ref::<ResolvedTopic>())
+            .filter(|c| c.type_name == ty && c.dialect == dialect && reg.is_current(&c.resolved));
+        let resolved = match cached {
+            Some(c) => &c.resolved,
+            None => {
+                if !reg.contains(ty) {
+                    // Not checked against a type: its syntax, if nobody checked it yet.
+                    if !syntax_checked {
+                        check_syntax(schema, &payload)?;
+                    }
+                    return Ok(payload);
+                }
+                let resolved = reg
+                    .resolve(ty, dialect)
+                    .map_err(|e| invalid(e.to_string()))?;
+                let c = cache.0.insert(Box::new(ResolvedTopic {
+                    type_name: ty.to_owned(),
+                    dialect,
+                    resolved,
+                }));
+                &c.downcast_ref::<ResolvedTopic>()
+                    .expect("just stored")
+                    .resolved
+            }
+        };
+        if enc == Encoding::Cbor {
+            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
+                .map(|normal| Payload::new(Encoding::Cbor, normal))
+                .map_err(|e| invalid(e.to_string()));
+        }
+        match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
+            Ok(Some(normal)) => Ok(Payload::json(normal)),
+            // Already in normal form: the bytes as they came (no copy).
+            Ok(None) => Ok(payload),
+            Err(e) => Err(invalid(e.to_string())),
+        }
     }
 }
 
@@ -273,54 +368,16 @@ impl Transcoder for RegistryTranscoder {
         payload: Payload,
         cache: &mut NormalizeCache,
     ) -> Result<Payload, TranscodeError> {
-        let enc = payload.encoding;
-        if !matches!(enc, Encoding::Json | Encoding::Cbor) {
-            return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
-        }
-        let reg = &self.registry;
-        let ty = schema.type_name.as_str();
-        let dialect = dialect_of(schema, enc);
-        let invalid = |cause: String| TranscodeError::Invalid {
-            type_name: ty.to_owned(),
-            from: enc,
-            to: enc,
-            cause,
-        };
-        let cached = cache
-            .0
-            .as_ref()
-            .and_then(|c| c.downcast_ref::<ResolvedTopic>())
-            .filter(|c| c.type_name == ty && c.dialect == dialect && reg.is_current(&c.resolved));
-        let resolved = match cached {
-            Some(c) => &c.resolved,
-            None => {
-                if !reg.contains(ty) {
-                    return Ok(payload);
-                }
-                let resolved = reg
-                    .resolve(ty, dialect)
-                    .map_err(|e| invalid(e.to_string()))?;
-                let c = cache.0.insert(Box::new(ResolvedTopic {
-                    type_name: ty.to_owned(),
-                    dialect,
-                    resolved,
-                }));
-                &c.downcast_ref::<ResolvedTopic>()
-                    .expect("just stored")
-                    .resolved
-            }
-        };
-        if enc == Encoding::Cbor {
-            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
-                .map(|normal| Payload::new(Encoding::Cbor, normal))
-                .map_err(|e| invalid(e.to_string()));
-        }
-        match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
-            Ok(Some(normal)) => Ok(Payload::json(normal)),
-            // Already in normal form: the bytes as they came (no copy).
-            Ok(None) => Ok(payload),
-            Err(e) => Err(invalid(e.to_string())),
-        }
+        self.normalize_with(schema, payload, cache, true)
+    }
+
+    fn normalize_unchecked(
+        &self,
+        schema: &Schema,
+        payload: Payload,
+        cache: &mut NormalizeCache,
+    ) -> Result<Payload, TranscodeError> {
+        self.normalize_with(schema, payload, cache, false)
     }
 
     fn type_names(&self) -> Vec<String> {

@@ -6,6 +6,7 @@ use std::time::Duration;
 
 use fleetlink_relay::queue::DropReason;
 use serde_json::{Value, json};
+use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use crate::util::*;
 
@@ -740,5 +741,80 @@ async fn publishes_under_another_spelling_arrive_and_bad_ones_are_answered_with_
         .await;
     let m = c.recv_op("publish").await;
     assert_eq!(m["msg"]["data"], "after", "{m}");
+    hub.shutdown().await;
+}
+
+/// Publishes in one envelope are read by comparing the envelope's text (its shape) and
+/// their message is then checked only against its type: every kind of message must still
+/// come out as when the envelope is read in full — delivered as sent, completed,
+/// refused with the field named and the publish's id, or refused as bad JSON.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn publishes_read_by_their_envelope_shape_are_checked_like_any_other() {
+    let hub = start_hub().await;
+    let mut c = Rosbridge::connect(&hub.ws_url()).await;
+    c.send_all([
+        json!({"op": "advertise", "topic": "/shaped", "type": "std_msgs/msg/String"}),
+        json!({"op": "advertise", "topic": "/untyped", "type": "no_such_pkg/msg/Thing"}),
+        json!({"op": "subscribe", "topic": "/shaped", "id": "s1"}),
+        json!({"op": "subscribe", "topic": "/untyped", "id": "s2"}),
+    ])
+    .await;
+    c.call("/rosapi/get_time", json!({}), "sync").await;
+    // roslibjs' envelope, the id numbered, only the message changing.
+    let frame = |topic: &str, n: u32, msg: &str| {
+        WsMessage::text(format!(
+            r#"{{"op":"publish","id":"publish:{topic}:{n}","topic":"{topic}","msg":{msg},"latch":false}}"#
+        ))
+    };
+    let mut send = async |topic: &str, n: u32, msg: &str| {
+        c.send_raw(frame(topic, n, msg)).await.expect("send");
+        c.recv().await
+    };
+    for n in 1..4 {
+        let m = send("/shaped", n, &format!(r#"{{"data":"m{n}"}}"#)).await;
+        assert_eq!(
+            (m["op"].as_str(), m["msg"]["data"].as_str()),
+            (Some("publish"), Some(&*format!("m{n}"))),
+            "{m}"
+        );
+    }
+    // A missing field is filled.
+    let m = send("/shaped", 4, "{}").await;
+    assert_eq!(m["msg"], json!({"data": ""}), "{m}");
+    // A wrong type is refused, naming the field and echoing this publish's id.
+    let s = send("/shaped", 5, r#"{"data":5}"#).await;
+    assert_eq!(s["op"], "status", "{s}");
+    assert_eq!(s["id"], "publish:/shaped:5", "{s}");
+    assert!(s["msg"].as_str().unwrap().contains("data"), "{s}");
+    // Not JSON where the message is: refused as such.
+    let s = send("/shaped", 6, r#"{"data":"x",}"#).await;
+    assert_eq!(s["op"], "status", "{s}");
+    assert_eq!(s["level"], "error", "{s}");
+    // A key after the message: ignored, as a full read ignores it.
+    c.send_raw(WsMessage::text(
+        r#"{"op":"publish","id":"publish:/shaped:7","topic":"/shaped","msg":{"data":"m7"},"latch":false,"extra":1}"#,
+    ))
+    .await
+    .expect("send");
+    let m = c.recv().await;
+    assert_eq!(m["msg"], json!({"data": "m7"}), "{m}");
+    let mut send = async |topic: &str, n: u32, msg: &str| {
+        c.send_raw(frame(topic, n, msg)).await.expect("send");
+        c.recv().await
+    };
+    // A type the hub does not know: passed on as sent, but only well-formed JSON.
+    for n in 1..3 {
+        let m = send("/untyped", n, r#"{"a":[1,2.5,"x"]}"#).await;
+        assert_eq!(m["msg"], json!({"a": [1, 2.5, "x"]}), "{m}");
+    }
+    let s = send("/untyped", 3, r#"{"a":[1,2}"#).await;
+    assert_eq!(s["op"], "status", "{s}");
+    // Where the message was, a message and another key: the key is ignored, as a full
+    // read ignores it.
+    let m = send("/untyped", 4, r#"{"a":1},"b":{"c":2}"#).await;
+    assert_eq!(m["msg"], json!({"a": 1}), "{m}");
+    // Still serving, by shape again.
+    let m = send("/shaped", 8, r#"{"data":"m8"}"#).await;
+    assert_eq!(m["msg"], json!({"data": "m8"}), "{m}");
     hub.shutdown().await;
 }

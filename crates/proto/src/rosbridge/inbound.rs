@@ -209,6 +209,11 @@ pub struct Publish<'a> {
     pub id: PublishId<'a>,
     pub topic: std::borrow::Cow<'a, str>,
     pub msg: Payload,
+    /// Whether `msg`'s syntax was checked on the way in. Not when the envelope was read
+    /// by its shape ([`Publish::from_json_text_shaped`]): then the message's check against
+    /// its type must also check its syntax, and a message that fails must be read again
+    /// with [`Publish::from_json_text`], which says why precisely.
+    pub msg_checked: bool,
 }
 
 /// A publish's `id`. From JSON it stays text until asked for: roslibpy and roslibjs
@@ -262,6 +267,54 @@ impl<'a> Publish<'a> {
             id,
             topic: topic.into(),
             msg: Payload::json(frame.slice(msg)),
+            msg_checked: true,
+        })
+    }
+
+    /// [`Publish::from_json_text`], first trying the client's recent envelope `shapes`
+    /// (see [`super::shape`]): a frame in one of them is read by comparing text, its
+    /// message not checked (`msg_checked` is `false`); any other is read in full, and its
+    /// shape kept for the next.
+    pub fn from_json_text_shaped(
+        text: &'a str,
+        frame: &Bytes,
+        shapes: &mut super::EnvelopeShapes,
+    ) -> Option<Publish<'a>> {
+        if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
+            return None;
+        }
+        if let Some(m) = shapes.fit(text) {
+            // The topic is the text the shape's own topic was, checked when it was read.
+            let id = match m.id {
+                Some(r) => PublishId(IdRepr::Json(&text[r])),
+                None => PublishId(IdRepr::None),
+            };
+            return Some(Publish {
+                id,
+                topic: text[m.topic].into(),
+                msg: Payload::json(frame.slice(m.msg)),
+                msg_checked: false,
+            });
+        }
+        let e = super::scan::envelope(text)?;
+        if e.op? != "publish" {
+            return None;
+        }
+        let topic = e.topic?;
+        let msg = e.msg.clone()?;
+        if text.as_bytes()[msg.start] != b'{' || !valid_topic(topic) {
+            return None;
+        }
+        shapes.learn(text, &e, &msg);
+        let id = match e.id {
+            Some(r) => PublishId(IdRepr::Json(&text[r])),
+            None => PublishId(IdRepr::None),
+        };
+        Some(Publish {
+            id,
+            topic: topic.into(),
+            msg: Payload::json(frame.slice(msg)),
+            msg_checked: true,
         })
     }
 
@@ -328,6 +381,7 @@ impl<'a> Publish<'a> {
             id,
             topic: topic.into(),
             msg: Payload::new(Encoding::Cbor, frame.slice(msg)),
+            msg_checked: true,
         })
     }
 }

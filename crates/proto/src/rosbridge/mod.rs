@@ -12,5 +12,8 @@ pub mod convert;
 pub mod inbound;
 pub mod outbound;
 mod scan;
+pub mod shape;
 
 pub use inbound::{Compression, Op, ParseError, Publish, PublishId, Request};
+pub use scan::is_json_value;
+pub use shape::EnvelopeShapes;

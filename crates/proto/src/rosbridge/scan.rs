@@ -66,6 +66,24 @@ pub(crate) fn envelope(text: &str) -> Option<Envelope<'_>> {
     (c.pos == c.b.len()).then_some(e)
 }
 
+/// Whether `text` is exactly one JSON value (whitespace around it allowed), by the same
+/// rules as the envelope's: what serde_json would read, without reading it.
+pub fn is_json_value(text: &[u8]) -> bool {
+    let Ok(text) = std::str::from_utf8(text) else {
+        return false;
+    };
+    let mut c = Cursor {
+        text,
+        b: text.as_bytes(),
+        pos: 0,
+    };
+    if c.value(MAX_DEPTH).is_none() {
+        return false;
+    }
+    c.ws();
+    c.pos == c.b.len()
+}
+
 /// A key seen twice is left to the full parse (serde refuses it).
 fn set<T>(slot: &mut Option<T>, v: T) -> Option<()> {
     if slot.is_some() {

@@ -15,7 +15,7 @@ use fleetlink_proto::rosbridge::{
     Compression, Op, ParseError, Publish, PublishId, Request, outbound,
 };
 use fleetlink_proto::{Encoding, Payload, Schema};
-use futures_util::{Sink, SinkExt, Stream, StreamExt};
+use futures_util::{FutureExt, Sink, SinkExt, Stream, StreamExt};
 use serde_json::Value;
 use std::sync::Mutex;
 
@@ -33,6 +33,7 @@ use crate::outbox::{Delivery, Outbox};
 use crate::queue::DropReason;
 use crate::rosbridge::rosapi::{self, Answer};
 use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
+use crate::stats::StatsBatch;
 use crate::transcode::NormalizeCache;
 use crate::websocket::PartsSink;
 
@@ -83,10 +84,10 @@ pub async fn serve<K, S>(
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (peer, mut peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    let mut stream = Waits {
-        inner: stream,
-        waited: false,
-    };
+    let mut stream = stream;
+    // The client's recent publish envelopes (kept here, beside the session, because the
+    // frame that is read with them borrows them while the session publishes).
+    let mut shapes = fleetlink_proto::rosbridge::EnvelopeShapes::default();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
     let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
     let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
@@ -113,16 +114,17 @@ pub async fn serve<K, S>(
         level,
         fragments: Fragments::default(),
         clock: crate::StampClock::default(),
+        unflushed: Vec::new(),
     };
     // One wait for the shutdown, registered once: a fresh `cancelled()` per frame costs a
     // lock and a waker registration on every operation.
     let cancelled = shutdown.cancelled();
     tokio::pin!(cancelled);
-    // Frames are taken first while the client has some queued (`biased`): polling every
-    // branch for each of thousands of small operations in a read costs more than handling
-    // them. So that a flooding client still sees its call replies and a shutdown, both are
-    // looked at every `LOOK_AROUND` frames without waiting.
-    const LOOK_AROUND: u32 = 64;
+    // Frames are taken first while the client has some queued: a frame already read is
+    // taken without a select, since polling every branch for each of thousands of small
+    // operations in a read costs more than handling them. So that a flooding client still
+    // sees its call replies and a shutdown, both are looked at every `LOOK_AROUND` frames
+    // without waiting.
     let mut frames = 0u32;
     loop {
         frames += 1;
@@ -130,27 +132,35 @@ pub async fn serve<K, S>(
             if shutdown.is_cancelled() {
                 break;
             }
+            session.flush_counts();
             while let Ok(m) = peer_rx.try_recv() {
                 session.on_peer(m).await;
             }
         }
-        let frame = tokio::select! {
-            biased;
-            f = stream.next() => match f {
-                Some(f) => f,
-                None => break,
-            },
-            m = peer_rx.recv() => {
-                if let Some(m) = m {
-                    session.on_peer(m).await;
-                }
-                continue;
+        let frame = match stream.next().now_or_never() {
+            Some(f) => f,
+            None => {
+                // Nothing more has come: the counters catch up before the wait, and the
+                // next message's arrival is a new clock reading.
+                session.flush_counts();
+                let f = tokio::select! {
+                    biased;
+                    f = stream.next() => f,
+                    m = peer_rx.recv() => {
+                        if let Some(m) = m {
+                            session.on_peer(m).await;
+                        }
+                        continue;
+                    }
+                    _ = &mut cancelled => break,
+                };
+                session.clock.waited();
+                f
             }
-            _ = &mut cancelled => break,
         };
-        if std::mem::take(&mut stream.waited) {
-            session.clock.waited();
-        }
+        let Some(frame) = frame else {
+            break;
+        };
         if matches!(frame, Ok(WsMessage::Binary(_))) {
             session.calls.binary = true;
         }
@@ -160,8 +170,25 @@ pub async fn serve<K, S>(
                 text = t;
                 // The frame's own buffer (no new reference to it until a slice is taken).
                 let bytes: &bytes::Bytes = text.as_ref();
-                // Nearly all traffic: a publish, its topic borrowed from the frame.
-                match Publish::from_json_text(text.as_str(), bytes) {
+                // Nearly all traffic: a publish, its topic borrowed from the frame, its
+                // envelope most often read by its shape (`EnvelopeShapes`).
+                let publish = Publish::from_json_text_shaped(text.as_str(), bytes, &mut shapes);
+                let publish = match publish {
+                    Some(p) if !p.msg_checked => {
+                        match session.publish_now(p, Some(text.as_str())) {
+                            None => {
+                                tokio::task::consume_budget().await;
+                                continue;
+                            }
+                            // Read by its shape and not published at once (refused, or to
+                            // wait): read again in full, so that what follows is what the
+                            // full read gives, the precise error included.
+                            Some(_) => Publish::from_json_text(text.as_str(), bytes),
+                        }
+                    }
+                    other => other,
+                };
+                match publish {
                     Some(p) => match session.publish_now(p, Some(text.as_str())) {
                         Some(rest) => Ok(rest),
                         None => {
@@ -252,32 +279,15 @@ pub async fn serve<K, S>(
         // subscribers' queues overflow).
         tokio::task::consume_budget().await;
     }
+    session.flush_counts();
     router.disconnect(client);
     drop(session);
     let _ = writer.await;
 }
 
-/// The client's frames, noting when the reader had to wait for the next one (then the
-/// next message's arrival is a new clock reading, see `StampClock::arrival`).
-struct Waits<S> {
-    inner: S,
-    waited: bool,
-}
-
-impl<S: Stream + Unpin> Stream for Waits<S> {
-    type Item = S::Item;
-
-    fn poll_next(
-        mut self: std::pin::Pin<&mut Self>,
-        cx: &mut std::task::Context<'_>,
-    ) -> std::task::Poll<Option<S::Item>> {
-        let r = std::pin::Pin::new(&mut self.inner).poll_next(cx);
-        if r.is_pending() {
-            self.waited = true;
-        }
-        r
-    }
-}
+/// Frames a session takes from its client between looks at its call replies, its
+/// shutdown and its counters ([`Session::flush_counts`]).
+const LOOK_AROUND: u32 = 64;
 
 /// An operation as read from a frame, when it needs more than the short path of a
 /// publish (`Session::publish_now`): something to wait for or to answer.
@@ -306,19 +316,32 @@ enum Reply {
 }
 
 struct Published {
+    /// The name it is published under (this entry's key).
+    name: TopicName,
     topic: Arc<Topic>,
     seq: u64,
     /// What the transcoder resolved for checking this topic's messages.
     normalize: NormalizeCache,
+    /// This client's messages not yet added to the topic's counters
+    /// ([`Session::flush_counts`]).
+    counts: StatsBatch,
 }
 
 impl Published {
-    fn new(topic: Arc<Topic>) -> Published {
+    fn new(name: TopicName, topic: Arc<Topic>) -> Published {
         Published {
+            name,
             topic,
             seq: 0,
             normalize: NormalizeCache::default(),
+            counts: StatsBatch::default(),
         }
+    }
+}
+
+impl Drop for Published {
+    fn drop(&mut self) {
+        self.topic.stats.flush(&mut self.counts);
     }
 }
 
@@ -346,6 +369,8 @@ pub(super) struct Session {
     fragments: Fragments,
     /// Stamps the messages this client publishes.
     clock: crate::StampClock,
+    /// Published topics whose `counts` hold messages ([`Session::flush_counts`]).
+    unflushed: Vec<TopicName>,
 }
 
 /// Severity of `status` levels, as `set_level` names them.
@@ -454,6 +479,17 @@ impl Session {
         Ok(())
     }
 
+    /// Adds what this client published since the last call to its topics' counters:
+    /// done before the session waits for the client and every [`LOOK_AROUND`] frames, so
+    /// the counters are never behind by more than a moment or a few dozen messages.
+    fn flush_counts(&mut self) {
+        for name in self.unflushed.drain(..) {
+            if let Some(p) = self.published.get_mut(&name) {
+                p.topic.stats.flush(&mut p.counts);
+            }
+        }
+    }
+
     /// A `fragment` op: kept until its operation is whole, which is then parsed.
     fn fragment(&mut self, req: Request) -> Option<Result<Request, ParseError>> {
         let id = req.id.clone();
@@ -504,10 +540,20 @@ impl Session {
         if self.gate.is_none() {
             return Some(Incoming::Publish(p));
         }
-        let Publish { id, topic, msg } = p;
-        match self.try_publish(&topic, msg, text) {
+        let Publish {
+            id,
+            topic,
+            msg,
+            msg_checked,
+        } = p;
+        match self.try_publish(&topic, msg, text, msg_checked) {
             Ok(None) => None,
-            Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish { id, topic, msg })),
+            Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish {
+                id,
+                topic,
+                msg,
+                msg_checked,
+            })),
             Err(text) => Some(Incoming::Refused(id, text)),
         }
     }
@@ -671,7 +717,9 @@ impl Session {
             .router
             .advertise(self.client, &name, Schema::named(type_name), latch)
             .map_err(|e| format!("advertise: {e}"))?;
-        self.published.entry(name).or_insert(Published::new(t));
+        self.published
+            .entry(name.clone())
+            .or_insert_with(|| Published::new(name, t));
         Ok(())
     }
 
@@ -692,7 +740,7 @@ impl Session {
     /// socket, the client's own sends slow down with it — instead of being refused.
     async fn publish(&mut self, topic: &str, mut msg: Payload) -> Result<(), String> {
         loop {
-            match self.try_publish(topic, msg, None)? {
+            match self.try_publish(topic, msg, None, true)? {
                 None => return Ok(()),
                 Some((back, full)) => {
                     msg = back;
@@ -712,10 +760,11 @@ impl Session {
         topic: &str,
         msg: Payload,
         text: Option<&str>,
+        checked: bool,
     ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // one lookup by the client's spelling, no parse, no copy of the name.
-        let msg = match self.publish_on_known(topic, msg, text) {
+        let msg = match self.publish_on_known(topic, msg, text, checked) {
             Known::Done(r) => return r,
             Known::Not(msg) => msg,
         };
@@ -727,7 +776,7 @@ impl Session {
         if !self.published.contains_key(name.as_str()) {
             self.start_publishing(name.as_str())?;
         }
-        match self.publish_on_known(name.as_str(), msg, text) {
+        match self.publish_on_known(name.as_str(), msg, text, checked) {
             Known::Done(r) => r,
             Known::Not(_) => unreachable!("{name} was added to the published topics above"),
         }
@@ -737,13 +786,20 @@ impl Session {
     /// spelling; the message comes back untouched when it does not. When `msg` is still
     /// the JSON text it came in (`text` is that frame's text, and the type check left
     /// the message as it was), the outgoing JSON frame is built from the text here.
-    fn publish_on_known(&mut self, name: &str, msg: Payload, text: Option<&str>) -> Known {
+    fn publish_on_known(
+        &mut self,
+        name: &str,
+        msg: Payload,
+        text: Option<&str>,
+        checked: bool,
+    ) -> Known {
         let Session {
             published,
             gate,
             router,
             clock,
             client,
+            unflushed,
             ..
         } = self;
         let Some(p) = published.get_mut(name) else {
@@ -761,22 +817,36 @@ impl Session {
             }
             // Checked and completed once here, for every subscriber.
             let meta = p.topic.meta();
-            let msg = router
-                .transcoder()
-                .normalize_cached(&meta.schema, msg, &mut p.normalize)
-                .map_err(|e| {
-                    format!(
-                        "publish {name}: the message does not fit its type: {}",
-                        e.cause_text()
-                    )
-                })?;
+            let tc = router.transcoder();
+            let msg = if checked {
+                tc.normalize_cached(&meta.schema, msg, &mut p.normalize)
+            } else {
+                tc.normalize_unchecked(&meta.schema, msg, &mut p.normalize)
+            };
+            let msg = msg.map_err(|e| {
+                format!(
+                    "publish {name}: the message does not fit its type: {}",
+                    e.cause_text()
+                )
+            })?;
             p.seq += 1;
             let size = msg.len();
             let (received, stamp) = clock.arrival();
             // Still the text it came in: writers frame it as it is.
             let json_text = text.and_then(|t| text_of(t, &msg)).is_some();
-            p.topic
-                .publish_framed(meta, *client, p.seq, stamp, msg, received, json_text);
+            if p.counts.is_empty() {
+                unflushed.push(p.name.clone());
+            }
+            p.topic.publish_framed(
+                meta,
+                *client,
+                p.seq,
+                stamp,
+                msg,
+                received,
+                json_text,
+                &mut p.counts,
+            );
             gate.done(name, GateOp::Publish, size);
             Ok(None)
         })())
@@ -800,7 +870,7 @@ impl Session {
             .router
             .advertise(self.client, &name, schema, false)
             .map_err(|e| format!("publish: {e}"))?;
-        self.published.insert(name, Published::new(t));
+        self.published.insert(name.clone(), Published::new(name, t));
         Ok(())
     }
 
