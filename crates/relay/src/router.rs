@@ -8,7 +8,9 @@
 
 use std::collections::{HashMap, HashSet};
 use std::net::SocketAddr;
-use std::sync::atomic::{AtomicU32, AtomicU64, Ordering::Relaxed};
+use std::sync::atomic::{
+    AtomicU32, AtomicU64, Ordering::Acquire, Ordering::Relaxed, Ordering::Release,
+};
 use std::sync::{Arc, Mutex};
 use std::time::{Instant, SystemTime};
 
@@ -98,6 +100,9 @@ pub struct Topic {
     meta: ArcSwap<TopicMeta>,
     pub stats: Arc<TopicStats>,
     subscribers: ArcSwap<Vec<SubscriberRef>>,
+    /// Counts changes of `meta` and `subscribers` (each stored first, then counted), so a
+    /// publisher's [`TopicView`] knows when to read them again.
+    version: AtomicU64,
     latched: Mutex<Option<Arc<Message>>>,
     latch: std::sync::atomic::AtomicBool,
     /// Encoding of the last message published (an `Encoding` as u8), so a link can
@@ -105,7 +110,50 @@ pub struct Topic {
     last_encoding: std::sync::atomic::AtomicU8,
 }
 
+/// A publisher's copy of what a topic is and who subscribes to it, read again only when
+/// the topic has changed ([`Topic::view`]): a burst of publishes reads one counter per
+/// message instead of two shared snapshots. Its owner drops what it holds
+/// ([`TopicView::clear`]) when it stops publishing for a while, so that subscribers who
+/// left are not kept alive by it.
+#[derive(Default)]
+pub struct TopicView {
+    version: u64,
+    held: Option<(Arc<TopicMeta>, Arc<Vec<SubscriberRef>>)>,
+}
+
+impl TopicView {
+    /// The topic's metadata as of the last [`Topic::view`].
+    pub fn meta(&self) -> &Arc<TopicMeta> {
+        &self.held.as_ref().expect("read by Topic::view").0
+    }
+
+    /// Lets go of the snapshots; the next [`Topic::view`] reads them again.
+    pub fn clear(&mut self) {
+        self.held = None;
+    }
+}
+
 impl Topic {
+    /// `view`, brought up to date with the topic.
+    pub fn view<'v>(&self, view: &'v mut TopicView) -> &'v TopicView {
+        let version = self.version.load(Acquire);
+        if view.held.is_none() || view.version != version {
+            view.held = Some((self.meta.load_full(), self.subscribers.load_full()));
+            view.version = version;
+        }
+        view
+    }
+
+    fn set_meta(&self, meta: TopicMeta) {
+        self.meta.store(Arc::new(meta));
+        self.version.fetch_add(1, Release);
+    }
+
+    fn set_subscribers(&self, list: Vec<SubscriberRef>) {
+        self.subscribers.store(Arc::new(list));
+        self.version.fetch_add(1, Release);
+    }
+
     /// Encoding of the most recent message, if any was published.
     pub fn last_encoding(&self) -> Option<fleetlink_proto::Encoding> {
         match self.last_encoding.load(Relaxed) {
@@ -176,7 +224,7 @@ impl Topic {
     #[allow(clippy::too_many_arguments)]
     pub fn publish_framed(
         &self,
-        meta: Arc<TopicMeta>,
+        view: &TopicView,
         origin: ClientId,
         seq: u64,
         stamp_ns: u64,
@@ -185,8 +233,15 @@ impl Topic {
         json_text: bool,
         counts: &mut StatsBatch,
     ) {
+        let (meta, subscribers) = view.held.as_ref().expect("read by Topic::view");
         let msg = Arc::new(Message::framed(
-            meta, seq, stamp_ns, origin, payload, received, json_text,
+            meta.clone(),
+            seq,
+            stamp_ns,
+            origin,
+            payload,
+            received,
+            json_text,
         ));
         let now = received;
         self.last_encoding
@@ -196,7 +251,6 @@ impl Topic {
         if self.latch.load(Relaxed) {
             *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
         }
-        let subscribers = self.subscribers.load();
         let mut targets = subscribers
             .iter()
             .filter(|s| s.client != msg.origin || s.own);
@@ -433,12 +487,7 @@ impl Router {
                     || !same_type(known, &schema.type_name)
                     || (meta.schema.text.is_empty() && !schema.text.is_empty())
                 {
-                    t.meta.store(Arc::new(TopicMeta::new(
-                        meta.id,
-                        name.clone(),
-                        schema,
-                        meta.latched,
-                    )));
+                    t.set_meta(TopicMeta::new(meta.id, name.clone(), schema, meta.latched));
                 }
                 t
             }
@@ -449,12 +498,12 @@ impl Router {
             // Messages carry the flag from now on, so links announce the topic latched.
             let meta = topic.meta();
             if !meta.latched {
-                topic.meta.store(Arc::new(TopicMeta::new(
+                topic.set_meta(TopicMeta::new(
                     meta.id,
                     meta.name.clone(),
                     meta.schema.clone(),
                     true,
-                )));
+                ));
             }
         }
         let pubs = st.publishers.entry(name.clone()).or_default();
@@ -489,6 +538,7 @@ impl Router {
             meta: ArcSwap::from_pointee(TopicMeta::new(id, name.clone(), schema, false)),
             stats: Arc::new(TopicStats::default()),
             subscribers: ArcSwap::from_pointee(Vec::new()),
+            version: AtomicU64::new(0),
             latched: Mutex::new(None),
             latch: Default::default(),
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
@@ -622,7 +672,7 @@ impl Router {
         };
         let mut list = Vec::clone(&topic.subscribers.load());
         list.push(r);
-        topic.subscribers.store(Arc::new(list));
+        topic.set_subscribers(list);
         let latched = topic
             .latched
             .lock()
@@ -722,7 +772,7 @@ fn detach(topic: &Topic, client: ClientId) {
         .filter(|s| s.client != client)
         .cloned()
         .collect();
-    topic.subscribers.store(Arc::new(list));
+    topic.set_subscribers(list);
 }
 
 /// Forgets a topic nobody publishes or subscribes to any more.

@@ -818,3 +818,71 @@ async fn publishes_read_by_their_envelope_shape_are_checked_like_any_other() {
     assert_eq!(m["msg"], json!({"data": "m8"}), "{m}");
     hub.shutdown().await;
 }
+
+/// A text frame must be UTF-8 (RFC 6455 closes the connection with 1007 otherwise). The
+/// hub checks it while reading a publish by its envelope's shape, not in a pass of its
+/// own, so the bytes that are not UTF-8 are put where each check happens: in the
+/// message of a typed topic, in the message of an untyped one, in the id.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_text_frame_that_is_not_utf8_closes_the_connection_with_1007() {
+    use futures_util::StreamExt;
+    use tokio_tungstenite::tungstenite::protocol::frame::Frame;
+    use tokio_tungstenite::tungstenite::protocol::frame::coding::{CloseCode, Data, OpCode};
+    let hub = start_hub().await;
+    let envelope = |topic: &str, id: &[u8], msg: &[u8]| {
+        let mut f = br#"{"op":"publish","id":""#.to_vec();
+        f.extend_from_slice(id);
+        f.extend_from_slice(format!(r#"","topic":"{topic}","msg":"#).as_bytes());
+        f.extend_from_slice(msg);
+        f.extend_from_slice(b"}");
+        f
+    };
+    for (topic, id, msg) in [
+        (
+            "/utf8_typed",
+            &b"publish:2"[..],
+            &b"{\"data\":\"caf\xC3\x28\"}"[..],
+        ),
+        ("/utf8_untyped", &b"publish:2"[..], &b"{\"a\":\"\xFF\"}"[..]),
+        (
+            "/utf8_typed",
+            &b"publish:\xC3"[..],
+            &b"{\"data\":\"ok\"}"[..],
+        ),
+    ] {
+        let mut c = Rosbridge::connect(&hub.ws_url()).await;
+        c.send_all([
+            json!({"op": "advertise", "topic": "/utf8_typed", "type": "std_msgs/msg/String"}),
+            json!({"op": "advertise", "topic": "/utf8_untyped", "type": "no_such_pkg/msg/T"}),
+            json!({"op": "subscribe", "topic": topic, "id": "s"}),
+        ])
+        .await;
+        // One good publish in the envelope, so the next is read by its shape.
+        let good = if topic == "/utf8_typed" {
+            r#"{"data":"ok"}"#
+        } else {
+            r#"{"a":"ok"}"#
+        };
+        c.send_raw(WsMessage::text(
+            String::from_utf8(envelope(topic, b"publish:1", good.as_bytes())).unwrap(),
+        ))
+        .await
+        .expect("send");
+        assert_eq!(c.recv_op("publish").await["topic"], topic);
+        let bad = Frame::message(envelope(topic, id, msg), OpCode::Data(Data::Text), true);
+        c.send_raw(WsMessage::Frame(bad)).await.expect("send");
+        let close = within("the close", async {
+            loop {
+                match c.raw().next().await {
+                    Some(Ok(WsMessage::Close(f))) => return f,
+                    Some(Ok(_)) => continue,
+                    other => panic!("connection ended without a close: {other:?}"),
+                }
+            }
+        })
+        .await;
+        let close = close.expect("a close code");
+        assert_eq!(close.code, CloseCode::Invalid, "{topic}: {close:?}");
+    }
+    hub.shutdown().await;
+}

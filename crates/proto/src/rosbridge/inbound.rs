@@ -227,6 +227,8 @@ enum IdRepr<'a> {
     Value(Value),
     /// Checked by the scan, so it parses.
     Json(&'a str),
+    /// A string, as read by an envelope's shape (checked UTF-8, no escapes).
+    JsonBytes(&'a [u8]),
 }
 
 impl PublishId<'_> {
@@ -236,6 +238,7 @@ impl PublishId<'_> {
             IdRepr::None => None,
             IdRepr::Value(v) => Some(v.clone()),
             IdRepr::Json(text) => serde_json::from_str(text).ok(),
+            IdRepr::JsonBytes(text) => serde_json::from_slice(text).ok(),
         }
     }
 }
@@ -271,10 +274,35 @@ impl<'a> Publish<'a> {
         })
     }
 
-    /// [`Publish::from_json_text`], first trying the client's recent envelope `shapes`
-    /// (see [`super::shape`]): a frame in one of them is read by comparing text, its
-    /// message not checked (`msg_checked` is `false`); any other is read in full, and its
-    /// shape kept for the next.
+    /// A `publish` in one of the client's recent envelope `shapes` (see
+    /// [`super::shape`]), read by comparing text: its message is not checked, neither as
+    /// JSON nor as UTF-8 (`msg_checked` is `false`). `frame` is a text frame not yet
+    /// checked as UTF-8. `None` when it has none of the shapes.
+    pub fn from_shape(frame: &'a Bytes, shapes: &mut super::EnvelopeShapes) -> Option<Publish<'a>> {
+        let m = shapes.fit(frame)?;
+        // Head, middle and tail are the shape's own text, checked when it was read; the
+        // id and the topic (a few bytes each) are checked here, the message by its reader.
+        let topic = std::str::from_utf8(&frame[m.topic]).ok()?;
+        let id = match m.id {
+            Some(r) => {
+                let id = &frame[r];
+                if !id.is_ascii() && std::str::from_utf8(id).is_err() {
+                    return None;
+                }
+                PublishId(IdRepr::JsonBytes(id))
+            }
+            None => PublishId(IdRepr::None),
+        };
+        Some(Publish {
+            id,
+            topic: topic.into(),
+            msg: Payload::json(frame.slice(m.msg)),
+            msg_checked: false,
+        })
+    }
+
+    /// [`Publish::from_json_text`], keeping the envelope's shape in `shapes` for the
+    /// client's next publishes ([`Publish::from_shape`]).
     pub fn from_json_text_shaped(
         text: &'a str,
         frame: &Bytes,
@@ -282,19 +310,6 @@ impl<'a> Publish<'a> {
     ) -> Option<Publish<'a>> {
         if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
             return None;
-        }
-        if let Some(m) = shapes.fit(text) {
-            // The topic is the text the shape's own topic was, checked when it was read.
-            let id = match m.id {
-                Some(r) => PublishId(IdRepr::Json(&text[r])),
-                None => PublishId(IdRepr::None),
-            };
-            return Some(Publish {
-                id,
-                topic: text[m.topic].into(),
-                msg: Payload::json(frame.slice(m.msg)),
-                msg_checked: false,
-            });
         }
         let e = super::scan::envelope(text)?;
         if e.op? != "publish" {

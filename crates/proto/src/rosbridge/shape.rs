@@ -14,9 +14,11 @@
 //! A new frame that starts with the head, has a plain string (no escapes) where the id
 //! was, then the middle, and ends with the tail is the same envelope around another id
 //! and another message: the topic is where it was. The scan over the envelope's keys
-//! is skipped, and so is its syntax check of the message, which the caller must then
-//! make ([`Publish::msg_checked`](super::Publish) is `false`): the check against the
-//! message's type does it, and a message that fails it is read again the full way.
+//! is skipped, and so are the frame's UTF-8 check (the head, middle and tail are the
+//! checked text of the shape; the id is checked on its own) and the syntax check of the
+//! message, which the caller must then make ([`Publish::msg_checked`](super::Publish) is
+//! `false`): the check against the message's type does both, and a message that fails
+//! it is read again the full way.
 //!
 //! A few shapes are kept (a client publishing on several topics); one that stops
 //! matching is replaced by the envelope read in full. A client whose envelopes keep
@@ -83,10 +85,10 @@ impl EnvelopeShape {
         true
     }
 
-    /// Where `text`'s parts lie if it has this shape.
+    /// Where `x`'s parts lie if it has this shape.
     #[inline]
-    fn fit(&self, text: &str) -> Option<Matched> {
-        let (t, x) = (self.text.as_bytes(), text.as_bytes());
+    fn fit(&self, x: &[u8]) -> Option<Matched> {
+        let t = self.text.as_bytes();
         let head_end = self.id.as_ref().map_or(self.msg.start, |id| id.start);
         if !x.starts_with(&t[..head_end]) {
             return None;
@@ -146,9 +148,10 @@ pub struct EnvelopeShapes {
 }
 
 impl EnvelopeShapes {
-    /// The parts of `text` if it has one of the kept shapes.
+    /// The parts of `text` (a text frame, not yet checked as UTF-8) if it has one of the
+    /// kept shapes.
     #[inline]
-    pub(crate) fn fit(&mut self, text: &str) -> Option<Matched> {
+    pub(crate) fn fit(&mut self, text: &[u8]) -> Option<Matched> {
         if self.resting > 0 {
             self.resting -= 1;
             return None;
@@ -217,7 +220,7 @@ mod tests {
             r#"{"op":"publish","id":"publish:/t:1","topic":"/t","msg":{"data":"a"},"latch":false}"#,
         );
         let next = r#"{"op":"publish","id":"publish:/t:1234","topic":"/t","msg":{"data":"bb", "n": [1,2]},"latch":false}"#;
-        let m = s.fit(next).expect("fits");
+        let m = s.fit(next.as_bytes()).expect("fits");
         assert_eq!(
             parts(next, &m),
             (
@@ -248,7 +251,9 @@ mod tests {
             ),
         ] {
             let mut s = learned(first);
-            let m = s.fit(next).unwrap_or_else(|| panic!("{next} fits {first}"));
+            let m = s
+                .fit(next.as_bytes())
+                .unwrap_or_else(|| panic!("{next} fits {first}"));
             assert_eq!(&next[m.topic.clone()], topic, "{next}");
             assert!(next[m.msg.clone()].starts_with('{'));
         }
@@ -269,12 +274,12 @@ mod tests {
             r#"{"op":"publish","id":"publish:/t:1","topic":"/t","msg":}"#,
             r#"{"op":"publish","id":""#,
         ] {
-            assert_eq!(s.fit(other), None, "{other}");
+            assert_eq!(s.fit(other.as_bytes()), None, "{other}");
         }
         // A key added after the message fits, with more than the message where the
         // message was: the message's own check (which the caller must make) refuses it.
         let more = r#"{"op":"publish","id":"publish:/t:1","topic":"/t","msg":{"data":"a"},"x":1}"#;
-        let m = s.fit(more).expect("fits by its ends");
+        let m = s.fit(more.as_bytes()).expect("fits by its ends");
         assert!(!super::super::is_json_value(more[m.msg].as_bytes()));
     }
 
@@ -286,7 +291,7 @@ mod tests {
             r#"{"op":"publish","topic":"/t","msg":{},"id":"x"}"#,
         ] {
             let mut s = learned(text);
-            assert_eq!(s.fit(text), None, "{text}");
+            assert_eq!(s.fit(text.as_bytes()), None, "{text}");
         }
     }
 
@@ -305,19 +310,19 @@ mod tests {
         for n in 1..10 {
             for t in 0..SLOTS {
                 let next = text(t, n);
-                let m = s.fit(&next).unwrap_or_else(|| panic!("{next}"));
+                let m = s.fit(next.as_bytes()).unwrap_or_else(|| panic!("{next}"));
                 assert_eq!(&next[m.topic.clone()], format!("/t{t}"));
             }
         }
         // Publishes that never fit: after a few, no more comparing for a while.
         for n in 0..MISSES {
             let other = format!(r#"{{"op":"publish","topic":"/x{n}","msg":{{}}}}"#);
-            assert_eq!(s.fit(&other), None);
+            assert_eq!(s.fit(other.as_bytes()), None);
             let e = super::super::scan::envelope(&other).unwrap();
             let msg = e.msg.clone().unwrap();
             s.learn(&other, &e, &msg);
         }
         assert!(s.resting > 0);
-        assert_eq!(s.fit(&text(0, 99)), None, "resting: not compared");
+        assert_eq!(s.fit(text(0, 99).as_bytes()), None, "resting: not compared");
     }
 }

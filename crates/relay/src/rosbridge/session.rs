@@ -32,10 +32,12 @@ use crate::names::{ClientId, TopicName};
 use crate::outbox::{Delivery, Outbox};
 use crate::queue::DropReason;
 use crate::rosbridge::rosapi::{self, Answer};
-use crate::router::{ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, same_type};
+use crate::router::{
+    ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, TopicView, same_type,
+};
 use crate::stats::StatsBatch;
 use crate::transcode::NormalizeCache;
-use crate::websocket::PartsSink;
+use crate::websocket::{ClientMessage, PartsSink};
 
 /// Settings shared by all rosbridge sessions of one server.
 #[derive(Debug, Clone)]
@@ -79,7 +81,7 @@ pub async fn serve<K, S>(
     auth: SessionAuth,
 ) where
     K: PartsSink + Send + 'static,
-    S: Stream<Item = Result<WsMessage, WsError>> + Unpin + Send,
+    S: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
 {
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (peer, mut peer_rx) = ChannelPeer::new();
@@ -161,42 +163,49 @@ pub async fn serve<K, S>(
         let Some(frame) = frame else {
             break;
         };
-        if matches!(frame, Ok(WsMessage::Binary(_))) {
+        if matches!(frame, Ok(ClientMessage::Binary(_))) {
             session.calls.binary = true;
         }
         let (text, binary);
         let req = match frame {
-            Ok(WsMessage::Text(t)) => {
+            Ok(ClientMessage::Text(t)) => {
                 text = t;
-                // The frame's own buffer (no new reference to it until a slice is taken).
-                let bytes: &bytes::Bytes = text.as_ref();
-                // Nearly all traffic: a publish, its topic borrowed from the frame, its
-                // envelope most often read by its shape (`EnvelopeShapes`).
-                let publish = Publish::from_json_text_shaped(text.as_str(), bytes, &mut shapes);
-                let publish = match publish {
-                    Some(p) if !p.msg_checked => {
-                        match session.publish_now(p, Some(text.as_str())) {
-                            None => {
-                                tokio::task::consume_budget().await;
-                                continue;
-                            }
-                            // Read by its shape and not published at once (refused, or to
-                            // wait): read again in full, so that what follows is what the
-                            // full read gives, the precise error included.
-                            Some(_) => Publish::from_json_text(text.as_str(), bytes),
-                        }
+                // Nearly all traffic: a publish in one of the client's recent envelopes
+                // (`EnvelopeShapes`), read by comparing text, its topic borrowed from the
+                // frame, its UTF-8 and syntax checked by its check against the type.
+                let mut fitted = false;
+                if let Some(p) = Publish::from_shape(&text, &mut shapes) {
+                    fitted = true;
+                    if session.publish_now(p, Some(&text)).is_none() {
+                        tokio::task::consume_budget().await;
+                        continue;
                     }
-                    other => other,
+                    // Not published at once (refused, or to wait): read again in full,
+                    // so that what follows is what the full read gives, the precise
+                    // error included.
+                }
+                let Ok(utf8) = std::str::from_utf8(&text) else {
+                    let close = CloseFrame {
+                        code: CloseCode::Invalid,
+                        reason: "a text message is not UTF-8".into(),
+                    };
+                    let _ = session.replies.send(Reply::Close(Some(close))).await;
+                    break;
+                };
+                let publish = if fitted {
+                    Publish::from_json_text(utf8, &text)
+                } else {
+                    Publish::from_json_text_shaped(utf8, &text, &mut shapes)
                 };
                 match publish {
-                    Some(p) => match session.publish_now(p, Some(text.as_str())) {
+                    Some(p) => match session.publish_now(p, Some(&text)) {
                         Some(rest) => Ok(rest),
                         None => {
                             tokio::task::consume_budget().await;
                             continue;
                         }
                     },
-                    None => match Request::from_json(bytes) {
+                    None => match Request::from_json(&text) {
                         Ok(r) if matches!(r.op, Op::Fragment { .. }) => match session.fragment(r) {
                             Some(whole) => whole.map(Incoming::Other),
                             None => continue,
@@ -205,7 +214,7 @@ pub async fn serve<K, S>(
                     },
                 }
             }
-            Ok(WsMessage::Binary(b)) => {
+            Ok(ClientMessage::Binary(b)) => {
                 binary = b;
                 match Publish::from_cbor_frame(&binary) {
                     Some(p) => match session.publish_now(p, None) {
@@ -218,11 +227,11 @@ pub async fn serve<K, S>(
                     None => Request::from_cbor(&binary).map(Incoming::Other),
                 }
             }
-            Ok(WsMessage::Ping(p)) => {
+            Ok(ClientMessage::Ping(p)) => {
                 session.send(WsMessage::Pong(p)).await;
                 continue;
             }
-            Ok(WsMessage::Close(c)) => {
+            Ok(ClientMessage::Close(c)) => {
                 // The close handshake: the client's code echoed back.
                 let echo = c.map(|c| CloseFrame {
                     code: c.code,
@@ -325,6 +334,10 @@ struct Published {
     /// This client's messages not yet added to the topic's counters
     /// ([`Session::flush_counts`]).
     counts: StatsBatch,
+    /// The topic as of this client's last publish, held until the session waits.
+    view: TopicView,
+    /// In the session's `unflushed` list.
+    listed: bool,
 }
 
 impl Published {
@@ -335,6 +348,8 @@ impl Published {
             seq: 0,
             normalize: NormalizeCache::default(),
             counts: StatsBatch::default(),
+            view: TopicView::default(),
+            listed: false,
         }
     }
 }
@@ -479,13 +494,17 @@ impl Session {
         Ok(())
     }
 
-    /// Adds what this client published since the last call to its topics' counters:
-    /// done before the session waits for the client and every [`LOOK_AROUND`] frames, so
-    /// the counters are never behind by more than a moment or a few dozen messages.
+    /// Adds what this client published since the last call to its topics' counters, and
+    /// lets go of the topics' snapshots (a subscriber that left is not kept alive by an
+    /// idle publisher): done before the session waits for the client and every
+    /// [`LOOK_AROUND`] frames, so the counters are never behind by more than a moment or
+    /// a few dozen messages.
     fn flush_counts(&mut self) {
         for name in self.unflushed.drain(..) {
             if let Some(p) = self.published.get_mut(&name) {
                 p.topic.stats.flush(&mut p.counts);
+                p.view.clear();
+                p.listed = false;
             }
         }
     }
@@ -535,8 +554,8 @@ impl Session {
     /// The short path of nearly every frame: a publish the topic takes at once is done
     /// here, without the future and the select of the waiting path (whose state is
     /// hundreds of bytes moved for each message). What it cannot finish comes back.
-    /// `text` is the frame's text when it is a JSON text frame.
-    fn publish_now<'a>(&mut self, p: Publish<'a>, text: Option<&str>) -> Option<Incoming<'a>> {
+    /// `frame` is the frame's bytes when it is a JSON text frame.
+    fn publish_now<'a>(&mut self, p: Publish<'a>, frame: Option<&[u8]>) -> Option<Incoming<'a>> {
         if self.gate.is_none() {
             return Some(Incoming::Publish(p));
         }
@@ -546,7 +565,7 @@ impl Session {
             msg,
             msg_checked,
         } = p;
-        match self.try_publish(&topic, msg, text, msg_checked) {
+        match self.try_publish(&topic, msg, frame, msg_checked) {
             Ok(None) => None,
             Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish {
                 id,
@@ -753,18 +772,18 @@ impl Session {
     }
 
     /// Publishes `msg` on `topic` unless it is a no-drop topic whose queue is full; then
-    /// hands the message back, with the topic to wait on. `text` is the text of the frame
+    /// hands the message back, with the topic to wait on. `frame` is the text frame
     /// `msg` came in, if it came in one (see [`Session::publish_on_known`]).
     fn try_publish(
         &mut self,
         topic: &str,
         msg: Payload,
-        text: Option<&str>,
+        frame: Option<&[u8]>,
         checked: bool,
     ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // one lookup by the client's spelling, no parse, no copy of the name.
-        let msg = match self.publish_on_known(topic, msg, text, checked) {
+        let msg = match self.publish_on_known(topic, msg, frame, checked) {
             Known::Done(r) => return r,
             Known::Not(msg) => msg,
         };
@@ -776,7 +795,7 @@ impl Session {
         if !self.published.contains_key(name.as_str()) {
             self.start_publishing(name.as_str())?;
         }
-        match self.publish_on_known(name.as_str(), msg, text, checked) {
+        match self.publish_on_known(name.as_str(), msg, frame, checked) {
             Known::Done(r) => r,
             Known::Not(_) => unreachable!("{name} was added to the published topics above"),
         }
@@ -784,13 +803,14 @@ impl Session {
 
     /// [`Session::try_publish`] on a topic this client publishes under exactly this
     /// spelling; the message comes back untouched when it does not. When `msg` is still
-    /// the JSON text it came in (`text` is that frame's text, and the type check left
-    /// the message as it was), the outgoing JSON frame is built from the text here.
+    /// the JSON text it came in (a slice of `frame`, which the type check left as it
+    /// was), the message is marked so: writers frame it as it is. `checked` says whether
+    /// its syntax and UTF-8 were checked on the way in ([`Publish::msg_checked`]).
     fn publish_on_known(
         &mut self,
         name: &str,
         msg: Payload,
-        text: Option<&str>,
+        frame: Option<&[u8]>,
         checked: bool,
     ) -> Known {
         let Session {
@@ -816,7 +836,11 @@ impl Session {
                 return Ok(Some((msg, p.topic.clone())));
             }
             // Checked and completed once here, for every subscriber.
-            let meta = p.topic.meta();
+            if !p.listed {
+                p.listed = true;
+                unflushed.push(p.name.clone());
+            }
+            let meta = p.topic.view(&mut p.view).meta();
             let tc = router.transcoder();
             let msg = if checked {
                 tc.normalize_cached(&meta.schema, msg, &mut p.normalize)
@@ -833,12 +857,9 @@ impl Session {
             let size = msg.len();
             let (received, stamp) = clock.arrival();
             // Still the text it came in: writers frame it as it is.
-            let json_text = text.and_then(|t| text_of(t, &msg)).is_some();
-            if p.counts.is_empty() {
-                unflushed.push(p.name.clone());
-            }
+            let json_text = frame.is_some_and(|f| lies_within(f, &msg));
             p.topic.publish_framed(
-                meta,
+                &p.view,
                 *client,
                 p.seq,
                 stamp,
@@ -1044,14 +1065,15 @@ fn is_object(p: &Payload) -> bool {
     }
 }
 
-/// `p`'s text when `p` is JSON lying within `text` (a slice of the frame it came in).
-fn text_of<'t>(text: &'t str, p: &Payload) -> Option<&'t str> {
+/// Whether `p` is JSON lying within `frame` (a slice of the text frame it came in).
+fn lies_within(frame: &[u8], p: &Payload) -> bool {
     if p.encoding != Encoding::Json {
-        return None;
+        return false;
     }
     // Live buffers do not overlap: bytes inside the frame's are a slice of that frame.
-    let start = (p.bytes.as_ptr() as usize).checked_sub(text.as_ptr() as usize)?;
-    text.get(start..start.checked_add(p.len())?)
+    let start = p.bytes.as_ptr() as usize;
+    let begin = frame.as_ptr() as usize;
+    start >= begin && start + p.len() <= begin + frame.len()
 }
 
 /// Messages taken in one go that mean a burst is being read (`write_loop`).

@@ -15,13 +15,16 @@
 //! A frame is refused when it breaks the protocol (reserved bits or opcodes, a client
 //! frame without a mask, a control frame that is fragmented or over 125 bytes, a
 //! continuation without a start), when its message would exceed the limit — before any
-//! of its payload is buffered — and when a text message or a close reason is not UTF-8.
+//! of its payload is buffered — and when a close reason is not UTF-8. A text message's
+//! UTF-8 is left to its reader ([`ClientMessage::Text`]).
 
 use bytes::{Buf, BufMut, BytesMut};
 use tokio_tungstenite::tungstenite::error::{CapacityError, ProtocolError};
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::protocol::frame::coding::{CloseCode, Data};
-use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage, Utf8Bytes};
+use tokio_tungstenite::tungstenite::{Error as WsError, Utf8Bytes};
+
+use super::ClientMessage;
 
 /// Longest control frame payload (RFC 6455, 5.5).
 const MAX_CONTROL: usize = 125;
@@ -70,7 +73,7 @@ impl Decoder {
     /// Takes the next whole message off the front of `buf`, or `None` when `buf` does not
     /// hold one yet (nothing is consumed then, except completed fragments of a message).
     /// Control frames come out as they arrive, also between the fragments of a message.
-    pub fn decode(&mut self, buf: &mut BytesMut) -> Result<Option<WsMessage>, WsError> {
+    pub fn decode(&mut self, buf: &mut BytesMut) -> Result<Option<ClientMessage>, WsError> {
         loop {
             let Some(h) = parse_header(buf)? else {
                 return Ok(None);
@@ -105,9 +108,9 @@ impl Decoder {
                     }
                     return data(text, whole).map(Some);
                 }
-                0x8 => return close(payload).map(|c| Some(WsMessage::Close(c))),
-                0x9 => return Ok(Some(WsMessage::Ping(payload.freeze()))),
-                0xA => return Ok(Some(WsMessage::Pong(payload.freeze()))),
+                0x8 => return close(payload).map(|c| Some(ClientMessage::Close(c))),
+                0x9 => return Ok(Some(ClientMessage::Ping(payload.freeze()))),
+                0xA => return Ok(Some(ClientMessage::Pong(payload.freeze()))),
                 _ => unreachable!("parse_header refuses other opcodes"),
             };
             if let Some((was_text, _)) = self.partial {
@@ -124,13 +127,13 @@ impl Decoder {
 }
 
 /// A whole data message.
-fn data(text: bool, payload: BytesMut) -> Result<WsMessage, WsError> {
-    if !text {
-        return Ok(WsMessage::Binary(payload.freeze()));
-    }
-    Utf8Bytes::try_from(payload.freeze())
-        .map(WsMessage::Text)
-        .map_err(|e| WsError::Utf8(format!("a text message is not UTF-8: {e}")))
+fn data(text: bool, payload: BytesMut) -> Result<ClientMessage, WsError> {
+    let payload = payload.freeze();
+    Ok(if text {
+        ClientMessage::Text(payload)
+    } else {
+        ClientMessage::Binary(payload)
+    })
 }
 
 /// A close frame's code and reason (RFC 6455, 5.5.1 and 7.4).
@@ -242,19 +245,6 @@ pub fn encode_header(out: &mut BytesMut, opcode: u8, len: usize) {
     }
 }
 
-/// The opcode and payload of a message as a server sends it; `None` for raw frames,
-/// which a server session never writes.
-pub fn opcode_of(m: &WsMessage) -> Option<u8> {
-    Some(match m {
-        WsMessage::Text(_) => 0x1,
-        WsMessage::Binary(_) => 0x2,
-        WsMessage::Close(_) => 0x8,
-        WsMessage::Ping(_) => 0x9,
-        WsMessage::Pong(_) => 0xA,
-        WsMessage::Frame(_) => return None,
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -280,7 +270,7 @@ mod tests {
 
     const KEY: [u8; 4] = [0x37, 0xfa, 0x21, 0x3d];
 
-    fn decode_all(bytes: &[u8], max: usize) -> Result<Vec<WsMessage>, WsError> {
+    fn decode_all(bytes: &[u8], max: usize) -> Result<Vec<ClientMessage>, WsError> {
         let mut d = Decoder::new(max);
         let mut buf = BytesMut::from(bytes);
         let mut out = Vec::new();
@@ -296,7 +286,11 @@ mod tests {
         for len in [0, 1, 7, 8, 9, 125, 126, 127, 65_535, 65_536, 200_000] {
             let body: Vec<u8> = (0..len).map(|i| (i * 7 % 251) as u8).collect();
             let got = decode_all(&frame(true, 0x2, &body, KEY), 1 << 20).expect("valid");
-            assert_eq!(got, vec![WsMessage::Binary(body.into())], "length {len}");
+            assert_eq!(
+                got,
+                vec![ClientMessage::Binary(body.into())],
+                "length {len}"
+            );
         }
     }
 
@@ -311,7 +305,7 @@ mod tests {
         }
         assert_eq!(
             d.decode(&mut buf).expect("valid"),
-            Some(WsMessage::text(r#"{"op":"publish"}"#))
+            Some(ClientMessage::Text(r#"{"op":"publish"}"#.into()))
         );
     }
 
@@ -327,8 +321,8 @@ mod tests {
         assert_eq!(
             got,
             vec![
-                WsMessage::Ping("are you there".into()),
-                WsMessage::text("héllo wé!"),
+                ClientMessage::Ping("are you there".into()),
+                ClientMessage::Text("héllo wé!".into()),
             ]
         );
     }
@@ -340,13 +334,13 @@ mod tests {
         let got = decode_all(&frame(true, 0x8, &body, KEY), 1024).expect("valid");
         assert_eq!(
             got,
-            vec![WsMessage::Close(Some(CloseFrame {
+            vec![ClientMessage::Close(Some(CloseFrame {
                 code: CloseCode::Normal,
                 reason: "bye".into()
             }))]
         );
         let got = decode_all(&frame(true, 0x8, b"", KEY), 1024).expect("valid");
-        assert_eq!(got, vec![WsMessage::Close(None)]);
+        assert_eq!(got, vec![ClientMessage::Close(None)]);
     }
 
     fn refused(bytes: &[u8], max: usize) -> WsError {
@@ -411,14 +405,14 @@ mod tests {
     }
 
     #[test]
-    fn text_that_is_not_utf8_is_refused_whole_or_fragmented() {
-        assert!(matches!(
-            refused(&frame(true, 0x1, &[0xC3, 0x28], KEY), 64),
-            WsError::Utf8(_)
-        ));
+    fn text_is_handed_on_unchecked_and_a_close_reason_that_is_not_utf8_is_refused() {
+        // Text as it came, joined from its fragments: its reader checks it.
         let mut f = frame(false, 0x1, b"ok", KEY);
         f.extend(frame(true, 0x0, &[0xFF], KEY));
-        assert!(matches!(refused(&f, 64), WsError::Utf8(_)));
+        assert_eq!(
+            decode_all(&f, 64).expect("framed well"),
+            vec![ClientMessage::Text(vec![b'o', b'k', 0xFF].into())]
+        );
         let mut close = 1000u16.to_be_bytes().to_vec();
         close.push(0xFF);
         assert!(matches!(

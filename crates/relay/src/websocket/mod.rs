@@ -20,6 +20,8 @@
 //! - Control frames are not answered here: a `Ping` comes out of the reader for the
 //!   session to answer, and so does a `Close`. After a `Close` or an error the reader
 //!   ends; after sending a `Close` the writer refuses further messages.
+//! - Text comes out unchecked ([`ClientMessage::Text`]): its reader checks the UTF-8, most
+//!   often while reading the text anyway, instead of in a pass of its own.
 
 pub mod frames;
 
@@ -32,6 +34,7 @@ use bytes::{Buf, BufMut, Bytes, BytesMut};
 use futures_util::{Sink, Stream};
 use tokio::io::{AsyncRead, AsyncWrite};
 use tokio_tungstenite::tungstenite::error::ProtocolError;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
 use frames::Decoder;
@@ -50,6 +53,34 @@ pub const COPY_UP_TO: usize = 16 << 10;
 const KEEP_CAPACITY: usize = 64 << 10;
 /// Slices handed to one vectored write.
 const MAX_SLICES: usize = 64;
+
+/// A message from the client as the [`Reader`] gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ClientMessage {
+    /// A text message's bytes, not yet checked as UTF-8. Its reader must check them and
+    /// close the connection with 1007 (RFC 6455, 8.1) when they are not; a rosbridge
+    /// session does it while reading a publish (its envelope's shape, its message's
+    /// check against the type) and in one pass for anything else.
+    Text(Bytes),
+    Binary(Bytes),
+    Ping(Bytes),
+    Pong(Bytes),
+    Close(Option<CloseFrame>),
+}
+
+/// tungstenite's messages, for sessions run over other streams (tests, benches).
+impl From<WsMessage> for ClientMessage {
+    fn from(m: WsMessage) -> ClientMessage {
+        match m {
+            WsMessage::Text(t) => ClientMessage::Text(t.into()),
+            WsMessage::Binary(b) => ClientMessage::Binary(b),
+            WsMessage::Ping(b) => ClientMessage::Ping(b),
+            WsMessage::Pong(b) => ClientMessage::Pong(b),
+            WsMessage::Close(c) => ClientMessage::Close(c),
+            WsMessage::Frame(f) => ClientMessage::Binary(f.into_payload()),
+        }
+    }
+}
 
 /// The two halves of an accepted (handshake done) server connection over `io`.
 pub fn server<S>(
@@ -90,7 +121,7 @@ impl<R> Reader<R> {
 }
 
 impl<R: AsyncRead + Unpin> Stream for Reader<R> {
-    type Item = Result<WsMessage, WsError>;
+    type Item = Result<ClientMessage, WsError>;
 
     fn poll_next(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<Option<Self::Item>> {
         let this = self.get_mut();
@@ -100,7 +131,7 @@ impl<R: AsyncRead + Unpin> Stream for Reader<R> {
             }
             match this.decoder.decode(&mut this.buf) {
                 Ok(Some(m)) => {
-                    this.done = matches!(m, WsMessage::Close(_));
+                    this.done = matches!(m, ClientMessage::Close(_));
                     return Poll::Ready(Some(Ok(m)));
                 }
                 Ok(None) => {}

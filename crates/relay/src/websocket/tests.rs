@@ -58,22 +58,14 @@ async fn client_messages_of_every_kind_are_read_in_order() {
         .send(frag("wörld", OpCode::Data(Data::Continue), true))
         .await
         .unwrap();
-    assert_eq!(
-        next(&mut reader).await.unwrap(),
-        WsMessage::text("{\"op\":\"publish\"}")
-    );
-    assert_eq!(
-        next(&mut reader).await.unwrap(),
-        WsMessage::Binary(big.into())
-    );
-    assert_eq!(
-        next(&mut reader).await.unwrap(),
-        WsMessage::Ping("p".into())
-    );
-    assert_eq!(
-        next(&mut reader).await.unwrap(),
-        WsMessage::text("hello wörld")
-    );
+    let text = |t: &str| ClientMessage::Text(Bytes::copy_from_slice(t.as_bytes()));
+    let next_is = async |reader: &mut Reader<_>, want: ClientMessage| {
+        assert_eq!(next(reader).await.unwrap(), want);
+    };
+    next_is(&mut reader, text("{\"op\":\"publish\"}")).await;
+    next_is(&mut reader, ClientMessage::Binary(big.into())).await;
+    next_is(&mut reader, ClientMessage::Ping("p".into())).await;
+    next_is(&mut reader, text("hello wörld")).await;
     client
         .close(Some(CloseFrame {
             code: CloseCode::Away,
@@ -82,7 +74,7 @@ async fn client_messages_of_every_kind_are_read_in_order() {
         .await
         .unwrap();
     match next(&mut reader).await.unwrap() {
-        WsMessage::Close(Some(f)) => {
+        ClientMessage::Close(Some(f)) => {
             assert_eq!((f.code, f.reason.as_str()), (CloseCode::Away, "leaving"))
         }
         other => panic!("expected the close, got {other:?}"),
@@ -115,7 +107,7 @@ async fn a_burst_in_one_write_comes_out_whole() {
     for i in 0..5_000u32 {
         assert_eq!(
             next(&mut reader).await.unwrap(),
-            WsMessage::text(format!("{{\"n\":{i}}}"))
+            ClientMessage::Text(format!("{{\"n\":{i}}}").into())
         );
     }
 }

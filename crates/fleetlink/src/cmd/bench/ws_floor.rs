@@ -19,10 +19,11 @@ use std::net::SocketAddr;
 use std::sync::{Arc, Mutex};
 
 use anyhow::Context;
+use fleetlink_relay::websocket::ClientMessage;
 use futures_util::{Sink, SinkExt, Stream, StreamExt};
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
-use tokio_tungstenite::tungstenite::{Error as WsError, Message};
+use tokio_tungstenite::tungstenite::{Error as WsError, Message, Utf8Bytes};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -82,10 +83,38 @@ async fn accept(tcp: tokio::net::TcpStream, layer: Layer, subscribers: Subscribe
     }
 }
 
-async fn relay<K, S>(mut sink: K, mut stream: S, subscribers: Subscribers)
+/// A received message as the relay needs it: its text, checked as UTF-8, if it is text.
+trait Received {
+    fn into_text(self) -> Result<Option<Utf8Bytes>, WsError>;
+}
+
+/// tungstenite checked the text as it read it.
+impl Received for Message {
+    fn into_text(self) -> Result<Option<Utf8Bytes>, WsError> {
+        Ok(match self {
+            Message::Text(t) => Some(t),
+            _ => None,
+        })
+    }
+}
+
+/// The hub's reader leaves the check to the reader of the text: here, one pass.
+impl Received for ClientMessage {
+    fn into_text(self) -> Result<Option<Utf8Bytes>, WsError> {
+        match self {
+            ClientMessage::Text(b) => Utf8Bytes::try_from(b)
+                .map(Some)
+                .map_err(|e| WsError::Utf8(e.to_string())),
+            _ => Ok(None),
+        }
+    }
+}
+
+async fn relay<K, S, M>(mut sink: K, mut stream: S, subscribers: Subscribers)
 where
     K: Sink<Message, Error = WsError> + Unpin + Send + 'static,
-    S: Stream<Item = Result<Message, WsError>> + Unpin,
+    S: Stream<Item = Result<M, WsError>> + Unpin,
+    M: Received,
 {
     let (tx, mut rx) = mpsc::unbounded_channel::<Message>();
     tokio::spawn(async move {
@@ -108,14 +137,17 @@ where
     // the bench subscribes before it publishes.
     let mut targets = Vec::new();
     while let Some(Ok(m)) = stream.next().await {
-        if let Message::Text(text) = &m {
-            let text = text.as_str();
-            if text.contains("\"subscribe\"") {
+        let Ok(text) = m.into_text() else {
+            return;
+        };
+        if let Some(text) = text {
+            if text.as_str().contains("\"subscribe\"") {
                 subscribers.lock().expect("not poisoned").push(tx.clone());
-            } else if !text.contains("\"advertise\"") {
+            } else if !text.as_str().contains("\"advertise\"") {
                 if targets.is_empty() {
                     targets = subscribers.lock().expect("not poisoned").clone();
                 }
+                let m = Message::Text(text);
                 for t in &targets {
                     let _ = t.send(m.clone());
                 }
