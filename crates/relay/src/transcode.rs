@@ -88,19 +88,22 @@ pub trait Transcoder: Send + Sync + 'static {
         Ok(self.normalize(schema, &payload)?.unwrap_or(payload))
     }
 
-    /// [`Transcoder::normalize_cached`] of a JSON message whose syntax was not checked on
-    /// arrival (a publish read by its envelope's shape): the syntax is checked too — by
-    /// the check against the type where the type is known, on its own where not. The
-    /// error does not say which failed; the caller reads such a message again the full
-    /// way for that.
-    fn normalize_unchecked(
+    /// [`Transcoder::normalize_cached`] of JSON text that nothing has checked yet, not even
+    /// as UTF-8 (the message of a publish read by its envelope's shape), left where it
+    /// is: `Ok(None)` when `text` is the message as it goes out, `Ok(Some(..))` with the
+    /// message to send instead (defaults filled, numbers converted). The text is checked
+    /// as it is read — by the check against the type where the type is known, for its
+    /// syntax and UTF-8 where not. The error does not say which check failed; the caller
+    /// reads such a message again the full way for that.
+    fn normalize_json_unchecked(
         &self,
         schema: &Schema,
-        payload: Payload,
-        cache: &mut NormalizeCache,
-    ) -> Result<Payload, TranscodeError> {
-        check_syntax(schema, &payload)?;
-        self.normalize_cached(schema, payload, cache)
+        text: &[u8],
+        _cache: &mut NormalizeCache,
+    ) -> Result<Option<Bytes>, TranscodeError> {
+        check_syntax(schema, text)?;
+        let payload = Payload::json(Bytes::copy_from_slice(text));
+        Ok(self.normalize(schema, &payload)?.map(|p| p.bytes))
     }
 
     /// Every message type this side knows (rosapi `interfaces`).
@@ -116,19 +119,26 @@ pub trait Transcoder: Send + Sync + 'static {
     }
 }
 
-/// A JSON payload that is not exactly one JSON value is refused.
-fn check_syntax(schema: &Schema, payload: &Payload) -> Result<(), TranscodeError> {
-    if payload.encoding != Encoding::Json
-        || fleetlink_proto::rosbridge::is_json_value(&payload.bytes)
-    {
+/// JSON text that is not exactly one JSON value (in UTF-8) is refused.
+fn check_syntax(schema: &Schema, text: &[u8]) -> Result<(), TranscodeError> {
+    if fleetlink_proto::rosbridge::is_json_value(text) {
         return Ok(());
     }
-    Err(TranscodeError::Invalid {
+    Err(invalid(
+        schema,
+        Encoding::Json,
+        "not one well-formed JSON value".into(),
+    ))
+}
+
+/// A message refused by its check against `schema`'s type.
+fn invalid(schema: &Schema, enc: Encoding, cause: String) -> TranscodeError {
+    TranscodeError::Invalid {
         type_name: schema.type_name.clone(),
-        from: Encoding::Json,
-        to: Encoding::Json,
-        cause: "not one well-formed JSON value".into(),
-    })
+        from: enc,
+        to: enc,
+        cause,
+    }
 }
 
 /// State a transcoder keeps for one publisher's topic between
@@ -169,67 +179,42 @@ impl RegistryTranscoder {
 }
 
 impl RegistryTranscoder {
-    /// `normalize_cached`; `syntax_checked` says whether a JSON payload's syntax was
-    /// checked on arrival (see [`Transcoder::normalize_unchecked`]).
-    fn normalize_with(
+    /// The type of `schema` as resolved for checking messages in `enc`, kept in `cache`
+    /// between calls; `None` when the registry does not know the type.
+    fn resolved<'c>(
         &self,
         schema: &Schema,
-        payload: Payload,
-        cache: &mut NormalizeCache,
-        syntax_checked: bool,
-    ) -> Result<Payload, TranscodeError> {
-        let enc = payload.encoding;
-        if !matches!(enc, Encoding::Json | Encoding::Cbor) {
-            return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
-        }
+        enc: Encoding,
+        cache: &'c mut NormalizeCache,
+    ) -> Result<Option<&'c fleetlink_msg::registry::Resolved>, TranscodeError> {
         let reg = &self.registry;
         let ty = schema.type_name.as_str();
         let dialect = dialect_of(schema, enc);
-        let invalid = |cause: String| TranscodeError::Invalid {
-            type_name: ty.to_owned(),
-            from: enc,
-            to: enc,
-            cause,
-        };
-        let cached = cache
+        let current = cache
             .0
             .as_ref()
             .and_then(|c| c.downcast_ref::<ResolvedTopic>())
-            .filter(|c| c.type_name == ty && c.dialect == dialect && reg.is_current(&c.resolved));
-        let resolved = match cached {
-            Some(c) => &c.resolved,
-            None => {
-                if !reg.contains(ty) {
-                    // Not checked against a type: its syntax, if nobody checked it yet.
-                    if !syntax_checked {
-                        check_syntax(schema, &payload)?;
-                    }
-                    return Ok(payload);
-                }
-                let resolved = reg
-                    .resolve(ty, dialect)
-                    .map_err(|e| invalid(e.to_string()))?;
-                let c = cache.0.insert(Box::new(ResolvedTopic {
-                    type_name: ty.to_owned(),
-                    dialect,
-                    resolved,
-                }));
-                &c.downcast_ref::<ResolvedTopic>()
-                    .expect("just stored")
-                    .resolved
+            .is_some_and(|c| {
+                c.type_name == ty && c.dialect == dialect && reg.is_current(&c.resolved)
+            });
+        if !current {
+            if !reg.contains(ty) {
+                return Ok(None);
             }
-        };
-        if enc == Encoding::Cbor {
-            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
-                .map(|normal| Payload::new(Encoding::Cbor, normal))
-                .map_err(|e| invalid(e.to_string()));
+            let resolved = reg
+                .resolve(ty, dialect)
+                .map_err(|e| invalid(schema, enc, e.to_string()))?;
+            cache.0 = Some(Box::new(ResolvedTopic {
+                type_name: ty.to_owned(),
+                dialect,
+                resolved,
+            }));
         }
-        match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
-            Ok(Some(normal)) => Ok(Payload::json(normal)),
-            // Already in normal form: the bytes as they came (no copy).
-            Ok(None) => Ok(payload),
-            Err(e) => Err(invalid(e.to_string())),
-        }
+        Ok(cache
+            .0
+            .as_ref()
+            .and_then(|c| c.downcast_ref::<ResolvedTopic>())
+            .map(|c| &c.resolved))
     }
 }
 
@@ -368,16 +353,43 @@ impl Transcoder for RegistryTranscoder {
         payload: Payload,
         cache: &mut NormalizeCache,
     ) -> Result<Payload, TranscodeError> {
-        self.normalize_with(schema, payload, cache, true)
+        let enc = payload.encoding;
+        if !matches!(enc, Encoding::Json | Encoding::Cbor) {
+            return Ok(self.normalize(schema, &payload)?.unwrap_or(payload));
+        }
+        let Some(resolved) = self.resolved(schema, enc, cache)? else {
+            return Ok(payload);
+        };
+        let refused = |e: fleetlink_msg::CodecError| invalid(schema, enc, e.to_string());
+        if enc == Encoding::Cbor {
+            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
+                .map(|normal| Payload::new(Encoding::Cbor, normal))
+                .map_err(refused);
+        }
+        match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
+            Ok(Some(normal)) => Ok(Payload::json(normal)),
+            // Already in normal form: the bytes as they came (no copy).
+            Ok(None) => Ok(payload),
+            Err(e) => Err(refused(e)),
+        }
     }
 
-    fn normalize_unchecked(
+    fn normalize_json_unchecked(
         &self,
         schema: &Schema,
-        payload: Payload,
+        text: &[u8],
         cache: &mut NormalizeCache,
-    ) -> Result<Payload, TranscodeError> {
-        self.normalize_with(schema, payload, cache, false)
+    ) -> Result<Option<Bytes>, TranscodeError> {
+        let Some(resolved) = self.resolved(schema, Encoding::Json, cache)? else {
+            // Not checked against a type: its syntax (and UTF-8), on its own.
+            check_syntax(schema, text)?;
+            return Ok(None);
+        };
+        // The check against the type accepts only UTF-8, and the full path's parse
+        // checks it first.
+        fleetlink_msg::normalize_json_resolved(resolved, text)
+            .map(|normal| normal.map(Bytes::from))
+            .map_err(|e| invalid(schema, Encoding::Json, e.to_string()))
     }
 
     fn type_names(&self) -> Vec<String> {

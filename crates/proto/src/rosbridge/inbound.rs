@@ -209,11 +209,6 @@ pub struct Publish<'a> {
     pub id: PublishId<'a>,
     pub topic: std::borrow::Cow<'a, str>,
     pub msg: Payload,
-    /// Whether `msg`'s syntax was checked on the way in. Not when the envelope was read
-    /// by its shape ([`Publish::from_json_text_shaped`]): then the message's check against
-    /// its type must also check its syntax, and a message that fails must be read again
-    /// with [`Publish::from_json_text`], which says why precisely.
-    pub msg_checked: bool,
 }
 
 /// A publish's `id`. From JSON it stays text until asked for: roslibpy and roslibjs
@@ -227,8 +222,6 @@ enum IdRepr<'a> {
     Value(Value),
     /// Checked by the scan, so it parses.
     Json(&'a str),
-    /// A string, as read by an envelope's shape (checked UTF-8, no escapes).
-    JsonBytes(&'a [u8]),
 }
 
 impl PublishId<'_> {
@@ -238,7 +231,6 @@ impl PublishId<'_> {
             IdRepr::None => None,
             IdRepr::Value(v) => Some(v.clone()),
             IdRepr::Json(text) => serde_json::from_str(text).ok(),
-            IdRepr::JsonBytes(text) => serde_json::from_slice(text).ok(),
         }
     }
 }
@@ -270,39 +262,11 @@ impl<'a> Publish<'a> {
             id,
             topic: topic.into(),
             msg: Payload::json(frame.slice(msg)),
-            msg_checked: true,
-        })
-    }
-
-    /// A `publish` in one of the client's recent envelope `shapes` (see
-    /// [`super::shape`]), read by comparing text: its message is not checked, neither as
-    /// JSON nor as UTF-8 (`msg_checked` is `false`). `frame` is a text frame not yet
-    /// checked as UTF-8. `None` when it has none of the shapes.
-    pub fn from_shape(frame: &'a Bytes, shapes: &mut super::EnvelopeShapes) -> Option<Publish<'a>> {
-        let m = shapes.fit(frame)?;
-        // Head, middle and tail are the shape's own text, checked when it was read; the
-        // id and the topic (a few bytes each) are checked here, the message by its reader.
-        let topic = std::str::from_utf8(&frame[m.topic]).ok()?;
-        let id = match m.id {
-            Some(r) => {
-                let id = &frame[r];
-                if !id.is_ascii() && std::str::from_utf8(id).is_err() {
-                    return None;
-                }
-                PublishId(IdRepr::JsonBytes(id))
-            }
-            None => PublishId(IdRepr::None),
-        };
-        Some(Publish {
-            id,
-            topic: topic.into(),
-            msg: Payload::json(frame.slice(m.msg)),
-            msg_checked: false,
         })
     }
 
     /// [`Publish::from_json_text`], keeping the envelope's shape in `shapes` for the
-    /// client's next publishes ([`Publish::from_shape`]).
+    /// client's next publishes ([`super::EnvelopeShapes::fit`]).
     pub fn from_json_text_shaped(
         text: &'a str,
         frame: &Bytes,
@@ -329,7 +293,6 @@ impl<'a> Publish<'a> {
             id,
             topic: topic.into(),
             msg: Payload::json(frame.slice(msg)),
-            msg_checked: true,
         })
     }
 
@@ -396,7 +359,6 @@ impl<'a> Publish<'a> {
             id,
             topic: topic.into(),
             msg: Payload::new(Encoding::Cbor, frame.slice(msg)),
-            msg_checked: true,
         })
     }
 }

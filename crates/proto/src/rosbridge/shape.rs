@@ -15,10 +15,10 @@
 //! was, then the middle, and ends with the tail is the same envelope around another id
 //! and another message: the topic is where it was. The scan over the envelope's keys
 //! is skipped, and so are the frame's UTF-8 check (the head, middle and tail are the
-//! checked text of the shape; the id is checked on its own) and the syntax check of the
-//! message, which the caller must then make ([`Publish::msg_checked`](super::Publish) is
-//! `false`): the check against the message's type does both, and a message that fails
-//! it is read again the full way.
+//! checked text of the shape; the id is checked here) and the syntax check of the
+//! message, which the caller must then make: the check against the message's type does
+//! both, and a message that fails it is read again the full way
+//! ([`Publish::from_json_text`](super::Publish::from_json_text)), which says why.
 //!
 //! A few shapes are kept (a client publishing on several topics); one that stops
 //! matching is replaced by the envelope read in full. A client whose envelopes keep
@@ -47,12 +47,14 @@ struct EnvelopeShape {
     topic: Range<usize>,
 }
 
-/// Where a matched frame's parts lie.
+/// Where the parts of a frame that has a kept shape lie.
 #[derive(Debug, PartialEq)]
-pub(crate) struct Matched {
-    /// The id as JSON (with its quotes).
+pub struct Matched {
+    /// The id as JSON (with its quotes), checked as UTF-8.
     pub id: Option<Range<usize>>,
+    /// The topic, as the shape's (checked) text has it.
     pub topic: Range<usize>,
+    /// The message: not checked in any way, not even as UTF-8.
     pub msg: Range<usize>,
 }
 
@@ -149,9 +151,21 @@ pub struct EnvelopeShapes {
 
 impl EnvelopeShapes {
     /// The parts of `text` (a text frame, not yet checked as UTF-8) if it has one of the
-    /// kept shapes.
+    /// kept shapes. Everything but the message is then known to be UTF-8.
     #[inline]
-    pub(crate) fn fit(&mut self, text: &[u8]) -> Option<Matched> {
+    pub fn fit(&mut self, text: &[u8]) -> Option<Matched> {
+        let m = self.fit_any(text)?;
+        if let Some(id) = &m.id
+            && !text[id.clone()].is_ascii()
+            && std::str::from_utf8(&text[id.clone()]).is_err()
+        {
+            return None;
+        }
+        Some(m)
+    }
+
+    #[inline]
+    fn fit_any(&mut self, text: &[u8]) -> Option<Matched> {
         if self.resting > 0 {
             self.resting -= 1;
             return None;
@@ -281,6 +295,17 @@ mod tests {
         let more = r#"{"op":"publish","id":"publish:/t:1","topic":"/t","msg":{"data":"a"},"x":1}"#;
         let m = s.fit(more.as_bytes()).expect("fits by its ends");
         assert!(!super::super::is_json_value(more[m.msg].as_bytes()));
+    }
+
+    #[test]
+    fn a_frame_whose_id_is_not_utf8_does_not_fit() {
+        let mut s = learned(r#"{"op":"publish","id":"p:1","topic":"/t","msg":{}}"#);
+        let mut bad = br#"{"op":"publish","id":"p:"#.to_vec();
+        bad.extend_from_slice(&[0xC3, 0x28]);
+        bad.extend_from_slice(br#"","topic":"/t","msg":{}}"#);
+        assert_eq!(s.fit(&bad), None);
+        let good = r#"{"op":"publish","id":"p:é","topic":"/t","msg":{}}"#;
+        assert!(s.fit(good.as_bytes()).is_some());
     }
 
     #[test]

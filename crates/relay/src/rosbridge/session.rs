@@ -11,6 +11,8 @@ use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Instant;
 
+use bytes::{Buf, Bytes};
+use fleetlink_proto::rosbridge::shape::Matched;
 use fleetlink_proto::rosbridge::{
     Compression, Op, ParseError, Publish, PublishId, Request, outbound,
 };
@@ -169,21 +171,23 @@ pub async fn serve<K, S>(
         let (text, binary);
         let req = match frame {
             Ok(ClientMessage::Text(t)) => {
-                text = t;
                 // Nearly all traffic: a publish in one of the client's recent envelopes
-                // (`EnvelopeShapes`), read by comparing text, its topic borrowed from the
-                // frame, its UTF-8 and syntax checked by its check against the type.
-                let mut fitted = false;
-                if let Some(p) = Publish::from_shape(&text, &mut shapes) {
-                    fitted = true;
-                    if session.publish_now(p, Some(&text)).is_none() {
-                        tokio::task::consume_budget().await;
-                        continue;
-                    }
-                    // Not published at once (refused, or to wait): read again in full,
-                    // so that what follows is what the full read gives, the precise
-                    // error included.
-                }
+                // (`EnvelopeShapes`), read by comparing text, its UTF-8 and syntax
+                // checked by its check against the type.
+                let (t, fitted) = match shapes.fit(&t) {
+                    Some(m) => match session.publish_shaped(t, m) {
+                        Ok(()) => {
+                            tokio::task::consume_budget().await;
+                            continue;
+                        }
+                        // Not published at once (refused, or to wait): read again in
+                        // full, so that what follows is what the full read gives, the
+                        // precise error included.
+                        Err(back) => (back, true),
+                    },
+                    None => (t, false),
+                };
+                text = t;
                 let Ok(utf8) = std::str::from_utf8(&text) else {
                     let close = CloseFrame {
                         code: CloseCode::Invalid,
@@ -559,20 +563,10 @@ impl Session {
         if self.gate.is_none() {
             return Some(Incoming::Publish(p));
         }
-        let Publish {
-            id,
-            topic,
-            msg,
-            msg_checked,
-        } = p;
-        match self.try_publish(&topic, msg, frame, msg_checked) {
+        let Publish { id, topic, msg } = p;
+        match self.try_publish(&topic, msg, frame) {
             Ok(None) => None,
-            Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish {
-                id,
-                topic,
-                msg,
-                msg_checked,
-            })),
+            Ok(Some((msg, _full))) => Some(Incoming::Publish(Publish { id, topic, msg })),
             Err(text) => Some(Incoming::Refused(id, text)),
         }
     }
@@ -759,7 +753,7 @@ impl Session {
     /// socket, the client's own sends slow down with it — instead of being refused.
     async fn publish(&mut self, topic: &str, mut msg: Payload) -> Result<(), String> {
         loop {
-            match self.try_publish(topic, msg, None, true)? {
+            match self.try_publish(topic, msg, None)? {
                 None => return Ok(()),
                 Some((back, full)) => {
                     msg = back;
@@ -779,11 +773,10 @@ impl Session {
         topic: &str,
         msg: Payload,
         frame: Option<&[u8]>,
-        checked: bool,
     ) -> Result<Option<(Payload, Arc<Topic>)>, String> {
         // Most publishes name a topic this client already publishes, spelled the same way:
         // one lookup by the client's spelling, no parse, no copy of the name.
-        let msg = match self.publish_on_known(topic, msg, frame, checked) {
+        let msg = match self.publish_on_known(topic, msg, frame) {
             Known::Done(r) => return r,
             Known::Not(msg) => msg,
         };
@@ -795,7 +788,7 @@ impl Session {
         if !self.published.contains_key(name.as_str()) {
             self.start_publishing(name.as_str())?;
         }
-        match self.publish_on_known(name.as_str(), msg, frame, checked) {
+        match self.publish_on_known(name.as_str(), msg, frame) {
             Known::Done(r) => r,
             Known::Not(_) => unreachable!("{name} was added to the published topics above"),
         }
@@ -804,15 +797,8 @@ impl Session {
     /// [`Session::try_publish`] on a topic this client publishes under exactly this
     /// spelling; the message comes back untouched when it does not. When `msg` is still
     /// the JSON text it came in (a slice of `frame`, which the type check left as it
-    /// was), the message is marked so: writers frame it as it is. `checked` says whether
-    /// its syntax and UTF-8 were checked on the way in ([`Publish::msg_checked`]).
-    fn publish_on_known(
-        &mut self,
-        name: &str,
-        msg: Payload,
-        frame: Option<&[u8]>,
-        checked: bool,
-    ) -> Known {
+    /// was), the message is marked so: writers frame it as it is.
+    fn publish_on_known(&mut self, name: &str, msg: Payload, frame: Option<&[u8]>) -> Known {
         let Session {
             published,
             gate,
@@ -841,18 +827,15 @@ impl Session {
                 unflushed.push(p.name.clone());
             }
             let meta = p.topic.view(&mut p.view).meta();
-            let tc = router.transcoder();
-            let msg = if checked {
-                tc.normalize_cached(&meta.schema, msg, &mut p.normalize)
-            } else {
-                tc.normalize_unchecked(&meta.schema, msg, &mut p.normalize)
-            };
-            let msg = msg.map_err(|e| {
-                format!(
-                    "publish {name}: the message does not fit its type: {}",
-                    e.cause_text()
-                )
-            })?;
+            let msg = router
+                .transcoder()
+                .normalize_cached(&meta.schema, msg, &mut p.normalize)
+                .map_err(|e| {
+                    format!(
+                        "publish {name}: the message does not fit its type: {}",
+                        e.cause_text()
+                    )
+                })?;
             p.seq += 1;
             let size = msg.len();
             let (received, stamp) = clock.arrival();
@@ -871,6 +854,73 @@ impl Session {
             gate.done(name, GateOp::Publish, size);
             Ok(None)
         })())
+    }
+
+    /// A publish read by its envelope's shape (`m`, parts of `frame`), done at once when
+    /// nothing stands in its way: the client publishes the topic under this spelling and
+    /// may, the topic has room, and the message passes its check against the type —
+    /// which is also what checks its syntax and UTF-8. The message is `frame` itself, cut
+    /// down to the message, so it costs no new reference to the read buffer. Anything
+    /// else hands the frame back, for the full read ([`Publish::from_json_text`]) to do
+    /// and answer as for any publish.
+    fn publish_shaped(&mut self, frame: Bytes, m: Matched) -> Result<(), Bytes> {
+        let Session {
+            published,
+            gate,
+            router,
+            clock,
+            client,
+            unflushed,
+            ..
+        } = self;
+        let Some(gate) = gate.as_mut() else {
+            return Err(frame);
+        };
+        let Some(p) = std::str::from_utf8(&frame[m.topic])
+            .ok()
+            .and_then(|topic| published.get_mut(topic))
+        else {
+            return Err(frame);
+        };
+        // Asked for every message: rules can change while a client publishes.
+        if !gate.allows(p.name.as_str(), GateOp::Publish) || p.topic.stats.no_drop_flow.is_full() {
+            return Err(frame);
+        }
+        if !p.listed {
+            p.listed = true;
+            unflushed.push(p.name.clone());
+        }
+        let meta = p.topic.view(&mut p.view).meta();
+        let checked = router.transcoder().normalize_json_unchecked(
+            &meta.schema,
+            &frame[m.msg.clone()],
+            &mut p.normalize,
+        );
+        let (msg, json_text) = match checked {
+            Ok(None) => {
+                let mut msg = frame;
+                msg.truncate(m.msg.end);
+                msg.advance(m.msg.start);
+                (Payload::json(msg), true)
+            }
+            Ok(Some(normal)) => (Payload::json(normal), false),
+            Err(_) => return Err(frame),
+        };
+        p.seq += 1;
+        let size = msg.len();
+        let (received, stamp) = clock.arrival();
+        p.topic.publish_framed(
+            &p.view,
+            *client,
+            p.seq,
+            stamp,
+            msg,
+            received,
+            json_text,
+            &mut p.counts,
+        );
+        gate.done(p.name.as_str(), GateOp::Publish, size);
+        Ok(())
     }
 
     /// The first publish on `name` without an `advertise`: rosbridge allows it on a topic
