@@ -315,3 +315,59 @@ fn protocol_md_worked_example() {
     };
     assert_eq!(frame.to_bytes(), Bytes::from(bytes));
 }
+
+/// Text where a publish's message goes: JSON objects, and pieces that only look like the
+/// end of one (a brace in a string, another key after the message, an unclosed object).
+fn message_text() -> impl Strategy<Value = String> {
+    prop_oneof![
+        util::json_value().prop_map(|v| serde_json::json!({ "v": v }).to_string()),
+        proptest::string::string_regex(r#"\{[\]\["{}:,ab1 \\]{0,24}"#).expect("a regex"),
+        Just(r#"{"a":1},"op":"advertise""#.to_string()),
+        Just(r#"{"a":"}"}"#.to_string()),
+        Just(r#"{"a":1} "#.to_string()),
+        Just(r#"{"b":[1,2]},"topic":"/other""#.to_string()),
+    ]
+}
+
+proptest! {
+    /// Reading a publish by its envelope's shape is sound: whenever a frame has the shape
+    /// and the text where the message lies is one JSON value (the least its reader
+    /// checks), the full read of that frame finds the same topic, id and message.
+    #[test]
+    fn a_publish_read_by_its_shape_is_what_the_full_read_finds(
+        id in prop_oneof![
+            4 => proptest::string::string_regex("[a-z:/0-9é]{0,12}").expect("a regex"),
+            1 => proptest::string::string_regex(r#"[a-z"\\]{0,6}"#).expect("a regex"),
+        ],
+        msg in message_text(),
+        latch in any::<bool>(),
+    ) {
+        use fleetlink_proto::rosbridge::{EnvelopeShapes, Publish, is_json_value};
+        let tail = if latch { r#","latch":false}"# } else { "}" };
+        let envelope = |id: &str, msg: &str| {
+            format!(r#"{{"op":"publish","id":"{id}","topic":"/shape/t","msg":{msg}{tail}"#)
+        };
+        let mut shapes = EnvelopeShapes::default();
+        let first = Bytes::from(envelope("publish:/shape/t:1", r#"{"data":"x"}"#));
+        let first_text = std::str::from_utf8(&first).expect("UTF-8");
+        prop_assert!(Publish::from_json_text_shaped(first_text, &first, &mut shapes).is_some());
+        let text = envelope(&id, &msg);
+        let Some(m) = shapes.fit(text.as_bytes()) else {
+            return Ok(());
+        };
+        if !is_json_value(text[m.msg.clone()].as_bytes()) {
+            return Ok(());
+        }
+        let frame = Bytes::from(text.clone());
+        let full = Publish::from_json_text(std::str::from_utf8(&frame).expect("UTF-8"), &frame);
+        prop_assert!(full.is_some(), "the full read refuses {}", text);
+        let full = full.expect("checked above");
+        prop_assert_eq!(&*full.topic, &text[m.topic.clone()]);
+        prop_assert_eq!(&full.msg.bytes[..], text[m.msg.clone()].trim_end().as_bytes());
+        let id_json = m.id.clone().map(|r| &text[r]);
+        prop_assert_eq!(
+            full.id.value(),
+            id_json.map(|j| serde_json::from_str::<Value>(j).expect("the id is JSON"))
+        );
+    }
+}

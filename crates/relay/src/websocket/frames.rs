@@ -461,4 +461,94 @@ mod tests {
             assert_eq!(h.opcode, 0x2);
         }
     }
+
+    mod round_trip {
+        use proptest::prelude::*;
+
+        use super::*;
+
+        /// A client message and how it is sent: its kind (text, binary or ping), its
+        /// payload, the fragments a data message is cut into, the mask key.
+        fn message() -> impl Strategy<Value = (u8, Vec<u8>, usize, [u8; 4])> {
+            (
+                0u8..3,
+                proptest::collection::vec(any::<u8>(), 0..300),
+                1usize..4,
+                any::<[u8; 4]>(),
+            )
+                .prop_map(|(kind, mut body, pieces, key)| {
+                    if kind == 2 {
+                        body.truncate(MAX_CONTROL);
+                    }
+                    (kind, body, pieces, key)
+                })
+        }
+
+        proptest! {
+            /// Whatever a client sends, cut into fragments and arriving in any pieces, is
+            /// read back message for message.
+            #[test]
+            fn messages_come_out_as_sent_however_they_arrive(
+                messages in proptest::collection::vec(message(), 0..12),
+                cuts in proptest::collection::vec(1usize..200, 1..20),
+            ) {
+                let mut wire = Vec::new();
+                let mut want = Vec::new();
+                for (kind, body, pieces, key) in &messages {
+                    match kind {
+                        2 => {
+                            wire.extend(frame(true, 0x9, body, *key));
+                            want.push(ClientMessage::Ping(body.clone().into()));
+                        }
+                        _ => {
+                            let opcode = if *kind == 0 { 0x1 } else { 0x2 };
+                            let step = body.len().div_ceil(*pieces).max(1);
+                            let parts: Vec<&[u8]> = if body.is_empty() {
+                                vec![&body[..]]
+                            } else {
+                                body.chunks(step).collect()
+                            };
+                            for (i, part) in parts.iter().enumerate() {
+                                let op = if i == 0 { opcode } else { 0x0 };
+                                wire.extend(frame(i + 1 == parts.len(), op, part, *key));
+                            }
+                            let b = bytes::Bytes::from(body.clone());
+                            want.push(if *kind == 0 {
+                                ClientMessage::Text(b)
+                            } else {
+                                ClientMessage::Binary(b)
+                            });
+                        }
+                    }
+                }
+                let mut d = Decoder::new(1 << 20);
+                let mut buf = BytesMut::new();
+                let mut got = Vec::new();
+                let (mut at, mut k) = (0, 0);
+                while at < wire.len() {
+                    let n = cuts[k % cuts.len()].min(wire.len() - at);
+                    buf.put_slice(&wire[at..at + n]);
+                    (at, k) = (at + n, k + 1);
+                    while let Some(m) = d.decode(&mut buf).expect("valid frames") {
+                        got.push(m);
+                    }
+                }
+                prop_assert!(buf.is_empty());
+                prop_assert_eq!(got, want);
+            }
+
+            /// Any bytes at all: an error or messages, never a panic, and never a data
+            /// message over the limit.
+            #[test]
+            fn any_bytes_give_messages_or_an_error(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
+                let mut d = Decoder::new(64);
+                let mut buf = BytesMut::from(&bytes[..]);
+                while let Ok(Some(m)) = d.decode(&mut buf) {
+                    if let ClientMessage::Text(b) | ClientMessage::Binary(b) = m {
+                        prop_assert!(b.len() <= 64);
+                    }
+                }
+            }
+        }
+    }
 }
