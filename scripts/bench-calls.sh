@@ -6,17 +6,8 @@
 #
 #   cargo build --release -p fleetlink && scripts/bench-calls.sh --soak 100000
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
-[ -x "$bin" ] || { echo "build first: cargo build --release -p fleetlink" >&2; exit 1; }
-tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-calls.XXXXXX")"
-pids=()
-cleanup() {
-    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
-    wait 2>/dev/null || true
-    rm -rf "$tmp"
-}
-trap cleanup EXIT
+. "$(dirname "$0")/bench-lib.sh"
+bench_init calls
 
 robot=robot1
 robot_token="$("$bin" admin --data-dir "$tmp/hub" token robot "$robot")"

@@ -16,12 +16,11 @@
 #
 # nats-server and mosquitto come from Debian (installed here when missing; needs root).
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+. "$(dirname "$0")/bench-lib.sh"
 rounds="${1:-3}"
 rates="${2:-100000 300000}"
 seconds="${3:-5}"
-[ -x "$bin" ] || { echo "build first: cargo build --release -p fleetlink" >&2; exit 1; }
+bench_init delivery
 
 missing=()
 command -v nats-server >/dev/null || missing+=(nats-server)
@@ -34,19 +33,6 @@ fi
 
 server_cpu=() gen_cpu=()
 if [ "$(nproc)" -ge 2 ]; then server_cpu=(taskset -c 0); gen_cpu=(taskset -c 1); fi
-tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-bench-delivery.XXXXXX")"
-pids=()
-cleanup() {
-    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
-    wait 2>/dev/null || true
-    rm -rf "$tmp"
-}
-trap cleanup EXIT
-free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
-wait_port() { # port
-    for _ in $(seq 200); do (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0; sleep 0.05; done
-    echo "nothing listens on port $1" >&2; exit 1
-}
 
 token="$("$bin" admin --data-dir "$tmp/hub" token operator bench --group admin)"
 hub_port="$(free_port)"

@@ -6,24 +6,15 @@
 #
 #   cargo build --release -p fleetlink && scripts/bench-idle-memory.sh [N]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+. "$(dirname "$0")/bench-lib.sh"
+bench_init idle-memory
 n="${1:-400}"
-[ -x "$bin" ] || { echo "build first: cargo build --release -p fleetlink" >&2; exit 1; }
-tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-idle-memory.XXXXXX")"
-pids=()
-cleanup() {
-    for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
-    wait 2>/dev/null || true
-    rm -rf "$tmp"
-}
-trap cleanup EXIT
 token="$("$bin" admin --data-dir "$tmp/hub" token operator bench --group admin)"
-port="$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')"
+port="$(free_port)"
 "$bin" hub --listen "127.0.0.1:$port" --data-dir "$tmp/hub" \
     --max-connections $((n + 100)) --max-connections-per-ip $((n + 100)) >"$tmp/hub.log" 2>&1 &
 hub=$!; pids+=($hub)
-for _ in $(seq 200); do (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null && break; sleep 0.05; done
+wait_port "$port"
 sleep 1
 rss() { awk '/VmRSS/ {print $2}' "/proc/$hub/status"; }
 before="$(rss)"

@@ -242,27 +242,7 @@ impl<'a> Publish<'a> {
     /// a slice of `frame`. `text` must be a view of `frame`'s own bytes. `None` for
     /// anything else, which [`Request::from_json`] then parses with the precise error.
     pub fn from_json_text(text: &'a str, frame: &Bytes) -> Option<Publish<'a>> {
-        if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
-            return None;
-        }
-        let e = super::scan::envelope(text)?;
-        if e.op? != "publish" {
-            return None;
-        }
-        let topic = e.topic?;
-        let msg = e.msg?;
-        if text.as_bytes()[msg.start] != b'{' || !valid_topic(topic) {
-            return None;
-        }
-        let id = match e.id {
-            Some(r) => PublishId(IdRepr::Json(&text[r])),
-            None => PublishId(IdRepr::None),
-        };
-        Some(Publish {
-            id,
-            topic: topic.into(),
-            msg: Payload::json(frame.slice(msg)),
-        })
+        Self::read_json_text(text, frame, None)
     }
 
     /// [`Publish::from_json_text`], keeping the envelope's shape in `shapes` for the
@@ -271,6 +251,14 @@ impl<'a> Publish<'a> {
         text: &'a str,
         frame: &Bytes,
         shapes: &mut super::EnvelopeShapes,
+    ) -> Option<Publish<'a>> {
+        Self::read_json_text(text, frame, Some(shapes))
+    }
+
+    fn read_json_text(
+        text: &'a str,
+        frame: &Bytes,
+        shapes: Option<&mut super::EnvelopeShapes>,
     ) -> Option<Publish<'a>> {
         if !std::ptr::eq(text.as_ptr(), frame.as_ptr()) || text.len() != frame.len() {
             return None;
@@ -284,7 +272,9 @@ impl<'a> Publish<'a> {
         if text.as_bytes()[msg.start] != b'{' || !valid_topic(topic) {
             return None;
         }
-        shapes.learn(text, &e, &msg);
+        if let Some(shapes) = shapes {
+            shapes.learn(text, &e, &msg);
+        }
         let id = match e.id {
             Some(r) => PublishId(IdRepr::Json(&text[r])),
             None => PublishId(IdRepr::None),

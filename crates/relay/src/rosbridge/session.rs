@@ -358,6 +358,42 @@ impl Published {
     }
 }
 
+impl Published {
+    /// Lists the entry in `unflushed` (once), for the session to let go of its `view` and
+    /// flush its counters when it next waits: done before a publish takes the view.
+    fn list(&mut self, unflushed: &mut Vec<TopicName>) {
+        if !self.listed {
+            self.listed = true;
+            unflushed.push(self.name.clone());
+        }
+    }
+
+    /// Fans out `msg`, checked against the topic's type (its `view` read for that), as
+    /// this client's next message on the topic; gives its size.
+    fn publish(
+        &mut self,
+        client: ClientId,
+        clock: &mut crate::StampClock,
+        msg: Payload,
+        json_text: bool,
+    ) -> usize {
+        self.seq += 1;
+        let size = msg.len();
+        let (received, stamp) = clock.arrival();
+        self.topic.publish_framed(
+            &self.view,
+            client,
+            self.seq,
+            stamp,
+            msg,
+            received,
+            json_text,
+            &mut self.counts,
+        );
+        size
+    }
+}
+
 impl Drop for Published {
     fn drop(&mut self) {
         self.topic.stats.flush(&mut self.counts);
@@ -822,10 +858,7 @@ impl Session {
                 return Ok(Some((msg, p.topic.clone())));
             }
             // Checked and completed once here, for every subscriber.
-            if !p.listed {
-                p.listed = true;
-                unflushed.push(p.name.clone());
-            }
+            p.list(unflushed);
             let meta = p.topic.view(&mut p.view).meta();
             let msg = router
                 .transcoder()
@@ -836,21 +869,9 @@ impl Session {
                         e.cause_text()
                     )
                 })?;
-            p.seq += 1;
-            let size = msg.len();
-            let (received, stamp) = clock.arrival();
             // Still the text it came in: writers frame it as it is.
             let json_text = frame.is_some_and(|f| lies_within(f, &msg));
-            p.topic.publish_framed(
-                &p.view,
-                *client,
-                p.seq,
-                stamp,
-                msg,
-                received,
-                json_text,
-                &mut p.counts,
-            );
+            let size = p.publish(*client, clock, msg, json_text);
             gate.done(name, GateOp::Publish, size);
             Ok(None)
         })())
@@ -864,21 +885,12 @@ impl Session {
     /// else hands the frame back, for the full read ([`Publish::from_json_text`]) to do
     /// and answer as for any publish.
     fn publish_shaped(&mut self, frame: Bytes, m: Matched) -> Result<(), Bytes> {
-        let Session {
-            published,
-            gate,
-            router,
-            clock,
-            client,
-            unflushed,
-            ..
-        } = self;
-        let Some(gate) = gate.as_mut() else {
+        let Some(gate) = self.gate.as_mut() else {
             return Err(frame);
         };
         let Some(p) = std::str::from_utf8(&frame[m.topic])
             .ok()
-            .and_then(|topic| published.get_mut(topic))
+            .and_then(|topic| self.published.get_mut(topic))
         else {
             return Err(frame);
         };
@@ -886,12 +898,9 @@ impl Session {
         if !gate.allows(p.name.as_str(), GateOp::Publish) || p.topic.stats.no_drop_flow.is_full() {
             return Err(frame);
         }
-        if !p.listed {
-            p.listed = true;
-            unflushed.push(p.name.clone());
-        }
+        p.list(&mut self.unflushed);
         let meta = p.topic.view(&mut p.view).meta();
-        let checked = router.transcoder().normalize_json_unchecked(
+        let checked = self.router.transcoder().normalize_json_unchecked(
             &meta.schema,
             &frame[m.msg.clone()],
             &mut p.normalize,
@@ -906,19 +915,7 @@ impl Session {
             Ok(Some(normal)) => (Payload::json(normal), false),
             Err(_) => return Err(frame),
         };
-        p.seq += 1;
-        let size = msg.len();
-        let (received, stamp) = clock.arrival();
-        p.topic.publish_framed(
-            &p.view,
-            *client,
-            p.seq,
-            stamp,
-            msg,
-            received,
-            json_text,
-            &mut p.counts,
-        );
+        let size = p.publish(self.client, &mut self.clock, msg, json_text);
         gate.done(p.name.as_str(), GateOp::Publish, size);
         Ok(())
     }
