@@ -34,8 +34,8 @@
 //! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
 //!   `/rosapi` services the hub answers itself.
-//! - [`websocket`]: the server side of a WebSocket connection as a lock-free reader and
-//!   writer pair, which rosbridge sessions run on.
+//! - [`websocket`]: the server side of a WebSocket connection as a reader and a writer
+//!   that share only the socket, which rosbridge sessions run on.
 
 pub mod calls;
 pub mod gate;

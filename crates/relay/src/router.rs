@@ -243,11 +243,30 @@ impl Topic {
             received,
             json_text,
         ));
-        let now = received;
-        self.last_encoding
-            .store(msg.payload.encoding as u8, Relaxed);
         self.stats
             .batch_publish(counts, msg.payload.len(), msg.received_unix_ns());
+        counts.deliveries += self.fan_out(subscribers, msg, received);
+    }
+
+    /// Fans an existing message out (used when a message is re-published unchanged).
+    pub fn deliver(&self, msg: &Arc<Message>) {
+        self.stats
+            .record_publish(msg.payload.len(), msg.received_unix_ns());
+        let pushed = self.fan_out(&self.subscribers.load(), msg.clone(), msg.received());
+        // One shared counter update per message, not one per subscriber.
+        self.stats.deliveries.fetch_add(pushed, Relaxed);
+    }
+
+    /// Queues `msg` for every one of `subscribers` but its origin (unless they asked for
+    /// their own messages), the last one taking `msg` itself rather than a new reference,
+    /// and keeps it as the topic's latest (its encoding; the message itself when latched).
+    /// Gives the number of queues it went to.
+    // Inlined into both callers: a call of its own costs the publish path ~25
+    // instructions a message (session bench).
+    #[inline(always)]
+    fn fan_out(&self, subscribers: &[SubscriberRef], msg: Arc<Message>, now: Instant) -> u64 {
+        self.last_encoding
+            .store(msg.payload.encoding as u8, Relaxed);
         if self.latch.load(Relaxed) {
             *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
         }
@@ -255,36 +274,16 @@ impl Topic {
             .iter()
             .filter(|s| s.client != msg.origin || s.own);
         let Some(mut last) = targets.next() else {
-            return;
+            return 0;
         };
+        let mut pushed = 1;
         for s in targets {
             last.outbox.push(last.slot, msg.clone(), now);
-            counts.deliveries += 1;
+            pushed += 1;
             last = s;
         }
         last.outbox.push(last.slot, msg, now);
-        counts.deliveries += 1;
-    }
-
-    /// Fans an existing message out (used when a message is re-published unchanged).
-    pub fn deliver(&self, msg: &Arc<Message>) {
-        let now = msg.received();
-        self.last_encoding
-            .store(msg.payload.encoding as u8, Relaxed);
-        self.stats
-            .record_publish(msg.payload.len(), msg.received_unix_ns());
-        let mut pushed = 0u64;
-        for s in self.subscribers.load().iter() {
-            if s.client != msg.origin || s.own {
-                s.outbox.push(s.slot, msg.clone(), now);
-                pushed += 1;
-            }
-        }
-        // One shared counter update per message, not one per subscriber.
-        self.stats.deliveries.fetch_add(pushed, Relaxed);
-        if self.latch.load(Relaxed) {
-            *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
-        }
+        pushed
     }
 }
 
