@@ -23,19 +23,23 @@
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
-use std::time::Duration;
+use std::sync::atomic::Ordering::Relaxed;
+use std::time::{Duration, Instant};
 
-use fleetlink_proto::frame::{CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, VERSION};
+use fleetlink_proto::frame::{CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES};
 use fleetlink_proto::{Encoding, SUBPROTOCOL};
 use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
-use fleetlink_relay::calls::{ChannelPeer, PeerMsg, ServiceChange};
-use fleetlink_relay::gate::AllowAll;
-use fleetlink_relay::link::{Control, LinkEvent, LinkIn, LinkNamer, write_link};
-use fleetlink_relay::link_calls::{LinkCalls, LinkNames, is_call_frame};
+use fleetlink_relay::calls::{ChannelPeer, PeerMsg, PeerReceiver, ServiceChange};
+use fleetlink_relay::link::session::{
+    AgentHello, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
+};
+use fleetlink_relay::link::{Control, LinkEvent, LinkNamer, drive, write_link};
+use fleetlink_relay::link_calls::{LinkCalls, LinkNames};
 use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::reliable::ReliableOut;
 use fleetlink_relay::router::{SubOptions, Target};
+use fleetlink_relay::websocket::ClientMessage;
 use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicId, TopicName};
 use futures_util::{SinkExt, StreamExt};
 use tokio::sync::{mpsc, watch};
@@ -74,6 +78,9 @@ const NOTSENT_LOWAT: u32 = 16 * 1024;
 const PERMANENT_RETRY: Duration = Duration::from_secs(60);
 /// How often the durable outbox gets a chance to sync pending writes.
 const JOURNAL_TICK: Duration = Duration::from_secs(1);
+/// Frames between the session and the link's writer (see the hub's agent driver: the
+/// session keeps what does not fit, and stops taking call-table news meanwhile).
+const WRITER_QUEUE: usize = 1024;
 
 /// The WebSocket settings of the link to the hub.
 ///
@@ -214,8 +221,8 @@ pub struct Uplink {
     client: ClientId,
     outbox: Arc<Outbox>,
     /// What the local call table tells the uplink: calls to fleet services, their
-    /// answers, and local services coming and going. Held by one connection at a time.
-    calls_rx: tokio::sync::Mutex<mpsc::UnboundedReceiver<PeerMsg>>,
+    /// answers, and local services coming and going. Read by one connection at a time.
+    calls_rx: PeerReceiver,
     state: watch::Sender<LinkState>,
     pub stats: Arc<UplinkStats>,
 }
@@ -288,7 +295,7 @@ impl Uplink {
             router,
             client,
             outbox,
-            calls_rx: tokio::sync::Mutex::new(calls_rx),
+            calls_rx,
             state,
             stats: Arc::default(),
         })
@@ -472,60 +479,58 @@ impl Uplink {
             )));
         }
         let (mut sink, mut stream) = ws.split();
-        let hello = Frame::Hello {
-            version: VERSION,
-            robot: self.cfg.robot.clone(),
-            token: self.cfg.token.clone(),
-            heartbeat_ms: self.cfg.heartbeat.as_millis() as u32,
-            outbox_epoch: self.outbox.outbox_epoch(),
-        };
-        sink.send(WsMessage::Binary(hello.to_bytes()))
-            .await
-            .map_err(|e| Failure::Link(format!("sending HELLO: {e}")))?;
-        let mut link = LinkIn::default();
-        let welcome = tokio::time::timeout(HANDSHAKE_TIMEOUT, async {
-            while let Some(m) = stream.next().await {
-                match m {
-                    Ok(WsMessage::Binary(b)) => {
-                        for f in fleetlink_proto::frame::frames(&b) {
-                            let f = f.map_err(|e| {
-                                Failure::hub(format!("malformed frame from the hub: {e}"))
-                            })?;
-                            match link.on_frame(f) {
-                                Ok(LinkEvent::Control(Frame::Welcome {
-                                    session,
-                                    namespace,
-                                    heartbeat_ms,
-                                    ..
-                                })) => {
-                                    return Ok((session, namespace, heartbeat_ms));
-                                }
-                                Ok(LinkEvent::Control(Frame::Status { text, .. })) => {
-                                    return Err(self.refusal(&text));
-                                }
-                                _ => {}
-                            }
-                        }
-                    }
-                    Ok(WsMessage::Close(_)) => {
-                        return Err(Failure::hub(
-                            "the hub closed the connection before WELCOME".to_owned(),
-                        ));
-                    }
-                    Ok(_) => {}
-                    Err(e) => return Err(Failure::Link(format!("reading WELCOME: {e}"))),
+        let me = self.client;
+        let (names, calls) = (self.cfg.names.clone(), self.router.calls.clone());
+        let mut session = LinkSession::agent(
+            SessionConfig {
+                role: Role::Agent,
+                heartbeat: self.cfg.heartbeat,
+                handshake_timeout: HANDSHAKE_TIMEOUT,
+                report_every: Some(LINK_REPORT_INTERVAL),
+                wall: system_wall_clock(),
+            },
+            AgentHello {
+                robot: self.cfg.robot.clone(),
+                token: self.cfg.token.clone(),
+                outbox_epoch: self.outbox.outbox_epoch(),
+            },
+            Box::new(move |namespace: &str| {
+                let names = AgentNames {
+                    names,
+                    namespace: namespace.to_owned(),
+                };
+                LinkCalls::new(calls, me, Box::new(names))
+            }),
+            Instant::now(),
+        );
+        // HELLO, straight to the socket: the writer starts once the hub has answered.
+        while let Some(c) = session.poll_transmit() {
+            if let Control::Frame(f) = c {
+                sink.send(WsMessage::Binary(f.to_bytes()))
+                    .await
+                    .map_err(|e| Failure::Link(format!("sending HELLO: {e}")))?;
+            }
+        }
+        let (session_id, namespace) = loop {
+            match session.poll_event() {
+                Some(Event::Opened {
+                    session, namespace, ..
+                }) => break (session, namespace),
+                Some(Event::Closed(r)) => return Err(self.before_welcome(r)),
+                Some(_) => continue,
+                None => {}
+            }
+            tokio::select! {
+                m = stream.next() => {
+                    drive::feed(&mut session, m.map(|r| r.map(ClientMessage::from)), Instant::now());
+                }
+                _ = drive::timer(session.poll_timeout()) => session.handle_timeout(Instant::now()),
+                _ = shutdown.cancelled() => {
+                    return Err(Failure::hub("the agent is shutting down".to_owned()));
                 }
             }
-            Err(Failure::hub(
-                "the hub closed the connection before WELCOME".to_owned(),
-            ))
-        });
-        let (session, namespace, heartbeat_ms) = or_shutdown(shutdown, welcome)
-            .await?
-            .map_err(|_| Failure::hub("no WELCOME from the hub within 10 s".to_owned()))??;
-        self.stats
-            .connects
-            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        };
+        self.stats.connects.fetch_add(1, Relaxed);
         tracing::info!(robot = %self.cfg.robot, %namespace, "connected to hub");
         // This connection owns the in-flight state from here on.
         self.outbox.on_link_reset();
@@ -533,11 +538,10 @@ impl Uplink {
         // Everything the hub must know, exactly once on this connection.
         let names = self.cfg.names.clone();
         let ns = namespace.clone();
-        let me = self.client;
-        let router = self.router.clone();
         let namer: LinkNamer =
             Arc::new(move |meta: &TopicMeta| Some(names.to_hub(&meta.name, &ns).to_string()));
-        let announce: Vec<(Arc<TopicMeta>, Encoding)> = router
+        let announce: Vec<(Arc<TopicMeta>, Encoding)> = self
+            .router
             .topics()
             .into_iter()
             .filter(|t| t.publishers.iter().any(|p| *p != me))
@@ -548,7 +552,6 @@ impl Uplink {
                 )
             })
             .collect();
-        let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(1024);
         let mut subs = vec![(
             1u32,
             format!("{}/.*", regex::escape(&namespace)),
@@ -563,34 +566,31 @@ impl Uplink {
             SUBSCRIBE_REGEX | SUBSCRIBE_SERVICES,
         ));
         for (id, pattern, flags) in subs {
-            let f = Frame::Subscribe {
+            session.send(Frame::Subscribe {
                 id,
                 pattern,
                 flags,
                 throttle_ms: 0,
                 queue_length: 0,
-            };
-            let _ = ctrl_tx.send(Control::Frame(f)).await;
+            });
         }
-        let heartbeat = Duration::from_millis(u64::from(heartbeat_ms.max(10)));
+        let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
         let writer = tokio::spawn(write_link(
             sink,
             self.outbox.clone(),
             ctrl_rx,
-            heartbeat,
             namer,
             announce,
             None,
         ));
         self.state.send_replace(LinkState::Connected {
-            session,
+            session: session_id,
             namespace: namespace.clone(),
         });
 
-        // Calls: this connection takes the local table's queue; what queued while the
-        // link was down is stale (its calls were to services that are gone).
-        let mut calls_rx = self.calls_rx.lock().await;
-        while let Ok(m) = calls_rx.try_recv() {
+        // Calls: what the local table queued while the link was down is stale (its calls
+        // were to services that are gone); every local service is offered anew.
+        while let Ok(Some(m)) = self.calls_rx.try_recv() {
             if let PeerMsg::Call(req) = m {
                 let text = format!("{}: the link to the hub was down", req.service.name);
                 self.router
@@ -598,146 +598,131 @@ impl Uplink {
                     .respond(me, req.id, CallStatus::NoProvider, None, text);
             }
         }
-        let mut calls = LinkCalls::new(
-            self.router.calls.clone(),
-            me,
-            Box::new(AgentNames {
-                names: self.cfg.names.clone(),
-                namespace: namespace.clone(),
-            }),
-        );
-        let mut out = Vec::new();
         for s in self.router.calls.services() {
             if s.provider != me {
-                calls.on_peer(
-                    PeerMsg::Changed(ServiceChange::Added(s)),
-                    &mut AllowAll,
-                    &mut out,
-                );
+                session.handle_peer_event(PeerMsg::Changed(ServiceChange::Added(s)));
             }
-        }
-        for c in out.drain(..) {
-            let _ = ctrl_tx.send(c).await;
         }
 
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
-        let dead_after = heartbeat * 2;
-        // Once a second the hub hears what this robot would send and what its link
-        // carries, for sharing a site's access link among its robots; and which local
-        // topics lost their last publisher (a ROS node gone), so it stops listing them.
-        let reporter = {
-            let (outbox, ctrl) = (self.outbox.clone(), ctrl_tx.clone());
-            let (router, me) = (self.router.clone(), self.client);
-            tokio::spawn(async move {
-                let mut tick = tokio::time::interval(LINK_REPORT_INTERVAL);
-                tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
-                let mut unpublished: HashSet<TopicId> = HashSet::new();
-                loop {
-                    tick.tick().await;
-                    for t in router.topics() {
-                        if !t.subscribers.contains(&me) {
-                            continue; // not carried up
+        // Local topics carried up that have lost their last publisher (a ROS node gone).
+        let mut unpublished: HashSet<TopicId> = HashSet::new();
+        let reason = 'serve: loop {
+            while let Some(ev) = session.poll_event() {
+                match ev {
+                    Event::Closed(r) => break 'serve r,
+                    Event::Link(ev) => self.on_event(ev, &namespace, &mut down),
+                    Event::Pong {
+                        id,
+                        responder_ns,
+                        rtt,
+                        ..
+                    } => {
+                        if id < fleetlink_relay::link::HEARTBEAT_ID_BASE {
+                            self.outbox.on_echo(id, responder_ns, Instant::now());
                         }
-                        let id = t.meta.id;
-                        if t.publishers.iter().any(|c| *c != me) {
-                            unpublished.remove(&id);
-                        } else if unpublished.insert(id)
-                            && ctrl
-                                .send(Control::Unadvertise {
-                                    topic: id,
-                                    since: std::time::Instant::now(),
-                                })
-                                .await
-                                .is_err()
-                        {
-                            return;
-                        }
+                        self.stats.rtt_ns.store(rtt.as_nanos() as u64, Relaxed);
                     }
-                    let Some(f) = outbox.link_figures(std::time::Instant::now()) else {
-                        return;
-                    };
-                    let report = Frame::LinkReport {
-                        demand_bps: f.demand_bps as u64,
-                        rate_bps: f.rate_bps as u64,
-                        latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
-                    };
-                    if ctrl.send(Control::Frame(report)).await.is_err() {
-                        return;
-                    }
-                }
-            })
-        };
-        let reason = loop {
-            let next = tokio::select! {
-                n = tokio::time::timeout(dead_after, stream.next()) => n,
-                m = calls_rx.recv() => {
-                    if let Some(m) = m {
-                        calls.on_peer(m, &mut AllowAll, &mut out);
-                        for c in out.drain(..) {
-                            let _ = ctrl_tx.send(c).await;
-                        }
-                    }
-                    continue;
-                }
-                _ = shutdown.cancelled() => break "the agent is shutting down".to_owned(),
-            };
-            let m = match next {
-                Err(_) => {
-                    break format!("no traffic from hub for {dead_after:?}: link declared dead");
-                }
-                Ok(None) => break "hub closed the connection".to_owned(),
-                Ok(Some(Err(e))) => break format!("link error: {e}"),
-                Ok(Some(Ok(WsMessage::Close(c)))) => {
-                    break format!("hub closed the connection: {c:?}");
-                }
-                Ok(Some(Ok(m))) => m,
-            };
-            let WsMessage::Binary(b) = m else { continue };
-            for f in fleetlink_proto::frame::frames(&b) {
-                let f = match f {
-                    Ok(f) => f,
-                    Err(e) => {
-                        tracing::warn!("malformed frame from hub: {e}");
-                        break;
-                    }
-                };
-                if is_call_frame(&f) {
-                    calls.on_frame(f, &mut AllowAll, &mut out);
-                    for c in out.drain(..) {
-                        let _ = ctrl_tx.send(c).await;
-                    }
-                    continue;
-                }
-                match link.on_frame(f) {
-                    Ok(ev) => self.on_event(ev, &namespace, &mut down, &ctrl_tx).await,
-                    Err(e) => tracing::warn!("from hub: {e}"),
+                    Event::ReportDue => self.report(&mut session, &ctrl_tx, &mut unpublished),
+                    Event::Hello { .. } | Event::Opened { .. } => {}
                 }
             }
+            drive::pump(&mut session, &ctrl_tx);
+            let deadline = session.poll_timeout();
+            tokio::select! {
+                m = stream.next() => {
+                    let m = m.map(|r| r.map(ClientMessage::from));
+                    if let Some(ping) = drive::feed(&mut session, m, Instant::now()) {
+                        let _ = ctrl_tx.try_send(Control::Pong(ping));
+                    }
+                }
+                m = self.calls_rx.recv(), if session.wants_peer_events() => {
+                    if let Some(m) = m {
+                        session.handle_peer_event(m);
+                    }
+                }
+                permit = ctrl_tx.reserve(), if session.has_transmit() => {
+                    if let (Ok(p), Some(c)) = (permit, session.poll_transmit()) {
+                        p.send(c);
+                    }
+                }
+                _ = drive::timer(deadline) => session.handle_timeout(Instant::now()),
+                _ = shutdown.cancelled() => {
+                    session.close(CloseReason::Local("the agent is shutting down".into()));
+                }
+            }
+            // Deadlines are kept whichever branch ran (see the hub's driver).
+            if session.poll_timeout().is_some_and(|t| Instant::now() >= t) {
+                session.handle_timeout(Instant::now());
+            }
         };
-        // The hub's services are not reachable any more, and the hub's calls into this
-        // robot will never be answered over this connection.
-        calls.close();
-        drop(calls_rx);
-        reporter.abort();
-        let _ = reporter.await;
-        let _ = ctrl_tx.try_send(Control::Close);
-        drop(ctrl_tx);
-        writer.abort();
-        let _ = writer.await;
-        Ok(reason)
+        // Calls the local table queued for the hub meanwhile fail with the reason.
+        while let Ok(Some(m)) = self.calls_rx.try_recv() {
+            session.handle_peer_event(m);
+        }
+        drive::stop_writer(writer, ctrl_tx, &reason).await;
+        Ok(reason.to_string())
+    }
+
+    /// Why a connection that never got `WELCOME` failed, and so how soon to retry.
+    fn before_welcome(&self, r: CloseReason) -> Failure {
+        match r {
+            CloseReason::Refused(text) => self.refusal(&text),
+            CloseReason::HandshakeTimeout { .. } => {
+                Failure::hub("no WELCOME from the hub within 10 s".to_owned())
+            }
+            CloseReason::ReadError(e) => Failure::Link(format!("reading WELCOME: {e}")),
+            CloseReason::PeerClosed(_) => {
+                Failure::hub("the hub closed the connection before WELCOME".to_owned())
+            }
+            other => Failure::hub(other.to_string()),
+        }
+    }
+
+    /// Once a second: the hub hears what this robot would send and what its link carries
+    /// (for sharing a site's access link among its robots), and which local topics lost
+    /// their last publisher, so it stops listing them.
+    fn report(
+        &self,
+        session: &mut LinkSession,
+        writer: &mpsc::Sender<Control>,
+        unpublished: &mut HashSet<TopicId>,
+    ) {
+        let me = self.client;
+        for t in self.router.topics() {
+            if !t.subscribers.contains(&me) {
+                continue; // not carried up
+            }
+            let id = t.meta.id;
+            if t.publishers.iter().any(|c| *c != me) {
+                unpublished.remove(&id);
+            } else if !unpublished.contains(&id) {
+                // An instruction to the writer (after the topic's queued messages); a full
+                // queue leaves it for the next report.
+                let gone = Control::Unadvertise {
+                    topic: id,
+                    since: Instant::now(),
+                };
+                if writer.try_send(gone).is_ok() {
+                    unpublished.insert(id);
+                }
+            }
+        }
+        if let Some(f) = self.outbox.link_figures(Instant::now()) {
+            session.send(Frame::LinkReport {
+                demand_bps: f.demand_bps as u64,
+                rate_bps: f.rate_bps as u64,
+                latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
+            });
+        }
     }
 
     fn refusal(&self, text: &str) -> Failure {
         refusal(text, &self.cfg.hub_url, &self.cfg.robot, &self.cfg.token)
     }
 
-    async fn on_event(
-        &self,
-        ev: LinkEvent,
-        namespace: &str,
-        down: &mut HashMap<u32, Arc<Topic>>,
-        ctrl: &mpsc::Sender<Control>,
-    ) {
+    /// A topic event or control frame from the hub.
+    fn on_event(&self, ev: LinkEvent, namespace: &str, down: &mut HashMap<u32, Arc<Topic>>) {
         match ev {
             LinkEvent::Advertise { alias, topic } => {
                 let Ok(hub) = TopicName::parse(&topic.name) else {
@@ -771,28 +756,6 @@ impl Uplink {
                     t.publish(self.client, seq, stamp_ns, payload);
                 }
             }
-            LinkEvent::Control(Frame::Ping { id, sent_ns }) => {
-                let pong = Frame::Pong {
-                    id,
-                    echo_ns: sent_ns,
-                    responder_ns: fleetlink_relay::unix_nanos(),
-                };
-                let _ = ctrl.send(Control::Frame(pong)).await;
-            }
-            LinkEvent::Control(Frame::Pong {
-                id,
-                echo_ns,
-                responder_ns,
-            }) => {
-                if id < fleetlink_relay::link::HEARTBEAT_ID_BASE {
-                    self.outbox
-                        .on_echo(id, responder_ns, std::time::Instant::now());
-                }
-                let rtt = fleetlink_relay::unix_nanos().saturating_sub(echo_ns);
-                self.stats
-                    .rtt_ns
-                    .store(rtt, std::sync::atomic::Ordering::Relaxed);
-            }
             LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::warn!(level = level.as_str(), "hub: {text}");
             }
@@ -800,15 +763,12 @@ impl Uplink {
                 self.outbox.on_delivered(alias, seq);
             }
             LinkEvent::Control(Frame::Ack { frames, bytes }) => {
-                self.outbox
-                    .on_acked(frames as usize, bytes, std::time::Instant::now());
+                self.outbox.on_acked(frames as usize, bytes, Instant::now());
             }
             LinkEvent::Control(Frame::Share { bytes_per_sec }) => {
                 let share = (bytes_per_sec > 0).then_some(bytes_per_sec as f64);
-                self.outbox.set_share(share, std::time::Instant::now());
-                self.stats
-                    .share_bps
-                    .store(bytes_per_sec, std::sync::atomic::Ordering::Relaxed);
+                self.outbox.set_share(share, Instant::now());
+                self.stats.share_bps.store(bytes_per_sec, Relaxed);
             }
             _ => {}
         }

@@ -13,7 +13,6 @@ use std::convert::Infallible;
 use std::net::SocketAddr;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::task::{Context, Poll};
 use std::time::Duration;
 
 use axum::Router as HttpRouter;
@@ -21,7 +20,6 @@ use axum::body::Body;
 use axum::extract::ConnectInfo;
 use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
-use futures_util::{Sink, Stream};
 use hyper::body::Incoming;
 use hyper_util::rt::{TokioIo, TokioTimer};
 use tokio::io::{AsyncRead, AsyncWrite};
@@ -29,7 +27,7 @@ use tokio::net::TcpStream;
 use tokio_util::sync::CancellationToken;
 
 use crate::http_guards::{BodyVerdict, GuardedBody, IdleIo};
-use crate::limits::{ConnPermit, HandshakePermit, Limits, Refusal};
+use crate::limits::{ConnPermit, Limits, Refusal};
 
 /// The longest a refusal answer (TLS included) may take before the socket is dropped.
 const REFUSAL_BUDGET: Duration = Duration::from_secs(2);
@@ -316,59 +314,4 @@ where
         .keep_alive(false)
         .serve_connection(io, svc)
         .await;
-}
-
-/// An agent's WebSocket that gives back its handshake slot when the hub first answers
-/// (WELCOME, or the refusal of its HELLO) — or when the session ends before that.
-pub struct UntilFirstReply<S> {
-    inner: S,
-    slot: Option<HandshakePermit>,
-}
-
-impl<S> UntilFirstReply<S> {
-    pub fn new(inner: S, slot: HandshakePermit) -> UntilFirstReply<S> {
-        UntilFirstReply {
-            inner,
-            slot: Some(slot),
-        }
-    }
-}
-
-impl<S: Stream + Unpin> Stream for UntilFirstReply<S> {
-    type Item = S::Item;
-
-    fn poll_next(self: std::pin::Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<Option<S::Item>> {
-        std::pin::Pin::new(&mut self.get_mut().inner).poll_next(cx)
-    }
-}
-
-impl<S: Sink<M> + Unpin, M> Sink<M> for UntilFirstReply<S> {
-    type Error = S::Error;
-
-    fn poll_ready(
-        self: std::pin::Pin<&mut Self>,
-        cx: &mut Context<'_>,
-    ) -> Poll<Result<(), S::Error>> {
-        std::pin::Pin::new(&mut self.get_mut().inner).poll_ready(cx)
-    }
-
-    fn start_send(self: std::pin::Pin<&mut Self>, item: M) -> Result<(), S::Error> {
-        let this = self.get_mut();
-        this.slot = None;
-        std::pin::Pin::new(&mut this.inner).start_send(item)
-    }
-
-    fn poll_flush(
-        self: std::pin::Pin<&mut Self>,
-        cx: &mut Context<'_>,
-    ) -> Poll<Result<(), S::Error>> {
-        std::pin::Pin::new(&mut self.get_mut().inner).poll_flush(cx)
-    }
-
-    fn poll_close(
-        self: std::pin::Pin<&mut Self>,
-        cx: &mut Context<'_>,
-    ) -> Poll<Result<(), S::Error>> {
-        std::pin::Pin::new(&mut self.get_mut().inner).poll_close(cx)
-    }
 }

@@ -23,9 +23,7 @@ use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::transcode::Transcoder;
 use hyper_util::rt::TokioIo;
 use tokio::net::TcpListener;
-use tokio_tungstenite::WebSocketStream;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
-use tokio_tungstenite::tungstenite::protocol::{Role, WebSocketConfig};
 use tokio_util::sync::CancellationToken;
 
 pub use crate::connection::ConnMeta;
@@ -34,14 +32,6 @@ use crate::agents::{AgentContext, Registry};
 use crate::store::{Store, StoreError};
 
 /// Bytes an agent's WebSocket session (tungstenite's) reads at most at a time.
-/// tungstenite zeroes the free part of its read buffer before every read, so an idle
-/// connection keeps all of it resident: with the 128 KiB default an idle connection held
-/// ~150 kB of the hub's memory, with 64 KiB ~90 kB. Smaller costs CPU under load (16 KiB:
-/// 16 % more per delivery at 300,000 msg/s); 64 KiB measured the same as the default
-/// (docs/benchmarks.md). Rosbridge sessions read with `fleetlink_relay::websocket`, which
-/// reads as much at a time without zeroing.
-const SESSION_READ_BUFFER: usize = 64 * 1024;
-
 /// Hub settings (`fleetlink hub` flags).
 #[derive(Debug, Clone)]
 pub struct HubConfig {
@@ -154,7 +144,6 @@ pub struct HubState {
     pub store: Store,
     pub agents: Arc<AgentContext>,
     pub rosbridge: Arc<SessionConfig>,
-    pub ws_config: WebSocketConfig,
     pub shutdown: CancellationToken,
     pub security: Arc<fleetlink_auth::Security>,
     pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
@@ -213,17 +202,12 @@ impl Hub {
             max_message_size: cfg.max_message_size,
             ..SessionConfig::default()
         });
-        let ws_config = WebSocketConfig::default()
-            .max_message_size(Some(cfg.max_message_size))
-            .max_frame_size(Some(cfg.max_message_size))
-            .read_buffer_size(SESSION_READ_BUFFER);
         let state = Arc::new(HubState {
             router,
             registry,
             store,
             agents,
             rosbridge,
-            ws_config,
             shutdown,
             security,
             tls,
@@ -436,7 +420,6 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         }
     };
     let on_upgrade = hyper::upgrade::on(&mut req);
-    let ws_config = st.ws_config;
     tokio::spawn(async move {
         let upgraded = match on_upgrade.await {
             Ok(u) => u,
@@ -450,11 +433,11 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         }
         // Held until the session ends: the connection counts against the limits.
         let _open = open;
+        let max = st.rosbridge.max_message_size;
         if agent {
-            let io = TokioIo::new(upgraded);
-            let ws = WebSocketStream::from_raw_socket(io, Role::Server, Some(ws_config)).await;
-            let ws = crate::connection::UntilFirstReply::new(ws, slot);
-            crate::agents::serve_agent(ws, st.agents.clone(), Some(addr), conn).await;
+            let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
+            crate::agents::serve_agent(stream, sink, st.agents.clone(), Some(addr), conn, slot)
+                .await;
         } else {
             drop(slot);
             let gate = identity.map(|id| {
@@ -473,7 +456,6 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 gate,
                 guard: Some(Arc::new(guard)),
             };
-            let max = st.rosbridge.max_message_size;
             let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
             rosbridge::serve(
                 sink,

@@ -27,6 +27,9 @@ use tokio::sync::Notify;
 
 use crate::names::{ClientId, TopicName};
 
+mod queue;
+pub use queue::{ChannelPeer, Closed, PeerReceiver};
+
 /// A call's id in one table (hub- or agent-wide, never reused).
 pub type CallId = u64;
 
@@ -103,36 +106,6 @@ pub enum PeerMsg {
     Cancel(CallId),
     Event(CallEvent),
     Changed(ServiceChange),
-}
-
-/// A peer that hands everything to its connection's task over a channel. Unbounded: what
-/// can queue is bounded by the table (pending calls per caller and provider), except a
-/// provider's feedback, which its own reader pace limits.
-pub struct ChannelPeer(tokio::sync::mpsc::UnboundedSender<PeerMsg>);
-
-impl ChannelPeer {
-    pub fn new() -> (
-        Arc<ChannelPeer>,
-        tokio::sync::mpsc::UnboundedReceiver<PeerMsg>,
-    ) {
-        let (tx, rx) = tokio::sync::mpsc::unbounded_channel();
-        (Arc::new(ChannelPeer(tx)), rx)
-    }
-}
-
-impl CallPeer for ChannelPeer {
-    fn deliver_call(&self, call: CallRequest) {
-        let _ = self.0.send(PeerMsg::Call(call));
-    }
-    fn deliver_cancel(&self, id: CallId) {
-        let _ = self.0.send(PeerMsg::Cancel(id));
-    }
-    fn deliver_event(&self, event: CallEvent) {
-        let _ = self.0.send(PeerMsg::Event(event));
-    }
-    fn service_changed(&self, change: ServiceChange) {
-        let _ = self.0.send(PeerMsg::Changed(change));
-    }
 }
 
 /// Bounds and defaults of a table.

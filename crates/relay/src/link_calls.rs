@@ -85,6 +85,8 @@ pub struct LinkCalls {
     /// Calls forwarded to the remote, by their id (ours, and theirs on the link).
     forwarded: HashMap<CallId, bool>,
     reassembly: CallReassembler,
+    /// Why the link was lost, once it was ([`LinkCalls::close`]).
+    lost: Option<String>,
 }
 
 fn status(code: u32, text: String) -> Control {
@@ -143,6 +145,7 @@ impl LinkCalls {
             served_by_remote: HashMap::new(),
             forwarded: HashMap::new(),
             reassembly: CallReassembler::new(MAX_CALL_BODY, MAX_CALL_REASSEMBLY),
+            lost: None,
         }
     }
 
@@ -208,6 +211,11 @@ impl LinkCalls {
 
     /// Sends a call of the table to the remote provider of its service.
     fn forward(&mut self, req: CallRequest, out: &mut Vec<Control>) {
+        if let Some(why) = &self.lost {
+            self.calls
+                .respond(self.me, req.id, CallStatus::Aborted, None, why.clone());
+            return;
+        }
         let Some(alias) = self.remote_by_name.get(&req.service.name).copied() else {
             let text = format!("{} is no longer offered on this link", req.service.name);
             self.calls
@@ -528,9 +536,16 @@ impl LinkCalls {
         }
     }
 
-    /// The link is gone: the remote's services are withdrawn here (their pending calls
-    /// fail with `no provider`) and the calls the remote made are cancelled.
-    pub fn close(&mut self) {
+    /// The link is gone, for the reason `why` ("robot link lost: ..."): the calls
+    /// forwarded to the remote end at once with that text (`aborted`: they may or may not
+    /// have run there), the remote's services are withdrawn here, and the calls the
+    /// remote made are cancelled. A call the table hands this link end afterwards (it was
+    /// queued before the withdrawal) fails the same way.
+    pub fn close(&mut self, why: &str) {
+        for (id, _) in self.forwarded.drain() {
+            self.calls
+                .respond(self.me, id, CallStatus::Aborted, None, why.to_owned());
+        }
         for (_, name) in self.remote.drain() {
             self.calls.unadvertise(self.me, &name);
         }
@@ -539,7 +554,7 @@ impl LinkCalls {
             self.calls.cancel(self.me, id);
         }
         self.served_by_remote.clear();
-        self.forwarded.clear();
+        self.lost = Some(why.to_owned());
     }
 
     /// Calls and services in flight on this link end (for tests: all zero when idle).

@@ -58,7 +58,7 @@ pub async fn run(
         },
         None,
     );
-    let (peer, mut peer_rx) = ChannelPeer::new();
+    let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let (updates_tx, mut updates) = mpsc::unbounded_channel();
     let node = Arc::new(Node::new(

@@ -630,7 +630,7 @@ async fn run_participant(
         },
         None,
     );
-    let (peer, mut peer_rx) = ChannelPeer::new();
+    let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let own = dp.guid();
     let bridge = Arc::new(Bridge {

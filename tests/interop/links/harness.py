@@ -6,6 +6,8 @@ it runs out; every process started is registered and stopped by `Procs.stop_all`
 driver calls it on any exit; run.sh also kills whatever is left in its namespaces).
 """
 
+import datetime
+import json
 import os
 import re
 import signal
@@ -17,6 +19,11 @@ from dataclasses import dataclass, field
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PEERS = os.path.join(HERE, "peers.py")
+CLOUD_RULES = """rules:
+  - subject: any_robot
+    names: "/cloud/.*"
+    ops: [call_service]
+"""
 
 
 class Failed(Exception):
@@ -180,8 +187,8 @@ class Fleet:
     agents: int = 0
     data_dir: str = ""
 
-    def admin(self, *args):
-        r = subprocess.run([self.bin, "admin", "--data-dir", self.data_dir, *args],
+    def admin(self, *args, stdin=None):
+        r = subprocess.run([self.bin, "admin", "--data-dir", self.data_dir, *args], input=stdin,
                            capture_output=True, text=True, timeout=20)
         if r.returncode != 0:
             raise Failed(f"fleetlink admin {' '.join(args)}: {r.stderr.strip()}")
@@ -191,6 +198,9 @@ class Fleet:
         self.data_dir = os.path.join(self.tmp, "hub-data")
         self.robot_token = self.admin("token", "robot", "robot1")
         self.op_token = self.admin("token", "operator", "links", "--group", "admin")
+        # Robots may call the fleet's services under /cloud/ (what a deployment writes in
+        # its rules file; as the calls suite does). Only the calls scenario uses them.
+        self.admin("rules", "import", "-", stdin=CLOUD_RULES)
 
     # --- hub
     def start_hub(self, extra=()):
@@ -214,6 +224,18 @@ class Fleet:
         return sum(float(ln.rsplit(" ", 1)[1]) for ln in text.splitlines()
                    if ln.startswith("fleetlink_topic_drops") and f'topic="{topic}"' in ln)
 
+    def robot_status(self, name="robot1"):
+        """The hub's listing of `name` (GET /api/v1/robots: "online", "connected_at_ms",
+        ...), None if it is not listed or the hub did not answer within 2 s."""
+        req = urllib.request.Request(f"http://127.0.0.1:{self.hub_port}/api/v1/robots",
+                                     headers={"Authorization": f"Bearer {self.op_token}"})
+        try:
+            with urllib.request.urlopen(req, timeout=2) as r:
+                robots = json.load(r)["robots"]
+        except (OSError, ValueError, KeyError):
+            return None
+        return next((x for x in robots if x.get("name") == name), None)
+
     def hub_url(self, across_link=False):
         """From the hub namespace (loopback), or across the veth from the robot's."""
         host = self.net.hub_ip if across_link else "127.0.0.1"
@@ -221,6 +243,8 @@ class Fleet:
 
     # --- agent
     def agent_yaml(self, sim):
+        """`sim`: False (no simulator), True (the point cloud only) or the `sim:` map as
+        YAML text."""
         lines = [
             f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
             "name: robot1",
@@ -235,7 +259,9 @@ class Fleet:
             "  /probe/reliable: { no_drop: true }",
             "  /probe/fast: { priority: 10, policy: latest }",
         ]
-        if sim:
+        if isinstance(sim, str):
+            lines.append(f"sim: {sim}")
+        elif sim:
             lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
         return "\n".join(lines) + "\n"
 
@@ -282,6 +308,23 @@ class Fleet:
         self.procs.wait_line(p, r"^direct: connected", 15, "direct rosbridge client start")
         return p, log
 
+    def start_caller(self, tag, robot_side, service, args="{}", period=0.5, timeout=10.0):
+        """A program calling `service` every `period` s: on the robot at the agent's local
+        listener (robot_side), else an operator at the hub (its token)."""
+        log = os.path.join(self.tmp, f"{tag}.calls")
+        ns, url = (self.net.robot_ns, self.local_url) if robot_side else (self.net.hub_ns, self.hub_url())
+        p = self.peer("caller", ns, log, "--url", url, "--service", service, "--args", args,
+                      "--period", str(period), "--timeout", str(timeout))
+        self.procs.wait_line(p, r"^caller: connected", 15, f"caller of {service} start")
+        return p, log
+
+    def start_provider(self, tag, service):
+        """A fleet service at the hub (std_srvs/srv/SetBool), offered by an operator."""
+        log = os.path.join(self.tmp, f"{tag}.provider")
+        p = self.peer("provider", self.net.hub_ns, log, "--url", self.hub_url(), "--service", service)
+        self.procs.wait_line(p, r"^provider: advertised", 15, f"provider of {service} start")
+        return p, log
+
     def start_pub(self, tag, fast_hz=50, reliable_hz=50, start_seq=1, count=0, duration=0):
         log = os.path.join(self.tmp, f"{tag}.pub")
         p = self.peer("pub", self.net.robot_ns, log, "--url", self.local_url,
@@ -292,6 +335,53 @@ class Fleet:
 
 
 # --- records written by the peers
+
+@dataclass
+class Call:
+    n: int
+    sent: int                # ns
+    answer: int = None       # ns, None: not answered (yet)
+    ok: bool = None
+    text: str = ""           # the values (ok) or the error text
+    gave_up: int = None      # ns the caller stopped waiting (its deadline + grace), or None
+
+
+def read_calls(path):
+    """A caller's records (peers.py caller) -> [Call] in call order."""
+    calls = {}
+    try:
+        with open(path, encoding="ascii", errors="replace") as f:
+            lines = f.read().splitlines()
+    except FileNotFoundError:
+        return []
+    for ln in lines:
+        p = ln.split(" ", 3)
+        if len(p) < 3 or ln.startswith("#"):
+            continue
+        try:
+            n, t = int(p[1]), int(p[2])
+        except ValueError:
+            continue  # a half-written last line
+        if p[0] == "call":
+            calls[n] = Call(n, t)
+        elif p[0] in ("ok", "err") and n in calls and calls[n].answer is None:
+            c = calls[n]
+            c.answer, c.ok, c.text = t, p[0] == "ok", p[3] if len(p) > 3 else ""
+        elif p[0] == "timeout" and n in calls:
+            calls[n].gave_up = t
+    return [calls[k] for k in sorted(calls)]
+
+
+def log_time_ns(line):
+    """The timestamp fleetlink's log puts first on a line (RFC 3339, UTC), in ns; None if
+    the line has none."""
+    m = re.match(r"^(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d)(?:\.(\d+))?Z\s", line)
+    if not m:
+        return None
+    t = datetime.datetime.fromisoformat(m.group(1)).replace(tzinfo=datetime.timezone.utc)
+    frac = (m.group(2) or "0")[:9].ljust(9, "0")
+    return int(t.timestamp()) * 1_000_000_000 + int(frac)
+
 
 @dataclass
 class Rx:

@@ -12,8 +12,8 @@ import time
 
 from websockets.sync.client import connect
 
-from harness import (Failed, now_ns, percentile, read_points, read_pub, read_sub,
-                     reliable_audit, wait_until)
+from harness import (Failed, log_time_ns, now_ns, percentile, read_calls, read_points, read_pub,
+                     read_sub, reliable_audit, wait_until)
 
 IDLE_P99_FLOOR_MS = float(os.environ.get("LINKS_IDLE_P99_FLOOR_MS", "15"))
 PROBE_MBIT = 0.2          # the probes (2 x 50 Hz small strings) and pings, on the wire
@@ -574,10 +574,270 @@ def fresh_client_ok(fleet):
         return f"{type(e).__name__}: {e}"
 
 
+# --- 6. a dead link with calls in flight
+
+CALLS_SIM = "{ odometry: { rate_hz: 10 } }"  # the simulator's services come with any sensor
+ROBOT_SERVICE = "/robot1/get_status"         # std_srvs/srv/Trigger, answered at once
+FLEET_SERVICE = "/cloud/echo"                # std_srvs/srv/SetBool, offered at the hub
+CALL_PERIOD_S = 0.5
+CALL_TIMEOUT_S = 10.0     # each call's own deadline
+DEAD_TARGET_S = 3.0       # heartbeat 1 s: a link silent for 2 s is dead, + 1 s margin
+AT_ONCE_S = 0.5           # calls pending at the link's death fail within this of it
+OFFLINE_CALL_S = 1.0      # a call made while the link is dead fails within this
+BACK_TARGET_S = RECOVERY_TARGET_S
+FIRST_OK_S = BACK_TARGET_S + CALL_PERIOD_S  # back, and the next call made and answered
+OK_RUN = 3                # consecutive successful calls that count as "calls work"
+DEAD_WINDOW_S = 8.0       # longest wait for both sides to declare the link dead
+DOWN_HOLD_S = 2.0         # then the link stays down this long: calls made while it is dead
+# In the control, long enough for the agent's reconnect attempts to fail (no route): its
+# next "hub link down" line is then another kind of failure, not a repeat that its log's
+# rate limit (one line per kind per 10 s) would hold back.
+CONTROL_HOLD_S = 1.0
+BACK_WINDOW_S = 6.0       # longest wait after link-up for the robot and the calls
+GUARD_NS = 50_000_000     # a call sent this close to the link's death may meet either
+POLL_S = 0.05
+LINK_LOST = "link lost"      # in the error of a call the link's death failed (any case)
+
+
+def agent_down_at(fleet, since):
+    """When (ns, the log's own timestamp) the agent first logged "hub link down" after
+    `since`, or None."""
+    for line in fleet.agent.text().splitlines():
+        if "hub link down" in line:
+            t = log_time_ns(line)
+            if t is not None and t > since:
+                return t
+    return None
+
+
+def first_error(calls, since, until):
+    """When the first call answered with an error in [since, until) got it (ns), or None.
+    An error that is the call's own deadline says nothing about the link and is skipped."""
+    return min((c.answer for c in calls if c.ok is False and since < c.answer < until
+                and not c.text.startswith("timeout")), default=None)
+
+
+def ok_run(calls, since=0):
+    """(first ok call sent at or after `since`, longest run of consecutive ok calls from
+    it on); a call not answered yet ends a run. (None, 0) if none is ok."""
+    after = [c for c in calls if c.sent >= since]
+    first = next((c for c in after if c.ok), None)
+    best = run = 0
+    for c in after:
+        run = run + 1 if c.ok else 0
+        best = max(best, run)
+    return first, best
+
+
+def watch_cut(fleet, t_cut, hold=0.0):
+    """After a cut: polls the hub's listing and the agent's log until the hub lists robot1
+    offline and the agent has logged its link down (at most DEAD_WINDOW_S after the cut),
+    then `hold` s more with the link still down. -> (hub offline ns, agent down ns), None
+    for what did not happen."""
+    t_off = t_agent = None
+    deadline = time.monotonic() + DEAD_WINDOW_S
+    while time.monotonic() < deadline:
+        st = fleet.robot_status()
+        if t_off is None and st is not None and not st.get("online"):
+            t_off = now_ns()
+        if t_agent is None:
+            t_agent = agent_down_at(fleet, t_cut)
+        if t_off is not None and t_agent is not None:
+            deadline = min(deadline, time.monotonic() + hold)
+            break
+        time.sleep(POLL_S)
+    while time.monotonic() < deadline:  # the hold: calls made while the link is dead
+        time.sleep(POLL_S)
+    return t_off, t_agent
+
+
+def wait_back(fleet, t_cut, t_up, callers=()):
+    """After link-up: robot1 listed online in a session that began after the cut (the
+    agent reconnected), and every caller's calls made after link-up OK_RUN times in a row;
+    bounded by BACK_WINDOW_S. -> when the robot was listed back (ns) or None."""
+    t_back = None
+    deadline = time.monotonic() + BACK_WINDOW_S
+    while time.monotonic() < deadline:
+        if t_back is None:
+            st = fleet.robot_status()
+            if st is not None and st.get("online") and st.get("connected_at_ms", 0) * 1_000_000 > t_cut:
+                t_back = now_ns()
+        if t_back is not None and all(ok_run(read_calls(log), t_up)[1] >= OK_RUN for log in callers):
+            break
+        time.sleep(POLL_S)
+    return t_back
+
+
+def secs(t, t0):
+    return None if t is None else (t - t0) / 1e9
+
+
+def timed_row(figure, dt, target, window):
+    return (figure, f"not within {window:g} s" if dt is None else f"{dt:.2f} s", f"<= {target:g} s",
+            dt is not None and dt <= target)
+
+
+def short_text(t, n=70):
+    return repr(t if len(t) <= n else t[:n] + "...")
+
+
+def pending_row(side, calls, t_cut, t_dead, t_ref, ref_name):
+    """The calls in flight when the link was declared dead (`t_dead`, the first sign of it:
+    ns): made before it and not answered before the cut (or answered with an error) must
+    all fail with "link lost" within AT_ONCE_S of `t_ref` (the moment the side is judged
+    by). Without a death the calls made between the cut and DEAD_TARGET_S after it are
+    judged (they hang)."""
+    dead = t_dead if t_dead is not None else t_cut + int(DEAD_TARGET_S * 1e9)
+    pending = [c for c in calls if c.sent < dead - GUARD_NS
+               and (c.answer is None or c.answer >= t_cut) and not (c.ok and c.answer < dead)]
+    target = f"all fail with {LINK_LOST!r} within {AT_ONCE_S:g} s of {ref_name}"
+    figure = f"{side}: calls in flight when the link was declared dead"
+    if t_ref is None:
+        hung = [c for c in pending if c.answer is None or c.answer - c.sent > OFFLINE_CALL_S * 1e9]
+        return (figure, f"not declared dead within {DEAD_WINDOW_S:g} s; {len(hung)}/{len(pending)} "
+                f"calls made before {DEAD_TARGET_S:g} s after the cut hung > {OFFLINE_CALL_S:g} s "
+                f"({sum(1 for c in pending if c.answer is None)} never answered)", target, False)
+    if not pending:
+        return (figure, "no call was in flight (nothing tested)", target, False)
+    good = [c for c in pending if c.ok is False and c.answer <= t_ref + AT_ONCE_S * 1e9
+            and LINK_LOST in c.text.lower()]
+    answered = [c for c in pending if c.answer is not None]
+    last = max((c.answer for c in answered), default=None)
+    texts = sorted({c.text if c.ok is False else "ok" for c in answered})
+    measured = (f"{len(good)}/{len(pending)} did"
+                + (f"; last answer {(last - t_ref) / 1e9:+.2f} s from {ref_name}" if last else "")
+                + (f"; {len(pending) - len(answered)} never answered" if len(answered) < len(pending) else "")
+                + (f"; {', '.join(short_text(t) for t in texts[:2])}" if texts else ""))
+    return (figure, measured, target, len(good) == len(pending))
+
+
+def offline_row(side, calls, t_cut, t_dead, t_up):
+    """Calls made while the link was dead (from its first sign, or DEAD_TARGET_S after the
+    cut if there was none, until link-up) fail within OFFLINE_CALL_S each."""
+    start = t_dead + GUARD_NS if t_dead is not None else t_cut + int(DEAD_TARGET_S * 1e9)
+    made = [c for c in calls if start <= c.sent < t_up]
+    target = f"each fails within {OFFLINE_CALL_S:g} s"
+    figure = f"{side}: calls made while the link was dead"
+    if not made:
+        return (figure, "no call made (nothing tested)", target, False)
+    fast = [c for c in made if c.ok is False and c.answer - c.sent <= OFFLINE_CALL_S * 1e9]
+    slow = max(((c.answer if c.answer is not None else now_ns()) - c.sent) / 1e9 for c in made)
+    texts = sorted({c.text for c in made if c.ok is False})
+    measured = (f"{len(fast)}/{len(made)} failed within {OFFLINE_CALL_S:g} s (slowest "
+                f"{'unanswered, ' if any(c.answer is None for c in made) else ''}{slow:.2f} s)"
+                + (f"; {short_text(texts[0])}" if texts else ""))
+    return (figure, measured, target, len(fast) == len(made))
+
+
+def after_row(side, calls, t_up):
+    first, run = ok_run(calls, t_up)
+    dt = secs(first.answer, t_up) if first else None
+    measured = "no ok call" if first is None else f"first ok {dt:.2f} s after link-up, then {run} in a row"
+    return (f"{side}: calls after link-up", measured,
+            f"ok within {FIRST_OK_S:g} s, then >= {OK_RUN} in a row",
+            first is not None and dt <= FIRST_OK_S and run >= OK_RUN)
+
+
+def summary_row(side, calls, t_cut):
+    """Informative: what every call of one side came to."""
+    before = sum(1 for c in calls if c.ok and c.answer < t_cut)
+    ok = sum(1 for c in calls if c.ok)
+    err = sum(1 for c in calls if c.ok is False)
+    gave_up = sum(1 for c in calls if c.gave_up is not None and (c.answer is None or c.answer > c.gave_up))
+    slowest = max(((c.answer - c.sent) / 1e9 for c in calls if c.answer is not None), default=0)
+    return (f"{side}: calls in all", f"{len(calls)} made ({before} ok before the cut): {ok} ok, "
+            f"{err} failed, {len(calls) - ok - err} unanswered at the end ({gave_up} past their "
+            f"{CALL_TIMEOUT_S:g} s deadline); slowest answer {slowest:.2f} s", "", None)
+
+
+def cut_without_calls(fleet):
+    """The control: the same cut with no call running, so the heartbeat alone must find
+    the dead link on both sides (a failure in the scenario proper is then about the calls,
+    not the topology or the measurement)."""
+    fleet.net.link(False)
+    t_cut = now_ns()
+    t_off, t_agent = watch_cut(fleet, t_cut, hold=CONTROL_HOLD_S)
+    fleet.net.link(True)
+    t_up = now_ns()
+    t_back = wait_back(fleet, t_cut, t_up)
+    return [timed_row("no calls: hub lists robot1 offline after the cut", secs(t_off, t_cut),
+                      DEAD_TARGET_S, DEAD_WINDOW_S),
+            timed_row("no calls: agent logs its hub link down after the cut", secs(t_agent, t_cut),
+                      DEAD_TARGET_S, DEAD_WINDOW_S),
+            timed_row("no calls: robot1 online again (new session) after link-up", secs(t_back, t_up),
+                      BACK_TARGET_S, BACK_WINDOW_S)]
+
+
+def scenario_calls_dead_link(fleet, nominal):
+    """The robot's link cut while calls cross it both ways: an operator at the hub calls
+    the robot's /robot1/get_status and a program on the robot calls the fleet service
+    /cloud/echo (offered at the hub), each every CALL_PERIOD_S. Calls are traffic too, but
+    not from across the dead link: neither side may let them keep it alive. Each side must
+    declare the link dead as the heartbeat says (within DEAD_TARGET_S), fail the calls in
+    flight at once ("link lost") and those made while the link is dead at once (no
+    provider), and after link-up the agent is back within BACK_TARGET_S and calls work.
+    First a control: the same cut with no calls."""
+    fleet.start_agent(sim=CALLS_SIM)
+    provider, _ = fleet.start_provider("deadcalls", FLEET_SERVICE)
+    op = local = None
+    try:
+        wait_until(lambda: (fleet.robot_status() or {}).get("online"), 15, "robot1 online at the hub")
+        rows = cut_without_calls(fleet)
+        op, op_log = fleet.start_caller("deadcalls-hub", False, ROBOT_SERVICE, period=CALL_PERIOD_S,
+                                        timeout=CALL_TIMEOUT_S)
+        local, local_log = fleet.start_caller("deadcalls-robot", True, FLEET_SERVICE, '{"data": true}',
+                                              period=CALL_PERIOD_S, timeout=CALL_TIMEOUT_S)
+        for log, what in ((op_log, f"operator's {ROBOT_SERVICE}"), (local_log, f"robot's {FLEET_SERVICE}")):
+            wait_until(lambda log=log: ok_run(read_calls(log))[1] >= OK_RUN, 15,
+                       f"{OK_RUN} successful calls in a row of the {what} before the cut")
+        fleet.net.link(False)
+        t_cut = now_ns()
+        t_off, t_agent_log = watch_cut(fleet, t_cut, hold=DOWN_HOLD_S)
+        fleet.net.link(True)
+        t_up = now_ns()
+        t_back = wait_back(fleet, t_cut, t_up, (op_log, local_log))
+        for p in (op, local):
+            fleet.procs.stop(p)
+        hub_calls, robot_calls = read_calls(op_log), read_calls(local_log)
+    finally:
+        for p in (op, local, provider):
+            if p is not None:
+                fleet.procs.stop(p)
+        fleet.stop_agent()
+    # The first sign of each side's death: its listing or log line, or a call failed by it
+    # (the agent answers its local calls itself; nothing crosses the dead link).
+    hub_dead = min((t for t in (t_off, first_error(hub_calls, t_cut, t_up)) if t is not None), default=None)
+    agent_dead = min((t for t in (t_agent_log, first_error(robot_calls, t_cut, t_up)) if t is not None),
+                     default=None)
+    hub_side = f"hub ({ROBOT_SERVICE} every {CALL_PERIOD_S:g} s)"
+    robot_side = f"agent ({FLEET_SERVICE} every {CALL_PERIOD_S:g} s)"
+    rows += [
+        timed_row(f"{hub_side}: hub lists robot1 offline after the cut", secs(t_off, t_cut),
+                  DEAD_TARGET_S, DEAD_WINDOW_S),
+        pending_row("hub", hub_calls, t_cut, hub_dead, t_off, "the offline listing"),
+        offline_row("hub", hub_calls, t_cut, hub_dead, t_up),
+        timed_row(f"{robot_side}: agent declares its hub link dead after the cut "
+                  f"(its log line or a local call failed by it, the first)",
+                  secs(agent_dead, t_cut), DEAD_TARGET_S, DEAD_WINDOW_S),
+        pending_row("agent", robot_calls, t_cut, agent_dead, agent_dead, "the agent's link death"),
+        offline_row("agent", robot_calls, t_cut, agent_dead, t_up),
+        timed_row("robot1 online again (agent reconnected: new session) after link-up",
+                  secs(t_back, t_up), BACK_TARGET_S, BACK_WINDOW_S),
+        after_row("hub", hub_calls, t_up),
+        after_row("agent", robot_calls, t_up),
+        summary_row("hub", hub_calls, t_cut),
+        summary_row("agent", robot_calls, t_cut),
+    ]
+    for row in rows:
+        print(f"   {row[0]}: {row[1]} [{'ok' if row[3] else ('' if row[3] is None else 'FAIL')}]", flush=True)
+    return rows
+
+
 SCENARIOS = [
     ("1", "blackouts 5/10/30 s", scenario_blackouts),
     ("2", "bandwidth ramp 100 -> 4 Mbit/s", scenario_ramp),
     ("3", "hub kill -9 and restart", scenario_hub_restart),
     ("4", "agent kill -9 during an outage", scenario_agent_restart),
     ("5", "slowloris", scenario_slowloris),
+    ("6", "dead link with calls in flight", scenario_calls_dead_link),
 ]

@@ -21,6 +21,17 @@
   loris   slowloris: N TCP connections that send a request line and then one header
           line a second, never finishing; logs "closed <seconds after open>" per
           connection the server closes, "open <n>" at the end for the rest.
+  caller  roslibpy client calling --service every --period s, each call asynchronous
+          (its own callback, so one that hangs does not hold up the next) and with its
+          own deadline (rosbridge `timeout`: --timeout s). Logs "call <n> <send ns>",
+          then "ok <n> <recv ns> <values as JSON>" or "err <n> <recv ns> <text>"; a
+          call with no answer --timeout + 2 s after it was sent is logged "timeout <n>
+          <ns>" (an answer after that is still logged). Connects to the hub (token) or
+          to the agent's local listener (no token).
+  provider
+          roslibpy client at the hub advertising --service (std_srvs/srv/SetBool): a fleet
+          service robots call. Answers at once, success true, message "echo <data>";
+          logs "served <recv ns>" per call.
 
 Both namespaces share one clock, so receive time - send time is the one-way latency.
 Every process ends on SIGTERM (or its own --duration / --count) and flushes its log line
@@ -250,6 +261,85 @@ def run_loris(a):
         s.close()
 
 
+CALL_GRACE_S = 2.0  # past the call's own deadline: the peer stops waiting for it
+
+
+def one_line(v):
+    """A service_response's values as one ASCII line (the log is ASCII)."""
+    text = v if isinstance(v, str) else json.dumps(v, separators=(",", ":"), sort_keys=True)
+    return " ".join(text.split()).encode("ascii", "replace").decode()
+
+
+def show_status(ros, log):
+    """roslibpy has no handler for `status` ops (it logs a traceback and drops them):
+    log them instead, so an error the server sent explains a call that then fails."""
+    proto = ros.factory._proto
+    if proto is not None:
+        proto._message_handlers["status"] = lambda m: log.write(f"# status {one_line(dict(m))}\n")
+
+
+def run_caller(a):
+    log = LockedLog(open_log(a.log))
+    ros = ros_connect(a.url)
+    show_status(ros, log)
+    args = json.loads(a.args)
+    pending = {}  # call number -> monotonic time after which it is given up
+    lock = threading.Lock()
+
+    def answered(n, ok):
+        def on(values):
+            recv = time.time_ns()
+            with lock:
+                pending.pop(n, None)
+            if ok:
+                log.write(f"ok {n} {recv} {one_line(dict(values))}\n")
+            else:
+                log.write(f"err {n} {recv} {one_line(values)}\n")
+        return on
+
+    print("caller: connected", flush=True)
+    n = 0
+    next_at = time.monotonic()
+    while not stop.is_set():
+        now = time.monotonic()
+        if now >= next_at:
+            n += 1
+            msg = roslibpy.Message({"op": "call_service", "id": f"links-call:{n}", "service": a.service,
+                                    "args": args, "timeout": a.timeout})
+            with lock:
+                pending[n] = now + a.timeout + CALL_GRACE_S
+            log.write(f"call {n} {time.time_ns()}\n")  # before the answer can be logged
+            ros.call_async_service(msg, answered(n, True), answered(n, False))
+            next_at += a.period
+            if next_at <= now:
+                next_at = now + a.period  # fell behind: no burst to catch up
+        with lock:
+            expired = [k for k, t in pending.items() if t <= now]
+            for k in expired:
+                del pending[k]
+        for k in expired:
+            log.write(f"timeout {k} {time.time_ns()}\n")
+        stop.wait(max(0.0, min(0.02, next_at - time.monotonic())))
+    ros.close()
+
+
+def run_provider(a):
+    log = open_log(a.log)
+    ros = ros_connect(a.url)
+    show_status(ros, LockedLog(log))
+
+    def serve(req, resp):
+        resp["success"] = True
+        resp["message"] = f"echo {bool(req.get('data'))}"
+        log.write(f"served {time.time_ns()}\n")
+        return True
+
+    roslibpy.Service(ros, a.service, "std_srvs/srv/SetBool").advertise(serve)
+    print("provider: advertised", flush=True)
+    stop.wait()
+    ros.close()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sp = ap.add_subparsers(dest="cmd", required=True)
@@ -277,10 +367,22 @@ def main():
     p.add_argument("--conns", type=int, default=500)
     p.add_argument("--duration", type=float, default=30)
     p.add_argument("--log", required=True)
+    p = sp.add_parser("caller")
+    p.add_argument("--url", required=True, help="hub URL with ?token=, or the agent's local listener")
+    p.add_argument("--service", required=True)
+    p.add_argument("--args", default="{}", help="the request, JSON")
+    p.add_argument("--period", type=float, default=0.5)
+    p.add_argument("--timeout", type=float, default=10.0, help="each call's deadline, seconds")
+    p.add_argument("--log", required=True)
+    p = sp.add_parser("provider")
+    p.add_argument("--url", required=True, help="hub URL with ?token=")
+    p.add_argument("--service", required=True)
+    p.add_argument("--log", required=True)
     a = ap.parse_args()
     signal.signal(signal.SIGTERM, on_term)
     signal.signal(signal.SIGINT, on_term)
-    {"pub": run_pub, "direct": run_direct, "sub": run_sub, "points": run_points, "loris": run_loris}[a.cmd](a)
+    {"pub": run_pub, "direct": run_direct, "sub": run_sub, "points": run_points, "loris": run_loris,
+     "caller": run_caller, "provider": run_provider}[a.cmd](a)
     return 0
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Bad-links reliability suite: a hub and an agent in two network namespaces joined by a
 # veth pair; blackouts (link down/up), a tbf bandwidth ramp, kill -9 of the hub and of
-# the agent, and a slowloris attack, with real roslibpy peers on both sides.
+# the agent, a slowloris attack, and a link cut while service calls cross it both ways,
+# with real roslibpy peers on both sides.
 #
 # This script owns the namespace plumbing; links_check.py drives the scenarios
 # (links_scenarios.py) and asserts their outcomes (see its docstring and
@@ -16,7 +17,7 @@
 #
 # Env: FLEETLINK_BIN (default target/release/fleetlink), PYTHON (default .venv/bin/python),
 #      LINKS_OUT (results directory, default target/interop-links),
-#      LINKS_SCENARIOS ("1 2 3 4 5"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
+#      LINKS_SCENARIOS ("1 2 3 4 5 6"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
 #      LINKS_KEEP (non-empty: keep the logs and records in the temp directory),
 #      LINKS_IDLE_P99_FLOOR_MS (15: the ramp's latency bound is 2 x max(idle p99, floor)).
 set -euo pipefail

@@ -2,10 +2,13 @@
 """Checks the suite's own measurements on made-up records, so a FAIL of the suite is a
 measured outcome and not a counting mistake. run.sh runs it first (no root needed)."""
 
+import os
 import sys
+import tempfile
 
-from harness import Rx, reliable_audit
-from links_scenarios import bulk_rate, recovery, recovery_ratio
+from harness import Rx, log_time_ns, read_calls, reliable_audit
+from links_scenarios import (bulk_rate, first_error, offline_row, ok_run, pending_row, recovery,
+                             recovery_ratio)
 
 S = 1_000_000_000
 MS = 1_000_000
@@ -20,6 +23,57 @@ def fast_records(t_up, stall_until, n=300):
         recv = sent + MS if sent >= stall_until else stall_until
         out.append(Rx("fast", recv, i, sent))
     return out
+
+
+def call_records(t_cut, t_dead, t_up, fixed):
+    """A caller's log (peers.py caller) at 2 Hz from 10 s before the cut: answered in 2 ms
+    before the cut; with `fixed` the calls in flight fail "robot link lost" at `t_dead`,
+    those made after it "no_provider" at once, and calls work again from link-up; without,
+    nothing made after the cut is answered."""
+    lines = []
+    for i in range(40):
+        sent = t_cut - 10 * S + i * S // 2
+        lines.append(f"call {i} {sent}")
+        if sent < t_cut:
+            lines.append(f"ok {i} {sent + 2 * MS} {{\"success\":true}}")
+        elif not fixed:
+            continue
+        elif sent < t_dead:
+            lines.append(f"err {i} {t_dead} robot link lost: robot1 is gone")
+        elif sent < t_up:
+            lines.append(f"err {i} {sent + MS} no_provider: /robot1/get_status is not offered")
+        else:
+            lines.append(f"ok {i} {sent + 2 * MS} {{}}")
+    with tempfile.NamedTemporaryFile("w", suffix=".calls", delete=False) as f:
+        f.write("\n".join(lines) + "\n")
+    try:
+        return read_calls(f.name)
+    finally:
+        os.unlink(f.name)
+
+
+def check_calls():
+    t_cut, t_dead, t_up = 100 * S, 102 * S, int(104.2 * S)
+    calls = call_records(t_cut, t_dead, t_up, fixed=True)
+    assert len(calls) == 40 and calls[3].ok and calls[25].ok is False, calls[:3]
+    assert first_error(calls, t_cut, t_up) == t_dead
+    row = pending_row("hub", calls, t_cut, t_dead, t_dead + 30 * MS, "the offline listing")
+    assert row[3] is True and row[1].startswith("4/4 did"), row
+    row = offline_row("hub", calls, t_cut, t_dead, t_up)
+    assert row[3] is True and row[1].startswith("4/4 failed"), row  # 102.0 s: in the guard
+    first, run = ok_run(calls, t_up)
+    assert first.n == 29 and run == 11, (first, run)
+    calls[21].answer += S  # one call in flight answered 1 s after the link's death
+    assert pending_row("hub", calls, t_cut, t_dead, t_dead, "x")[3] is False
+    calls = call_records(t_cut, t_dead, t_up, fixed=False)
+    assert first_error(calls, t_cut, t_up) is None
+    row = pending_row("hub", calls, t_cut, None, None, "the offline listing")
+    assert row[3] is False and "6/6 calls" in row[1], row
+    row = offline_row("hub", calls, t_cut, None, t_up)
+    assert row[3] is False and row[1].startswith("0/3 failed"), row
+    assert ok_run(calls, t_up) == (None, 0)
+    t = log_time_ns("2025-11-27T17:48:00.123456Z  WARN fleetlink_agent::uplink: hub link down: x")
+    assert t == 1764265680123456000, t
 
 
 def main():
@@ -49,6 +103,7 @@ def main():
     got = bulk_rate(clouds[:12], int(2.1 * S), 7 * S, 3.0)  # stops at 4.4 s
     assert got < 3.0, f"a bulk flow that stops mid-step still meets its target: {got}"
     assert bulk_rate([], 0, S, 3.0) == 0.0
+    check_calls()
     print("selftest: measurement helpers ok")
     return 0
 

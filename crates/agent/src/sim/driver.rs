@@ -41,7 +41,7 @@ pub async fn drive(
         }
     }
     // Services and the navigation action, on the robot's local call table.
-    let (peer, mut peer_rx) = ChannelPeer::new();
+    let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     for (name, schema, action) in offered() {
         let name = TopicName::parse(name).expect("a constant name");

@@ -504,7 +504,7 @@ fn robot_parameters(agent: &TestAgent) -> std::sync::Arc<std::sync::Mutex<Vec<St
         },
         None,
     );
-    let (peer, mut rx) = ChannelPeer::new();
+    let (peer, rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     for s in ["get_param", "set_param", "search_param", "get_param_names"] {
         router.calls.advertise(

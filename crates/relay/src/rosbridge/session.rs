@@ -86,7 +86,7 @@ pub async fn serve<K, S>(
     S: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
 {
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
-    let (peer, mut peer_rx) = ChannelPeer::new();
+    let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let mut stream = stream;
     // The client's recent publish envelopes (kept here, beside the session, because the
@@ -137,7 +137,7 @@ pub async fn serve<K, S>(
                 break;
             }
             session.flush_counts();
-            while let Ok(m) = peer_rx.try_recv() {
+            while let Ok(Some(m)) = peer_rx.try_recv() {
                 session.on_peer(m).await;
             }
         }

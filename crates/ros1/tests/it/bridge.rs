@@ -458,7 +458,7 @@ async fn services_cross_both_ways() {
         },
         None,
     );
-    let (peer, mut fleet_rx) = ChannelPeer::new();
+    let (peer, fleet_rx) = ChannelPeer::new();
     router.calls.attach(fleet, peer);
     router.calls.advertise(
         fleet,

@@ -1,0 +1,273 @@
+//! What a robot's link session reports, applied to the hub: its topics advertised and
+//! published on the hub's router (checked by the robot's gate), its subscriptions, its
+//! no-drop messages checked against the delivery marks, its link figures.
+//!
+//! Everything here is synchronous: it runs between two reads of the link, and what has
+//! to wait (writing delivery marks to the database) is started by the driver.
+
+use std::collections::HashMap;
+use std::sync::atomic::Ordering::Relaxed;
+use std::sync::{Arc, Mutex};
+
+use fleetlink_proto::frame::{Frame, Level, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, status_code};
+use fleetlink_relay::gate::Op;
+use fleetlink_relay::link::LinkEvent;
+use fleetlink_relay::link::session::{Event, LinkSession};
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
+use fleetlink_relay::{ClientId, Router, Topic, TopicName};
+
+use super::LiveRobot;
+use crate::delivery::RobotBook;
+
+struct PubTopic {
+    topic: Arc<Topic>,
+    /// Its name, kept for the per-message checks (the topic's own is behind an ArcSwap).
+    name: TopicName,
+}
+
+/// The hub's side of one robot link, besides the session.
+pub(super) struct RobotLink {
+    pub router: Arc<Router>,
+    pub client: ClientId,
+    pub live: Arc<LiveRobot>,
+    topics: HashMap<u32, PubTopic>,
+    subs: HashMap<u32, SubscriptionId>,
+    /// Delivery marks of this robot's no-drop topics.
+    pub book: Arc<Mutex<RobotBook>>,
+    /// No-drop aliases to confirm once the marks are written, with the highest number.
+    pub confirm: HashMap<u32, u64>,
+}
+
+impl RobotLink {
+    pub fn new(
+        router: Arc<Router>,
+        client: ClientId,
+        live: Arc<LiveRobot>,
+        book: Arc<Mutex<RobotBook>>,
+    ) -> RobotLink {
+        RobotLink {
+            router,
+            client,
+            live,
+            topics: HashMap::new(),
+            subs: HashMap::new(),
+            book,
+            confirm: HashMap::new(),
+        }
+    }
+
+    /// Acts on one event of the session (`Closed` is the driver's).
+    pub fn apply(&mut self, ev: Event, session: &mut LinkSession) {
+        match ev {
+            Event::Link(LinkEvent::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+                reliable: true,
+            }) => {
+                let name = session
+                    .link_in()
+                    .topic(alias)
+                    .map_or("", |t| t.name.as_str());
+                let fresh = self
+                    .book
+                    .lock()
+                    .unwrap_or_else(|p| p.into_inner())
+                    .admit(name, seq);
+                let c = self.confirm.entry(alias).or_default();
+                *c = (*c).max(seq);
+                if fresh {
+                    self.publish(alias, seq, stamp_ns, payload, session);
+                }
+            }
+            Event::Link(ev) => self.on_link(ev, session),
+            Event::Pong { rtt, offset_ns, .. } => {
+                self.live.on_pong(rtt.as_nanos() as u64, offset_ns);
+            }
+            Event::Hello { .. } | Event::Opened { .. } | Event::ReportDue | Event::Closed(_) => {}
+        }
+    }
+
+    fn publish(
+        &mut self,
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        payload: fleetlink_proto::Payload,
+        session: &mut LinkSession,
+    ) {
+        let Some(p) = self.topics.get(&alias) else {
+            return;
+        };
+        let gate = session.gate();
+        // Asked per message (a cached answer) so a rule change applies at once.
+        if !gate.allows(p.name.as_str(), Op::Publish) {
+            return;
+        }
+        let size = payload.len();
+        let msg = p.topic.publish(self.client, seq, stamp_ns, payload);
+        // End-to-end latency on the hub's clock: origin stamp plus the robot's clock
+        // offset, to when the hub received it (the message's own receive time: no
+        // second clock read).
+        if let Some(off) = self.live.clock_offset_ns() {
+            let origin = stamp_ns as i128 + off as i128;
+            let at = msg.received_unix_ns() as i128;
+            if at >= origin {
+                p.topic.stats.record_latency((at - origin) as u64);
+            }
+        }
+        gate.done(p.name.as_str(), Op::Publish, size);
+    }
+
+    fn on_link(&mut self, ev: LinkEvent, session: &mut LinkSession) {
+        match ev {
+            LinkEvent::Advertise { alias, topic } => {
+                let name = match TopicName::parse(&topic.name) {
+                    Ok(n) => n,
+                    Err(e) => {
+                        return session.status(
+                            Level::Error,
+                            status_code::MALFORMED,
+                            format!("advertise: {e}"),
+                        );
+                    }
+                };
+                let gate = session.gate();
+                if !gate.allows(name.as_str(), Op::Publish) {
+                    let text = format!("advertise {name}: not allowed for {}", gate.principal());
+                    return session.status(Level::Error, status_code::FORBIDDEN, text);
+                }
+                match self
+                    .router
+                    .advertise(self.client, &name, topic.schema, topic.latched)
+                {
+                    Ok(t) => {
+                        self.topics.insert(alias, PubTopic { topic: t, name });
+                    }
+                    Err(e) => session.status(
+                        Level::Error,
+                        status_code::MALFORMED,
+                        format!("advertise: {e}"),
+                    ),
+                }
+            }
+            LinkEvent::Unadvertise { alias, topic } => {
+                if self.topics.remove(&alias).is_some()
+                    && let Ok(name) = TopicName::parse(&topic.name)
+                {
+                    self.router.unadvertise(self.client, &name);
+                }
+            }
+            LinkEvent::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+                ..
+            } => self.publish(alias, seq, stamp_ns, payload, session),
+            LinkEvent::Control(Frame::Subscribe { pattern, flags, .. })
+                if flags & SUBSCRIBE_SERVICES != 0 =>
+            {
+                // The robot wants to hear of fleet services it may call (filtered by the
+                // gate when each is offered).
+                let source = if flags & SUBSCRIBE_REGEX != 0 {
+                    pattern
+                } else {
+                    regex::escape(&pattern)
+                };
+                match Router::compile_pattern(&source) {
+                    Ok(re) => self.router.calls.watch(self.client, re),
+                    Err(e) => session.status(
+                        Level::Error,
+                        status_code::MALFORMED,
+                        format!("subscribe services: {e}"),
+                    ),
+                }
+            }
+            LinkEvent::Control(Frame::Subscribe {
+                id,
+                pattern,
+                flags,
+                throttle_ms,
+                queue_length,
+            }) => self.subscribe(id, pattern, flags, throttle_ms, queue_length, session),
+            LinkEvent::Control(Frame::Unsubscribe { id }) => {
+                if let Some(sid) = self.subs.remove(&id) {
+                    self.router.unsubscribe(self.client, sid);
+                }
+            }
+            LinkEvent::Control(Frame::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+            }) => {
+                self.live.demand_bps.store(demand_bps, Relaxed);
+                self.live.rate_bps.store(rate_bps, Relaxed);
+                self.live.latency_ns.store(latency_ns, Relaxed);
+            }
+            LinkEvent::Control(Frame::Status { level, text, .. }) => {
+                tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
+            }
+            // Frames only a hub sends, an agent's ACK: nothing to do.
+            LinkEvent::Control(_) | LinkEvent::None => {}
+        }
+    }
+
+    fn subscribe(
+        &mut self,
+        id: u32,
+        pattern: String,
+        flags: u8,
+        throttle_ms: u32,
+        queue_length: u32,
+        session: &mut LinkSession,
+    ) {
+        let target = if flags & SUBSCRIBE_REGEX != 0 {
+            match Router::compile_pattern(&pattern) {
+                Ok(r) => Target::Pattern(r),
+                Err(e) => {
+                    return session.status(
+                        Level::Error,
+                        status_code::MALFORMED,
+                        format!("subscribe: {e}"),
+                    );
+                }
+            }
+        } else {
+            let gate = session.gate();
+            match TopicName::parse(&pattern) {
+                Ok(n) if gate.allows(n.as_str(), Op::Subscribe) => Target::Exact(n),
+                Ok(n) => {
+                    let text = format!("subscribe {n}: not allowed for {}", gate.principal());
+                    return session.status(Level::Error, status_code::FORBIDDEN, text);
+                }
+                Err(e) => {
+                    return session.status(
+                        Level::Error,
+                        status_code::MALFORMED,
+                        format!("subscribe: {e}"),
+                    );
+                }
+            }
+        };
+        if let Some(old) = self.subs.remove(&id) {
+            self.router.unsubscribe(self.client, old);
+        }
+        let opts = SubOptions {
+            queue_length,
+            throttle_ms,
+            ..Default::default()
+        };
+        match self.router.subscribe(self.client, target, opts) {
+            Ok(sid) => {
+                self.subs.insert(id, sid);
+            }
+            Err(e) => session.status(
+                Level::Error,
+                status_code::MALFORMED,
+                format!("subscribe: {e}"),
+            ),
+        }
+    }
+}

@@ -1,0 +1,439 @@
+//! Agents on the hub: one `fleetlink.v1` link per robot, and the registry of robots that
+//! are online.
+//!
+//! - [`serve_agent`] drives one link: the sans-IO [`LinkSession`] (handshake, calls,
+//!   heartbeats, liveness) fed with what the socket reads and woken at its deadlines; the
+//!   outbox writer ([`write_link`]) in a task of its own; the robot's topics and
+//!   subscriptions applied to the hub's router ([`events`]).
+//! - [`registry`]: robots online, with their link figures.
+
+mod events;
+mod registry;
+
+pub use registry::{LiveLink, LiveRobot, Registry};
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+use std::sync::atomic::Ordering::Relaxed;
+use std::time::{Duration, Instant};
+
+use fleetlink_auth::{Credential, GroupName, Operation, Token, TokenKind};
+use fleetlink_proto::frame::Frame;
+use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
+use fleetlink_relay::gate::Gate;
+use fleetlink_relay::link::session::{
+    Accept, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
+};
+use fleetlink_relay::link::{Control, drive, write_link};
+use fleetlink_relay::link_calls::{LinkCalls, SameNames};
+use fleetlink_relay::websocket::ClientMessage;
+use fleetlink_relay::{ClientKind, Router};
+use futures_util::future::BoxFuture;
+use futures_util::{FutureExt, Sink, SinkExt, Stream, StreamExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+use tokio_util::sync::CancellationToken;
+
+use crate::delivery::DeliveryLedger;
+use crate::store::Store;
+use events::RobotLink;
+
+/// How long a new connection has to send `HELLO` (and be authenticated).
+const HELLO_TIMEOUT: Duration = Duration::from_secs(10);
+/// Heartbeat bounds a robot may ask for.
+const MIN_HEARTBEAT_MS: u32 = 50;
+const MAX_HEARTBEAT_MS: u32 = 60_000;
+/// Frames between the session and the link's writer. When the writer falls behind, the
+/// session keeps what it has to send (bounded, see its docs) and stops taking call-table
+/// news: nothing waits on the writer.
+const WRITER_QUEUE: usize = 1024;
+
+/// What an agent session needs from the hub.
+pub struct AgentContext {
+    pub router: Arc<Router>,
+    pub registry: Arc<Registry>,
+    pub store: Store,
+    pub shutdown: CancellationToken,
+    pub security: Arc<fleetlink_auth::Security>,
+    /// Heartbeat used when the agent does not ask for one.
+    pub default_heartbeat_ms: u32,
+    /// How far each robot's no-drop topics were delivered.
+    pub ledger: Arc<DeliveryLedger>,
+    /// The hub's `/rosout`: robots connecting, leaving, refused.
+    pub rosout: Arc<crate::rosout::RosOut>,
+}
+
+/// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
+pub fn valid_robot_name(name: &str) -> bool {
+    !name.is_empty()
+        && name.len() <= 64
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.starts_with(|c: char| c.is_ascii_digit())
+}
+
+/// What `HELLO` said, once authenticated.
+struct Admitted {
+    robot: String,
+    heartbeat_ms: u32,
+    identity: fleetlink_auth::Identity,
+    outbox_epoch: u64,
+}
+
+/// Runs one agent connection to the end. `slot` (the hub's handshake admission) is held
+/// until the hub answers `HELLO`.
+pub async fn serve_agent<R, W, P>(
+    mut reader: R,
+    sink: W,
+    ctx: Arc<AgentContext>,
+    addr: Option<SocketAddr>,
+    conn: fleetlink_auth::ConnInfo,
+    slot: P,
+) where
+    R: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
+    W: Sink<WsMessage, Error = WsError> + Unpin + Send + 'static,
+    P: Send,
+{
+    let who = addr.map_or_else(|| "(unknown address)".to_owned(), |a| a.to_string());
+    let mut session = LinkSession::hub(
+        SessionConfig {
+            role: Role::Hub,
+            heartbeat: Duration::from_millis(u64::from(ctx.default_heartbeat_ms)),
+            handshake_timeout: HELLO_TIMEOUT,
+            report_every: None,
+            wall: system_wall_clock(),
+        },
+        Instant::now(),
+    );
+    let admitted = match handshake(&mut reader, &mut session, &ctx, conn).await {
+        Ok(a) => a,
+        Err(None) => return, // gone before HELLO: nothing to answer
+        Err(Some((reason, robot))) => {
+            let who = match robot {
+                Some(r) => format!("{r} from {who}"),
+                None => who,
+            };
+            return refuse(sink, reason, &who, &ctx.rosout).await;
+        }
+    };
+    let Admitted {
+        robot,
+        heartbeat_ms,
+        identity,
+        outbox_epoch,
+    } = admitted;
+    let namespace = format!("/{robot}");
+    let book = ctx.ledger.open(&robot, outbox_epoch).await;
+    let (client, outbox) = ctx.router.connect(
+        ClientKind::Agent {
+            robot: robot.clone(),
+        },
+        addr,
+    );
+    let (peer, peer_rx) = ChannelPeer::new();
+    ctx.router.calls.attach(client, peer);
+    let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
+    let replaced = CancellationToken::new();
+    let session_no = ctx.registry.next_session();
+    let live = Arc::new(LiveRobot::new(LiveLink {
+        name: robot.clone(),
+        client,
+        session: session_no,
+        addr,
+        heartbeat_ms,
+        control: ctrl_tx.clone(),
+        replaced: replaced.clone(),
+    }));
+    if let Some(old) = ctx.registry.insert(live.clone()) {
+        tracing::info!(robot = %robot, "robot reconnected; replacing its previous connection");
+        ctx.rosout.log(
+            crate::rosout::Level::Info,
+            "connected",
+            format!("robot {robot} reconnected from {who}; its previous connection is closed"),
+        );
+        old.replace();
+        ctx.router.disconnect(old.client);
+    }
+    tracing::info!(robot = %robot, ?addr, "robot connected");
+    ctx.rosout.log(
+        crate::rosout::Level::Info,
+        "connected",
+        format!("robot {robot} connected from {who}"),
+    );
+    record_seen(&ctx.store, &robot, addr, true);
+
+    let gate = crate::security::HubGate::for_agent(
+        ctx.security.clone(),
+        ctx.registry.clone(),
+        identity,
+        &robot,
+    );
+    let writer_gate = gate.fork();
+    let calls = ctx.router.calls.clone();
+    session.accept(
+        Accept {
+            session: session_no.to_string(),
+            namespace,
+            heartbeat: Duration::from_millis(u64::from(heartbeat_ms)),
+            gate: Box::new(gate),
+            calls: Box::new(move |_| LinkCalls::new(calls, client, Box::new(SameNames))),
+        },
+        Instant::now(),
+    );
+    let writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        Some(writer_gate),
+    ));
+    // WELCOME is on its way: the hub has answered.
+    drop(slot);
+
+    let mut link = RobotLink::new(ctx.router.clone(), client, live.clone(), book);
+    let reason = serve_open(
+        &mut reader,
+        &mut session,
+        &mut link,
+        &peer_rx,
+        &ctrl_tx,
+        &ctx,
+        &replaced,
+    )
+    .await;
+    // Calls the table queued for the link meanwhile fail with the reason, then the robot
+    // leaves the router (its topics, subscriptions and services with it).
+    while let Ok(Some(m)) = peer_rx.try_recv() {
+        session.handle_peer_event(m);
+    }
+    ctx.router.disconnect(client);
+    ctx.registry.remove_if_session(&robot, session_no);
+    let level = match reason {
+        CloseReason::Silent { .. } | CloseReason::ReadError(_) => crate::rosout::Level::Warn,
+        _ => crate::rosout::Level::Info,
+    };
+    tracing::info!(robot = %robot, "robot disconnected: {reason}");
+    ctx.rosout.log(
+        level,
+        "disconnected",
+        format!("robot {robot} disconnected: {reason}"),
+    );
+    drive::stop_writer(writer, ctrl_tx, &reason).await;
+    record_seen(&ctx.store, &robot, addr, false);
+}
+
+/// Reads until `HELLO`, checks it and authenticates it, all within the handshake
+/// deadline. `Err(None)`: the connection went away first; `Err(Some)`: refuse with this
+/// reason (and the robot's name, once known).
+async fn handshake<R>(
+    reader: &mut R,
+    session: &mut LinkSession,
+    ctx: &AgentContext,
+    conn: fleetlink_auth::ConnInfo,
+) -> Result<Admitted, Option<(String, Option<String>)>>
+where
+    R: Stream<Item = Result<ClientMessage, WsError>> + Unpin,
+{
+    let (robot, token, hb, outbox_epoch) = loop {
+        match session.poll_event() {
+            Some(Event::Hello {
+                robot,
+                token,
+                heartbeat_ms,
+                outbox_epoch,
+            }) => break (robot, token, heartbeat_ms, outbox_epoch),
+            Some(Event::Closed(r)) => {
+                return Err(match r {
+                    CloseReason::PeerClosed(_) | CloseReason::ReadError(_) => None,
+                    other => Some((other.to_string(), None)),
+                });
+            }
+            Some(_) => continue,
+            None => {}
+        }
+        tokio::select! {
+            m = reader.next() => {
+                drive::feed(session, m, Instant::now());
+            }
+            _ = drive::timer(session.poll_timeout()) => session.handle_timeout(Instant::now()),
+            _ = ctx.shutdown.cancelled() => return Err(Some(("the hub is shutting down".into(), None))),
+        }
+    };
+    if !valid_robot_name(&robot) {
+        let reason = format!(
+            "invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)"
+        );
+        return Err(Some((reason, None)));
+    }
+    let heartbeat_ms = if hb == 0 {
+        ctx.default_heartbeat_ms
+    } else {
+        hb.clamp(MIN_HEARTBEAT_MS, MAX_HEARTBEAT_MS)
+    };
+    // A robot token (or a certificate, or a trusted robot network) names the robot. An
+    // operator token of the admin group may also open an agent link, for tools such as
+    // `fleetlink bench relay`. Anything but a robot token (operator, session, OIDC) is a
+    // bearer credential; the token module tells them apart, not string prefixes here.
+    let operator =
+        !token.is_empty() && Token::parse(&token).map_or(true, |t| t.kind() != TokenKind::Robot);
+    let credential = if operator {
+        Credential::Bearer(token)
+    } else {
+        Credential::Agent {
+            robot: robot.clone(),
+            token: (!token.is_empty()).then_some(token),
+        }
+    };
+    let authenticated = tokio::select! {
+        r = crate::security::authenticate(&ctx.security, credential, conn) => r,
+        _ = drive::timer(session.poll_timeout()) => {
+            return Err(Some(("no HELLO within 10 s".into(), Some(robot))));
+        }
+        _ = ctx.shutdown.cancelled() => {
+            return Err(Some(("the hub is shutting down".into(), Some(robot))));
+        }
+    };
+    let admin = GroupName::new("admin").expect("a valid group name");
+    match authenticated {
+        // Anyone else acting as a robot needs a rule letting it publish under that
+        // robot's namespace: otherwise a viewer's token could evict a robot.
+        Ok(identity)
+            if operator
+                && !identity.in_group(&admin)
+                && !ctx
+                    .security
+                    .access(identity.clone())
+                    .allows(&format!("/{robot}"), Operation::Publish) =>
+        {
+            let reason = format!(
+                "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
+                identity.principal()
+            );
+            Err(Some((reason, Some(robot))))
+        }
+        Ok(identity) => Ok(Admitted {
+            robot,
+            heartbeat_ms,
+            identity,
+            outbox_epoch,
+        }),
+        // The public message alone ("authentication failed", "authentication required",
+        // a rate limit): the agent turns it into advice.
+        Err(e) => Err(Some((e.public_message(), Some(robot)))),
+    }
+}
+
+/// The open link, until its session ends: returns why.
+async fn serve_open<R>(
+    reader: &mut R,
+    session: &mut LinkSession,
+    link: &mut RobotLink,
+    peer_rx: &PeerReceiver,
+    ctrl_tx: &mpsc::Sender<Control>,
+    ctx: &AgentContext,
+    replaced: &CancellationToken,
+) -> CloseReason
+where
+    R: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
+{
+    // Delivery marks being written, and what to confirm when they are.
+    let mut recording: Option<BoxFuture<'static, ()>> = None;
+    let mut confirming: Vec<(u32, u64)> = Vec::new();
+    loop {
+        while let Some(ev) = session.poll_event() {
+            match ev {
+                Event::Closed(r) => return r,
+                ev => link.apply(ev, session),
+            }
+        }
+        if recording.is_none() && !link.confirm.is_empty() {
+            confirming = link.confirm.drain().collect();
+            let (ledger, robot, book) = (
+                ctx.ledger.clone(),
+                link.live.name.clone(),
+                link.book.clone(),
+            );
+            recording = Some(async move { ledger.record(&robot, &book).await }.boxed());
+        }
+        drive::pump(session, ctrl_tx);
+        let deadline = session.poll_timeout();
+        tokio::select! {
+            m = reader.next() => {
+                let now = Instant::now();
+                link.live.last_seen_ns.store(fleetlink_relay::unix_nanos(), Relaxed);
+                if let Some(ping) = drive::feed(session, m, now) {
+                    let _ = ctrl_tx.try_send(Control::Pong(ping));
+                }
+            }
+            m = peer_rx.recv(), if session.wants_peer_events() => {
+                if let Some(m) = m {
+                    session.handle_peer_event(m);
+                }
+            }
+            permit = ctrl_tx.reserve(), if session.has_transmit() => {
+                if let (Ok(p), Some(c)) = (permit, session.poll_transmit()) {
+                    p.send(c);
+                }
+            }
+            () = async { recording.as_mut().expect("guarded").await }, if recording.is_some() => {
+                recording = None;
+                for (alias, seq) in confirming.drain(..) {
+                    session.delivered(alias, seq);
+                }
+            }
+            _ = drive::timer(deadline) => session.handle_timeout(Instant::now()),
+            _ = ctx.shutdown.cancelled() => {
+                session.close(CloseReason::Local("the hub is shutting down".into()));
+            }
+            _ = replaced.cancelled() => {
+                session.close(CloseReason::Local(
+                    "replaced by a newer connection of the robot".into(),
+                ));
+            }
+        }
+        // Deadlines are kept whichever branch ran: with reads, calls and writes all ready
+        // at once, the timer's branch may not be the one chosen.
+        if session.poll_timeout().is_some_and(|t| Instant::now() >= t) {
+            session.handle_timeout(Instant::now());
+        }
+    }
+}
+
+fn record_seen(store: &Store, robot: &str, addr: Option<SocketAddr>, online: bool) {
+    let (store, r) = (store.clone(), robot.to_owned());
+    let a = addr.map(|a| a.to_string()).unwrap_or_default();
+    tokio::task::spawn_blocking(move || {
+        if let Err(e) = store.robot_seen(&r, &a, online) {
+            tracing::warn!("cannot record robot {r}: {e}");
+        }
+    });
+}
+
+/// Tells a connection why it is not accepted, then closes it.
+async fn refuse<K>(mut sink: K, reason: String, who: &str, rosout: &crate::rosout::RosOut)
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    tracing::warn!("refusing agent: {reason}");
+    rosout.log(
+        crate::rosout::Level::Warn,
+        "refused",
+        format!("refused agent {who}: {reason}"),
+    );
+    let status = Frame::Status {
+        level: fleetlink_proto::frame::Level::Error,
+        code: 401,
+        alias: 0,
+        text: reason.clone(),
+    };
+    let _ = sink.send(WsMessage::Binary(status.to_bytes())).await;
+    let reason: String = reason.chars().take(120).collect();
+    let close = CloseFrame {
+        code: CloseCode::Policy,
+        reason: reason.into(),
+    };
+    let _ = sink.send(WsMessage::Close(Some(close))).await;
+    let _ = sink.close().await;
+}

@@ -1,0 +1,186 @@
+//! The robots online now, by name, and what the hub knows of each link.
+//!
+//! A robot that reconnects while its old connection still looks alive (a half-open TCP
+//! connection after a Wi-Fi drop) replaces it: [`Registry::insert`] hands back the old
+//! entry, whose session the caller ends ([`LiveRobot::replace`]) and whose topics it
+//! withdraws before the new one advertises, so a robot never appears twice.
+
+use std::collections::{HashMap, VecDeque};
+use std::net::SocketAddr;
+use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+use std::time::SystemTime;
+
+use fleetlink_proto::frame::Frame;
+use fleetlink_relay::ClientId;
+use fleetlink_relay::link::Control;
+use tokio::sync::mpsc;
+use tokio_util::sync::CancellationToken;
+
+/// A robot that is online now.
+pub struct LiveRobot {
+    pub name: String,
+    pub client: ClientId,
+    pub session: u64,
+    pub addr: Option<SocketAddr>,
+    pub connected_at: SystemTime,
+    pub heartbeat_ms: u32,
+    /// Round trip of the last ping the hub sent, in nanoseconds (0 = none yet).
+    pub rtt_ns: AtomicU64,
+    pub last_seen_ns: AtomicU64,
+    /// From the agent's last `LINK_REPORT`: what it would send, what its link delivered
+    /// (bytes/s) and its one-way latency (ns).
+    pub demand_bps: AtomicU64,
+    pub rate_bps: AtomicU64,
+    pub latency_ns: AtomicU64,
+    /// The capacity share last sent to it (bytes/s; 0 = none).
+    pub share_bps: AtomicU64,
+    /// Hub clock minus robot clock, from the least-delayed of the recent heartbeats.
+    clock: Mutex<ClockSync>,
+    /// The current estimate from `clock` (`i64::MIN` = none yet), read per message
+    /// without the lock.
+    clock_offset: AtomicI64,
+    /// The link's writer, for frames that do not go through the session (`SHARE`).
+    control: mpsc::Sender<Control>,
+    /// Cancelled when a newer connection of the robot replaces this one.
+    replaced: CancellationToken,
+}
+
+/// Clock offset from ping/pong exchanges, NTP style: each exchange bounds the offset
+/// within its round trip; the exchange with the shortest round trip among the recent
+/// ones gives the tightest estimate.
+#[derive(Default)]
+struct ClockSync {
+    samples: VecDeque<(u64, i64)>,
+}
+
+const CLOCK_SAMPLES: usize = 16;
+
+/// What a new [`LiveRobot`] starts from.
+pub struct LiveLink {
+    pub name: String,
+    pub client: ClientId,
+    pub session: u64,
+    pub addr: Option<SocketAddr>,
+    pub heartbeat_ms: u32,
+    pub control: mpsc::Sender<Control>,
+    pub replaced: CancellationToken,
+}
+
+impl LiveRobot {
+    pub fn new(l: LiveLink) -> LiveRobot {
+        LiveRobot {
+            name: l.name,
+            client: l.client,
+            session: l.session,
+            addr: l.addr,
+            connected_at: SystemTime::now(),
+            heartbeat_ms: l.heartbeat_ms,
+            rtt_ns: AtomicU64::new(0),
+            last_seen_ns: AtomicU64::new(fleetlink_relay::unix_nanos()),
+            demand_bps: AtomicU64::new(0),
+            rate_bps: AtomicU64::new(0),
+            latency_ns: AtomicU64::new(0),
+            share_bps: AtomicU64::new(0),
+            clock: Mutex::new(ClockSync::default()),
+            clock_offset: AtomicI64::new(i64::MIN),
+            control: l.control,
+            replaced: l.replaced,
+        }
+    }
+
+    /// Hub clock minus robot clock in nanoseconds, once a heartbeat has been answered.
+    pub fn clock_offset_ns(&self) -> Option<i64> {
+        match self.clock_offset.load(Relaxed) {
+            i64::MIN => None,
+            o => Some(o),
+        }
+    }
+
+    /// One ping exchange: its round trip and the offset it implies.
+    pub fn on_pong(&self, rtt_ns: u64, offset_ns: i64) {
+        self.rtt_ns.store(rtt_ns, Relaxed);
+        let mut c = self.clock.lock().unwrap_or_else(|p| p.into_inner());
+        if c.samples.len() == CLOCK_SAMPLES {
+            c.samples.pop_front();
+        }
+        c.samples.push_back((rtt_ns, offset_ns));
+        if let Some((_, best)) = c.samples.iter().min_by_key(|(rtt, _)| *rtt) {
+            self.clock_offset.store(*best, Relaxed);
+        }
+    }
+
+    /// Sends the robot its capacity share (bytes/s; 0 = no cap). Never blocks: a writer
+    /// too backed up to take it gets the next one.
+    pub fn send_share(&self, bytes_per_sec: u64) {
+        self.share_bps.store(bytes_per_sec, Relaxed);
+        let _ = self
+            .control
+            .try_send(Control::Frame(Frame::Share { bytes_per_sec }));
+    }
+
+    /// Ends this connection's session: a newer one of the same robot took its place.
+    pub fn replace(&self) {
+        self.replaced.cancel();
+    }
+}
+
+/// Robots online, by name.
+#[derive(Default)]
+pub struct Registry {
+    // std Mutex: lookups and swaps only, never held across an await.
+    robots: Mutex<HashMap<String, Arc<LiveRobot>>>,
+    next_session: AtomicU64,
+    /// Bumped whenever a robot comes or goes, so callers can cache [`Registry::is_online`]
+    /// answers between changes.
+    changes: AtomicU64,
+}
+
+impl Registry {
+    pub fn list(&self) -> Vec<Arc<LiveRobot>> {
+        let mut v: Vec<_> = self
+            .robots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .values()
+            .cloned()
+            .collect();
+        v.sort_by(|a, b| a.name.cmp(&b.name));
+        v
+    }
+
+    /// A number for a new session, unique in this hub process.
+    pub fn next_session(&self) -> u64 {
+        self.next_session.fetch_add(1, Relaxed) + 1
+    }
+
+    /// Lists `robot` as online; returns the entry it replaces, if the robot was online.
+    /// The caller ends that entry's session.
+    pub fn insert(&self, robot: Arc<LiveRobot>) -> Option<Arc<LiveRobot>> {
+        let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
+        self.changes.fetch_add(1, Relaxed);
+        m.insert(robot.name.clone(), robot)
+    }
+
+    /// Changes whenever the set of robots online changes.
+    pub fn generation(&self) -> u64 {
+        self.changes.load(Relaxed)
+    }
+
+    /// Whether a robot of this name is connected now.
+    pub fn is_online(&self, name: &str) -> bool {
+        self.robots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .contains_key(name)
+    }
+
+    /// Removes `name` if its entry is still that of `session` (not a newer connection's).
+    pub fn remove_if_session(&self, name: &str, session: u64) {
+        let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
+        if m.get(name).is_some_and(|r| r.session == session) {
+            m.remove(name);
+            self.changes.fetch_add(1, Relaxed);
+        }
+    }
+}

@@ -1,0 +1,787 @@
+//! The `fleetlink.v1` link session: one deterministic state machine for both ends of an
+//! agent ↔ hub link, with a [`Role`].
+//!
+//! It owns everything about the link that is protocol rather than I/O: the handshake
+//! (`HELLO` → `WELCOME`, or a refusal), the peer's topic aliases and chunk reassembly
+//! ([`LinkIn`]), acknowledgements, calls across the link ([`LinkCalls`]), heartbeats and
+//! liveness. It reads no clock and touches no socket: every input carries `now`, and its
+//! driver (the hub's `agents::serve_agent`, the agent's uplink) feeds it what the socket
+//! read, takes what it has to send ([`LinkSession::poll_transmit`]) and what happened
+//! ([`LinkSession::poll_event`]), and sleeps until [`LinkSession::poll_timeout`].
+//!
+//! **Liveness** is a deadline, `last byte received + 2 × heartbeat`, and only bytes from
+//! the peer move it ([`LinkSession::handle_binary`] and the other `handle_*` of things
+//! read from the socket). Nothing this side does — calls and feedback from the call
+//! table, frames the driver queues, its own timers — can, so a link that went silent is
+//! declared dead on time however busy this side is. Each end sends a `PING` every
+//! heartbeat, so a live peer is never silent for longer than one heartbeat plus the
+//! link's delay.
+//!
+//! **Malformed input** is treated the same on both ends: a frame that does not decode
+//! ends the processing of its WebSocket message (its length can no longer be trusted), a
+//! frame that decodes but means nothing here (an unknown alias, a chunk out of place) is
+//! skipped, and either way the peer gets a `STATUS` saying what was wrong while the link
+//! keeps serving. During the handshake, anything but the expected frame ends the session
+//! with a refusal.
+//!
+//! **What it sends** is bounded: answers to pings keep the newest few, acknowledgements
+//! and delivery confirmations are summed into one pending frame each, error reports to
+//! the peer are capped (the excess is counted), and the driver feeds call-table news in
+//! only while fewer than [`PEER_EVENT_ROOM`] frames wait ([`LinkSession::wants_peer_events`]),
+//! so a stalled writer backs up into the call table's coalescing queue, not here.
+
+use std::collections::{BTreeMap, VecDeque};
+use std::fmt;
+use std::time::{Duration, Instant};
+
+use bytes::Bytes;
+use fleetlink_proto::frame::{Frame, Level, VERSION, status_code};
+use fleetlink_proto::reassembly::ReassemblyError;
+
+use super::{Control, HEARTBEAT_ID_BASE, LinkError, LinkEvent, LinkIn};
+use crate::calls::PeerMsg;
+use crate::gate::{AllowAll, Gate};
+use crate::link_calls::{LinkCalls, is_call_frame};
+
+/// Which end of the link this is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// Accepts `HELLO`, answers `WELCOME`, acknowledges what it receives.
+    Hub,
+    /// Sends `HELLO`, waits for `WELCOME`.
+    Agent,
+}
+
+impl Role {
+    /// What the other end is called in messages.
+    fn peer(self) -> &'static str {
+        match self {
+            Role::Hub => "robot",
+            Role::Agent => "hub",
+        }
+    }
+}
+
+/// Reads the wall clock (nanoseconds since the Unix epoch) at a monotonic instant, for
+/// the stamps of `PING`/`PONG`. The system clock in production; tests extrapolate from a
+/// fixed base so that a run is repeatable.
+pub type WallClock = Box<dyn Fn(Instant) -> u64 + Send>;
+
+/// The system's wall clock, read when asked (the instant is not used).
+pub fn system_wall_clock() -> WallClock {
+    Box::new(|_| crate::unix_nanos())
+}
+
+/// Builds the session's call state once it is open, from the namespace the hub gave the
+/// robot (the agent's names depend on it).
+pub type CallsFactory = Box<dyn FnOnce(&str) -> LinkCalls + Send>;
+
+/// Most pong answers kept while the writer is backed up (the oldest go first).
+const MAX_PONGS: usize = 8;
+/// Most error reports to the peer waiting to be sent; more are counted and not sent.
+const MAX_STATUSES: usize = 64;
+/// The driver feeds call-table news in only while fewer frames than this wait.
+pub const PEER_EVENT_ROOM: usize = 64;
+
+/// Why a session ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CloseReason {
+    /// Nothing arrived from the peer for `after`: the link is taken to be dead.
+    Silent { after: Duration },
+    /// The handshake did not complete in time; `waiting_for` names the frame.
+    HandshakeTimeout {
+        waiting_for: &'static str,
+        after: Duration,
+    },
+    /// The peer closed the WebSocket (or the stream ended); the detail, if any.
+    PeerClosed(String),
+    /// Reading the socket failed.
+    ReadError(String),
+    /// Refused during the handshake: by the hub (this text was sent to the agent), or,
+    /// on the agent, the hub's refusal as it came.
+    Refused(String),
+    /// The peer broke the protocol in a way the session cannot go on from.
+    Protocol(String),
+    /// Ended from this side (shutdown, a newer connection of the same robot).
+    Local(String),
+}
+
+impl CloseReason {
+    /// Whether the hub refused the connection during the handshake.
+    pub fn is_refusal(&self) -> bool {
+        matches!(self, CloseReason::Refused(_))
+    }
+}
+
+impl fmt::Display for CloseReason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CloseReason::Silent { after } => write!(
+                f,
+                "no bytes received for {} ms: link declared dead",
+                after.as_millis()
+            ),
+            CloseReason::HandshakeTimeout { waiting_for, after } => {
+                write!(f, "no {waiting_for} within {} s", after.as_secs())
+            }
+            CloseReason::PeerClosed(d) if d.is_empty() => write!(f, "the connection was closed"),
+            CloseReason::PeerClosed(d) => write!(f, "the connection was closed: {d}"),
+            CloseReason::ReadError(e) => write!(f, "link error: {e}"),
+            CloseReason::Refused(t) | CloseReason::Protocol(t) | CloseReason::Local(t) => {
+                f.write_str(t)
+            }
+        }
+    }
+}
+
+/// What the session tells its driver.
+#[derive(Debug)]
+pub enum Event {
+    /// Hub: the agent's `HELLO`, checked for the protocol version. Authenticate it, then
+    /// [`LinkSession::accept`] or [`LinkSession::refuse`].
+    Hello {
+        robot: String,
+        token: String,
+        /// The heartbeat the agent asks for (0 = the hub's default).
+        heartbeat_ms: u32,
+        outbox_epoch: u64,
+    },
+    /// The session is open: the agent got `WELCOME`, or the hub accepted.
+    Opened {
+        session: String,
+        namespace: String,
+        heartbeat: Duration,
+    },
+    /// A topic event or a control frame for the driver to act on (`SUBSCRIBE`, `ACK`,
+    /// `DELIVERED`, `SHARE`, `LINK_REPORT`, a peer's `STATUS`, ...).
+    Link(LinkEvent),
+    /// The answer to one of our pings: `id`, the peer's clock when it answered, and the
+    /// round trip.
+    Pong {
+        id: u64,
+        responder_ns: u64,
+        rtt: Duration,
+        /// Our clock minus the peer's, estimated from this exchange.
+        offset_ns: i64,
+    },
+    /// Time for the driver's periodic report (the agent's `LINK_REPORT`).
+    ReportDue,
+    /// The session ended; nothing more comes from it.
+    Closed(CloseReason),
+}
+
+/// Settings of a session.
+pub struct SessionConfig {
+    pub role: Role,
+    /// The agent: the heartbeat it asks for. The hub: the heartbeat until it accepts.
+    pub heartbeat: Duration,
+    /// How long the handshake may take from the session's start.
+    pub handshake_timeout: Duration,
+    /// How often [`Event::ReportDue`] comes once open; `None` for never.
+    pub report_every: Option<Duration>,
+    pub wall: WallClock,
+}
+
+/// What the agent says in `HELLO`.
+pub struct AgentHello {
+    pub robot: String,
+    pub token: String,
+    pub outbox_epoch: u64,
+}
+
+/// The hub's answer to a `HELLO` it accepts.
+pub struct Accept {
+    pub session: String,
+    pub namespace: String,
+    pub heartbeat: Duration,
+    /// What the robot may do, for its calls and services.
+    pub gate: Box<dyn Gate>,
+    pub calls: CallsFactory,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Phase {
+    /// Hub: waiting for `HELLO` until the deadline.
+    AwaitHello(Instant),
+    /// Hub: `HELLO` came; the driver is authenticating it.
+    Authenticating(Instant),
+    /// Agent: `HELLO` sent, waiting for `WELCOME`.
+    AwaitWelcome(Instant),
+    Open,
+    Closed,
+}
+
+/// Frames waiting to be sent, with the kinds that only ever matter in sum or as the
+/// newest kept apart (see the module docs).
+#[derive(Default)]
+struct Transmit {
+    pongs: VecDeque<Frame>,
+    ack: Option<(u32, u64)>,
+    delivered: BTreeMap<u32, u64>,
+    frames: VecDeque<Control>,
+    statuses: usize,
+}
+
+/// Counters of one session.
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct SessionStats {
+    /// WebSocket messages with a frame that did not decode.
+    pub malformed: u64,
+    /// Error reports to the peer not sent because too many were waiting.
+    pub statuses_dropped: u64,
+    /// Pong answers dropped because the writer was backed up.
+    pub pongs_dropped: u64,
+}
+
+/// One end of a `fleetlink.v1` link (see the module docs).
+pub struct LinkSession {
+    role: Role,
+    phase: Phase,
+    heartbeat: Duration,
+    handshake_timeout: Duration,
+    /// When the last bytes from the peer arrived: the only input of liveness.
+    last_rx: Instant,
+    next_ping: Instant,
+    ping_id: u64,
+    report_every: Option<Duration>,
+    next_report: Option<Instant>,
+    link: LinkIn,
+    gate: Box<dyn Gate>,
+    calls: Option<LinkCalls>,
+    calls_factory: Option<CallsFactory>,
+    tx: Transmit,
+    events: VecDeque<Event>,
+    wall: WallClock,
+    stats: SessionStats,
+}
+
+impl LinkSession {
+    fn new(cfg: SessionConfig, phase: Phase, now: Instant) -> LinkSession {
+        LinkSession {
+            role: cfg.role,
+            phase,
+            heartbeat: cfg.heartbeat,
+            handshake_timeout: cfg.handshake_timeout,
+            last_rx: now,
+            next_ping: now + cfg.heartbeat,
+            ping_id: HEARTBEAT_ID_BASE,
+            report_every: cfg.report_every,
+            next_report: None,
+            link: LinkIn::default(),
+            gate: Box::new(AllowAll),
+            calls: None,
+            calls_factory: None,
+            tx: Transmit::default(),
+            events: VecDeque::new(),
+            wall: cfg.wall,
+            stats: SessionStats::default(),
+        }
+    }
+
+    /// The hub's end of a new connection: waits for `HELLO`.
+    pub fn hub(cfg: SessionConfig, now: Instant) -> LinkSession {
+        let deadline = now + cfg.handshake_timeout;
+        LinkSession::new(
+            SessionConfig {
+                role: Role::Hub,
+                ..cfg
+            },
+            Phase::AwaitHello(deadline),
+            now,
+        )
+    }
+
+    /// The agent's end of a new connection: `HELLO` is the first thing to send.
+    pub fn agent(
+        cfg: SessionConfig,
+        hello: AgentHello,
+        calls: CallsFactory,
+        now: Instant,
+    ) -> LinkSession {
+        let deadline = now + cfg.handshake_timeout;
+        let heartbeat_ms = cfg.heartbeat.as_millis().min(u32::MAX as u128) as u32;
+        let mut s = LinkSession::new(
+            SessionConfig {
+                role: Role::Agent,
+                ..cfg
+            },
+            Phase::AwaitWelcome(deadline),
+            now,
+        );
+        s.calls_factory = Some(calls);
+        s.push(Control::Frame(Frame::Hello {
+            version: VERSION,
+            robot: hello.robot,
+            token: hello.token,
+            heartbeat_ms,
+            outbox_epoch: hello.outbox_epoch,
+        }));
+        s
+    }
+
+    pub fn role(&self) -> Role {
+        self.role
+    }
+
+    pub fn is_open(&self) -> bool {
+        self.phase == Phase::Open
+    }
+
+    pub fn is_closed(&self) -> bool {
+        self.phase == Phase::Closed
+    }
+
+    pub fn heartbeat(&self) -> Duration {
+        self.heartbeat
+    }
+
+    /// How long the peer may be silent before the link is declared dead.
+    pub fn dead_after(&self) -> Duration {
+        self.heartbeat * 2
+    }
+
+    pub fn stats(&self) -> SessionStats {
+        self.stats
+    }
+
+    /// The gate the session checks calls with (the driver checks topics with it too).
+    pub fn gate(&mut self) -> &mut dyn Gate {
+        &mut *self.gate
+    }
+
+    /// The peer's topic aliases.
+    pub fn link_in(&self) -> &LinkIn {
+        &self.link
+    }
+
+    /// Calls in flight across this link: (served for the peer, forwarded to it).
+    pub fn calls_in_flight(&self) -> (usize, usize) {
+        self.calls.as_ref().map_or((0, 0), LinkCalls::in_flight)
+    }
+
+    // --- input: what the socket read
+
+    /// One binary WebSocket message from the peer.
+    pub fn handle_binary(&mut self, data: &Bytes, now: Instant) {
+        self.received(now);
+        match self.phase {
+            Phase::Closed | Phase::Authenticating(_) => {}
+            Phase::AwaitHello(_) => self.on_hello_message(data, now),
+            Phase::AwaitWelcome(_) | Phase::Open => {
+                for f in fleetlink_proto::frame::frames(data) {
+                    match f {
+                        Ok(f) => self.on_frame(f, now),
+                        Err(e) => {
+                            self.stats.malformed += 1;
+                            let text = format!(
+                                "malformed frame: {e}; the rest of this WebSocket message is \
+                                 dropped"
+                            );
+                            tracing::warn!("from the {}: {text}", self.role.peer());
+                            self.status(Level::Error, status_code::MALFORMED, text);
+                            break;
+                        }
+                    }
+                    if self.phase == Phase::Closed {
+                        return;
+                    }
+                }
+                if self.role == Role::Hub
+                    && let Some(Frame::Ack { frames, bytes }) = self.link.take_ack()
+                {
+                    let (f, b) = self.tx.ack.get_or_insert((0, 0));
+                    *f = f.saturating_add(frames);
+                    *b = b.saturating_add(bytes);
+                }
+            }
+        }
+    }
+
+    /// A text WebSocket message: `fleetlink.v1` has none.
+    pub fn handle_text(&mut self, now: Instant) {
+        self.received(now);
+        match self.phase {
+            Phase::AwaitHello(_) => self.refuse("expected a binary HELLO frame".into()),
+            Phase::Open | Phase::AwaitWelcome(_) => self.status(
+                Level::Error,
+                status_code::MALFORMED,
+                "fleetlink.v1 carries binary frames only; a text message was dropped".into(),
+            ),
+            Phase::Authenticating(_) | Phase::Closed => {}
+        }
+    }
+
+    /// A WebSocket ping or pong from the peer: bytes, so the peer is alive.
+    pub fn handle_activity(&mut self, now: Instant) {
+        self.received(now);
+    }
+
+    /// The peer closed the WebSocket (`detail`: its close frame, if any).
+    pub fn handle_close(&mut self, detail: String) {
+        self.close(CloseReason::PeerClosed(detail));
+    }
+
+    /// Reading the socket failed.
+    pub fn handle_read_error(&mut self, error: String) {
+        self.close(CloseReason::ReadError(error));
+    }
+
+    fn received(&mut self, now: Instant) {
+        if now > self.last_rx {
+            self.last_rx = now;
+        }
+    }
+
+    // --- input: from this side
+
+    /// News from the call table for this link end: calls to forward, answers to send,
+    /// services coming and going. Does not move liveness. After the session closed, a
+    /// call still handed in fails at once with the reason the link was lost (the driver
+    /// drains the table's queue this way).
+    pub fn handle_peer_event(&mut self, msg: PeerMsg) {
+        let Some(calls) = self.calls.as_mut() else {
+            return;
+        };
+        let mut out = Vec::new();
+        calls.on_peer(msg, &mut *self.gate, &mut out);
+        for c in out {
+            self.push(c);
+        }
+    }
+
+    /// Whether the driver should feed in call-table news now (see the module docs).
+    pub fn wants_peer_events(&self) -> bool {
+        self.phase == Phase::Open && self.tx.frames.len() < PEER_EVENT_ROOM
+    }
+
+    /// Queues a frame the driver originates (subscriptions, reports, shares). Ignored
+    /// unless the session is open.
+    pub fn send(&mut self, frame: Frame) {
+        if self.phase == Phase::Open {
+            self.push(Control::Frame(frame));
+        }
+    }
+
+    /// Queues an error report for the peer (capped; see the module docs).
+    pub fn status(&mut self, level: Level, code: u32, text: String) {
+        if self.phase == Phase::Closed {
+            return;
+        }
+        if self.tx.statuses >= MAX_STATUSES {
+            self.stats.statuses_dropped += 1;
+            return;
+        }
+        self.tx.statuses += 1;
+        self.tx.frames.push_back(Control::Frame(Frame::Status {
+            level,
+            code,
+            alias: 0,
+            text,
+        }));
+    }
+
+    /// Confirms to the agent that `alias` is delivered (and recorded) up to `seq`.
+    pub fn delivered(&mut self, alias: u32, seq: u64) {
+        if self.phase != Phase::Open {
+            return;
+        }
+        let s = self.tx.delivered.entry(alias).or_default();
+        *s = (*s).max(seq);
+    }
+
+    /// Hub: accepts the `HELLO` it reported; `WELCOME` goes out and the session is open.
+    pub fn accept(&mut self, accept: Accept, now: Instant) {
+        if !matches!(self.phase, Phase::Authenticating(_)) {
+            return;
+        }
+        self.gate = accept.gate;
+        self.push(Control::Frame(Frame::Welcome {
+            session: accept.session.clone(),
+            namespace: accept.namespace.clone(),
+            hub_time_ns: (self.wall)(now),
+            heartbeat_ms: accept.heartbeat.as_millis().min(u32::MAX as u128) as u32,
+        }));
+        self.open(
+            accept.session,
+            accept.namespace,
+            accept.heartbeat,
+            accept.calls,
+            now,
+        );
+    }
+
+    /// Hub: refuses the connection; the reason goes to the agent in a `STATUS`, then the
+    /// session ends.
+    pub fn refuse(&mut self, reason: String) {
+        if self.phase == Phase::Closed {
+            return;
+        }
+        self.tx.frames.clear();
+        self.tx.statuses = 1;
+        self.push(Control::Frame(Frame::Status {
+            level: Level::Error,
+            code: status_code::UNAUTHORIZED,
+            alias: 0,
+            text: reason.clone(),
+        }));
+        self.close(CloseReason::Refused(reason));
+    }
+
+    /// Ends the session. Calls forwarded over the link fail at once, saying the link was
+    /// lost and why; the peer's services are withdrawn here. Idempotent.
+    pub fn close(&mut self, reason: CloseReason) {
+        if self.phase == Phase::Closed {
+            return;
+        }
+        self.phase = Phase::Closed;
+        if let Some(calls) = self.calls.as_mut() {
+            let text = format!("{} link lost: {reason}", self.role.peer());
+            calls.close(&text);
+        }
+        self.events.push_back(Event::Closed(reason));
+    }
+
+    // --- time
+
+    /// When [`LinkSession::handle_timeout`] must be called next; `None` once closed.
+    pub fn poll_timeout(&self) -> Option<Instant> {
+        match self.phase {
+            Phase::AwaitHello(d) | Phase::Authenticating(d) | Phase::AwaitWelcome(d) => Some(d),
+            Phase::Open => {
+                let mut t = (self.last_rx + self.dead_after()).min(self.next_ping);
+                if let Some(r) = self.next_report {
+                    t = t.min(r);
+                }
+                Some(t)
+            }
+            Phase::Closed => None,
+        }
+    }
+
+    /// Acts on every timer due at `now`: the handshake deadline, liveness, the heartbeat
+    /// ping, the periodic report.
+    pub fn handle_timeout(&mut self, now: Instant) {
+        match self.phase {
+            Phase::AwaitHello(d) | Phase::Authenticating(d) if now >= d => {
+                self.close(CloseReason::HandshakeTimeout {
+                    waiting_for: "HELLO",
+                    after: self.handshake_timeout,
+                });
+            }
+            Phase::AwaitWelcome(d) if now >= d => {
+                self.close(CloseReason::HandshakeTimeout {
+                    waiting_for: "WELCOME",
+                    after: self.handshake_timeout,
+                });
+            }
+            Phase::Open => {
+                let silent = now.saturating_duration_since(self.last_rx);
+                if silent >= self.dead_after() {
+                    tracing::warn!(
+                        "no bytes from the {} for {} ms; declaring the link dead",
+                        self.role.peer(),
+                        silent.as_millis()
+                    );
+                    self.close(CloseReason::Silent { after: silent });
+                    return;
+                }
+                if now >= self.next_ping {
+                    self.ping_id += 1;
+                    let ping = Frame::Ping {
+                        id: self.ping_id,
+                        sent_ns: (self.wall)(now),
+                    };
+                    self.push(Control::Frame(ping));
+                    self.next_ping = now + self.heartbeat;
+                }
+                if let (Some(at), Some(every)) = (self.next_report, self.report_every)
+                    && now >= at
+                {
+                    self.events.push_back(Event::ReportDue);
+                    self.next_report = Some(now + every);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    // --- output
+
+    /// The next frame to send, if any: pongs and acknowledgements first (a peer measures
+    /// its link with them), then delivery confirmations, then everything else in order.
+    pub fn poll_transmit(&mut self) -> Option<Control> {
+        if let Some(p) = self.tx.pongs.pop_front() {
+            return Some(Control::Frame(p));
+        }
+        if let Some((frames, bytes)) = self.tx.ack.take() {
+            return Some(Control::Frame(Frame::Ack { frames, bytes }));
+        }
+        if let Some((alias, seq)) = self.tx.delivered.pop_first() {
+            return Some(Control::Frame(Frame::Delivered { alias, seq }));
+        }
+        let c = self.tx.frames.pop_front()?;
+        if let Control::Frame(Frame::Status { .. }) = c {
+            self.tx.statuses -= 1;
+        }
+        Some(c)
+    }
+
+    /// Whether anything waits to be sent.
+    pub fn has_transmit(&self) -> bool {
+        !self.tx.pongs.is_empty()
+            || self.tx.ack.is_some()
+            || !self.tx.delivered.is_empty()
+            || !self.tx.frames.is_empty()
+    }
+
+    pub fn poll_event(&mut self) -> Option<Event> {
+        self.events.pop_front()
+    }
+
+    // --- inside
+
+    fn push(&mut self, c: Control) {
+        self.tx.frames.push_back(c);
+    }
+
+    fn open(
+        &mut self,
+        session: String,
+        namespace: String,
+        heartbeat: Duration,
+        calls: CallsFactory,
+        now: Instant,
+    ) {
+        self.phase = Phase::Open;
+        self.heartbeat = heartbeat;
+        // The peer cannot have been silent before there was a session to be silent in.
+        self.last_rx = self.last_rx.max(now);
+        self.next_ping = now + heartbeat;
+        self.next_report = self.report_every.map(|e| now + e);
+        self.calls = Some(calls(&namespace));
+        self.events.push_back(Event::Opened {
+            session,
+            namespace,
+            heartbeat,
+        });
+    }
+
+    /// Hub, waiting for `HELLO`: it must be the message's first frame.
+    fn on_hello_message(&mut self, data: &Bytes, now: Instant) {
+        let first = fleetlink_proto::frame::frames(data).next();
+        match first {
+            Some(Ok(Frame::Hello {
+                version,
+                robot,
+                token,
+                heartbeat_ms,
+                outbox_epoch,
+            })) => {
+                if version != VERSION {
+                    return self.refuse(format!(
+                        "unsupported protocol version {version}; this hub speaks {VERSION}"
+                    ));
+                }
+                let Phase::AwaitHello(deadline) = self.phase else {
+                    return;
+                };
+                self.phase = Phase::Authenticating(deadline);
+                self.last_rx = now;
+                self.events.push_back(Event::Hello {
+                    robot,
+                    token,
+                    heartbeat_ms,
+                    outbox_epoch,
+                });
+            }
+            Some(Err(e)) => self.refuse(format!("malformed HELLO: {e}")),
+            Some(Ok(_)) | None => self.refuse("the first frame must be HELLO".into()),
+        }
+    }
+
+    fn on_frame(&mut self, f: Frame, now: Instant) {
+        if self.phase != Phase::Open {
+            // Agent, before WELCOME: the answer to HELLO or a refusal; nothing else counts.
+            match f {
+                Frame::Welcome {
+                    session,
+                    namespace,
+                    heartbeat_ms,
+                    ..
+                } => {
+                    let heartbeat = Duration::from_millis(u64::from(heartbeat_ms.max(10)));
+                    let calls = self.calls_factory.take().unwrap_or_else(|| {
+                        unreachable!("an agent session is made with its calls factory")
+                    });
+                    self.open(session, namespace, heartbeat, calls, now);
+                }
+                Frame::Status { text, .. } => self.close(CloseReason::Refused(text)),
+                _ => {}
+            }
+            return;
+        }
+        if is_call_frame(&f) {
+            if let Some(calls) = self.calls.as_mut() {
+                let mut out = Vec::new();
+                calls.on_frame(f, &mut *self.gate, &mut out);
+                for c in out {
+                    self.push(c);
+                }
+            }
+            return;
+        }
+        match f {
+            Frame::Ping { id, sent_ns } => {
+                if self.tx.pongs.len() == MAX_PONGS {
+                    self.tx.pongs.pop_front();
+                    self.stats.pongs_dropped += 1;
+                }
+                self.tx.pongs.push_back(Frame::Pong {
+                    id,
+                    echo_ns: sent_ns,
+                    responder_ns: (self.wall)(now),
+                });
+            }
+            Frame::Pong {
+                id,
+                echo_ns,
+                responder_ns,
+            } => {
+                let at = (self.wall)(now);
+                let rtt = at.saturating_sub(echo_ns);
+                // The peer read its clock about half a round trip after we sent.
+                let offset = (echo_ns as i128 + rtt as i128 / 2 - responder_ns as i128)
+                    .clamp(i64::MIN as i128, i64::MAX as i128) as i64;
+                self.events.push_back(Event::Pong {
+                    id,
+                    responder_ns,
+                    rtt: Duration::from_nanos(rtt),
+                    offset_ns: offset,
+                });
+            }
+            // A second handshake frame means nothing on an open link.
+            Frame::Hello { .. } | Frame::Welcome { .. } => {}
+            other => match self.link.on_frame(other) {
+                Ok(LinkEvent::None) => {}
+                Ok(ev) => self.events.push_back(Event::Link(ev)),
+                Err(e) => {
+                    // The frame is lost, not the link.
+                    let code = match &e {
+                        LinkError::UnknownAlias(_) => status_code::UNKNOWN_ALIAS,
+                        LinkError::Reassembly(ReassemblyError::OutOfOrder { .. }) => {
+                            status_code::CHUNK_ORDER
+                        }
+                        LinkError::Reassembly(_) => status_code::TOO_LARGE,
+                    };
+                    let text = e.to_string();
+                    tracing::debug!("from the {}: {text}", self.role.peer());
+                    self.status(Level::Warning, code, text);
+                }
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+#[path = "session_tests.rs"]
+mod tests;

@@ -1,0 +1,442 @@
+//! The writer of a `fleetlink.v1` link: an outbox and the session's frames onto the
+//! socket, large messages cut into chunks that take turns, within the window a scheduled
+//! outbox allows.
+
+use std::collections::{HashMap, VecDeque};
+use std::sync::Arc;
+use std::time::Instant;
+
+use bytes::{Bytes, BytesMut};
+use fleetlink_proto::Encoding;
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_RELIABLE, DEFAULT_CHUNK_SIZE, Frame};
+use futures_util::{Sink, SinkExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+
+use super::{Control, LinkNamer};
+use crate::message::{Message, TopicMeta};
+use crate::names::TopicId;
+use crate::outbox::Outbox;
+
+/// Most bulk bytes one round of a scheduled outbox's writer puts out before it looks at
+/// its queue and control frames again (its window usually stops it well before).
+const MAX_ROUND_BYTES: usize = 1 << 20;
+/// How often an idle writer looks whether an estimator probe is due.
+const PROBE_TICK: std::time::Duration = std::time::Duration::from_millis(50);
+
+/// A large message being sent one chunk per round, and messages of the same topic
+/// waiting behind it.
+struct Lane {
+    topic: TopicId,
+    msg: Arc<Message>,
+    /// The message's cached frames, on links whose outbox does not size chunks (the
+    /// hub's: the same frames serve every link), and the next one to send.
+    cached: Option<Arc<[Bytes]>>,
+    next: usize,
+    /// Payload bytes sent so far, when chunks are cut for this link as they go.
+    offset: usize,
+    waiting: VecDeque<Arc<Message>>,
+}
+
+impl Lane {
+    fn start(topic: TopicId, msg: Arc<Message>, sized: bool) -> Lane {
+        Lane {
+            topic,
+            cached: (!sized).then(|| msg.link_frames()),
+            msg,
+            next: 0,
+            offset: 0,
+            waiting: VecDeque::new(),
+        }
+    }
+
+    /// Marks the message as sent without sending it (its topic is not carried here).
+    fn skip(&mut self) {
+        self.next = usize::MAX / 2;
+        self.offset = self.msg.payload.len();
+    }
+
+    fn is_done(&self) -> bool {
+        match &self.cached {
+            Some(frames) => self.next >= frames.len(),
+            None => self.offset >= self.msg.payload.len() && self.next > 0,
+        }
+    }
+
+    /// The next frame and the payload bytes it carries (what the peer's `ACK.bytes`
+    /// counts). `chunk` is the link's chunk size now, for a lane that cuts its own.
+    fn next_frame(&mut self, chunk: usize) -> (Bytes, usize) {
+        let total = self.msg.payload.len();
+        if let Some(frames) = &self.cached {
+            let i = self.next;
+            self.next += 1;
+            let n = if frames.len() == 1 {
+                total
+            } else {
+                total
+                    .saturating_sub(i * DEFAULT_CHUNK_SIZE)
+                    .min(DEFAULT_CHUNK_SIZE)
+            };
+            return (frames[i].clone(), n);
+        }
+        self.next += 1;
+        let m = &self.msg;
+        let end = (self.offset + chunk.max(1)).min(total);
+        let data = &m.payload.bytes[self.offset..end];
+        let mut b = BytesMut::with_capacity(data.len() + 40);
+        fleetlink_proto::frame::encode_chunk(
+            &mut b,
+            m.topic.id.0,
+            m.seq,
+            m.stamp_ns,
+            total as u64,
+            self.offset as u64,
+            data,
+        );
+        self.offset = end;
+        (b.freeze(), data.len())
+    }
+}
+
+/// `ADVERTISE` flags of a topic on this link: reliable (the outbox's no-drop streams) and
+/// latched (the topic's own).
+fn advertise_flags(outbox: &Outbox, meta: &TopicMeta) -> u8 {
+    let latched = if meta.latched { ADVERTISE_LATCHED } else { 0 };
+    outbox.advertise_flags(meta.id.0) | latched
+}
+
+/// Writes `outbox` and `control` (the session's frames) onto the link until either side
+/// closes. `announce_first` topics are advertised before anything else; `gate`, if any,
+/// must allow each message's topic for it to be sent. A scheduled outbox's estimator
+/// probes (`PING`s below [`super::HEARTBEAT_ID_BASE`]) go out from here; the heartbeat is
+/// the session's.
+///
+/// Small messages go out as soon as they are taken. A larger one (a payload over the
+/// link's chunk size: 16 KiB, or less on a slow uplink) gets a lane and goes out a chunk
+/// per round, each chunk only when the outbox allows bulk data now (see
+/// [`crate::link_control`]); its topic is held in the scheduler until the lane is done, so
+/// the next large message of that topic is chosen by the topic's drop policy when the link
+/// can take it.
+pub async fn write_link<K>(
+    mut sink: K,
+    outbox: Arc<Outbox>,
+    mut control: mpsc::Receiver<Control>,
+    namer: LinkNamer,
+    announce_first: Vec<(Arc<TopicMeta>, Encoding)>,
+    mut gate: Option<Box<dyn crate::gate::Gate>>,
+) where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    let mut advertised: HashMap<TopicId, Encoding> = HashMap::new();
+    let mut buf = BytesMut::new();
+    // Topics the peer should know before any message flows (e.g. after a reconnect).
+    for (meta, enc) in announce_first {
+        if let Some(name) = namer(&meta) {
+            Frame::Advertise {
+                alias: meta.id.0,
+                topic: name,
+                schema: meta.schema.clone(),
+                encoding: enc,
+                flags: advertise_flags(&outbox, &meta),
+            }
+            .encode(&mut buf);
+            advertised.insert(meta.id, enc);
+        }
+    }
+    let mut lanes: Vec<Lane> = Vec::new();
+    // Topics to unadvertise once nothing of theirs is queued or in a lane, with when
+    // they were last seen without a publisher.
+    let mut unadvertise: Vec<(TopicId, Instant)> = Vec::new();
+    // Large call bodies in progress, a frame of each per round.
+    let mut sequences: VecDeque<VecDeque<Frame>> = VecDeque::new();
+    // Small frames are packed into one WebSocket message up to this size.
+    const PACK: usize = 64 * 1024;
+    // The outbox batch, kept across rounds so a busy writer does not allocate one per round.
+    let mut items: Vec<crate::outbox::Taken> = Vec::new();
+    loop {
+        // 1. Control frames first: they are small and often answers the peer waits for.
+        loop {
+            match control.try_recv() {
+                Ok(Control::Frame(f)) => f.encode(&mut buf),
+                Ok(Control::Sequence(s)) => sequences.push_back(s),
+                Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
+                Ok(Control::Pong(p)) => {
+                    if pong(&mut sink, &mut buf, p).await.is_err() {
+                        return;
+                    }
+                }
+                Ok(Control::Close(frame)) => return finish(&mut sink, &mut buf, frame).await,
+                Err(mpsc::error::TryRecvError::Disconnected) => {
+                    return finish(&mut sink, &mut buf, None).await;
+                }
+                Err(mpsc::error::TryRecvError::Empty) => break,
+            }
+        }
+        // Echo probes of a scheduled outbox's link estimator.
+        if let Some(id) = outbox.poll_probe(Instant::now()) {
+            Frame::Ping {
+                id,
+                sent_ns: crate::unix_nanos(),
+            }
+            .encode(&mut buf);
+        }
+        // Then a frame of every large call body in progress.
+        for seq in sequences.iter_mut() {
+            if let Some(f) = seq.pop_front() {
+                f.encode(&mut buf);
+            }
+        }
+        sequences.retain(|s| !s.is_empty());
+        // 2. Chunks from the lanes in progress, a chunk from each in turn, while the
+        // link's window allows. A plain outbox's lanes take one turn per round, so small
+        // messages queued meanwhile go out between chunks. A scheduled outbox's window
+        // already bounds what a round may write (about `QUEUE_TARGET` of link time), so
+        // its lanes take turns until the window is full and the round ends in one flush:
+        // a fast link is not driven one chunk per system call.
+        let mut gated: Option<Option<Instant>> = None;
+        let mut round_bytes = 0usize;
+        'turns: loop {
+            let mut wrote = false;
+            let mut i = 0;
+            while i < lanes.len() {
+                if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
+                    return;
+                }
+                let lane = &mut lanes[i];
+                if !lane.is_done() {
+                    let now = Instant::now();
+                    if let Err(wake) = outbox.bulk_check(now) {
+                        gated = Some(wake);
+                        break 'turns;
+                    }
+                    let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
+                    let (f, n) = lane.next_frame(chunk);
+                    if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
+                        return;
+                    }
+                    outbox.on_written(n);
+                    round_bytes += f.len();
+                    wrote = true;
+                }
+                if lane.is_done() {
+                    // Done: start the next waiting message of the same topic, if any.
+                    match lane.waiting.pop_front() {
+                        Some(m) => {
+                            let (topic, sized) = (lane.topic, lane.cached.is_none());
+                            let waiting = std::mem::take(&mut lane.waiting);
+                            let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
+                            *lane = Lane {
+                                waiting,
+                                ..Lane::start(topic, m, sized)
+                            };
+                            if !carried {
+                                lane.skip();
+                            }
+                        }
+                        None => {
+                            outbox.hold(lane.topic.0, false, Instant::now());
+                            lanes.swap_remove(i);
+                            continue;
+                        }
+                    }
+                }
+                i += 1;
+            }
+            if !wrote || !outbox.is_scheduled() || round_bytes >= MAX_ROUND_BYTES {
+                break;
+            }
+        }
+        // 3. A batch from the outbox.
+        outbox.take_into(&mut items, 512, 4 << 20, Instant::now());
+        let took = items.len();
+        for (_, _, msg) in items.drain(..) {
+            // Checked on delivery, so a rule change reaches live subscriptions.
+            if let Some(g) = gate.as_mut()
+                && !g.allows(msg.topic.name.as_str(), crate::gate::Op::Subscribe)
+            {
+                continue;
+            }
+            let tid = msg.topic.id;
+            if !unadvertise.is_empty() {
+                // Published again since it was seen without a publisher: keep it.
+                unadvertise.retain(|(t, since)| *t != tid || msg.received() <= *since);
+            }
+            if let Some(lane) = lanes.iter_mut().find(|l| l.topic == tid) {
+                lane.waiting.push_back(msg);
+                continue;
+            }
+            if !announce(&mut buf, &mut advertised, &msg, &namer, &outbox) {
+                continue;
+            }
+            // Per message on the hub's fan-out path: these calls read no clock and take no
+            // lock unless the outbox is the agent's scheduled uplink.
+            let sized = outbox.chunk_size();
+            if msg.payload.len() <= sized.unwrap_or(DEFAULT_CHUNK_SIZE) {
+                // One MESSAGE frame (payloads up to DEFAULT_CHUNK_SIZE are never chunked).
+                let frames = msg.link_frames();
+                if send_large(&mut sink, &mut buf, &frames[0], PACK)
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+                outbox.on_written(msg.payload.len());
+            } else {
+                outbox.hold(tid.0, true, Instant::now());
+                lanes.push(Lane::start(tid, msg, sized.is_some()));
+            }
+        }
+        // 4. Topics whose publishers are gone, after their last message.
+        if !unadvertise.is_empty() {
+            unadvertise.retain(|(t, _)| {
+                if !advertised.contains_key(t)
+                    || outbox.advertise_flags(t.0) & ADVERTISE_RELIABLE != 0
+                {
+                    return false; // never announced here, or a no-drop stream
+                }
+                if lanes.iter().any(|l| l.topic == *t) || outbox.queued_for(t.0) > 0 {
+                    return true; // its messages first
+                }
+                Frame::Unadvertise { alias: t.0 }.encode(&mut buf);
+                advertised.remove(t);
+                false
+            });
+        }
+        if flush_buf(&mut sink, &mut buf).await.is_err() || sink.flush().await.is_err() {
+            return;
+        }
+        if took > 0 || !sequences.is_empty() || (!lanes.is_empty() && gated.is_none()) {
+            continue;
+        }
+        if outbox.is_closed() {
+            let _ = sink.close().await;
+            return;
+        }
+        // A scheduled outbox looks for a due probe now and then; a plain one (the hub's)
+        // sleeps until there is something to write.
+        let mut wake = outbox
+            .is_scheduled()
+            .then(|| tokio::time::Instant::now() + PROBE_TICK);
+        if let Some(Some(at)) = gated {
+            let at = tokio::time::Instant::from_std(at);
+            wake = Some(wake.map_or(at, |w| w.min(at)));
+        }
+        tokio::select! {
+            c = control.recv() => match c {
+                Some(Control::Frame(f)) => f.encode(&mut buf),
+                Some(Control::Sequence(s)) => sequences.push_back(s),
+                Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
+                Some(Control::Pong(p)) => {
+                    if pong(&mut sink, &mut buf, p).await.is_err() {
+                        return;
+                    }
+                }
+                Some(Control::Close(frame)) => return finish(&mut sink, &mut buf, frame).await,
+                None => return finish(&mut sink, &mut buf, None).await,
+            },
+            _ = outbox.ready() => {}
+            _ = sleep_until(wake) => {}
+        }
+    }
+}
+
+/// Sleeps until `at`, or forever.
+async fn sleep_until(at: Option<tokio::time::Instant>) {
+    match at {
+        Some(at) => tokio::time::sleep_until(at).await,
+        None => std::future::pending().await,
+    }
+}
+
+/// Sends a WebSocket pong after what is packed.
+async fn pong<K>(sink: &mut K, buf: &mut BytesMut, payload: Bytes) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    flush_buf(sink, buf).await?;
+    sink.feed(WsMessage::Pong(payload)).await
+}
+
+/// Flushes what is packed, then closes the WebSocket (with `frame`, if any).
+async fn finish<K>(sink: &mut K, buf: &mut BytesMut, frame: Option<CloseFrame>)
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if flush_buf(sink, buf).await.is_err() {
+        return;
+    }
+    if frame.is_some() {
+        let _ = sink.send(WsMessage::Close(frame)).await;
+    }
+    let _ = sink.close().await;
+}
+
+/// Sends `ADVERTISE` for the message's topic the first time (or when its encoding
+/// changes). Returns false when the topic is not carried on this link.
+fn announce(
+    buf: &mut BytesMut,
+    advertised: &mut HashMap<TopicId, Encoding>,
+    msg: &Message,
+    namer: &LinkNamer,
+    outbox: &Outbox,
+) -> bool {
+    let enc = msg.payload.encoding;
+    if advertised.get(&msg.topic.id) == Some(&enc) {
+        return true;
+    }
+    let Some(name) = namer(&msg.topic) else {
+        return false;
+    };
+    Frame::Advertise {
+        alias: msg.topic.id.0,
+        topic: name,
+        schema: msg.topic.schema.clone(),
+        encoding: enc,
+        flags: advertise_flags(outbox, &msg.topic),
+    }
+    .encode(buf);
+    advertised.insert(msg.topic.id, enc);
+    true
+}
+
+/// Appends a small frame to the pack buffer, or sends a large one as its own message
+/// (after what is packed, to keep order). The large frame's bytes are shared, not copied.
+async fn send_large<K>(
+    sink: &mut K,
+    buf: &mut BytesMut,
+    frame: &Bytes,
+    pack: usize,
+) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if frame.len() < pack / 4 {
+        buf.extend_from_slice(frame);
+        return flush_if_full(sink, buf, pack).await;
+    }
+    flush_buf(sink, buf).await?;
+    sink.feed(WsMessage::Binary(frame.clone())).await
+}
+
+async fn flush_if_full<K>(sink: &mut K, buf: &mut BytesMut, pack: usize) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if buf.len() >= pack {
+        flush_buf(sink, buf).await
+    } else {
+        Ok(())
+    }
+}
+
+async fn flush_buf<K>(sink: &mut K, buf: &mut BytesMut) -> Result<(), WsError>
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    if buf.is_empty() {
+        return Ok(());
+    }
+    let b = buf.split().freeze();
+    sink.feed(WsMessage::Binary(b)).await
+}
