@@ -375,7 +375,8 @@ impl Uplink {
         // Awaited so its handle on the outbox (and the outbox file's lock) is gone when
         // `run` returns.
         let _ = journal.await;
-        self.outbox.tick_journal();
+        // What the durable outbox was handed is written and synced before `run` returns.
+        self.outbox.close_journal();
         self.router.disconnect(self.client);
     }
 

@@ -474,6 +474,14 @@ impl Outbox {
         }
     }
 
+    /// The agent is stopping: the durable outbox, if any, writes and syncs what it holds
+    /// and lets go of its file.
+    pub fn close_journal(&self) {
+        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
+            reliable.close_journal();
+        }
+    }
+
     /// Periodic housekeeping of the durable outbox, if any (about once a second).
     pub fn tick_journal(&self) {
         if let Service::Scheduled { reliable, .. } = &mut self.lock().service {

@@ -46,6 +46,8 @@ pub trait Journal: Send {
     fn confirm(&mut self, topic: &TopicName, seq: u64);
     /// Called about once a second: a chance to sync writes a policy left pending.
     fn tick(&mut self) {}
+    /// The sender is stopping: write and sync what is pending, then let go of the storage.
+    fn close(&mut self) {}
 }
 
 /// A message read back from a journal after a restart.
@@ -139,6 +141,13 @@ impl ReliableOut {
     /// gone, so it must be sent again.
     pub fn take_unconfirmed(&mut self) -> VecDeque<(u32, Arc<Message>)> {
         std::mem::take(&mut self.unconfirmed)
+    }
+
+    /// The sender is stopping (see [`Journal::close`]).
+    pub fn close_journal(&mut self) {
+        if let Some(j) = &mut self.journal {
+            j.close();
+        }
     }
 
     /// Periodic journal housekeeping (see [`Journal::tick`]).

@@ -16,11 +16,14 @@
 //!   hub's figure in `delivery`.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
+//! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
+//!   while the durable outbox compacts on a slow disk (test builds).
 
 mod calls;
 mod conn;
 mod copy_floor;
 mod delivery;
+mod journal;
 mod publisher;
 mod reconnect;
 mod relay;
@@ -56,6 +59,9 @@ enum Command {
     /// parsing, checks or routing) serving until killed: measured with `delivery
     /// --protocol rosbridge-json`, the floor under the hub's figure.
     WsFloor(ws_floor::Args),
+    /// The agent thread's heartbeat lateness and an adapter's latency while the durable
+    /// outbox compacts a large journal on a simulated slow disk (test builds only).
+    Journal(journal::Args),
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
@@ -66,5 +72,6 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Delivery(a) => delivery::run(a),
         Command::CopyFloor(a) => copy_floor::run(a),
         Command::WsFloor(a) => ws_floor::run(a),
+        Command::Journal(a) => journal::run(a),
     }
 }

@@ -1,7 +1,11 @@
 //! The durable outbox on real files: restart, torn tails, compaction, limits, locking.
 
+use super::disk::{COMPACT_MIN, FILE, frame};
 use super::*;
+use bytes::Bytes;
+use fleetlink_proto::{Encoding, Schema};
 use fleetlink_relay::names::TopicId;
+use std::fs::OpenOptions;
 
 struct Dir(PathBuf);
 
@@ -76,7 +80,6 @@ fn unconfirmed_messages_survive_a_restart_in_order() {
         }
         o.journal.confirm(&a.name, 2);
         o.epoch
-        // Dropped without any shutdown step, as a kill -9 would leave it.
     };
     let o = open(&d.cfg(1 << 20)).unwrap();
     assert_eq!(o.epoch, epoch, "the numbering epoch is kept");
@@ -188,16 +191,6 @@ fn a_file_that_is_not_an_outbox_is_refused_not_overwritten() {
 }
 
 #[test]
-fn shared_payloads_are_not_copied_on_append() {
-    let d = Dir::new("share");
-    let mut o = open(&d.cfg(1 << 20)).unwrap();
-    let p = payload("shared");
-    o.journal.append(&meta("/a"), 1, 1, &p).unwrap();
-    let held = &o.journal.live[0].payload;
-    assert_eq!(held.as_ptr(), p.bytes.as_ptr());
-}
-
-#[test]
 fn a_batch_synced_outbox_is_free_to_reopen_as_soon_as_it_is_dropped() {
     // The batch policy syncs on a thread holding a copy of the file descriptor, and with
     // it the outbox's lock: dropping the journal must end that thread first.
@@ -216,4 +209,65 @@ fn a_batch_synced_outbox_is_free_to_reopen_as_soon_as_it_is_dropped() {
         // An idle tick hands the sync to the thread.
         o.journal.tick();
     }
+}
+
+/// Issue 36: the agent's thread hands records over and goes on; the journal thread does
+/// the writing. With the disk slowed to 10 MB/s, compacting 4 MB takes at least 0.4 s on
+/// the journal thread; the confirmation that starts it has returned long before the new
+/// file replaces the old one.
+#[test]
+fn issue36_a_compaction_on_a_slow_disk_does_not_hold_up_the_agents_thread() {
+    if !slow_disk::available() {
+        return; // a release build has no slow disk to simulate
+    }
+    let d = Dir::new("slow");
+    let (live, filler) = (meta("/live"), meta("/filler"));
+    let mut o = open(&d.cfg(1 << 30)).unwrap();
+    let mb = payload(&"x".repeat(1 << 20));
+    for i in 1..=4 {
+        o.journal.append(&live, i, i, &mb).unwrap();
+    }
+    for i in 1..=16 {
+        o.journal.append(&filler, i, i, &mb).unwrap();
+    }
+    o.journal.wait_written();
+    let path = d.0.join(FILE);
+    let before = std::fs::metadata(&path).unwrap().len();
+    assert!(before > 20 << 20, "{before}");
+    slow_disk::set(10_000_000);
+    // Confirms the filler: the file is five times the live data, so this compacts it.
+    o.journal.confirm(&filler.name, 16);
+    let right_after = std::fs::metadata(&path).unwrap().len();
+    // A message handed over meanwhile is taken at once too.
+    o.journal.append(&live, 5, 5, &payload("during")).unwrap();
+    assert_eq!(
+        right_after, before,
+        "confirm() returned only after the compaction had replaced the file"
+    );
+    o.journal.wait_written();
+    slow_disk::set(0);
+    let after = std::fs::metadata(&path).unwrap().len();
+    assert!(after < 5 << 20, "compacted to {after} bytes");
+    drop(o);
+    let o = open(&d.cfg(1 << 30)).unwrap();
+    let got: Vec<u64> = o.recovered.iter().map(|r| r.seq).collect();
+    assert_eq!(
+        got,
+        [1, 2, 3, 4, 5],
+        "the live messages, and the one handed over meanwhile"
+    );
+}
+
+#[test]
+fn a_closed_journal_refuses_with_the_reason_and_kept_what_it_had() {
+    let d = Dir::new("closed");
+    let a = meta("/a");
+    let mut o = open(&d.cfg(1 << 20)).unwrap();
+    o.journal.append(&a, 1, 1, &payload("one")).unwrap();
+    o.journal.close();
+    let e = o.journal.append(&a, 2, 2, &payload("two")).unwrap_err();
+    assert!(e.to_string().contains("closed"), "{e}");
+    drop(o);
+    let o = open(&d.cfg(1 << 20)).unwrap();
+    assert_eq!(seqs(&o), [("/a".to_owned(), 1, "one".to_owned())]);
 }
