@@ -85,7 +85,7 @@ struct Admitted {
 /// until the hub answers `HELLO`.
 pub async fn serve_agent<R, W, P>(
     mut reader: R,
-    sink: W,
+    mut sink: W,
     ctx: Arc<AgentContext>,
     addr: Option<SocketAddr>,
     conn: fleetlink_auth::ConnInfo,
@@ -106,10 +106,18 @@ pub async fn serve_agent<R, W, P>(
         },
         Instant::now(),
     );
-    let admitted = match handshake(&mut reader, &mut session, &ctx, conn).await {
+    let admitted = match handshake(&mut reader, &mut sink, &mut session, &ctx, conn).await {
         Ok(a) => a,
-        Err(None) => return, // gone before HELLO: nothing to answer
-        Err(Some((reason, robot))) => {
+        Err(Ended::Gone(reason)) => {
+            // Closed or broken before HELLO: the close is answered (RFC 6455, 5.5.1), with
+            // the protocol error's code where there was one.
+            if let Some(f) = drive::close_frame(&reason) {
+                let _ = sink.send(WsMessage::Close(Some(f))).await;
+            }
+            let _ = sink.close().await;
+            return;
+        }
+        Err(Ended::Refuse(reason, robot)) => {
             let who = match robot {
                 Some(r) => format!("{r} from {who}"),
                 None => who,
@@ -224,17 +232,26 @@ pub async fn serve_agent<R, W, P>(
     record_seen(&ctx.store, &robot, addr, false);
 }
 
+/// How a handshake ended without admitting the robot.
+enum Ended {
+    /// The connection closed or broke the WebSocket protocol first.
+    Gone(CloseReason),
+    /// Refused, with this reason (and the robot's name, once known).
+    Refuse(String, Option<String>),
+}
+
 /// Reads until `HELLO`, checks it and authenticates it, all within the handshake
-/// deadline. `Err(None)`: the connection went away first; `Err(Some)`: refuse with this
-/// reason (and the robot's name, once known).
-async fn handshake<R>(
+/// deadline. WebSocket pings meanwhile are answered on `sink`.
+async fn handshake<R, W>(
     reader: &mut R,
+    sink: &mut W,
     session: &mut LinkSession,
     ctx: &AgentContext,
     conn: fleetlink_auth::ConnInfo,
-) -> Result<Admitted, Option<(String, Option<String>)>>
+) -> Result<Admitted, Ended>
 where
     R: Stream<Item = Result<ClientMessage, WsError>> + Unpin,
+    W: Sink<WsMessage, Error = WsError> + Unpin,
 {
     let (robot, token, hb, outbox_epoch) = loop {
         match session.poll_event() {
@@ -246,8 +263,10 @@ where
             }) => break (robot, token, heartbeat_ms, outbox_epoch),
             Some(Event::Closed(r)) => {
                 return Err(match r {
-                    CloseReason::PeerClosed(_) | CloseReason::ReadError(_) => None,
-                    other => Some((other.to_string(), None)),
+                    r @ (CloseReason::PeerClosed(_)
+                    | CloseReason::ReadError(_)
+                    | CloseReason::Invalid { .. }) => Ended::Gone(r),
+                    other => Ended::Refuse(other.to_string(), None),
                 });
             }
             Some(_) => continue,
@@ -255,17 +274,21 @@ where
         }
         tokio::select! {
             m = reader.next() => {
-                drive::feed(session, m, Instant::now());
+                if let Some(ping) = drive::feed(session, m, Instant::now()) {
+                    let _ = sink.send(WsMessage::Pong(ping)).await;
+                }
             }
             _ = drive::timer(session.poll_timeout()) => session.handle_timeout(Instant::now()),
-            _ = ctx.shutdown.cancelled() => return Err(Some(("the hub is shutting down".into(), None))),
+            _ = ctx.shutdown.cancelled() => {
+                return Err(Ended::Refuse("the hub is shutting down".into(), None));
+            }
         }
     };
     if !valid_robot_name(&robot) {
         let reason = format!(
             "invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)"
         );
-        return Err(Some((reason, None)));
+        return Err(Ended::Refuse(reason, None));
     }
     let heartbeat_ms = if hb == 0 {
         ctx.default_heartbeat_ms
@@ -289,10 +312,10 @@ where
     let authenticated = tokio::select! {
         r = crate::security::authenticate(&ctx.security, credential, conn) => r,
         _ = drive::timer(session.poll_timeout()) => {
-            return Err(Some(("no HELLO within 10 s".into(), Some(robot))));
+            return Err(Ended::Refuse("no HELLO within 10 s".into(), Some(robot)));
         }
         _ = ctx.shutdown.cancelled() => {
-            return Err(Some(("the hub is shutting down".into(), Some(robot))));
+            return Err(Ended::Refuse("the hub is shutting down".into(), Some(robot)));
         }
     };
     let admin = GroupName::new("admin").expect("a valid group name");
@@ -311,7 +334,7 @@ where
                 "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
                 identity.principal()
             );
-            Err(Some((reason, Some(robot))))
+            Err(Ended::Refuse(reason, Some(robot)))
         }
         Ok(identity) => Ok(Admitted {
             robot,
@@ -321,7 +344,7 @@ where
         }),
         // The public message alone ("authentication failed", "authentication required",
         // a rate limit): the agent turns it into advice.
-        Err(e) => Err(Some((e.public_message(), Some(robot)))),
+        Err(e) => Err(Ended::Refuse(e.public_message(), Some(robot))),
     }
 }
 

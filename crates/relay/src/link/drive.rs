@@ -29,7 +29,11 @@ pub fn feed(
 ) -> Option<Bytes> {
     match read {
         Some(Ok(ClientMessage::Binary(b))) => session.handle_binary(&b, now),
-        Some(Ok(ClientMessage::Text(_))) => session.handle_text(now),
+        // A text message must be UTF-8 whatever the subprotocol (RFC 6455, 8.1).
+        Some(Ok(ClientMessage::Text(t))) => match std::str::from_utf8(&t) {
+            Ok(_) => session.handle_text(now),
+            Err(e) => session.handle_invalid(1007, format!("a text message is not UTF-8: {e}")),
+        },
         Some(Ok(ClientMessage::Ping(p))) => {
             session.handle_activity(now);
             return Some(p);
@@ -38,10 +42,31 @@ pub fn feed(
         Some(Ok(ClientMessage::Close(c))) => {
             session.handle_close(c.map(|c| c.reason.to_string()).unwrap_or_default())
         }
-        Some(Err(e)) => session.handle_read_error(e.to_string()),
+        Some(Err(e)) => match &e {
+            WsError::Protocol(p) => session.handle_invalid(1002, p.to_string()),
+            WsError::Capacity(c) => session.handle_invalid(1009, c.to_string()),
+            WsError::Utf8(u) => session.handle_invalid(1007, u.clone()),
+            _ => session.handle_read_error(e.to_string()),
+        },
         None => session.handle_close(String::new()),
     }
     None
+}
+
+/// The close frame a session that ended for `reason` sends, if the socket is worth
+/// writing to (not after the link was declared dead or failed).
+pub fn close_frame(reason: &CloseReason) -> Option<CloseFrame> {
+    let frame = |code: CloseCode, text: &str| CloseFrame {
+        code,
+        reason: text.chars().take(120).collect::<String>().into(),
+    };
+    match reason {
+        CloseReason::Silent { .. } | CloseReason::ReadError(_) => None,
+        CloseReason::Local(text) => Some(frame(CloseCode::Away, text)),
+        CloseReason::Invalid { code, text } => Some(frame(CloseCode::from(*code), text)),
+        CloseReason::Refused(text) => Some(frame(CloseCode::Policy, text)),
+        _ => Some(frame(CloseCode::Normal, "")),
+    }
 }
 
 /// Sleeps until the session's next deadline (forever once it has none).
@@ -66,25 +91,15 @@ pub fn pump(session: &mut LinkSession, writer: &mpsc::Sender<Control>) {
 }
 
 /// Ends the link's writer after its session ended for `reason`: with a close frame after
-/// what is queued when the link is alive (1001 with the reason when this side ends it),
-/// at once when the link was declared dead or failed (its socket may never drain).
+/// what is queued when the link is alive ([`close_frame`]: 1001 with the reason when this
+/// side ends it, the RFC 6455 code for a protocol error), at once when the link was
+/// declared dead or failed (its socket may never drain).
 pub async fn stop_writer(
     mut writer: tokio::task::JoinHandle<()>,
     queue: mpsc::Sender<Control>,
     reason: &CloseReason,
 ) {
-    let frame = match reason {
-        CloseReason::Silent { .. } | CloseReason::ReadError(_) => None,
-        CloseReason::Local(text) => Some(CloseFrame {
-            code: CloseCode::Away,
-            reason: text.chars().take(120).collect::<String>().into(),
-        }),
-        _ => Some(CloseFrame {
-            code: CloseCode::Normal,
-            reason: "".into(),
-        }),
-    };
-    let sent = frame.is_some_and(|f| queue.try_send(Control::Close(Some(f))).is_ok());
+    let sent = close_frame(reason).is_some_and(|f| queue.try_send(Control::Close(Some(f))).is_ok());
     drop(queue);
     if sent && tokio::time::timeout(CLOSE_GRACE, &mut writer).await.is_ok() {
         return;

@@ -97,6 +97,9 @@ pub enum CloseReason {
     PeerClosed(String),
     /// Reading the socket failed.
     ReadError(String),
+    /// The peer broke the WebSocket protocol (RFC 6455); `code` is the close code it gets
+    /// (1002 protocol error, 1007 not UTF-8, 1009 too large).
+    Invalid { code: u16, text: String },
     /// Refused during the handshake: by the hub (this text was sent to the agent), or,
     /// on the agent, the hub's refusal as it came.
     Refused(String),
@@ -127,6 +130,9 @@ impl fmt::Display for CloseReason {
             CloseReason::PeerClosed(d) if d.is_empty() => write!(f, "the connection was closed"),
             CloseReason::PeerClosed(d) => write!(f, "the connection was closed: {d}"),
             CloseReason::ReadError(e) => write!(f, "link error: {e}"),
+            CloseReason::Invalid { code, text } => {
+                write!(f, "WebSocket protocol error ({code}): {text}")
+            }
             CloseReason::Refused(t) | CloseReason::Protocol(t) | CloseReason::Local(t) => {
                 f.write_str(t)
             }
@@ -424,6 +430,11 @@ impl LinkSession {
     /// Reading the socket failed.
     pub fn handle_read_error(&mut self, error: String) {
         self.close(CloseReason::ReadError(error));
+    }
+
+    /// The peer broke the WebSocket protocol; it is answered with close `code`.
+    pub fn handle_invalid(&mut self, code: u16, text: String) {
+        self.close(CloseReason::Invalid { code, text });
     }
 
     fn received(&mut self, now: Instant) {

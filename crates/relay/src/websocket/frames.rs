@@ -142,8 +142,11 @@ fn close(payload: BytesMut) -> Result<Option<CloseFrame>, WsError> {
         0 => Ok(None),
         1 => Err(WsError::Protocol(ProtocolError::InvalidCloseSequence)),
         _ => {
-            let code = CloseCode::from(u16::from_be_bytes([payload[0], payload[1]]));
-            if !code.is_allowed() {
+            let raw = u16::from_be_bytes([payload[0], payload[1]]);
+            let code = CloseCode::from(raw);
+            // 1012-1014 are registered with IANA (RFC 6455, 11.7) after tungstenite's list
+            // was written (1014 reads as `Bad`): a peer may send them.
+            if !code.is_allowed() && !(1012..=1014).contains(&raw) {
                 return Err(WsError::Protocol(ProtocolError::InvalidCloseSequence));
             }
             let reason = Utf8Bytes::try_from(payload.freeze().slice(2..))
