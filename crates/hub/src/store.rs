@@ -165,6 +165,14 @@ impl Store {
         })
     }
 
+    /// Deletes the parameter `name` alone.
+    pub fn delete_param(&self, name: &str) -> Result<(), StoreError> {
+        self.with(|c| {
+            c.execute("DELETE FROM params WHERE name = ?1", params![name])
+                .map(|_| ())
+        })
+    }
+
     /// Deletes `name` and every parameter under it.
     pub fn delete_params(&self, name: &str) -> Result<(), StoreError> {
         let below = format!("{name}/%");

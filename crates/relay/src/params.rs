@@ -56,11 +56,24 @@ impl ParamStore for MemoryParams {
             .insert(name.to_owned(), value_json);
     }
     fn delete(&self, name: &str) -> bool {
+        !self.remove_under(name).is_empty()
+    }
+}
+
+impl MemoryParams {
+    /// Deletes `name` and everything under it; returns the names deleted.
+    pub fn remove_under(&self, name: &str) -> Vec<String> {
         let mut m = self.0.lock().unwrap_or_else(|p| p.into_inner());
         let prefix = format!("{name}/");
-        let before = m.len();
-        m.retain(|k, _| k != name && !k.starts_with(&prefix));
-        m.len() != before
+        let mut gone = Vec::new();
+        m.retain(|k, _| {
+            let hit = k == name || k.starts_with(&prefix);
+            if hit {
+                gone.push(k.clone());
+            }
+            !hit
+        });
+        gone
     }
 }
 

@@ -17,7 +17,6 @@ use fleetlink_relay::calls::{CallRequest, ChannelPeer, PeerMsg, ServiceChange};
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::{ClientKind, Message, Router, TopicName};
 use tokio::net::TcpListener;
-use tokio::sync::mpsc;
 use tokio_util::sync::CancellationToken;
 
 use crate::node::{
@@ -60,14 +59,12 @@ pub async fn run(
     );
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    let (updates_tx, mut updates) = mpsc::unbounded_channel();
     let node = Arc::new(Node::new(
         opts,
         router.clone(),
         client,
         slave_port,
         tcpros_port,
-        updates_tx,
         stats,
     ));
     tracing::info!(
@@ -113,7 +110,11 @@ pub async fn run(
                     down(&node, &msg);
                 }
             },
-            Some((topic, list)) = updates.recv() => reconcile(&node, &topic, &list, true),
+            lists = node.updates.next() => {
+                for (topic, list) in lists {
+                    reconcile(&node, &topic, &list, true);
+                }
+            }
             Some(m) = peer_rx.recv() => on_peer(&node, m),
         }
     }

@@ -232,8 +232,55 @@ pub struct Node {
     waiters: Mutex<HashMap<CallId, Waiter>>,
     pub stats: Arc<Ros1Stats>,
     next_conn: AtomicU64,
-    /// Wakes the bridge loop when a publisher list changed (publisherUpdate).
-    pub updates: mpsc::UnboundedSender<(String, Vec<String>)>,
+    /// Publisher lists from `publisherUpdate` for the bridge loop.
+    pub updates: PublisherUpdates,
+}
+
+/// Publisher lists the master sent (`publisherUpdate`, from the network) that the bridge
+/// loop has not acted on yet. Only the current list of a topic matters, so a newer one
+/// replaces an older one still waiting (counted in `coalesced`); and only topics this node
+/// subscribes to are kept (the others mean nothing here), so what waits is bounded by the
+/// node's subscriptions whatever the network sends.
+#[derive(Default)]
+pub struct PublisherUpdates {
+    // std Mutex: an insert or a take, never held across an await.
+    pending: Mutex<HashMap<String, Vec<String>>>,
+    ready: tokio::sync::Notify,
+    /// Lists replaced by a newer one before the bridge loop took them.
+    pub coalesced: AtomicU64,
+}
+
+impl PublisherUpdates {
+    /// The newest publisher list of `topic`.
+    pub fn put(&self, topic: String, list: Vec<String>) {
+        let replaced = self
+            .pending
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(topic, list)
+            .is_some();
+        if replaced {
+            self.coalesced.fetch_add(1, Relaxed);
+        }
+        self.ready.notify_one();
+    }
+
+    /// Every list waiting, once at least one is.
+    pub async fn next(&self) -> Vec<(String, Vec<String>)> {
+        loop {
+            let ready = self.ready.notified();
+            let taken: Vec<_> = self
+                .pending
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .drain()
+                .collect();
+            if !taken.is_empty() {
+                return taken;
+            }
+            ready.await;
+        }
+    }
 }
 
 impl Node {
@@ -243,7 +290,6 @@ impl Node {
         client: ClientId,
         slave_port: u16,
         tcpros_port: u16,
-        updates: mpsc::UnboundedSender<(String, Vec<String>)>,
         stats: Arc<Ros1Stats>,
     ) -> Node {
         let caller_api = format!("http://{}:{slave_port}/", opts.host);
@@ -263,7 +309,7 @@ impl Node {
             waiters: Mutex::new(HashMap::new()),
             stats,
             next_conn: AtomicU64::new(1),
-            updates,
+            updates: PublisherUpdates::default(),
         }
     }
 
@@ -374,7 +420,10 @@ impl Node {
                     .get(2)
                     .and_then(|v| v.as_str_list())
                     .unwrap_or_default();
-                let _ = self.updates.send((topic, list));
+                // A topic this node does not subscribe to is not its business.
+                if self.lock().subs.contains_key(&topic) {
+                    self.updates.put(topic, list);
+                }
                 ok(Value::Int(0))
             }
             "requestTopic" => {
@@ -625,15 +674,36 @@ mod tests {
             call_timeout: std::time::Duration::from_secs(1),
             parameters: false,
         };
-        Node::new(
-            opts,
-            router,
-            client,
-            1,
-            2,
-            mpsc::unbounded_channel().0,
-            Arc::default(),
-        )
+        Node::new(opts, router, client, 1, 2, Arc::default())
+    }
+
+    /// Issue 36: `publisherUpdate` comes from the network; what waits for the bridge loop
+    /// is the newest list of each subscribed topic, never a backlog.
+    #[tokio::test]
+    async fn issue36_publisher_updates_keep_the_newest_list_of_subscribed_topics_only() {
+        let n = node();
+        n.lock().subs.insert(
+            "/chatter".into(),
+            Subscription {
+                ros_type: "std_msgs/String".into(),
+                conns: HashMap::new(),
+                seq: Arc::default(),
+            },
+        );
+        let update = |topic: &str, i: usize| {
+            let list = Value::Array(vec![format!("http://pub{i}:1/").as_str().into()]);
+            n.handle_slave("publisherUpdate", &["/master".into(), topic.into(), list])
+        };
+        for i in 0..10_000 {
+            update("/chatter", i);
+            update(&format!("/unsubscribed/{i}"), i);
+        }
+        let got = n.updates.next().await;
+        assert_eq!(
+            got,
+            [("/chatter".to_owned(), vec!["http://pub9999:1/".to_owned()])]
+        );
+        assert_eq!(n.updates.coalesced.load(Relaxed), 9_999);
     }
 
     #[tokio::test]
