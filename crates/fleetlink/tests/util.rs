@@ -182,7 +182,7 @@ pub struct TestAgent {
 pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
     UplinkConfig {
         hub_url: hub.agent_url(),
-        robot: robot.to_owned(),
+        robot: fleetlink_auth::RobotName::new(robot).expect("a valid robot name"),
         token: hub.robot_token(robot),
         heartbeat: Duration::from_millis(200),
         reconnect_initial: Duration::from_millis(50),

@@ -395,8 +395,7 @@ async fn mint_robot_token(
     body: Bytes,
 ) -> ApiResult {
     require_admin(&st, &me, "/tokens")?;
-    let robot = RobotName::new(&name)
-        .map_err(|e| ApiError::BadRequest(format!("robot name {name:?}: {e}")))?;
+    let robot = RobotName::new(&name).map_err(|e| ApiError::BadRequest(e.to_string()))?;
     let b: MintBody = if body.is_empty() {
         MintBody::default()
     } else {

@@ -224,7 +224,7 @@ fn parse_robot_network(s: &str) -> Result<fleetlink_auth::authn::RobotNetwork, S
         .parse()
         .map_err(|e| format!("{net:?} is not a CIDR network: {e}"))?;
     let robot = robot
-        .map(|r| fleetlink_auth::RobotName::new(r).map_err(|e| format!("robot {r:?}: {e}")))
+        .map(|r| fleetlink_auth::RobotName::new(r).map_err(|e| e.to_string()))
         .transpose()?;
     Ok(fleetlink_auth::authn::RobotNetwork { net, robot })
 }

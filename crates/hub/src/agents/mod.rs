@@ -17,7 +17,7 @@ use std::sync::Arc;
 use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
-use fleetlink_auth::{Credential, GroupName, Operation, Token, TokenKind};
+use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
 use fleetlink_proto::frame::Frame;
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
@@ -63,14 +63,6 @@ pub struct AgentContext {
     pub ledger: Arc<DeliveryLedger>,
     /// The hub's `/rosout`: robots connecting, leaving, refused.
     pub rosout: Arc<crate::rosout::RosOut>,
-}
-
-/// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
-pub fn valid_robot_name(name: &str) -> bool {
-    !name.is_empty()
-        && name.len() <= 64
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        && !name.starts_with(|c: char| c.is_ascii_digit())
 }
 
 /// What `HELLO` said, once authenticated.
@@ -261,12 +253,8 @@ where
             _ = ctx.shutdown.cancelled() => return Err(Some(("the hub is shutting down".into(), None))),
         }
     };
-    if !valid_robot_name(&robot) {
-        let reason = format!(
-            "invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)"
-        );
-        return Err(Some((reason, None)));
-    }
+    // The name is parsed here, at the edge; a refusal quotes the rule.
+    let name = RobotName::new(&robot).map_err(|e| Some((e.to_string(), None)))?;
     let heartbeat_ms = if hb == 0 {
         ctx.default_heartbeat_ms
     } else {
@@ -282,7 +270,7 @@ where
         Credential::Bearer(token)
     } else {
         Credential::Agent {
-            robot: robot.clone(),
+            robot: name,
             token: (!token.is_empty()).then_some(token),
         }
     };
