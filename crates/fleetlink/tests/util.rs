@@ -35,7 +35,7 @@ pub struct TestHub {
     /// A token of the `admin` group: rosbridge clients in tests connect with it.
     pub operator_token: String,
     pub stop: CancellationToken,
-    pub state: Arc<fleetlink_hub::server::HubState>,
+    pub state: Arc<fleetlink_hub::state::HubState>,
     pub task: tokio::task::JoinHandle<()>,
     pub data_dir: PathBuf,
 }

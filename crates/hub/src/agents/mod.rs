@@ -1,16 +1,14 @@
-//! Agents on the hub: one `fleetlink.v1` link per robot, and the registry of robots that
-//! are online.
+//! Agents on the hub: one `fleetlink.v1` link per robot.
 //!
 //! - [`serve_agent`] drives one link: the sans-IO [`LinkSession`] (handshake, calls,
 //!   heartbeats, liveness) fed with what the socket reads and woken at its deadlines; the
 //!   outbox writer ([`write_link`]) in a task of its own; the robot's topics and
 //!   subscriptions applied to the hub's router ([`events`]).
-//! - [`registry`]: robots online, with their link figures.
+//! - A link that is up is entered in the [`Registry`] of robots online
+//!   ([`crate::registry`], a module of its own so `rosout` and `security` can read it
+//!   without importing the sessions that fill it).
 
 mod events;
-mod registry;
-
-pub use registry::{LiveLink, LiveRobot, Registry};
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -37,6 +35,7 @@ use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
 use crate::delivery::DeliveryLedger;
+use crate::registry::{LiveLink, LiveRobot, Registry};
 use crate::store::Store;
 use events::RobotLink;
 

@@ -31,8 +31,9 @@ use fleetlink_auth::{
 use serde::Deserialize;
 use serde_json::{Value, json};
 
-use crate::api::Caller;
-use crate::server::{ConnMeta, HubState};
+use super::caller::Caller;
+use crate::connection::ConnMeta;
+use crate::state::HubState;
 
 /// Routes that need an authenticated caller (merged under `require_identity`).
 pub fn routes() -> axum::Router<Arc<HubState>> {
