@@ -66,12 +66,12 @@ impl AgentOptions {
             ros1: cfg
                 .ros1
                 .as_ref()
-                .map(|r| ros1_options(r, &cfg.name))
+                .map(|r| ros1_options(r, cfg.name.as_str()))
                 .transpose()?,
             ros2: cfg
                 .ros2
                 .as_ref()
-                .map(|r| ros2_options(r, &cfg.name))
+                .map(|r| ros2_options(r, cfg.name.as_str()))
                 .transpose()?,
         })
     }
@@ -185,7 +185,7 @@ pub struct Agent {
     sim: Option<SimConfig>,
     ros1: Option<fleetlink_ros1::Ros1Options>,
     ros2: Option<fleetlink_ros2::Ros2Options>,
-    robot: String,
+    robot: fleetlink_auth::RobotName,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -261,7 +261,7 @@ impl Agent {
         let sim = self.sim.map(|cfg| {
             tokio::spawn(crate::sim::drive(
                 cfg,
-                self.robot.clone(),
+                self.robot.to_string(),
                 self.router.clone(),
                 shutdown.clone(),
             ))
@@ -320,7 +320,7 @@ impl Agent {
         let status = (!parts.is_empty()).then(|| {
             tokio::spawn(crate::status::publish(
                 self.router.clone(),
-                self.robot.clone(),
+                self.robot.to_string(),
                 parts,
                 self.uplink.stats.clone(),
                 shutdown.clone(),

@@ -159,7 +159,7 @@ impl NameMap {
 #[derive(Debug, Clone)]
 pub struct UplinkConfig {
     pub hub_url: String,
-    pub robot: String,
+    pub robot: fleetlink_auth::RobotName,
     pub token: String,
     pub heartbeat: Duration,
     pub reconnect_initial: Duration,
@@ -491,7 +491,7 @@ impl Uplink {
                 wall: system_wall_clock(),
             },
             AgentHello {
-                robot: self.cfg.robot.clone(),
+                robot: self.cfg.robot.to_string(),
                 token: self.cfg.token.clone(),
                 outbox_epoch: self.outbox.outbox_epoch(),
             },
@@ -719,7 +719,12 @@ impl Uplink {
     }
 
     fn refusal(&self, text: &str) -> Failure {
-        refusal(text, &self.cfg.hub_url, &self.cfg.robot, &self.cfg.token)
+        refusal(
+            text,
+            &self.cfg.hub_url,
+            self.cfg.robot.as_str(),
+            &self.cfg.token,
+        )
     }
 
     /// A topic event or control frame from the hub.

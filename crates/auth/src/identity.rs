@@ -1,8 +1,13 @@
 //! Who is on the other end of a connection: names, [`Identity`] and where it came from.
 //!
-//! Design choice: names are validated newtypes. A robot name is one ROS name segment
-//! (`[A-Za-z][A-Za-z0-9_]*`), so a robot's own namespace `/<name>/` can be checked with a
-//! plain prefix test and no robot name can smuggle a `/` into another robot's namespace.
+//! Design choice: names are validated newtypes, parsed once where a name enters the system
+//! (a HELLO, a config file, a command-line flag, a certificate, a REST path) and carried
+//! typed from there. [`RobotName`] is the one robot name rule for the whole workspace
+//! (hub, agent and CLI all use it; there is no second copy): one ROS name segment starting
+//! with a letter (`[A-Za-z][A-Za-z0-9_]*`), at most 63 bytes. A segment, so a robot's own
+//! namespace `/<name>/` can be checked with a plain prefix test and no robot name can
+//! smuggle a `/` into another robot's namespace; 63 bytes, a DNS label's limit, because
+//! `fleetlink admin cert robot NAME` writes the name into a certificate as a DNS name.
 //! The client address is resolved here, once, from the socket peer and — only when that
 //! peer is a configured trusted proxy — the `X-Forwarded-For` header.
 
@@ -21,26 +26,54 @@ pub struct NameError {
     pub reason: &'static str,
 }
 
-const MAX_NAME_LEN: usize = 128;
+/// How much of a refused name an error message repeats.
+const ECHOED_NAME_CHARS: usize = 128;
 
-fn check_segment(what: &'static str, raw: &str) -> Result<(), NameError> {
+/// Longest robot name, in bytes: a DNS label's limit (RFC 1035), since robot certificates
+/// carry the name as a DNS name.
+pub const MAX_ROBOT_NAME_LEN: usize = 63;
+
+/// The robot name rule as a literal, so each refusal's reason can quote it (`concat!`).
+macro_rules! robot_name_rule {
+    () => {
+        "robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes"
+    };
+}
+
+/// The robot name rule in words, as every refusal of a robot name quotes it.
+pub const ROBOT_NAME_RULE: &str = robot_name_rule!();
+
+/// A refusal reason followed by the rule, so the reader knows what to write instead.
+macro_rules! robot_reason {
+    ($reason:literal) => {
+        concat!($reason, " (", robot_name_rule!(), ")")
+    };
+}
+
+fn echoed(raw: &str) -> String {
+    raw.chars().take(ECHOED_NAME_CHARS).collect()
+}
+
+fn check_robot_name(what: &'static str, raw: &str) -> Result<(), NameError> {
     let err = |reason| NameError {
         what,
-        name: raw.chars().take(MAX_NAME_LEN).collect(),
+        name: echoed(raw),
         reason,
     };
     if raw.is_empty() {
-        return Err(err("empty"));
+        return Err(err(robot_reason!("must not be empty")));
     }
-    if raw.len() > MAX_NAME_LEN {
-        return Err(err("longer than 128 bytes"));
+    if raw.len() > MAX_ROBOT_NAME_LEN {
+        return Err(err(robot_reason!("longer than 63 bytes")));
     }
     let mut chars = raw.chars();
     if !chars.next().is_some_and(|c| c.is_ascii_alphabetic()) {
-        return Err(err("must start with an ASCII letter"));
+        return Err(err(robot_reason!("must start with an ASCII letter")));
     }
     if !chars.all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(err("only ASCII letters, digits and '_' are allowed"));
+        return Err(err(robot_reason!(
+            "only ASCII letters, digits and '_' are allowed"
+        )));
     }
     Ok(())
 }
@@ -48,7 +81,7 @@ fn check_segment(what: &'static str, raw: &str) -> Result<(), NameError> {
 fn check_principal(what: &'static str, raw: &str) -> Result<(), NameError> {
     let err = |reason| NameError {
         what,
-        name: raw.chars().take(MAX_NAME_LEN).collect(),
+        name: echoed(raw),
         reason,
     };
     if raw.is_empty() {
@@ -115,10 +148,11 @@ macro_rules! name_type {
 }
 
 name_type!(
-    /// A robot's name, which is also its namespace: robot `r1` owns `/r1/...`.
+    /// A robot's name, which is also its namespace: robot `r1` owns `/r1/...`. The rule
+    /// is [`ROBOT_NAME_RULE`]; `docs/config.md` (the agent's `name:`) documents it.
     RobotName,
     "robot name",
-    check_segment
+    check_robot_name
 );
 name_type!(
     /// A user (person or tool) name: a login name or an OIDC subject/e-mail.
@@ -290,6 +324,67 @@ mod tests {
         assert!(RobotName::new("robot_7").is_ok());
         for bad in ["", "1r", "r/1", "r1/../r2", "r 1", "_r", "ä"] {
             assert!(RobotName::new(bad).is_err(), "{bad:?} accepted");
+        }
+    }
+
+    fn refusal(name: &str) -> String {
+        RobotName::new(name)
+            .expect_err(&format!("{name:?} accepted"))
+            .to_string()
+    }
+
+    /// Issue 36, item 6: the rule the hub, the agent and the CLI all apply.
+    #[test]
+    fn issue36_robot_name_must_start_with_a_letter() {
+        assert_eq!(
+            refusal("1robot"),
+            "invalid robot name \"1robot\": must start with an ASCII letter \
+             (robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes)"
+        );
+        assert!(
+            refusal("_bot").contains("must start with an ASCII letter"),
+            "{}",
+            refusal("_bot")
+        );
+        assert!(RobotName::new("bot_1").is_ok());
+        assert!(RobotName::new("B").is_ok());
+    }
+
+    #[test]
+    fn issue36_robot_name_is_at_most_63_bytes() {
+        let longest = format!("r{}", "0".repeat(62));
+        assert_eq!(longest.len(), 63);
+        assert_eq!(RobotName::new(&longest).unwrap().as_str(), longest);
+        let too_long = format!("{longest}0");
+        let err = refusal(&too_long);
+        assert!(err.contains("longer than 63 bytes"), "{err}");
+        assert!(err.contains(&too_long), "names the refused name: {err}");
+        // The rule text and the limit the check applies agree.
+        assert!(ROBOT_NAME_RULE.contains(&format!("at most {MAX_ROBOT_NAME_LEN} bytes")));
+        // A huge name is refused on its length, and echoed only in part.
+        let huge = "r".repeat(100_000);
+        assert!(refusal(&huge).len() < 400);
+    }
+
+    #[test]
+    fn issue36_robot_name_refusals_name_the_problem_and_the_rule() {
+        for (bad, problem) in [
+            ("", "must not be empty"),
+            ("r/1", "only ASCII letters, digits and '_' are allowed"),
+            ("/r1", "must start with an ASCII letter"),
+            ("r1/../r2", "only ASCII letters, digits and '_' are allowed"),
+            ("r 1", "only ASCII letters, digits and '_' are allowed"),
+            ("robot-1", "only ASCII letters, digits and '_' are allowed"),
+            ("ä", "must start with an ASCII letter"),
+            ("rö", "only ASCII letters, digits and '_' are allowed"),
+            // Unicode letters and digits that look ASCII are still refused.
+            ("ｒ1", "must start with an ASCII letter"),
+            ("r١", "only ASCII letters, digits and '_' are allowed"),
+        ] {
+            let err = refusal(bad);
+            assert!(err.contains(problem), "{bad:?}: {err}");
+            assert!(err.contains(ROBOT_NAME_RULE), "{bad:?}: {err}");
+            assert!(err.contains(&format!("{bad:?}")), "{bad:?}: {err}");
         }
     }
 

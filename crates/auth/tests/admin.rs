@@ -150,7 +150,7 @@ fn robot_authenticates_by_client_certificate_name_without_token() {
     let sec = security(AuthPolicy::default(), AclDefaults::default());
     let conn = peer("192.0.2.1").with_tls_client_name(robot("r1"));
     let cred = |name: &str| Credential::Agent {
-        robot: name.into(),
+        robot: robot(name),
         token: None,
     };
     let id = sec.authenticate(cred("r1"), conn.clone(), T0).unwrap();
@@ -158,7 +158,7 @@ fn robot_authenticates_by_client_certificate_name_without_token() {
     assert!(sec.authenticate(cred("r2"), conn.clone(), T0).is_err());
     // HELLO's empty token string means "no token", not a malformed one.
     let empty = Credential::Agent {
-        robot: "r1".into(),
+        robot: robot("r1"),
         token: Some(String::new()),
     };
     assert!(sec.authenticate(empty, conn, T0).is_ok());

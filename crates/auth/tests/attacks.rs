@@ -58,7 +58,7 @@ fn expired_token_is_rejected() {
         .add_robot_token(&admin(), &robot("r1"), Some(T0.plus_secs(60)), T0)
         .unwrap();
     let cred = || Credential::Agent {
-        robot: "r1".into(),
+        robot: robot("r1"),
         token: Some(token.expose().into()),
     };
     assert!(
@@ -127,7 +127,7 @@ fn session_token_is_not_accepted_as_a_robot_credential() {
     let err = sec
         .authenticate(
             Credential::Agent {
-                robot: "r1".into(),
+                robot: robot("r1"),
                 token: Some(session.token.expose().into()),
             },
             peer("192.0.2.1"),
@@ -158,7 +158,7 @@ fn spoofed_x_forwarded_for_is_ignored_from_untrusted_peers() {
     );
     let spoofed = ConnInfo::new(ip("203.0.113.66")).with_forwarded_for("10.8.0.5");
     let agent = Credential::Agent {
-        robot: "r1".into(),
+        robot: robot("r1"),
         token: None,
     };
     let err = sec.authenticate(agent.clone(), spoofed, T0).unwrap_err();
@@ -182,7 +182,7 @@ fn robot_cannot_publish_into_another_robots_namespace() {
     let err = sec
         .authenticate(
             Credential::Agent {
-                robot: "r2".into(),
+                robot: robot("r2"),
                 token: Some(token.expose().into()),
             },
             peer("192.0.2.1"),
@@ -194,7 +194,7 @@ fn robot_cannot_publish_into_another_robots_namespace() {
     let id = sec
         .authenticate(
             Credential::Agent {
-                robot: "r1".into(),
+                robot: robot("r1"),
                 token: Some(token.expose().into()),
             },
             peer("192.0.2.1"),

@@ -110,7 +110,7 @@ fn authentication_failures_are_audited_with_client_address() {
     let sec = security(AuthPolicy::default(), AclDefaults::default());
     let _ = sec.authenticate(
         Credential::Agent {
-            robot: "r9".into(),
+            robot: robot("r9"),
             token: None,
         },
         peer("192.0.2.99"),

@@ -85,6 +85,30 @@ fn mtls_handshake_yields_the_robot_name_from_the_certificate() {
     assert_eq!(server.alpn_protocol(), None, "client offered no ALPN");
 }
 
+/// Issue 36, item 6: a certificate names a robot only with a name that follows the one
+/// robot name rule (`RobotName`): a DNS SAN that breaks it is passed over for the next,
+/// then for the CN; a CN that breaks it names nobody.
+#[test]
+fn issue36_certificate_names_follow_the_robot_name_rule() {
+    let name_of = |sans: &[&str], cn: &str| {
+        let key = rcgen::KeyPair::generate().unwrap();
+        let sans: Vec<String> = sans.iter().map(|s| s.to_string()).collect();
+        let mut params = rcgen::CertificateParams::new(sans).unwrap();
+        params
+            .distinguished_name
+            .push(rcgen::DnType::CommonName, cn);
+        let cert = params.self_signed(&key).unwrap();
+        client_cert_name(Some(&[cert.der().clone()])).map(|r| r.to_string())
+    };
+    let longest = format!("r{}", "0".repeat(62));
+    let too_long = format!("{longest}0");
+    assert_eq!(name_of(&["1robot", "r2"], "r3").as_deref(), Some("r2"));
+    assert_eq!(name_of(&["_bot"], "r3").as_deref(), Some("r3"));
+    assert_eq!(name_of(&[&longest], "r3"), Some(longest.clone()));
+    assert_eq!(name_of(&[&too_long], "_bot"), None);
+    assert_eq!(name_of(&[], &too_long), None);
+}
+
 #[test]
 fn tls_client_without_certificate_fails_when_one_is_required() {
     let pki = Pki::generate();

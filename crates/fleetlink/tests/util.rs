@@ -35,7 +35,7 @@ pub struct TestHub {
     /// A token of the `admin` group: rosbridge clients in tests connect with it.
     pub operator_token: String,
     pub stop: CancellationToken,
-    pub state: Arc<fleetlink_hub::server::HubState>,
+    pub state: Arc<fleetlink_hub::state::HubState>,
     pub task: tokio::task::JoinHandle<()>,
     pub data_dir: PathBuf,
 }
@@ -182,7 +182,7 @@ pub struct TestAgent {
 pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
     UplinkConfig {
         hub_url: hub.agent_url(),
-        robot: robot.to_owned(),
+        robot: fleetlink_auth::RobotName::new(robot).expect("a valid robot name"),
         token: hub.robot_token(robot),
         heartbeat: Duration::from_millis(200),
         reconnect_initial: Duration::from_millis(50),

@@ -13,8 +13,8 @@ use std::time::{Duration, Instant};
 
 use fleetlink_qos::{CapacityAllocator, CapacityConfig, Nanos, RobotLinkReport};
 
-use crate::agents::LiveRobot;
-use crate::server::HubState;
+use crate::registry::LiveRobot;
+use crate::state::HubState;
 
 /// Softmax temperature: per second of latency (see docs/qos.md).
 const LAMBDA: f64 = 20.0;

@@ -19,7 +19,7 @@ use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
 use serde_json::json;
 use tokio_util::sync::CancellationToken;
 
-use crate::agents::Registry;
+use crate::registry::Registry;
 
 /// The log's type (ROS 2).
 pub const LOG_TYPE: &str = "rcl_interfaces/msg/Log";

@@ -22,7 +22,7 @@ use fleetlink_auth::{
 use fleetlink_relay::gate::{Gate, Guard, Op};
 use serde_json::{Map, Value};
 
-use crate::agents::Registry;
+use crate::registry::Registry;
 
 fn operation(op: Op) -> Operation {
     match op {

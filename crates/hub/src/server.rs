@@ -2,8 +2,12 @@
 //!
 //! A request that asks for a WebSocket upgrade becomes an agent session when it offers
 //! the `fleetlink.v1` subprotocol and a rosbridge session otherwise (rosbridge clients
-//! send no subprotocol); everything else is plain HTTP routed by axum. Each connection is
-//! its own task; shutdown cancels a token every session watches.
+//! send no subprotocol); everything else is plain HTTP routed by axum ([`crate::http`]).
+//! Each connection is its own task; shutdown cancels a token every session watches.
+//!
+//! The top of the crate's layering: [`Hub::bind`] builds the shared
+//! [`HubState`](crate::state::HubState) and [`Hub::run`] wires the parts together; no
+//! other module imports this one.
 
 use std::future::Future;
 use std::net::SocketAddr;
@@ -11,7 +15,6 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
 
-use axum::Router as HttpRouter;
 use axum::body::Body;
 use axum::extract::{ConnectInfo, Request, State};
 use axum::http::{HeaderMap, HeaderValue, StatusCode, header};
@@ -26,12 +29,12 @@ use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
 use tokio_util::sync::CancellationToken;
 
-pub use crate::connection::ConnMeta;
-
-use crate::agents::{AgentContext, Registry};
+use crate::agents::AgentContext;
+use crate::connection::ConnMeta;
+use crate::registry::Registry;
+use crate::state::{HubState, SiteConfig};
 use crate::store::{Store, StoreError};
 
-/// Bytes an agent's WebSocket session (tungstenite's) reads at most at a time.
 /// Hub settings (`fleetlink hub` flags).
 #[derive(Debug, Clone)]
 pub struct HubConfig {
@@ -59,43 +62,6 @@ pub struct HubConfig {
     pub door: crate::limits::FrontDoor,
     /// Service and action calls: default deadline, pending-call bounds.
     pub calls: fleetlink_relay::calls::CallLimits,
-}
-
-/// Robots behind one access link (a site uplink, a cell) and its capacity.
-#[derive(Debug, Clone)]
-pub struct SiteConfig {
-    pub name: String,
-    /// Capacity of the shared link, bytes/s.
-    pub capacity_bps: f64,
-    /// Robots (whole-name regex) at this site.
-    pub robots: regex::Regex,
-}
-
-impl std::str::FromStr for SiteConfig {
-    type Err = String;
-
-    /// `NAME=MBIT:ROBOT_REGEX`, e.g. `warehouse=20:robot[0-9]+`.
-    fn from_str(s: &str) -> Result<SiteConfig, String> {
-        let (name, rest) = s.split_once('=').ok_or("expected NAME=MBIT:ROBOT_REGEX")?;
-        let (mbit, re) = rest
-            .split_once(':')
-            .ok_or("expected NAME=MBIT:ROBOT_REGEX")?;
-        let mbit: f64 = mbit
-            .parse()
-            .map_err(|e| format!("capacity {mbit:?} is not a number of Mbit/s: {e}"))?;
-        if !(mbit > 0.0 && mbit.is_finite()) {
-            return Err(format!("capacity must be > 0 Mbit/s, got {mbit}"));
-        }
-        let robots = regex::RegexBuilder::new(&format!("^(?:{re})$"))
-            .size_limit(256 * 1024)
-            .build()
-            .map_err(|e| format!("robot pattern {re:?}: {e}"))?;
-        Ok(SiteConfig {
-            name: name.to_owned(),
-            capacity_bps: mbit * 1e6 / 8.0,
-            robots,
-        })
-    }
 }
 
 impl Default for HubConfig {
@@ -135,22 +101,6 @@ pub enum HubError {
     SecurityStore(#[from] fleetlink_auth::StoreError),
     #[error("TLS: {0}")]
     Tls(#[from] fleetlink_auth::tls::TlsError),
-}
-
-/// Everything the HTTP handlers and sessions share.
-pub struct HubState {
-    pub router: Arc<Router>,
-    pub registry: Arc<Registry>,
-    pub store: Store,
-    pub agents: Arc<AgentContext>,
-    pub rosbridge: Arc<SessionConfig>,
-    pub shutdown: CancellationToken,
-    pub security: Arc<fleetlink_auth::Security>,
-    pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
-    pub sites: Vec<SiteConfig>,
-    pub jwks: Option<crate::jwks::JwksSource>,
-    pub started: std::time::SystemTime,
-    pub limits: Arc<crate::limits::Limits>,
 }
 
 /// A bound hub, ready to run.
@@ -245,16 +195,7 @@ impl Hub {
                 .clone()
                 .run(state.registry.clone(), token.clone()),
         );
-        let api = crate::api::routes()
-            .route("/metrics", get(crate::metrics::handler))
-            .route_layer(axum::middleware::from_fn_with_state(
-                state.clone(),
-                crate::api::require_identity,
-            ));
-        let app = HttpRouter::new()
-            .route("/healthz", get(|| async { "ok\n" }))
-            .merge(api)
-            .merge(crate::admin_api::public_routes())
+        let app = crate::http::routes(state.clone())
             .route("/", get(root))
             .fallback(root)
             .with_state(state.clone());
@@ -340,7 +281,7 @@ async fn root(
     if is_upgrade(req.headers()) {
         return upgrade(st, addr, req).await;
     }
-    if let Some(page) = crate::dashboard::serve(req.uri().path(), req.headers()) {
+    if let Some(page) = crate::http::dashboard::serve(req.uri().path(), req.headers()) {
         return page;
     }
     (

@@ -33,6 +33,7 @@ use std::net::SocketAddr;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+use fleetlink_auth::RobotName;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
@@ -49,9 +50,10 @@ pub use sim::{
 pub struct AgentConfig {
     /// Hub URL, `ws://` or `wss://`. Default `ws://127.0.0.1:8080`. CLI `--hub` overrides.
     pub hub: String,
-    /// Robot name, `[A-Za-z0-9_]+`; its topics appear on the hub under `/<name>`.
+    /// Robot name (the rule is [`fleetlink_auth::RobotName`]'s; a name breaking it is
+    /// refused while parsing, at its line); its topics appear on the hub under `/<name>`.
     /// Default `robot1`. CLI `--name` overrides.
-    pub name: String,
+    pub name: RobotName,
     /// Credential presented to the hub. Default empty (no credential).
     pub token: String,
     /// TLS for a `wss://` hub: a private CA and, for mutual TLS, the robot's certificate.
@@ -86,7 +88,7 @@ impl Default for AgentConfig {
     fn default() -> Self {
         Self {
             hub: "ws://127.0.0.1:8080".to_owned(),
-            name: "robot1".to_owned(),
+            name: RobotName::new("robot1").expect("robot1 is a valid robot name"),
             token: String::new(),
             tls: None,
             heartbeat_ms: 1000,
@@ -211,7 +213,7 @@ pub struct Subscription {
 #[derive(Debug, Clone, Default)]
 pub struct Overrides {
     pub hub: Option<String>,
-    pub name: Option<String>,
+    pub name: Option<RobotName>,
 }
 
 impl Overrides {
@@ -320,11 +322,6 @@ impl AgentConfig {
             None => format!("/{}{}", self.name, local),
         }
     }
-}
-
-/// Checks a robot name (`[A-Za-z0-9_]+`), e.g. one given on the command line.
-pub fn check_robot_name(name: &str) -> Result<(), String> {
-    validate::check_robot_name(name)
 }
 
 /// Checks a fully qualified ROS topic name (`/a/b_c`).

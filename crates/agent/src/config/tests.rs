@@ -51,7 +51,7 @@ fn empty_file_is_the_default() {
 fn full_example_parses() {
     let cfg = AgentConfig::from_str(FULL, "robot.yaml").expect("valid");
     assert_eq!(cfg.hub, "wss://hub.example.com:443");
-    assert_eq!(cfg.name, "robot_7");
+    assert_eq!(cfg.name.as_str(), "robot_7");
     assert_eq!(cfg.token, "s3cret");
     assert_eq!(cfg.heartbeat(), Duration::from_millis(500));
     assert_eq!(cfg.link_timeout(), Duration::from_secs(1));
@@ -165,10 +165,6 @@ fn semantic_errors() {
     assert_err(
         "local_rosbridge:\n  listen: localhost\n",
         "robot.yaml:2:11: local_rosbridge.listen: expected IP:PORT like 127.0.0.1:9090, got \"localhost\" (invalid socket address syntax)",
-    );
-    assert_err(
-        "name: robot-1\n",
-        "robot.yaml:1:7: name: may only contain A-Z, a-z, 0-9 and _, got '-' in \"robot-1\"",
     );
     assert_err(
         "hub: http://x\n",
@@ -316,19 +312,19 @@ fn example_files_parse() {
         .and_then(|rest| rest.split("```").next())
         .expect("a yaml block in docs/config.md");
     let cfg = AgentConfig::from_str(block, "docs/config.md").expect("docs example is valid");
-    assert_eq!(cfg.name, "robot7");
+    assert_eq!(cfg.name.as_str(), "robot7");
 }
 
 #[test]
 fn validate_reports_the_field_without_position() {
     let cfg = AgentConfig {
-        name: "bad name".into(),
+        hub: "http://x".into(),
         ..AgentConfig::default()
     };
-    let e = cfg.validate().expect_err("bad name");
+    let e = cfg.validate().expect_err("bad hub");
     assert_eq!(
         e.to_string(),
-        "config field name: may only contain A-Z, a-z, 0-9 and _, got ' ' in \"bad name\""
+        "config field hub: must be a ws:// or wss:// URL such as ws://hub.example:8080, got \"http://x\""
     );
 }
 
@@ -360,16 +356,16 @@ fn command_line_overrides_are_checked_together_with_the_file() {
     let e = AgentConfig::load_with(Some(&path), &hub("ws://127.0.0.1:8080")).expect_err("tls");
     assert_eq!(e.field(), Some("tls"), "{e}");
     assert!(e.position().is_some());
-    // --name is checked the same way.
-    let e = AgentConfig::load_with(
-        None,
+    // --name overrides `name:` (it was parsed as a robot name on the command line).
+    let cfg = AgentConfig::load_with(
+        Some(&path),
         &Overrides {
-            hub: None,
-            name: Some("bad name".into()),
+            hub: Some("wss://hub.example:8080".into()),
+            name: Some(RobotName::new("robot8").unwrap()),
         },
     )
-    .expect_err("name");
-    assert!(e.to_string().starts_with("--name: "), "{e}");
+    .expect("valid");
+    assert_eq!(cfg.name.as_str(), "robot8");
     let _ = std::fs::remove_dir_all(dir);
 }
 
@@ -562,4 +558,42 @@ fn issue14_example_topics_section_is_applied_and_not_called_rejected() {
     for stale in ["rejected", "not supported yet", "for now"] {
         assert!(!text.contains(stale), "examples/agent.yaml says {stale:?}");
     }
+}
+
+/// Issue 36, item 6: `name:` follows the one robot name rule (`fleetlink_auth::RobotName`),
+/// so a name the hub would refuse at HELLO is refused here, at its line, with the rule.
+#[test]
+fn issue36_name_starting_with_a_digit_or_underscore_is_refused_with_the_rule() {
+    for (text, name) in [("name: 1robot\n", "1robot"), ("name: _bot\n", "_bot")] {
+        assert_err(
+            text,
+            &format!(
+                "robot.yaml:1:7: name: invalid robot name \"{name}\": must start with an ASCII \
+                 letter (robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes)"
+            ),
+        );
+    }
+}
+
+#[test]
+fn issue36_name_longer_than_63_bytes_or_with_a_dash_is_refused_with_the_rule() {
+    let long = format!("name: r{}\n", "0".repeat(63));
+    let e = err(&long);
+    assert_eq!(e.field(), Some("name"), "{e}");
+    assert!(e.to_string().contains("longer than 63 bytes"), "{e}");
+    let e = err("sim: {}\nname: robot-1\n");
+    assert_eq!(
+        e.position().map(|p| (p.line, p.column)),
+        Some((2, 7)),
+        "{e}"
+    );
+    assert!(
+        e.to_string()
+            .contains("(robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes)"),
+        "{e}"
+    );
+    // The longest name is fine.
+    let cfg = AgentConfig::from_str(&format!("name: r{}\n", "0".repeat(62)), "robot.yaml")
+        .expect("63 bytes");
+    assert_eq!(cfg.name.as_str().len(), 63);
 }

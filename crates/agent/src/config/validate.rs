@@ -52,7 +52,6 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
             ));
         }
     }
-    check_robot_name(&cfg.name).map_err(|m| problem("name".into(), m))?;
     if let Some(tls) = &cfg.tls {
         if !cfg.hub.starts_with("wss://") {
             return Err(problem(
@@ -342,22 +341,6 @@ fn validate_sim(sim: &SimConfig) -> Result<(), Problem> {
                 format!("must be in {min}..={max}, got {value}"),
             ));
         }
-    }
-    Ok(())
-}
-
-/// `[A-Za-z0-9_]+`: the robot name becomes the namespace `/<name>` on the hub.
-pub(crate) fn check_robot_name(name: &str) -> Result<(), String> {
-    if name.is_empty() {
-        return Err("must not be empty".into());
-    }
-    if let Some(c) = name
-        .chars()
-        .find(|c| !(c.is_ascii_alphanumeric() || *c == '_'))
-    {
-        return Err(format!(
-            "may only contain A-Z, a-z, 0-9 and _, got {c:?} in {name:?}"
-        ));
     }
     Ok(())
 }

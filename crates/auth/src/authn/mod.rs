@@ -36,11 +36,12 @@ pub enum Credential {
     /// User name and password (rosbridge `auth` op with `user`/`password`, or the login
     /// endpoint). Subject to the login rate limit.
     Password { user: String, password: String },
-    /// An agent's fleetlink.v1 HELLO: the robot name it claims, and its token if any. With
-    /// no token, the claim is accepted from a verified client certificate naming the same
-    /// robot or from a configured robot network.
+    /// An agent's fleetlink.v1 HELLO: the robot name it claims (parsed from HELLO by the
+    /// hub, which refuses a name breaking the rule before authenticating), and its token
+    /// if any. With no token, the claim is accepted from a verified client certificate
+    /// naming the same robot or from a configured robot network.
     Agent {
-        robot: String,
+        robot: RobotName,
         token: Option<String>,
     },
     /// Nothing presented.
@@ -148,13 +149,13 @@ pub enum AuthError {
     },
     #[error("token belongs to robot {token_robot}, but the agent claims to be {claimed}")]
     RobotMismatch {
-        claimed: String,
+        claimed: RobotName,
         token_robot: String,
     },
     #[error("invalid name: {0}")]
     BadName(#[from] NameError),
     #[error("robot {robot} presented no token and {client} is not a trusted robot address")]
-    UntrustedRobotAddress { robot: String, client: IpAddr },
+    UntrustedRobotAddress { robot: RobotName, client: IpAddr },
     #[error("wrong user name or password")]
     BadPassword,
     #[error("too many failed logins; retry in {retry_after_secs} s")]
@@ -281,9 +282,10 @@ impl Authenticator {
                 let (kind, _) = self.check_password(&user, &password, client_ip, now)?;
                 Ok(self.identity(kind, peer))
             }
-            Credential::Agent { robot, token } => {
-                check_len("robot name", &robot, 256)?;
-                let claimed = RobotName::new(&robot)?;
+            Credential::Agent {
+                robot: claimed,
+                token,
+            } => {
                 // HELLO carries an empty string for "no token".
                 if let Some(token) = token.filter(|t| !t.is_empty()) {
                     check_len("token", &token, MAX_TOKEN_LEN)?;
@@ -296,7 +298,7 @@ impl Authenticator {
                     }
                     if record.subject != claimed.as_str() {
                         return Err(AuthError::RobotMismatch {
-                            claimed: robot,
+                            claimed,
                             token_robot: record.subject,
                         });
                     }
@@ -304,7 +306,7 @@ impl Authenticator {
                     && !self.robot_network_allows(&claimed, client_ip)
                 {
                     return Err(AuthError::UntrustedRobotAddress {
-                        robot,
+                        robot: claimed,
                         client: client_ip,
                     });
                 }

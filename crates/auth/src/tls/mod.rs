@@ -264,7 +264,9 @@ pub fn client_config(files: &ClientTlsFiles) -> Result<Arc<ClientConfig>, TlsErr
 
 /// The robot named by a client certificate the handshake has already verified
 /// (`ServerConnection::peer_certificates()`): the first DNS SAN that is a valid robot
-/// name, else the subject CN. `None` if there is no certificate or no usable name.
+/// name, else the subject CN. Both are parsed as [`RobotName`], the one robot name rule,
+/// so a certificate can never name a robot HELLO would refuse. `None` if there is no
+/// certificate or no usable name (the connection may still authenticate with a token).
 pub fn client_cert_name(peer_certificates: Option<&[CertificateDer<'_>]>) -> Option<RobotName> {
     let leaf = peer_certificates?.first()?;
     let (_, cert) = x509_parser::parse_x509_certificate(leaf.as_ref()).ok()?;

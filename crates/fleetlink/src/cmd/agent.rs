@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use fleetlink_agent::config::{AgentConfig, Overrides};
 use fleetlink_agent::{Agent, AgentOptions};
+use fleetlink_auth::RobotName;
 use tokio_util::sync::CancellationToken;
 
 #[derive(clap::Args)]
@@ -13,9 +14,10 @@ pub struct Args {
     /// Hub URL (overrides `hub:` in the config), e.g. ws://hub.example:8080
     #[arg(long)]
     pub hub: Option<String>,
-    /// Robot name (overrides `name:`); its topics appear on the hub under /NAME.
+    /// Robot name (overrides `name:`); its topics appear on the hub under /NAME. The rule:
+    /// docs/config.md, "Robot names".
     #[arg(long)]
-    pub name: Option<String>,
+    pub name: Option<RobotName>,
     /// YAML configuration file (see docs/config.md). Without it, defaults apply.
     #[arg(long)]
     pub config: Option<PathBuf>,

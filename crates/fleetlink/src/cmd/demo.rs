@@ -66,7 +66,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let mut robots = Vec::new();
         for i in 1..=args.robots {
             let mut cfg = robot_config(&url, i)?;
-            let robot = fleetlink_auth::RobotName::new(&cfg.name)?;
+            let robot = cfg.name.clone();
             cfg.token = tokens.get_or_mint(&security, &format!("robot:{robot}"), |exp| {
                 Ok(security.store.add_robot_token(&robot, exp, now)?)
             })?;

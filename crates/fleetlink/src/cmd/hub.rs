@@ -54,7 +54,7 @@ pub struct Args {
     /// Robots sharing one access link: NAME=MBIT:ROBOT_REGEX (e.g. warehouse=20:wh_[0-9]+);
     /// the hub divides the capacity among them by demand and latency. Repeatable.
     #[arg(long = "site", value_name = "NAME=MBIT:REGEX")]
-    pub sites: Vec<fleetlink_hub::server::SiteConfig>,
+    pub sites: Vec<fleetlink_hub::state::SiteConfig>,
     /// Accept OIDC/JWT bearer tokens signed by keys from this JWKS: a file, or the
     /// provider's https:// URL (re-read hourly, and sooner for an unknown key id).
     #[arg(long, value_name = "FILE|URL", requires_all = ["jwt_issuer", "jwt_audience"])]
@@ -224,7 +224,7 @@ fn parse_robot_network(s: &str) -> Result<fleetlink_auth::authn::RobotNetwork, S
         .parse()
         .map_err(|e| format!("{net:?} is not a CIDR network: {e}"))?;
     let robot = robot
-        .map(|r| fleetlink_auth::RobotName::new(r).map_err(|e| format!("robot {r:?}: {e}")))
+        .map(|r| fleetlink_auth::RobotName::new(r).map_err(|e| e.to_string()))
         .transpose()?;
     Ok(fleetlink_auth::authn::RobotNetwork { net, robot })
 }

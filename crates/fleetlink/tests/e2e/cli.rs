@@ -300,3 +300,55 @@ fn issue14_output_piped_into_head_ends_quietly() {
         assert!(err.is_empty(), "{args:?} wrote to stderr: {err}");
     }
 }
+
+/// Issue 36, item 6: a robot name breaking the one rule (`fleetlink_auth::RobotName`) is
+/// refused where it is typed, with the rule, before anything is written: no database
+/// created, no token minted, no certificate issued, no agent started.
+#[test]
+fn issue36_cli_refuses_a_robot_name_breaking_the_rule() {
+    let dir = temp_dir("bad-robot-name");
+    let data = dir.join("hub-data");
+    let certs = dir.join("tls");
+    let rule = "(robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes)";
+    let runs: [(Vec<std::ffi::OsString>, &str); 3] = [
+        (
+            vec![
+                "admin".into(),
+                "--data-dir".into(),
+                data.clone().into(),
+                "token".into(),
+                "robot".into(),
+                "1robot".into(),
+            ],
+            "1robot",
+        ),
+        (
+            vec![
+                "admin".into(),
+                "cert".into(),
+                "--dir".into(),
+                certs.clone().into(),
+                "robot".into(),
+                "_bot".into(),
+            ],
+            "_bot",
+        ),
+        (
+            vec!["agent".into(), "--name".into(), "1robot".into()],
+            "1robot",
+        ),
+    ];
+    for (args, name) in runs {
+        let out = Command::new(BIN).args(&args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?} succeeded: {err}");
+        assert!(
+            err.contains(&format!(
+                "invalid robot name \"{name}\": must start with an ASCII letter {rule}"
+            )),
+            "{args:?}: {err}"
+        );
+    }
+    assert!(!data.exists(), "a database was created for a refused name");
+    assert!(!certs.exists(), "a certificate directory was created");
+}

@@ -16,8 +16,8 @@ use fleetlink_relay::link::session::{Event, LinkSession};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::{ClientId, Router, Topic, TopicName};
 
-use super::LiveRobot;
 use crate::delivery::RobotBook;
+use crate::registry::LiveRobot;
 
 struct PubTopic {
     topic: Arc<Topic>,

@@ -1,23 +1,21 @@
-//! Agents on the hub: one `fleetlink.v1` link per robot, and the registry of robots that
-//! are online.
+//! Agents on the hub: one `fleetlink.v1` link per robot.
 //!
 //! - [`serve_agent`] drives one link: the sans-IO [`LinkSession`] (handshake, calls,
 //!   heartbeats, liveness) fed with what the socket reads and woken at its deadlines; the
 //!   outbox writer ([`write_link`]) in a task of its own; the robot's topics and
 //!   subscriptions applied to the hub's router ([`events`]).
-//! - [`registry`]: robots online, with their link figures.
+//! - A link that is up is entered in the [`Registry`] of robots online
+//!   ([`crate::registry`], a module of its own so `rosout` and `security` can read it
+//!   without importing the sessions that fill it).
 
 mod events;
-mod registry;
-
-pub use registry::{LiveLink, LiveRobot, Registry};
 
 use std::net::SocketAddr;
 use std::sync::Arc;
 use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
-use fleetlink_auth::{Credential, GroupName, Operation, Token, TokenKind};
+use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
 use fleetlink_proto::frame::Frame;
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
@@ -37,6 +35,7 @@ use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
 use crate::delivery::DeliveryLedger;
+use crate::registry::{LiveLink, LiveRobot, Registry};
 use crate::store::Store;
 use events::RobotLink;
 
@@ -63,14 +62,6 @@ pub struct AgentContext {
     pub ledger: Arc<DeliveryLedger>,
     /// The hub's `/rosout`: robots connecting, leaving, refused.
     pub rosout: Arc<crate::rosout::RosOut>,
-}
-
-/// A robot name: letters, digits and `_`, as a ROS namespace segment must be.
-pub fn valid_robot_name(name: &str) -> bool {
-    !name.is_empty()
-        && name.len() <= 64
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        && !name.starts_with(|c: char| c.is_ascii_digit())
 }
 
 /// What `HELLO` said, once authenticated.
@@ -284,12 +275,8 @@ where
             }
         }
     };
-    if !valid_robot_name(&robot) {
-        let reason = format!(
-            "invalid robot name {robot:?}: use letters, digits and '_' (not starting with a digit)"
-        );
-        return Err(Ended::Refuse(reason, None));
-    }
+    // The name is parsed here, at the edge; a refusal quotes the rule.
+    let name = RobotName::new(&robot).map_err(|e| Ended::Refuse(e.to_string(), None))?;
     let heartbeat_ms = if hb == 0 {
         ctx.default_heartbeat_ms
     } else {
@@ -305,7 +292,7 @@ where
         Credential::Bearer(token)
     } else {
         Credential::Agent {
-            robot: robot.clone(),
+            robot: name,
             token: (!token.is_empty()).then_some(token),
         }
     };

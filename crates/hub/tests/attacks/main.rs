@@ -19,7 +19,7 @@ use std::time::Duration;
 use bytes::Bytes;
 use fleetlink_auth::audit::{AuditAction, AuditQuery, StoredAudit};
 use fleetlink_auth::{GroupName, UnixTime, UserName};
-use fleetlink_hub::server::HubState;
+use fleetlink_hub::state::HubState;
 use fleetlink_hub::{Hub, HubConfig};
 use fleetlink_proto::frame::Frame;
 use futures_util::{SinkExt, StreamExt};

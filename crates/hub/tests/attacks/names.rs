@@ -68,6 +68,38 @@ async fn robot_cannot_publish_into_another_robots_namespace() {
     fx.still_serving().await;
 }
 
+/// Issue 36, item 6: the hub parses HELLO's robot name with the one rule
+/// (`fleetlink_auth::RobotName`) the agent's config and the CLI use, so `_bot` (which the
+/// agent's own checks once let through) and `1robot` are refused with the rule's text, not
+/// a bare "authentication failed". The name is refused before any credential is looked
+/// at, so there is no `auth_failure` record to find: only the STATUS and the close.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue36_hello_with_a_robot_name_breaking_the_rule_is_refused_with_the_rule() {
+    let fx = hub().await;
+    let rule = "(robot names are [A-Za-z][A-Za-z0-9_]*, at most 63 bytes)";
+    let too_long = format!("r{}", "0".repeat(63));
+    for (name, problem) in [
+        ("_bot", "must start with an ASCII letter"),
+        ("1robot", "must start with an ASCII letter"),
+        ("robot-1", "only ASCII letters, digits and '_' are allowed"),
+        (too_long.as_str(), "longer than 63 bytes"),
+    ] {
+        let mut a = agent(fx.addr, name, "", None).await;
+        refused(
+            &mut a,
+            401,
+            &format!("invalid robot name {name:?}: {problem} {rule}"),
+        )
+        .await;
+        assert!(next_frame(&mut a).await.is_none(), "{name}: link closes");
+    }
+    // The longest valid name gets as far as authentication.
+    let longest = format!("r{}", "0".repeat(62));
+    let mut a = agent(fx.addr, &longest, &fx.robot_token(&longest, None), None).await;
+    welcomed(&mut a).await;
+    fx.still_serving().await;
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn regex_subscription_only_reaches_visible_topics() {
     let fx = hub().await;

@@ -45,8 +45,9 @@ pub enum CertCmd {
     },
     /// A client certificate (NAME.pem, NAME.key) naming robot NAME, for mutual TLS.
     Robot {
-        /// The robot's name, as in its agent's `name:`.
-        name: String,
+        /// The robot's name, as in its agent's `name:` (the rule: docs/config.md, "Robot
+        /// names"; it also keeps the name a valid DNS label).
+        name: fleetlink_auth::RobotName,
     },
 }
 
@@ -105,9 +106,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             println!("  tls:");
             println!("    ca: {}", ca_pem.display());
         }
-        CertCmd::Robot { name } => {
-            let robot = fleetlink_auth::RobotName::new(&name)
-                .with_context(|| format!("robot name {name:?}"))?;
+        CertCmd::Robot { name: robot } => {
             let mut params = leaf_params(args.days)?;
             params
                 .distinguished_name
@@ -116,7 +115,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 robot
                     .as_str()
                     .try_into()
-                    .with_context(|| format!("robot name {name:?} as a DNS name"))?,
+                    .with_context(|| format!("robot name {robot:?} as a DNS name"))?,
             ));
             params.extended_key_usages = vec![ExtendedKeyUsagePurpose::ClientAuth];
             let cert = dir.join(format!("{robot}.pem"));

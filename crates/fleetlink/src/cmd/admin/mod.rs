@@ -57,8 +57,9 @@ pub enum What {
 pub enum TokenCmd {
     /// A token for robot NAME's agent (printed once; only its hash is stored).
     Robot {
-        /// The robot's name, as in its agent's `name:`.
-        name: String,
+        /// The robot's name, as in its agent's `name:` (the rule: docs/config.md, "Robot
+        /// names").
+        name: RobotName,
         /// Days until the token expires (default: never).
         #[arg(long)]
         expires_days: Option<i64>,
@@ -180,8 +181,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     match what {
         What::Cert(_) => unreachable!("handled before the database is opened"),
         What::Token(TokenCmd::Robot { name, expires_days }) => {
-            let robot = RobotName::new(&name).with_context(|| format!("robot name {name:?}"))?;
-            let t = security.add_robot_token(&me, &robot, expiry(expires_days, now), now)?;
+            let t = security.add_robot_token(&me, &name, expiry(expires_days, now), now)?;
             println!("{}", t.expose());
         }
         What::Token(TokenCmd::Operator {

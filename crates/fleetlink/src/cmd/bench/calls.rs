@@ -34,7 +34,7 @@ pub struct Args {
     pub local: String,
     /// The robot the agent speaks for (its services are `/<robot>/...` on the hub).
     #[arg(long)]
-    pub robot: String,
+    pub robot: fleetlink_auth::RobotName,
     /// Concurrent callers of each phase, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "1,50")]
     pub callers: Vec<usize>,

@@ -110,7 +110,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
     for i in 0..args.robots {
         let uplink = UplinkConfig {
             hub_url: format!("ws://{addr}"),
-            robot: format!("r{i}"),
+            robot: fleetlink_auth::RobotName::new(&format!("r{i}"))?,
             token: String::new(),
             heartbeat: Duration::from_secs(1),
             reconnect_initial: Duration::from_millis(250),

@@ -4,6 +4,10 @@
 //! connection after a Wi-Fi drop) replaces it: [`Registry::insert`] hands back the old
 //! entry, whose session the caller ends ([`LiveRobot::replace`]) and whose topics it
 //! withdraws before the new one advertises, so a robot never appears twice.
+//!
+//! A leaf of the crate (it imports none of its modules): the agent sessions
+//! ([`crate::agents`]) fill it, and `/rosout`, the access checks, capacity sharing and the
+//! HTTP API read it, none of them through the sessions.
 
 use std::collections::{HashMap, VecDeque};
 use std::net::SocketAddr;

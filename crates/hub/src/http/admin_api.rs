@@ -31,8 +31,9 @@ use fleetlink_auth::{
 use serde::Deserialize;
 use serde_json::{Value, json};
 
-use crate::api::Caller;
-use crate::server::{ConnMeta, HubState};
+use super::caller::Caller;
+use crate::connection::ConnMeta;
+use crate::state::HubState;
 
 /// Routes that need an authenticated caller (merged under `require_identity`).
 pub fn routes() -> axum::Router<Arc<HubState>> {
@@ -395,8 +396,7 @@ async fn mint_robot_token(
     body: Bytes,
 ) -> ApiResult {
     require_admin(&st, &me, "/tokens")?;
-    let robot = RobotName::new(&name)
-        .map_err(|e| ApiError::BadRequest(format!("robot name {name:?}: {e}")))?;
+    let robot = RobotName::new(&name).map_err(|e| ApiError::BadRequest(e.to_string()))?;
     let b: MintBody = if body.is_empty() {
         MintBody::default()
     } else {

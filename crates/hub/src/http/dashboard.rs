@@ -22,17 +22,17 @@ struct Asset {
 const ASSETS: [Asset; 3] = [
     Asset {
         path: "/",
-        body: include_bytes!("../assets/dashboard/index.html"),
+        body: include_bytes!("../../assets/dashboard/index.html"),
         content_type: "text/html; charset=utf-8",
     },
     Asset {
         path: "/app.js",
-        body: include_bytes!("../assets/dashboard/app.js"),
+        body: include_bytes!("../../assets/dashboard/app.js"),
         content_type: "text/javascript; charset=utf-8",
     },
     Asset {
         path: "/app.css",
-        body: include_bytes!("../assets/dashboard/app.css"),
+        body: include_bytes!("../../assets/dashboard/app.css"),
         content_type: "text/css; charset=utf-8",
     },
 ];

@@ -21,15 +21,16 @@ use fleetlink_relay::queue::DropReason;
 use fleetlink_relay::router::ClientKind;
 use serde_json::{Value, json};
 
-use crate::server::HubState;
+use super::caller::Caller;
+use crate::state::HubState;
 
+/// The read-only routes; they need an authenticated caller (see [`super::routes`]).
 pub fn routes() -> axum::Router<Arc<HubState>> {
     axum::Router::new()
         .route("/api/v1/robots", get(robots))
         .route("/api/v1/topics", get(topics))
         .route("/api/v1/clients", get(clients))
         .route("/api/v1/robots/{name}/offload", get(offload))
-        .merge(crate::admin_api::routes())
 }
 
 fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
@@ -153,8 +154,8 @@ async fn topics(
 async fn clients(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,
-) -> Result<Json<Value>, crate::admin_api::ApiError> {
-    crate::admin_api::require_read(&st, &me, "/clients")?;
+) -> Result<Json<Value>, super::admin_api::ApiError> {
+    super::admin_api::require_read(&st, &me, "/clients")?;
     let now = Instant::now();
     let list: Vec<Value> = st
         .router
@@ -256,36 +257,4 @@ fn ms(t: std::time::SystemTime) -> u64 {
     t.duration_since(std::time::UNIX_EPOCH)
         .map(|d| d.as_millis() as u64)
         .unwrap_or(0)
-}
-
-/// The identity behind an API request, put in the request by [`require_identity`].
-#[derive(Clone)]
-pub struct Caller(pub fleetlink_auth::Identity);
-
-/// Every `/api` route and `/metrics` need an authenticated caller (or anonymous read where
-/// the hub allows it): a bearer token in `Authorization` or a `token` query parameter.
-pub async fn require_identity(
-    State(st): State<Arc<HubState>>,
-    axum::extract::ConnectInfo(peer): axum::extract::ConnectInfo<std::net::SocketAddr>,
-    mut req: axum::extract::Request,
-    next: axum::middleware::Next,
-) -> axum::response::Response {
-    use axum::response::IntoResponse;
-    let tls_name = req
-        .extensions()
-        .get::<crate::server::ConnMeta>()
-        .and_then(|m| m.tls_name.clone());
-    let conn = crate::security::conn_info(peer, req.headers(), tls_name);
-    let credential = crate::security::request_credential(req.headers(), req.uri().query());
-    match crate::security::authenticate(&st.security, credential, conn).await {
-        Ok(identity) => {
-            req.extensions_mut().insert(Caller(identity));
-            next.run(req).await
-        }
-        Err(e) => (
-            axum::http::StatusCode::UNAUTHORIZED,
-            Json(json!({"error": format!("authentication required: {}", e.public_message())})),
-        )
-            .into_response(),
-    }
 }

@@ -19,8 +19,8 @@ use prometheus_client::metrics::counter::ConstCounter;
 use prometheus_client::metrics::gauge::ConstGauge;
 use prometheus_client::registry::Registry;
 
-use crate::api::Caller;
-use crate::server::HubState;
+use super::caller::Caller;
+use crate::state::HubState;
 
 struct HubCollector(Arc<HubState>);
 
@@ -205,7 +205,7 @@ pub async fn handler(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,
 ) -> Response {
-    if let Err(e) = crate::admin_api::require_read(&st, &me, fleetlink_auth::acl::METRICS) {
+    if let Err(e) = super::admin_api::require_read(&st, &me, fleetlink_auth::acl::METRICS) {
         return e.into_response();
     }
     let mut reg = Registry::default();
