@@ -3,6 +3,7 @@
 
 use std::net::SocketAddr;
 use std::sync::Arc;
+use std::time::Duration;
 
 use fleetlink_relay::Router;
 use fleetlink_relay::rosbridge::SessionConfig;
@@ -10,10 +11,15 @@ use fleetlink_relay::transcode::Transcoder;
 use tokio::net::TcpListener;
 use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;
+use tokio_util::task::TaskTracker;
 
 use crate::config::{AgentConfig, SimConfig};
 use crate::uplink::{LinkState, NameMap, Uplink, UplinkConfig, UplinkStats};
 use fleetlink_relay::TopicName;
+
+/// How long a stopping agent waits for its parts (after its link and durable outbox,
+/// which the uplink closes itself).
+pub const SHUTDOWN_GRACE: Duration = Duration::from_secs(5);
 
 /// Everything an agent needs to run (the CLI builds it from flags and the YAML file).
 #[derive(Debug, Clone)]
@@ -243,8 +249,11 @@ impl Agent {
         self.uplink.stats.clone()
     }
 
-    /// Runs until `shutdown` is cancelled.
+    /// Runs until `shutdown` is cancelled, then stops: the link closes with 1001, local
+    /// clients get 1001, the durable outbox writes and syncs what it holds, and the tasks
+    /// are waited for (at most [`SHUTDOWN_GRACE`]).
     pub async fn run(self, shutdown: CancellationToken) {
+        let sessions = TaskTracker::new();
         let deadlines = tokio::spawn(self.router.calls.clone().run_deadlines(shutdown.clone()));
         let local = self.local.map(|l| {
             let cfg = Arc::new(SessionConfig {
@@ -256,6 +265,7 @@ impl Agent {
                 self.router.clone(),
                 cfg,
                 shutdown.clone(),
+                sessions.clone(),
             ))
         });
         let sim = self.sim.map(|cfg| {
@@ -327,12 +337,21 @@ impl Agent {
             ))
         });
         self.uplink.run(shutdown.clone()).await;
-        for t in [local, sim, ros1, status].into_iter().flatten() {
-            let _ = t.await;
+        sessions.close();
+        let rest = async {
+            for t in [local, sim, ros1, status].into_iter().flatten() {
+                let _ = t.await;
+            }
+            sessions.wait().await;
+            if let Some(t) = ros2.flatten() {
+                let _ = tokio::task::spawn_blocking(move || t.join()).await;
+            }
+            let _ = deadlines.await;
+        };
+        if tokio::time::timeout(SHUTDOWN_GRACE, rest).await.is_err() {
+            tracing::warn!(
+                "parts of the agent did not stop within {SHUTDOWN_GRACE:?}; stopping anyway"
+            );
         }
-        if let Some(t) = ros2.flatten() {
-            let _ = tokio::task::spawn_blocking(move || t.join()).await;
-        }
-        let _ = deadlines.await;
     }
 }

@@ -17,5 +17,6 @@ mod e2e {
     mod priority;
     mod relay;
     mod rosbridge;
+    mod shutdown;
     mod tls;
 }

@@ -35,6 +35,9 @@ use crate::registry::Registry;
 use crate::state::{HubState, SiteConfig};
 use crate::store::{Store, StoreError};
 
+/// How long a stopping hub waits for its sessions to close.
+pub const SHUTDOWN_GRACE: Duration = Duration::from_secs(5);
+
 /// Hub settings (`fleetlink hub` flags).
 #[derive(Debug, Clone)]
 pub struct HubConfig {
@@ -159,6 +162,7 @@ impl Hub {
             agents,
             rosbridge,
             shutdown,
+            tasks: tokio_util::task::TaskTracker::new(),
             security,
             tls,
             sites: cfg.sites.clone(),
@@ -179,7 +183,8 @@ impl Hub {
         self.state.clone()
     }
 
-    /// Serves until `shutdown` completes, then closes every session.
+    /// Serves until `shutdown` completes, then closes every session and waits for them
+    /// (at most [`SHUTDOWN_GRACE`]) and for the database writers.
     pub async fn run(
         self,
         shutdown: impl Future<Output = ()> + Send + 'static,
@@ -227,11 +232,26 @@ impl Hub {
             };
             let _ = tcp.set_nodelay(true);
             let admitted = door.limits.admit(peer.ip());
-            tokio::spawn(door.clone().serve(tcp, peer, admitted));
+            state.tasks.spawn(door.clone().serve(tcp, peer, admitted));
         }
+        // Stop: no new connections (the listener goes), every session told to close (agents
+        // and rosbridge clients get close 1001), and the hub waits for them to finish what
+        // they were doing — a robot's delivery marks written, its calls failed with the
+        // reason — within the grace time.
+        drop(self.listener);
         token.cancel();
         housekeeping.abort();
         capacity.abort();
+        state.tasks.close();
+        if tokio::time::timeout(SHUTDOWN_GRACE, state.tasks.wait())
+            .await
+            .is_err()
+        {
+            tracing::warn!(
+                "{} connections did not close within {SHUTDOWN_GRACE:?}; stopping anyway",
+                state.tasks.len()
+            );
+        }
         // What was answered before the stop is on disk when `run` returns: parameters
         // and the audit log are written by their own threads.
         let (params, audit) = (state.router.params.clone(), state.security.clone());
@@ -361,7 +381,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         }
     };
     let on_upgrade = hyper::upgrade::on(&mut req);
-    tokio::spawn(async move {
+    st.tasks.clone().spawn(async move {
         let upgraded = match on_upgrade.await {
             Ok(u) => u,
             Err(e) => {

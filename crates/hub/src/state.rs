@@ -26,6 +26,9 @@ pub struct HubState {
     pub agents: Arc<AgentContext>,
     pub rosbridge: Arc<SessionConfig>,
     pub shutdown: CancellationToken,
+    /// Every connection's task (HTTP, rosbridge and agent sessions): a stopping hub waits
+    /// for them, within [`crate::server::SHUTDOWN_GRACE`].
+    pub tasks: tokio_util::task::TaskTracker,
     pub security: Arc<fleetlink_auth::Security>,
     pub tls: Option<Arc<fleetlink_auth::tls::ReloadingServerConfig>>,
     pub sites: Vec<SiteConfig>,

@@ -293,6 +293,15 @@ pub async fn serve<K, S>(
         tokio::task::consume_budget().await;
     }
     session.flush_counts();
+    if shutdown.is_cancelled() {
+        // Going away (RFC 6455, 7.4.1), after what is queued; a writer too backed up to
+        // take it is closed by the end of the reply channel anyway.
+        let away = CloseFrame {
+            code: CloseCode::Away,
+            reason: "the server is shutting down".into(),
+        };
+        let _ = session.replies.try_send(Reply::Close(Some(away)));
+    }
     router.disconnect(client);
     drop(session);
     let _ = writer.await;
