@@ -608,6 +608,7 @@ impl Uplink {
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
         // Local topics carried up that have lost their last publisher (a ROS node gone).
         let mut unpublished: HashSet<TopicId> = HashSet::new();
+        let mut timer = drive::Timer::default();
         let reason = 'serve: loop {
             while let Some(ev) = session.poll_event() {
                 match ev {
@@ -647,7 +648,7 @@ impl Uplink {
                         p.send(c);
                     }
                 }
-                _ = drive::timer(deadline) => session.handle_timeout(Instant::now()),
+                _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
                 _ = shutdown.cancelled() => {
                     session.close(CloseReason::Local("the agent is shutting down".into()));
                 }

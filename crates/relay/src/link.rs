@@ -14,7 +14,7 @@ mod writer;
 
 pub use writer::write_link;
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -84,7 +84,10 @@ pub enum LinkError {
 
 /// Per-link receive state: the peer's aliases and partially received chunked messages.
 pub struct LinkIn {
-    aliases: HashMap<u32, InTopic>,
+    // Looked up for every message: small integer keys the peer chose, hashed with Fx
+    // (no collision attack pays: a link may bind at most as many aliases as it sends
+    // ADVERTISEs, each counted against its own messages).
+    aliases: rustc_hash::FxHashMap<u32, InTopic>,
     reassembly: Reassembler,
     /// Whole messages received since the last `ACK` we sent.
     pub unacked: u32,
@@ -95,7 +98,7 @@ pub struct LinkIn {
 impl Default for LinkIn {
     fn default() -> Self {
         LinkIn {
-            aliases: HashMap::new(),
+            aliases: rustc_hash::FxHashMap::default(),
             reassembly: Reassembler::new(MAX_LINK_MESSAGE, MAX_LINK_REASSEMBLY),
             unacked: 0,
             unacked_bytes: 0,

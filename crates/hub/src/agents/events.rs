@@ -13,7 +13,8 @@ use fleetlink_proto::frame::{Frame, Level, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, 
 use fleetlink_relay::gate::Op;
 use fleetlink_relay::link::LinkEvent;
 use fleetlink_relay::link::session::{Event, LinkSession};
-use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicView};
+use fleetlink_relay::stats::StatsBatch;
 use fleetlink_relay::{ClientId, Router, Topic, TopicName};
 
 use crate::delivery::RobotBook;
@@ -23,6 +24,12 @@ struct PubTopic {
     topic: Arc<Topic>,
     /// Its name, kept for the per-message checks (the topic's own is behind an ArcSwap).
     name: TopicName,
+    /// The robot's messages not yet added to the topic's counters, and the topic as of
+    /// the robot's last message: both kept for one read of the link
+    /// ([`RobotLink::end_of_read`]), as a rosbridge publisher keeps them for a burst.
+    counts: StatsBatch,
+    view: TopicView,
+    unflushed: bool,
 }
 
 /// The hub's side of one robot link, besides the session.
@@ -30,12 +37,18 @@ pub(super) struct RobotLink {
     pub router: Arc<Router>,
     pub client: ClientId,
     pub live: Arc<LiveRobot>,
-    topics: HashMap<u32, PubTopic>,
+    /// The robot's topics by alias (Fx-hashed: looked up per message; see `LinkIn`).
+    topics: rustc_hash::FxHashMap<u32, PubTopic>,
     subs: HashMap<u32, SubscriptionId>,
     /// Delivery marks of this robot's no-drop topics.
     pub book: Arc<Mutex<RobotBook>>,
     /// No-drop aliases to confirm once the marks are written, with the highest number.
     pub confirm: HashMap<u32, u64>,
+    /// Topics with counts or a view held since the last read (see `PubTopic`).
+    unflushed: Vec<u32>,
+    /// When the link's last read arrived: the receive time of its messages (one clock
+    /// reading per read, not per message).
+    read_at: (std::time::Instant, u64),
 }
 
 impl RobotLink {
@@ -49,10 +62,30 @@ impl RobotLink {
             router,
             client,
             live,
-            topics: HashMap::new(),
+            topics: rustc_hash::FxHashMap::default(),
             subs: HashMap::new(),
             book,
             confirm: HashMap::new(),
+            unflushed: Vec::new(),
+            read_at: (std::time::Instant::now(), fleetlink_relay::unix_nanos()),
+        }
+    }
+
+    /// A read of the link arrived at `at` (the unix clock `unix_ns`): its messages carry
+    /// that receive time.
+    pub fn read_at(&mut self, at: std::time::Instant, unix_ns: u64) {
+        self.read_at = (at, unix_ns);
+    }
+
+    /// The read's messages are published: their counts go to the topics' counters and the
+    /// views are let go (a subscriber that leaves is not kept alive by them).
+    pub fn end_of_read(&mut self) {
+        for alias in self.unflushed.drain(..) {
+            if let Some(p) = self.topics.get_mut(&alias) {
+                p.topic.stats.flush(&mut p.counts);
+                p.view.clear();
+                p.unflushed = false;
+            }
         }
     }
 
@@ -97,7 +130,7 @@ impl RobotLink {
         payload: fleetlink_proto::Payload,
         session: &mut LinkSession,
     ) {
-        let Some(p) = self.topics.get(&alias) else {
+        let Some(p) = self.topics.get_mut(&alias) else {
             return;
         };
         let gate = session.gate();
@@ -106,15 +139,30 @@ impl RobotLink {
             return;
         }
         let size = payload.len();
-        let msg = p.topic.publish(self.client, seq, stamp_ns, payload);
+        let (received, received_ns) = self.read_at;
+        let view = p.topic.view(&mut p.view);
+        p.topic.publish_framed(
+            view,
+            self.client,
+            seq,
+            stamp_ns,
+            payload,
+            received,
+            false,
+            &mut p.counts,
+        );
+        if !p.unflushed {
+            p.unflushed = true;
+            self.unflushed.push(alias);
+        }
         // End-to-end latency on the hub's clock: origin stamp plus the robot's clock
-        // offset, to when the hub received it (the message's own receive time: no
-        // second clock read).
+        // offset, to when the hub received it.
         if let Some(off) = self.live.clock_offset_ns() {
             let origin = stamp_ns as i128 + off as i128;
-            let at = msg.received_unix_ns() as i128;
-            if at >= origin {
-                p.topic.stats.record_latency((at - origin) as u64);
+            if received_ns as i128 >= origin {
+                p.topic
+                    .stats
+                    .record_latency((received_ns as i128 - origin) as u64);
             }
         }
         gate.done(p.name.as_str(), Op::Publish, size);
@@ -143,7 +191,20 @@ impl RobotLink {
                     .advertise(self.client, &name, topic.schema, topic.latched)
                 {
                     Ok(t) => {
-                        self.topics.insert(alias, PubTopic { topic: t, name });
+                        if let Some(old) = self.topics.insert(
+                            alias,
+                            PubTopic {
+                                topic: t,
+                                name,
+                                counts: StatsBatch::default(),
+                                view: TopicView::default(),
+                                unflushed: false,
+                            },
+                        ) {
+                            // Rebound: what the old binding counted still counts.
+                            let mut old = old;
+                            old.topic.stats.flush(&mut old.counts);
+                        }
                     }
                     Err(e) => session.status(
                         Level::Error,
@@ -153,10 +214,11 @@ impl RobotLink {
                 }
             }
             LinkEvent::Unadvertise { alias, topic } => {
-                if self.topics.remove(&alias).is_some()
-                    && let Ok(name) = TopicName::parse(&topic.name)
-                {
-                    self.router.unadvertise(self.client, &name);
+                if let Some(mut p) = self.topics.remove(&alias) {
+                    p.topic.stats.flush(&mut p.counts);
+                    if let Ok(name) = TopicName::parse(&topic.name) {
+                        self.router.unadvertise(self.client, &name);
+                    }
                 }
             }
             LinkEvent::Message {

@@ -348,16 +348,21 @@ async fn serve_open<R>(
 where
     R: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
 {
+    let mut timer = drive::Timer::default();
     // Delivery marks being written, and what to confirm when they are.
     let mut recording: Option<BoxFuture<'static, ()>> = None;
     let mut confirming: Vec<(u32, u64)> = Vec::new();
     loop {
         while let Some(ev) = session.poll_event() {
             match ev {
-                Event::Closed(r) => return r,
+                Event::Closed(r) => {
+                    link.end_of_read();
+                    return r;
+                }
                 ev => link.apply(ev, session),
             }
         }
+        link.end_of_read();
         if recording.is_none() && !link.confirm.is_empty() {
             confirming = link.confirm.drain().collect();
             let (ledger, robot, book) = (
@@ -371,8 +376,9 @@ where
         let deadline = session.poll_timeout();
         tokio::select! {
             m = reader.next() => {
-                let now = Instant::now();
-                link.live.last_seen_ns.store(fleetlink_relay::unix_nanos(), Relaxed);
+                let (now, unix_ns) = (Instant::now(), fleetlink_relay::unix_nanos());
+                link.live.last_seen_ns.store(unix_ns, Relaxed);
+                link.read_at(now, unix_ns);
                 if let Some(ping) = drive::feed(session, m, now) {
                     let _ = ctrl_tx.try_send(Control::Pong(ping));
                 }
@@ -393,7 +399,7 @@ where
                     session.delivered(alias, seq);
                 }
             }
-            _ = drive::timer(deadline) => session.handle_timeout(Instant::now()),
+            _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
             _ = ctx.shutdown.cancelled() => {
                 session.close(CloseReason::Local("the hub is shutting down".into()));
             }

@@ -22,6 +22,9 @@ use crate::outbox::Outbox;
 /// Most bulk bytes one round of a scheduled outbox's writer puts out before it looks at
 /// its queue and control frames again (its window usually stops it well before).
 const MAX_ROUND_BYTES: usize = 1 << 20;
+/// Payloads up to this size are framed straight into each link's pack instead of through
+/// the message's shared frames ([`Message::link_frames`]).
+const ENCODE_IN_PLACE: usize = 1024;
 /// How often an idle writer looks whether an estimator probe is due.
 const PROBE_TICK: std::time::Duration = std::time::Duration::from_millis(50);
 
@@ -272,8 +275,20 @@ pub async fn write_link<K>(
             // Per message on the hub's fan-out path: these calls read no clock and take no
             // lock unless the outbox is the agent's scheduled uplink.
             let sized = outbox.chunk_size();
-            if msg.payload.len() <= sized.unwrap_or(DEFAULT_CHUNK_SIZE) {
-                // One MESSAGE frame (payloads up to DEFAULT_CHUNK_SIZE are never chunked).
+            let whole = sized.unwrap_or(DEFAULT_CHUNK_SIZE);
+            if msg.payload.len() <= ENCODE_IN_PLACE.min(whole) {
+                // A small message's MESSAGE frame is written straight into the pack: a
+                // few dozen bytes copied per link cost less than building a frame to
+                // share (the payload's bytes are copied as they are, never re-encoded).
+                let p = &msg.payload.bytes;
+                fleetlink_proto::frame::encode_message(&mut buf, tid.0, msg.seq, msg.stamp_ns, p);
+                if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
+                    return;
+                }
+                outbox.on_written(p.len());
+            } else if msg.payload.len() <= whole {
+                // One MESSAGE frame (payloads up to DEFAULT_CHUNK_SIZE are never chunked),
+                // built once and shared by every link it goes out on.
                 let frames = msg.link_frames();
                 if send_large(&mut sink, &mut buf, &frames[0], PACK)
                     .await
