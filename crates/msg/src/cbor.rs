@@ -10,6 +10,63 @@
 
 use crate::value::{Array, Value};
 
+/// One item's head as read from the input: what a walk over CBOR needs without decoding.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Head {
+    /// Major type, 0..=7.
+    pub major: u8,
+    /// The argument (a length, a value, a tag, a float's bits); `None` for an indefinite
+    /// length or a break.
+    pub arg: Option<u64>,
+    /// Whether the argument is written in its shortest form, as [`write_cbor`] writes it.
+    pub shortest: bool,
+}
+
+/// Reads the head at `data[*pos..]` and steps over it; `None` for truncated input and the
+/// reserved additional-information values. Design choice: read by hand, as a generic
+/// decoder costs more per head than a whole walk over a small message.
+pub fn read_head(data: &[u8], pos: &mut usize) -> Option<Head> {
+    let first = *data.get(*pos)?;
+    let (major, info) = (first >> 5, first & 0x1f);
+    let n = match info {
+        0..=23 => {
+            *pos += 1;
+            return Some(Head {
+                major,
+                arg: Some(info.into()),
+                shortest: true,
+            });
+        }
+        24 => 1,
+        25 => 2,
+        26 => 4,
+        27 => 8,
+        31 => {
+            *pos += 1;
+            return Some(Head {
+                major,
+                arg: None,
+                shortest: true,
+            });
+        }
+        _ => return None,
+    };
+    let bytes = data.get(*pos + 1..*pos + 1 + n)?;
+    *pos += 1 + n;
+    let arg = bytes.iter().fold(0u64, |v, b| v << 8 | u64::from(*b));
+    let shortest = match n {
+        1 => arg >= 24,
+        2 => arg > 0xff,
+        4 => arg > 0xffff,
+        _ => arg > 0xffff_ffff,
+    };
+    Some(Head {
+        major,
+        arg: Some(arg),
+        shortest,
+    })
+}
+
 fn head(out: &mut Vec<u8>, major: u8, n: u64) {
     let m = major << 5;
     if n < 24 {

@@ -36,6 +36,7 @@
 mod binary;
 mod bundled;
 pub mod cbor;
+mod cbor_check;
 pub mod error;
 pub mod ident;
 pub mod json;
@@ -161,19 +162,36 @@ pub fn normalize_json_resolved(
     Ok(Some(to_json_bytes(&v)))
 }
 
-/// Rosbridge CBOR checked against a type resolved beforehand and written in normal form
-/// ([`from_cbor`] then [`to_cbor_bytes`], without resolving the type again).
+/// Rosbridge CBOR checked against a type resolved beforehand and brought to normal form
+/// ([`from_cbor`] then [`to_cbor_bytes`], without resolving the type again). `Ok(None)`
+/// when the bytes already are in normal form and can be forwarded as they came: one pass
+/// without a tree, the common case for clients that write what rosbridge writes.
 pub fn normalize_cbor_resolved(
     ty: &registry::Resolved,
     bytes: &[u8],
-) -> Result<Vec<u8>, CodecError> {
+) -> Result<Option<Vec<u8>>, CodecError> {
     let layout = &ty.layout;
+    let quick = cbor_check::is_normal(layout, bytes);
+    if quick && !cfg!(debug_assertions) {
+        return Ok(None);
+    }
     let doc: ciborium::Value =
         ciborium::de::from_reader(bytes).map_err(|e| CodecError::Cbor(e.to_string()))?;
     let v = loose::to_struct(layout, &doc)
         .map(Value::Struct)
         .map_err(|e| binary::in_field(e, &layout.name.short()))?;
-    Ok(to_cbor_bytes(&v))
+    let normal = to_cbor_bytes(&v);
+    // Builds with debug assertions (the test suites' `ci` profile) check every message the
+    // one-pass check passes against the full path's output.
+    debug_assert!(
+        !quick || normal == bytes,
+        "one-pass CBOR normal-form check passed bytes the full path rewrites: {bytes:02x?}"
+    );
+    Ok(if quick || normal == bytes {
+        None
+    } else {
+        Some(normal)
+    })
 }
 
 /// The message as compact rosbridge JSON text.

@@ -1,6 +1,6 @@
-//! rosbridge JSON that is already in normal form is passed on as it came
-//! (`normalize_json_bytes` returns `None`); everything else is converted. Either way the
-//! result must be exactly what the full conversion gives.
+//! rosbridge JSON and CBOR that are already in normal form are passed on as they came
+//! (`normalize_json_bytes` / `normalize_cbor_resolved` return `None`); everything else is
+//! converted. Either way the result must be exactly what the full conversion gives.
 
 use fleetlink_msg::{Dialect, Registry, Wire, decode, from_json_bytes, normalize_json_bytes};
 use serde_json::{Value as Json, json};
@@ -121,6 +121,111 @@ fn wrong_types_are_refused_on_either_path() {
             normalize_json_bytes(&reg, "std_msgs/msg/Int32", Dialect::Ros2, text.as_bytes())
                 .is_err(),
             "{text}"
+        );
+    }
+}
+
+/// What the CBOR normalizer gives, and whether it kept the input as it was.
+fn normalized_cbor(reg: &Registry, ty: &str, cbor: &[u8]) -> (Vec<u8>, bool) {
+    let resolved = reg.resolve(ty, Dialect::Ros2).expect("known type");
+    match fleetlink_msg::normalize_cbor_resolved(&resolved, cbor).expect("valid") {
+        Some(out) => (out, false),
+        None => (cbor.to_vec(), true),
+    }
+}
+
+fn cbor_of(v: &Json) -> Vec<u8> {
+    let mut out = Vec::new();
+    ciborium::into_writer(v, &mut out).expect("encodes");
+    out
+}
+
+#[test]
+fn our_cbor_output_of_every_vector_is_kept_as_it_came() {
+    let reg = registry();
+    let (mut kept, mut nan) = (0, 0);
+    for v in vectors("cdr.jsonl") {
+        let ty = v["type"].as_str().expect("type");
+        let hex = v["cdr"].as_str().expect("hex");
+        let cdr: Vec<u8> = (0..hex.len())
+            .step_by(2)
+            .map(|i| u8::from_str_radix(&hex[i..i + 2], 16).unwrap())
+            .collect();
+        let value = decode(&reg, ty, Wire::Cdr, &cdr).expect("vector decodes");
+        let cbor = fleetlink_msg::to_cbor_bytes(&value);
+        let (out, was_kept) = normalized_cbor(&reg, ty, &cbor);
+        assert_eq!(out, cbor, "{ty}: the normal form of our own CBOR differs");
+        if was_kept {
+            kept += 1;
+        } else {
+            // Only a NaN scalar sends our own output down the full path.
+            assert!(
+                format!("{value:?}").contains("NaN"),
+                "{ty}: converted again"
+            );
+            nan += 1;
+        }
+    }
+    assert!(kept > 300, "only {kept} vectors kept ({nan} with NaN)");
+}
+
+#[test]
+fn cbor_not_in_normal_form_is_converted_as_the_full_path_does() {
+    let reg = registry();
+    for (ty, msg) in [
+        // An integer in a float field, a float in an integer field.
+        ("std_msgs/msg/Float64", json!({"data": 1})),
+        ("std_msgs/msg/Int32", json!({"data": 7.0})),
+        // A missing field, an extra field, fields out of order.
+        ("std_msgs/msg/Int32", json!({})),
+        ("std_msgs/msg/Int32", json!({"data": 7, "extra": 1})),
+        (
+            "geometry_msgs/msg/Vector3",
+            json!({"z": 3.0, "y": 2.0, "x": 1.0}),
+        ),
+        // A plain array where rosbridge writes a typed one, and text for bytes.
+        (
+            "std_msgs/msg/Float64MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": [1.5, 2.5]}),
+        ),
+        (
+            "std_msgs/msg/UInt8MultiArray",
+            json!({"layout": {"dim": [], "data_offset": 0}, "data": "AQID"}),
+        ),
+        // ROS 1 names for a time.
+        (
+            "std_msgs/msg/Header",
+            json!({"stamp": {"secs": 1, "nsecs": 2}, "frame_id": "m"}),
+        ),
+    ] {
+        let cbor = cbor_of(&msg);
+        let (out, kept) = normalized_cbor(&reg, ty, &cbor);
+        assert!(!kept, "{ty}: {msg} was kept as it came");
+        let full = fleetlink_msg::from_cbor(&reg, ty, Dialect::Ros2, &cbor).expect("valid");
+        assert_eq!(out, fleetlink_msg::to_cbor_bytes(&full), "{ty}: {msg}");
+        // And what comes out is normal: a second pass keeps it.
+        assert!(normalized_cbor(&reg, ty, &out).1, "{ty}: output not normal");
+    }
+    // A shorter head than needed is the same value but not the writer's bytes.
+    let long_head = [0xa1, 0x64, b'd', b'a', b't', b'a', 0x18, 0x07];
+    let (out, kept) = normalized_cbor(&reg, "std_msgs/msg/Int32", &long_head);
+    assert!(!kept);
+    assert_eq!(out, [0xa1, 0x64, b'd', b'a', b't', b'a', 0x07]);
+}
+
+#[test]
+fn wrong_cbor_is_refused_on_either_path() {
+    let reg = registry();
+    let resolved = reg.resolve("std_msgs/msg/Int32", Dialect::Ros2).unwrap();
+    for msg in [
+        json!({"data": "notanint"}),
+        json!({"data": 1u64 << 40}),
+        json!([1]),
+    ] {
+        let cbor = cbor_of(&msg);
+        assert!(
+            fleetlink_msg::normalize_cbor_resolved(&resolved, &cbor).is_err(),
+            "{msg}"
         );
     }
 }

@@ -362,9 +362,12 @@ impl Transcoder for RegistryTranscoder {
         };
         let refused = |e: fleetlink_msg::CodecError| invalid(schema, enc, e.to_string());
         if enc == Encoding::Cbor {
-            return fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes)
-                .map(|normal| Payload::new(Encoding::Cbor, normal))
-                .map_err(refused);
+            return match fleetlink_msg::normalize_cbor_resolved(resolved, &payload.bytes) {
+                Ok(Some(normal)) => Ok(Payload::new(Encoding::Cbor, normal)),
+                // Already in normal form: the bytes as they came (no copy).
+                Ok(None) => Ok(payload),
+                Err(e) => Err(refused(e)),
+            };
         }
         match fleetlink_msg::normalize_json_resolved(resolved, &payload.bytes) {
             Ok(Some(normal)) => Ok(Payload::json(normal)),

@@ -287,7 +287,7 @@ impl<'a> Publish<'a> {
     }
 
     /// A CBOR `publish` (a definite-length map with text `op`, `topic`, a map `msg`,
-    /// maybe `id`), its envelope walked header by header (`ciborium_ll`) without decoding
+    /// maybe `id`), its envelope walked head by head without decoding
     /// the message: `msg` is a slice of `frame`. `None` for anything else (indefinite
     /// lengths, duplicate keys, trailing bytes...), which [`Request::from_cbor`] then
     /// parses with the precise error.
@@ -296,7 +296,7 @@ impl<'a> Publish<'a> {
             data: frame,
             pos: 0,
         };
-        let ciborium_ll::Header::Map(Some(entries)) = c.header()? else {
+        let (5, Some(entries)) = c.header()? else {
             return None;
         };
         let (mut op, mut topic, mut msg, mut id) = (None, None, None, None);
@@ -363,11 +363,11 @@ impl<'a> CborCursor<'a> {
     /// Deepest nesting walked (as for JSON).
     const MAX_DEPTH: usize = 128;
 
-    fn header(&mut self) -> Option<ciborium_ll::Header> {
-        let mut d = ciborium_ll::Decoder::from(self.data.get(self.pos..)?);
-        let h = d.pull().ok()?;
-        self.pos += d.offset();
-        Some(h)
+    /// One item's head: its major type and argument (`None` for an indefinite length or
+    /// a break).
+    fn header(&mut self) -> Option<(u8, Option<u64>)> {
+        let h = fleetlink_msg::cbor::read_head(self.data, &mut self.pos)?;
+        Some((h.major, h.arg))
     }
 
     fn take(&mut self, len: usize) -> Option<&'a [u8]> {
@@ -379,7 +379,7 @@ impl<'a> CborCursor<'a> {
     /// A definite-length text item.
     fn text(&mut self) -> Option<&'a str> {
         match self.header()? {
-            ciborium_ll::Header::Text(Some(n)) => std::str::from_utf8(self.take(n)?).ok(),
+            (3, Some(n)) => std::str::from_utf8(self.take(usize::try_from(n).ok()?)?).ok(),
             _ => None,
         }
     }
@@ -387,27 +387,28 @@ impl<'a> CborCursor<'a> {
     /// Steps over one item; `None` for what only the full parse handles (indefinite
     /// lengths, a stray break, truncation, nesting deeper than `MAX_DEPTH`).
     fn skip(&mut self, depth: usize) -> Option<()> {
-        use ciborium_ll::Header;
         if depth > Self::MAX_DEPTH {
             return None;
         }
-        match self.header()? {
-            Header::Positive(_) | Header::Negative(_) | Header::Float(_) | Header::Simple(_) => {}
-            Header::Tag(_) => self.skip(depth + 1)?,
-            Header::Bytes(Some(n)) | Header::Text(Some(n)) => {
-                self.take(n)?;
+        let (major, arg) = self.header()?;
+        // Indefinite lengths and breaks are left to the full parse.
+        let n = arg?;
+        match major {
+            0 | 1 | 7 => {}
+            2 | 3 => {
+                self.take(usize::try_from(n).ok()?)?;
             }
-            Header::Array(Some(n)) => {
+            4 => {
                 for _ in 0..n {
                     self.skip(depth + 1)?;
                 }
             }
-            Header::Map(Some(n)) => {
+            5 => {
                 for _ in 0..n.checked_mul(2)? {
                     self.skip(depth + 1)?;
                 }
             }
-            _ => return None,
+            _ => self.skip(depth + 1)?, // 6: a tag and its item
         }
         Some(())
     }
