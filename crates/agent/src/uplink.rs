@@ -26,7 +26,9 @@ use std::sync::Arc;
 use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
-use fleetlink_proto::frame::{CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES};
+use fleetlink_proto::frame::{
+    CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, WELCOME_INTEREST,
+};
 use fleetlink_proto::{Encoding, SUBPROTOCOL};
 use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
 use fleetlink_relay::calls::{ChannelPeer, PeerMsg, PeerReceiver, ServiceChange};
@@ -512,11 +514,14 @@ impl Uplink {
                     .map_err(|e| Failure::Link(format!("sending HELLO: {e}")))?;
             }
         }
-        let (session_id, namespace) = loop {
+        let (session_id, namespace, features) = loop {
             match session.poll_event() {
                 Some(Event::Opened {
-                    session, namespace, ..
-                }) => break (session, namespace),
+                    session,
+                    namespace,
+                    features,
+                    ..
+                }) => break (session, namespace, features),
                 Some(Event::Closed(r)) => return Err(self.before_welcome(r)),
                 Some(_) => continue,
                 None => {}
@@ -535,6 +540,10 @@ impl Uplink {
         tracing::info!(robot = %self.cfg.robot, %namespace, "connected to hub");
         // This connection owns the in-flight state from here on.
         self.outbox.on_link_reset();
+        // A hub that says which topics it wants gets only those (and `always` ones); an
+        // older one gets everything.
+        self.outbox
+            .set_demand_driven(features & WELCOME_INTEREST != 0);
 
         // Everything the hub must know, exactly once on this connection.
         let names = self.cfg.names.clone();
@@ -765,6 +774,9 @@ impl Uplink {
             }
             LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::warn!(level = level.as_str(), "hub: {text}");
+            }
+            LinkEvent::Control(Frame::Interest { alias, wanted }) => {
+                self.outbox.set_wanted(alias, wanted, Instant::now());
             }
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {
                 self.outbox.on_delivered(alias, seq);

@@ -10,6 +10,7 @@ mod e2e {
     mod calls;
     mod capacity;
     mod cli;
+    mod interest;
     mod isolation;
     mod link;
     mod no_drop;

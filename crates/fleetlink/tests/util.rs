@@ -505,6 +505,41 @@ pub fn hub_publisher(hub: &TestHub, name: &str, type_name: &str) -> LocalPublish
     LocalPublisher::new(&hub.state.router, name, type_name)
 }
 
+/// An in-process subscriber at the hub to each of `topics`: interest that makes robots
+/// send them. Its queue is never read (it keeps the newest messages); it leaves when
+/// dropped.
+pub struct HubSubscriber {
+    router: Arc<fleetlink_relay::Router>,
+    client: fleetlink_relay::ClientId,
+}
+
+pub fn hub_subscriber(hub: &TestHub, topics: &[&str]) -> HubSubscriber {
+    let router = hub.state.router.clone();
+    let (client, _) = router.connect(
+        fleetlink_relay::ClientKind::Internal {
+            role: "test-subscriber".into(),
+        },
+        None,
+    );
+    for t in topics {
+        let name = fleetlink_relay::TopicName::parse(t).unwrap();
+        router
+            .subscribe(
+                client,
+                fleetlink_relay::router::Target::Exact(name),
+                Default::default(),
+            )
+            .unwrap();
+    }
+    HubSubscriber { router, client }
+}
+
+impl Drop for HubSubscriber {
+    fn drop(&mut self) {
+        self.router.disconnect(self.client);
+    }
+}
+
 /// One JSON API call over a plain HTTP/1.1 connection: `(status, body as JSON)`.
 pub async fn http_json(
     addr: SocketAddr,

@@ -63,6 +63,7 @@ pub enum FrameKind {
     Feedback = 0x15,
     Cancel = 0x16,
     CallChunk = 0x17,
+    Interest = 0x18,
 }
 
 /// Severity of a `STATUS` frame.
@@ -131,6 +132,9 @@ pub const SERVICE_ACTION: u8 = 0x01;
 /// with `SERVICE_ADVERTISE` for every matching service it offers, now and as they appear,
 /// and `SERVICE_UNADVERTISE` as they go.
 pub const SUBSCRIBE_SERVICES: u8 = 0x02;
+/// `WELCOME` feature: the hub tells the agent which of its topics are wanted (`INTEREST`),
+/// and the agent sends a topic only while it is (demand-driven uplink).
+pub const WELCOME_INTEREST: u64 = 0x01;
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Frame {
@@ -149,12 +153,17 @@ pub enum Frame {
         outbox_epoch: u64,
     },
     /// Hub → agent, answers `HELLO`.
-    /// `session str | namespace str | hub_time_ns u64le | heartbeat_ms varint`
+    /// `session str | namespace str | hub_time_ns u64le | heartbeat_ms varint |
+    ///  features varint`
+    ///
+    /// `features` are [`WELCOME_INTEREST`] and later bits; absent in older senders, read
+    /// as 0 (an agent then sends every topic, as it always did).
     Welcome {
         session: String,
         namespace: String,
         hub_time_ns: u64,
         heartbeat_ms: u32,
+        features: u64,
     },
     /// Either direction: binds `alias` to a topic for the rest of the connection.
     /// `alias varint | topic str | type str | schema_encoding str | schema_text bytes |
@@ -305,6 +314,13 @@ pub enum Frame {
         offset: u64,
         data: Bytes,
     },
+    /// Hub → agent: whether anyone beyond the robot wants the topic the agent announced
+    /// as `alias` (`wanted` 1) or nobody does (0). Sent for every `ADVERTISE` the hub
+    /// accepts and again whenever the answer changes, so after a reconnect the agent has
+    /// the whole picture once it has announced its topics. Older agents skip it (an
+    /// unknown kind) and send everything.
+    /// `alias varint | wanted u8`
+    Interest { alias: u32, wanted: bool },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -335,6 +351,7 @@ impl Frame {
             Frame::Feedback { .. } => FrameKind::Feedback as u8,
             Frame::Cancel { .. } => FrameKind::Cancel as u8,
             Frame::CallChunk { .. } => FrameKind::CallChunk as u8,
+            Frame::Interest { .. } => FrameKind::Interest as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -376,11 +393,17 @@ impl Frame {
                 namespace,
                 hub_time_ns,
                 heartbeat_ms,
+                features,
             } => {
                 put_str(b, session);
                 put_str(b, namespace);
                 b.put_u64_le(*hub_time_ns);
                 put_varint(b, u64::from(*heartbeat_ms));
+                put_varint(b, *features);
+            }
+            Frame::Interest { alias, wanted } => {
+                put_varint(b, u64::from(*alias));
+                b.put_u8(u8::from(*wanted));
             }
             Frame::Advertise {
                 alias,
@@ -649,6 +672,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             namespace: r.string("WELCOME.namespace")?,
             hub_time_ns: r.u64_le("WELCOME.hub_time_ns")?,
             heartbeat_ms: r.varint_u32("WELCOME.heartbeat_ms")?,
+            features: if r.is_empty() {
+                0
+            } else {
+                r.varint("WELCOME.features")?
+            },
         },
         0x03 => {
             let alias = r.varint_u32("ADVERTISE.alias")?;
@@ -742,6 +770,19 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             seq: r.varint("DELIVERED.seq")?,
         },
         0x10..=0x17 => calls::decode_body(kind, r)?,
+        0x18 => Frame::Interest {
+            alias: r.varint_u32("INTEREST.alias")?,
+            wanted: match r.u8("INTEREST.wanted")? {
+                0 => false,
+                1 => true,
+                v => {
+                    return Err(DecodeError::invalid(
+                        "INTEREST.wanted",
+                        format!("{v} is not 0 or 1"),
+                    ));
+                }
+            },
+        },
         other => Frame::Unknown { kind: other },
     };
     Ok(frame)

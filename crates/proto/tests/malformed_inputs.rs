@@ -860,3 +860,17 @@ fn string_field_of_64_mib_is_handled_in_linear_time() {
     let msg = fleetlink_proto::rosbridge::inbound::payload_bytes(&r.op).unwrap();
     assert!(msg.len() > BIG);
 }
+
+#[test]
+fn interest_with_a_flag_other_than_0_or_1_is_invalid() {
+    let e = decode_err(&raw_frame(0x18, &[5, 2]));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "INTEREST.wanted"));
+    let (f, _) = Frame::decode(&raw_frame(0x18, &[5, 1]), 0).expect("valid");
+    assert_eq!(
+        f,
+        Frame::Interest {
+            alias: 5,
+            wanted: true
+        }
+    );
+}

@@ -28,14 +28,26 @@ pub fn hello() -> impl Strategy<Value = Frame> {
 }
 
 pub fn welcome() -> impl Strategy<Value = Frame> {
-    (any::<String>(), any::<String>(), any::<u64>(), any::<u32>()).prop_map(
-        |(session, namespace, hub_time_ns, heartbeat_ms)| Frame::Welcome {
-            session,
-            namespace,
-            hub_time_ns,
-            heartbeat_ms,
-        },
+    (
+        any::<String>(),
+        any::<String>(),
+        any::<u64>(),
+        any::<u32>(),
+        any::<u64>(),
     )
+        .prop_map(
+            |(session, namespace, hub_time_ns, heartbeat_ms, features)| Frame::Welcome {
+                session,
+                namespace,
+                hub_time_ns,
+                heartbeat_ms,
+                features,
+            },
+        )
+}
+
+pub fn interest() -> impl Strategy<Value = Frame> {
+    (any::<u32>(), any::<bool>()).prop_map(|(alias, wanted)| Frame::Interest { alias, wanted })
 }
 
 pub fn encoding() -> impl Strategy<Value = Encoding> {
@@ -303,7 +315,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x18u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x19u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -331,6 +343,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         feedback(),
         cancel(),
         call_chunk(),
+        interest(),
         unknown(),
     ]
 }
@@ -350,6 +363,11 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             namespace: "/fleet/robot-7".into(),
             hub_time_ns: 1_700_000_000_000_000_000,
             heartbeat_ms: 1000,
+            features: 1,
+        },
+        Frame::Interest {
+            alias: 300,
+            wanted: true,
         },
         Frame::Advertise {
             alias: 300,

@@ -61,6 +61,10 @@ pub struct TopicQos {
     /// `policy: fifo` and no rate limit.
     #[serde(default)]
     pub no_drop: bool,
+    /// Sent whether or not anyone at the hub wants it (a demand-driven uplink holds a
+    /// topic back while nobody does). No-drop topics always are.
+    #[serde(default)]
+    pub always: bool,
 }
 
 fn default_priority() -> f32 {
@@ -82,6 +86,7 @@ impl Default for TopicQos {
             policy: Policy::DropOldest,
             queue: DEFAULT_QUEUE,
             no_drop: false,
+            always: false,
         }
     }
 }
@@ -94,6 +99,7 @@ impl TopicQos {
             policy,
             queue,
             no_drop: false,
+            always: false,
         }
     }
 
@@ -229,6 +235,7 @@ pub struct TopicQosSpec {
     pub policy: Option<Policy>,
     pub queue: Option<usize>,
     pub no_drop: Option<bool>,
+    pub always: Option<bool>,
 }
 
 impl TopicQosSpec {
@@ -260,6 +267,9 @@ impl TopicQosSpec {
         }
         if let Some(q) = self.queue {
             qos.queue = q;
+        }
+        if let Some(a) = self.always {
+            qos.always = a;
         }
         if let Some(nd) = self.no_drop {
             qos.no_drop = nd;

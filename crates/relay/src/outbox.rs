@@ -76,7 +76,37 @@ enum Service {
         /// When a no-drop refusal was last logged (they are counted always, logged at
         /// most once per [`REFUSAL_LOG_INTERVAL`]).
         refusal_logged: Option<Instant>,
+        /// What the hub wants, and each topic's latest message.
+        demand: Box<Demand>,
     },
+}
+
+/// Most payload bytes of one topic's latest message kept while the topic is held back;
+/// a larger message is not kept (the next one is sent when interest comes).
+pub const LATEST_MAX_BYTES: usize = 8 << 20;
+
+/// A demand-driven uplink (issue 37): while the hub says nobody wants a topic, its
+/// messages are not sent; the latest one is kept and goes out at once when interest
+/// comes, so a viewer does not wait for the next publish. Until the hub says it speaks
+/// interest (`WELCOME_INTEREST`), everything flows.
+#[derive(Default)]
+struct Demand {
+    driven: bool,
+    /// Topics the hub wants.
+    wanted: HashSet<u32, IdHash>,
+    /// Topics that flow whatever the demand: `always: true` and no-drop.
+    always: HashSet<u32, IdHash>,
+    /// Each topic's latest message (see [`LATEST_MAX_BYTES`]).
+    latest: HashMap<u32, Arc<Message>, IdHash>,
+    /// Held-back topics the writer has yet to announce on this connection (an idle topic
+    /// still appears at the hub, which cannot want what it has not heard of).
+    unannounced: HashSet<u32, IdHash>,
+}
+
+impl Demand {
+    fn flows(&self, topic: u32) -> bool {
+        !self.driven || self.wanted.contains(&topic) || self.always.contains(&topic)
+    }
 }
 
 const REFUSAL_LOG_INTERVAL: Duration = Duration::from_secs(5);
@@ -167,6 +197,7 @@ impl Outbox {
                 )),
                 reliable: Box::new(reliable),
                 refusal_logged: None,
+                demand: Box::default(),
             },
         )
     }
@@ -221,10 +252,14 @@ impl Outbox {
                 by_topic,
                 known,
                 reliable,
+                demand,
                 ..
             } => {
                 if known.insert(tid) {
                     let mut q = qos_for(topic);
+                    if q.always || q.no_drop {
+                        demand.always.insert(tid);
+                    }
                     if q.no_drop && reliable.is_durable() {
                         // Waiting messages are on disk too: the journal's byte bound
                         // limits them, not a count.
@@ -306,8 +341,22 @@ impl Outbox {
                 link,
                 reliable,
                 refusal_logged,
+                demand,
                 ..
             } => {
+                if msg.payload.len() <= LATEST_MAX_BYTES {
+                    demand.latest.insert(s.topic, msg.clone());
+                } else {
+                    demand.latest.remove(&s.topic);
+                }
+                if !demand.flows(s.topic) {
+                    // Held back: kept as the latest, announced once per connection.
+                    s.stats.record_held();
+                    if demand.latest.contains_key(&s.topic) && demand.unannounced.insert(s.topic) {
+                        self.notify.notify_one();
+                    }
+                    return;
+                }
                 let t = Nanos::since(*origin, now);
                 link.offered += msg.wire_len() as u64;
                 let mut msg = msg;
@@ -445,11 +494,14 @@ impl Outbox {
             sched,
             link,
             reliable,
+            demand,
             ..
         } = &mut st.service
         {
             sched.on_link_reset();
             link.reset();
+            // A new connection has announced nothing yet.
+            demand.unannounced = demand.latest.keys().copied().collect();
             let again = reliable.take_unconfirmed();
             let mut topics = HashSet::new();
             for (alias, m) in again.into_iter().rev() {
@@ -464,6 +516,76 @@ impl Outbox {
                     s.stats.no_drop_flow.set_full();
                 }
             }
+        }
+    }
+
+    /// Whether the peer tells this (scheduled) outbox which topics it wants: from now on a
+    /// topic nobody wants is held back. `false` (an older hub) lets everything flow.
+    pub fn set_demand_driven(&self, driven: bool) {
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
+            demand.driven = driven;
+        }
+        self.notify.notify_one();
+    }
+
+    /// The peer wants the topic with link alias `alias` (or no longer does). When it
+    /// starts to, the topic's latest message goes out at once unless one is queued.
+    pub fn set_wanted(&self, alias: u32, wanted: bool, now: Instant) {
+        let mut st = self.lock();
+        let st = &mut *st;
+        let Service::Scheduled {
+            sched,
+            origin,
+            link,
+            demand,
+            ..
+        } = &mut st.service
+        else {
+            return;
+        };
+        if !wanted {
+            demand.wanted.remove(&alias);
+            return;
+        }
+        if !demand.wanted.insert(alias) || demand.always.contains(&alias) {
+            return;
+        }
+        demand.unannounced.remove(&alias);
+        let Some(latest) = demand.latest.get(&alias).cloned() else {
+            return;
+        };
+        if sched.queued(QosTopic(alias)) > 0 {
+            return;
+        }
+        link.offered += latest.wire_len() as u64;
+        let t = Nanos::since(*origin, now);
+        if let Push::Queued = sched.offer(QosTopic(alias), latest, t) {
+            st.queued += 1;
+            self.notify.notify_one();
+        }
+    }
+
+    /// The latest messages of held-back topics not yet announced on this connection: the
+    /// writer announces their topics (`ADVERTISE`) without sending them.
+    pub fn take_unannounced(&self, out: &mut Vec<Arc<Message>>) {
+        if !self.scheduled {
+            return;
+        }
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
+            let Demand {
+                unannounced,
+                latest,
+                ..
+            } = &mut **demand;
+            out.extend(unannounced.drain().filter_map(|t| latest.get(&t).cloned()));
+        }
+    }
+
+    /// Whether the topic with link alias `alias` is held back (nobody wants it).
+    pub fn is_held_back(&self, alias: u32) -> bool {
+        match &self.lock().service {
+            Service::Scheduled { demand, .. } => !demand.flows(alias),
+            Service::RoundRobin { .. } => false,
         }
     }
 
@@ -675,6 +797,7 @@ impl Outbox {
                 origin,
                 by_topic,
                 reliable,
+                demand,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
@@ -683,6 +806,12 @@ impl Outbox {
                         break;
                     };
                     st.queued = st.queued.saturating_sub(1);
+                    if !demand.flows(tid.0) {
+                        // Queued before interest went: not sent, and no longer counted
+                        // in flight.
+                        sched.on_acked(1, t);
+                        continue;
+                    }
                     if sched.is_no_drop(tid) {
                         // Sent even when its publisher has gone: it was promised delivery.
                         reliable.sent(tid.0, m.clone());

@@ -193,6 +193,7 @@ pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: us
             default_capacity.max(1)
         },
         no_drop: false,
+        always: false,
     }
 }
 

@@ -108,6 +108,47 @@ pub struct Topic {
     /// Encoding of the last message published (an `Encoding` as u8), so a link can
     /// announce the topic before its next message.
     last_encoding: std::sync::atomic::AtomicU8,
+    /// Its publisher (a robot's link) was told that nobody wants it, so it does not
+    /// flow: listings show it idle.
+    idle: std::sync::atomic::AtomicBool,
+}
+
+/// Where a publisher hears that the demand for its topics may have changed: the topics
+/// whose subscribers changed since it last looked, coalesced (a set of ids, bounded by
+/// the topics there are), and a wake-up. What the demand now is, it asks
+/// [`Router::wanted`]; a burst of subscription churn costs it one look per topic.
+#[derive(Default)]
+pub struct DemandWatch {
+    changed: Mutex<HashSet<TopicId>>,
+    notify: tokio::sync::Notify,
+}
+
+impl DemandWatch {
+    fn mark(&self, topic: TopicId) {
+        let fresh = self
+            .changed
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(topic);
+        if fresh {
+            self.notify.notify_one();
+        }
+    }
+
+    /// The topics whose subscribers changed since the last call.
+    pub fn take(&self) -> Vec<TopicId> {
+        self.changed
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .drain()
+            .collect()
+    }
+
+    /// Resolves once something was marked since the last `take` (at once if something
+    /// is waiting).
+    pub async fn changed(&self) {
+        self.notify.notified().await;
+    }
 }
 
 /// A publisher's copy of what a topic is and who subscribes to it, read again only when
@@ -182,6 +223,25 @@ impl Topic {
 
     pub fn subscriber_count(&self) -> usize {
         self.subscribers.load().len()
+    }
+
+    /// Whether anyone but `publisher` itself receives what `publisher` publishes here
+    /// (the same rule as the fan-out: a link does not receive its own messages).
+    pub fn wanted_by_others(&self, publisher: ClientId) -> bool {
+        self.subscribers
+            .load()
+            .iter()
+            .any(|s| s.client != publisher || s.own)
+    }
+
+    /// Marks the topic idle (its publisher was told nobody wants it) or flowing.
+    pub fn set_idle(&self, idle: bool) {
+        self.idle.store(idle, Relaxed);
+    }
+
+    /// True while its publisher holds it back because nobody wants it.
+    pub fn is_idle(&self) -> bool {
+        self.idle.load(Relaxed)
     }
 
     /// Fans `payload` out to every subscriber (its origin only if that is a rosbridge
@@ -301,6 +361,23 @@ struct State {
     topics: HashMap<TopicName, Arc<Topic>>,
     publishers: HashMap<TopicName, Vec<ClientId>>,
     clients: HashMap<ClientId, ClientEntry>,
+    /// Publishers that follow the demand for their topics.
+    demand: HashMap<ClientId, Arc<DemandWatch>>,
+}
+
+impl State {
+    /// Tells the publishers of `topic` that watch demand that its subscribers changed.
+    fn demand_changed(&self, topic: &Topic) {
+        if self.demand.is_empty() {
+            return;
+        }
+        let meta = topic.meta.load();
+        for p in self.publishers.get(&meta.name).into_iter().flatten() {
+            if let Some(w) = self.demand.get(p) {
+                w.mark(meta.id);
+            }
+        }
+    }
 }
 
 /// The routing table. Shared as `Arc<Router>` by every connection task.
@@ -421,9 +498,11 @@ impl Router {
         let Some(entry) = st.clients.remove(&id) else {
             return;
         };
+        st.demand.remove(&id);
         for (name, (slot, _)) in &entry.slots {
             if let Some(t) = st.topics.get(name) {
                 detach(t, id);
+                st.demand_changed(t);
             }
             entry.outbox.remove_slot(*slot);
         }
@@ -526,6 +605,18 @@ impl Router {
         gc_topic(&mut st, name);
     }
 
+    /// From now on `client` hears (through the returned watch) whenever the subscribers of
+    /// a topic it publishes change; it asks [`Topic::wanted_by_others`] what that means.
+    /// Forgotten when the client disconnects.
+    pub fn watch_demand(&self, client: ClientId) -> Arc<DemandWatch> {
+        self.lock().demand.entry(client).or_default().clone()
+    }
+
+    /// The topic with this id, if it exists.
+    pub fn topic_by_id(&self, id: TopicId) -> Option<Arc<Topic>> {
+        self.lock().topics.values().find(|t| t.id() == id).cloned()
+    }
+
     /// The topic if it exists (publishing to a topic someone else advertised).
     pub fn topic(&self, name: &TopicName) -> Option<Arc<Topic>> {
         self.lock().topics.get(name).cloned()
@@ -541,6 +632,7 @@ impl Router {
             latched: Mutex::new(None),
             latch: Default::default(),
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
+            idle: Default::default(),
         });
         st.topics.insert(name.clone(), topic.clone());
         // Pattern subscriptions pick up new topics as they appear.
@@ -682,6 +774,7 @@ impl Router {
         {
             c.outbox.push(slot, m, Instant::now());
         }
+        st.demand_changed(topic);
     }
 
     pub fn unsubscribe(&self, client: ClientId, sid: SubscriptionId) {
@@ -705,6 +798,7 @@ impl Router {
         for (name, _) in emptied {
             if let Some(t) = st.topics.get(&name) {
                 detach(t, client);
+                st.demand_changed(t);
             }
             gc_topic(st, &name);
         }

@@ -94,6 +94,8 @@ pub struct TopicStats {
     first_second: AtomicU64,
     buckets: [Bucket; BUCKETS],
     pub no_drop_flow: NoDropFlow,
+    /// Messages a demand-driven uplink kept back because nobody wanted the topic.
+    pub held_back: AtomicU64,
 }
 
 impl TopicStats {
@@ -156,6 +158,10 @@ impl TopicStats {
             (old as i128 + (ns as i128 - old as i128) / 8) as u64
         };
         self.latency_ns.store(new, Relaxed);
+    }
+
+    pub fn record_held(&self) {
+        self.held_back.fetch_add(1, Relaxed);
     }
 
     pub fn record_drop(&self, reason: DropReason) {

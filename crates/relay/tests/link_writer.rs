@@ -554,3 +554,133 @@ async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
     assert!(offsets.windows(2).all(|w| w[0] < w[1]), "{offsets:?}");
     writer.abort();
 }
+
+/// Every frame the writer sends within `wait` but the link estimator's probes (`PING`).
+async fn frames_within(
+    rx: &mut futures_channel::mpsc::Receiver<WsMessage>,
+    wait: Duration,
+) -> Vec<Frame> {
+    let mut out = Vec::new();
+    while let Ok(Some(WsMessage::Binary(b))) = tokio::time::timeout(wait, rx.next()).await {
+        out.extend(
+            frame::frames(&b)
+                .map(|f| f.expect("valid frames"))
+                .filter(|f| !matches!(f, Frame::Ping { .. })),
+        );
+    }
+    out
+}
+
+/// A demand-driven uplink: a topic nobody wants is announced but its messages are held
+/// back; when interest comes its latest message goes at once (no new publish needed),
+/// then every message while it is wanted, and nothing once interest is gone. An uplink
+/// whose peer never spoke of interest sends everything.
+#[tokio::test]
+async fn a_demand_driven_uplink_sends_a_topic_only_while_it_is_wanted() {
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = uplink_and_publisher(&router);
+    let map = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/map").unwrap(),
+            Schema::named("t/Map"),
+            false,
+        )
+        .unwrap();
+    outbox.set_demand_driven(true);
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    for i in 0..5u8 {
+        map.publish(publisher, u64::from(i), 0, Payload::json(vec![b'0' + i]));
+    }
+    let frames = frames_within(&mut rx, Duration::from_millis(200)).await;
+    let alias = match frames.as_slice() {
+        [Frame::Advertise { alias, topic, .. }] if topic == "/map" => *alias,
+        other => panic!("expected the topic announced and nothing else, got {other:?}"),
+    };
+    assert!(outbox.is_held_back(alias));
+    assert_eq!(map.stats.held_back.load(std::sync::atomic::Ordering::Relaxed), 5);
+
+    // Interest: the latest message at once, then what is published.
+    outbox.set_wanted(alias, true, std::time::Instant::now());
+    let payloads = |fs: &[Frame]| -> Vec<Vec<u8>> {
+        fs.iter()
+            .filter_map(|f| match f {
+                Frame::Message { payload, .. } => Some(payload.to_vec()),
+                _ => None,
+            })
+            .collect()
+    };
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert_eq!(payloads(&got), vec![b"4".to_vec()]);
+    map.publish(publisher, 5, 0, Payload::json(&b"5"[..]));
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert_eq!(payloads(&got), vec![b"5".to_vec()]);
+
+    // No interest: nothing more goes.
+    outbox.set_wanted(alias, false, std::time::Instant::now());
+    map.publish(publisher, 6, 0, Payload::json(&b"6"[..]));
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert!(payloads(&got).is_empty(), "{got:?}");
+
+    // A peer that does not speak of interest gets everything.
+    outbox.set_demand_driven(false);
+    map.publish(publisher, 7, 0, Payload::json(&b"7"[..]));
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert_eq!(payloads(&got), vec![b"7".to_vec()]);
+    writer.abort();
+}
+
+/// The router tells a publisher that watches demand when its topic gains or loses the
+/// subscribers that count (not the publisher's own subscriptions), coalesced.
+#[tokio::test]
+async fn a_publisher_hears_when_demand_for_its_topic_changes() {
+    let router = Arc::new(Router::default());
+    let (robot, _) = router.connect(ClientKind::Agent { robot: "r".into() }, None);
+    let watch = router.watch_demand(robot);
+    let topic = router
+        .advertise(
+            robot,
+            &TopicName::parse("/r/scan").unwrap(),
+            Schema::named("t/Scan"),
+            false,
+        )
+        .unwrap();
+    // The robot's own pattern subscription to its namespace is no demand.
+    router
+        .subscribe(
+            robot,
+            Target::Pattern(Router::compile_pattern("/r/.*").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    assert_eq!(watch.take(), vec![topic.id()]);
+    assert!(!topic.wanted_by_others(robot));
+
+    let (viewer, _) = router.connect(ClientKind::Rosbridge, None);
+    let sid = router
+        .subscribe(
+            viewer,
+            Target::Exact(TopicName::parse("/r/scan").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    tokio::time::timeout(Duration::from_secs(5), watch.changed())
+        .await
+        .expect("woken");
+    assert_eq!(watch.take(), vec![topic.id()]);
+    assert!(topic.wanted_by_others(robot));
+
+    // Churn between two looks is one entry.
+    router.unsubscribe(viewer, sid);
+    router
+        .subscribe(
+            viewer,
+            Target::Exact(TopicName::parse("/r/scan").unwrap()),
+            SubOptions::default(),
+        )
+        .unwrap();
+    router.disconnect(viewer);
+    assert_eq!(watch.take(), vec![topic.id()]);
+    assert!(!topic.wanted_by_others(robot));
+    assert!(watch.take().is_empty());
+}

@@ -32,6 +32,8 @@ async fn robots_at_one_site_get_shares_of_its_capacity_and_stay_within_them() {
     a.wait_connected().await;
     b.wait_connected().await;
     let blob = "z".repeat(20_000);
+    // Someone at the hub wants both cameras (a robot sends only what is wanted).
+    let _watching = hub_subscriber(&hub, &["/lab_a/cam", "/lab_b/cam"]);
     let mut pa = LocalPublisher::new(&a.router, "/cam", "test_msgs/msg/Blob");
     let mut pb = LocalPublisher::new(&b.router, "/cam", "test_msgs/msg/Blob");
     let load = tokio::spawn(async move {
@@ -91,6 +93,7 @@ async fn robots_at_one_site_get_shares_of_its_capacity_and_stay_within_them() {
 async fn hub_learns_clock_offset_and_reports_end_to_end_latency() {
     let hub = start_hub().await;
     let agent = start_agent(&hub, "clocky").await;
+    let _watching = hub_subscriber(&hub, &["/clocky/tick"]);
     let mut p = LocalPublisher::new(&agent.router, "/tick", "std_msgs/msg/String");
     let topic = fleetlink_relay::TopicName::parse("/clocky/tick").unwrap();
     within("an offset and a latency figure", async {

@@ -61,8 +61,8 @@ async fn demo_fleet_comes_up_and_stops_on_sigterm() {
     })
     .await;
 
-    // Three robots online, each with its simulated topics flowing.
-    within("three robots with data", async {
+    // Three robots online, each with its simulated topics listed (idle: nobody watches).
+    within("three robots with their topics", async {
         loop {
             let robots: Value = serde_json::from_str(&http_get(&addr, "/api/v1/robots").await)
                 .unwrap_or(Value::Null);
@@ -75,7 +75,8 @@ async fn demo_fleet_comes_up_and_stops_on_sigterm() {
                 t.iter()
                     .filter(|t| {
                         t["name"].as_str().is_some_and(|n| n.ends_with("/scan"))
-                            && t["messages"].as_u64() > Some(0)
+                            && t["state"] == "idle"
+                            && t["messages"].as_u64() == Some(0)
                     })
                     .count()
             });
@@ -86,6 +87,26 @@ async fn demo_fleet_comes_up_and_stops_on_sigterm() {
         }
     })
     .await;
+    // A viewer's subscription makes one robot's scan flow, and only that topic.
+    let mut viewer = Rosbridge::connect(&format!("ws://{addr}")).await;
+    viewer
+        .send(serde_json::json!({"op": "subscribe", "topic": "/robot1/scan", "id": "v"}))
+        .await;
+    let m = within("a scan", viewer.recv_op("publish")).await;
+    assert_eq!(m["topic"], "/robot1/scan");
+    let topics: Value =
+        serde_json::from_str(&http_get(&addr, "/api/v1/topics").await).expect("JSON");
+    for t in topics["topics"].as_array().expect("topics") {
+        let name = t["name"].as_str().unwrap_or_default();
+        if name.ends_with("/scan") {
+            let want = if name == "/robot1/scan" {
+                "flowing"
+            } else {
+                "idle"
+            };
+            assert_eq!(t["state"], want, "{name}");
+        }
+    }
     let page = http_get(&addr, "/").await;
     // The dashboard is served at /.
     assert!(

@@ -13,9 +13,9 @@ use fleetlink_proto::frame::{Frame, Level, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, 
 use fleetlink_relay::gate::Op;
 use fleetlink_relay::link::LinkEvent;
 use fleetlink_relay::link::session::{Event, LinkSession};
-use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicView};
+use fleetlink_relay::router::{DemandWatch, SubOptions, SubscriptionId, Target, TopicView};
 use fleetlink_relay::stats::StatsBatch;
-use fleetlink_relay::{ClientId, Router, Topic, TopicName};
+use fleetlink_relay::{ClientId, Router, Topic, TopicId, TopicName};
 
 use crate::delivery::RobotBook;
 use crate::registry::LiveRobot;
@@ -49,6 +49,12 @@ pub(super) struct RobotLink {
     /// When the link's last read arrived: the receive time of its messages (one clock
     /// reading per read, not per message).
     read_at: (std::time::Instant, u64),
+    /// Tells which of the robot's topics gained or lost their subscribers.
+    pub demand: Arc<DemandWatch>,
+    /// The robot's aliases by hub topic, for the demand watch's answers.
+    by_topic: HashMap<TopicId, u32>,
+    /// What the robot was last told of each alias (`INTEREST`).
+    interest: HashMap<u32, bool>,
 }
 
 impl RobotLink {
@@ -59,6 +65,7 @@ impl RobotLink {
         book: Arc<Mutex<RobotBook>>,
     ) -> RobotLink {
         RobotLink {
+            demand: router.watch_demand(client),
             router,
             client,
             live,
@@ -68,6 +75,31 @@ impl RobotLink {
             confirm: HashMap::new(),
             unflushed: Vec::new(),
             read_at: (std::time::Instant::now(), fleetlink_relay::unix_nanos()),
+            by_topic: HashMap::new(),
+            interest: HashMap::new(),
+        }
+    }
+
+    /// Tells the robot whether anyone wants the topic it announced as `alias`, if that is
+    /// news to it (always after the `ADVERTISE`).
+    fn tell_interest(&mut self, alias: u32, session: &mut LinkSession) {
+        let Some(p) = self.topics.get(&alias) else {
+            return;
+        };
+        let wanted = p.topic.wanted_by_others(self.client);
+        if self.interest.insert(alias, wanted) != Some(wanted) {
+            p.topic.set_idle(!wanted);
+            session.send(Frame::Interest { alias, wanted });
+        }
+    }
+
+    /// Subscribers of some of the robot's topics changed: the robot hears what that
+    /// changes for it.
+    pub fn on_demand_changed(&mut self, session: &mut LinkSession) {
+        for topic in self.demand.take() {
+            if let Some(alias) = self.by_topic.get(&topic).copied() {
+                self.tell_interest(alias, session);
+            }
         }
     }
 
@@ -191,6 +223,7 @@ impl RobotLink {
                     .advertise(self.client, &name, topic.schema, topic.latched)
                 {
                     Ok(t) => {
+                        self.by_topic.insert(t.id(), alias);
                         if let Some(old) = self.topics.insert(
                             alias,
                             PubTopic {
@@ -205,6 +238,9 @@ impl RobotLink {
                             let mut old = old;
                             old.topic.stats.flush(&mut old.counts);
                         }
+                        // A fresh binding: the robot hears the demand for it anew.
+                        self.interest.remove(&alias);
+                        self.tell_interest(alias, session);
                     }
                     Err(e) => session.status(
                         Level::Error,
@@ -216,6 +252,9 @@ impl RobotLink {
             LinkEvent::Unadvertise { alias, topic } => {
                 if let Some(mut p) = self.topics.remove(&alias) {
                     p.topic.stats.flush(&mut p.counts);
+                    p.topic.set_idle(false);
+                    self.by_topic.remove(&p.topic.id());
+                    self.interest.remove(&alias);
                     if let Ok(name) = TopicName::parse(&topic.name) {
                         self.router.unadvertise(self.client, &name);
                     }

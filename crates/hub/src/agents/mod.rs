@@ -16,7 +16,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
 use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
-use fleetlink_proto::frame::Frame;
+use fleetlink_proto::frame::{Frame, WELCOME_INTEREST};
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
@@ -177,6 +177,7 @@ pub async fn serve_agent<R, W, P>(
             heartbeat: Duration::from_millis(u64::from(heartbeat_ms)),
             gate: Box::new(gate),
             calls: Box::new(move |_| LinkCalls::new(calls, client, Box::new(SameNames))),
+            features: WELCOME_INTEREST,
         },
         Instant::now(),
     );
@@ -400,6 +401,7 @@ where
                 }
             }
             _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
+            () = link.demand.changed() => link.on_demand_changed(session),
             _ = ctx.shutdown.cancelled() => {
                 session.close(CloseReason::Local("the hub is shutting down".into()));
             }

@@ -133,6 +133,8 @@ async fn topics(
                 "name": t.meta.name.as_str(),
                 "type": t.meta.schema.type_name,
                 "publishers": t.publishers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
+                // A robot's topic that nobody wants is held back on the robot (idle).
+                "state": if t.topic.is_idle() { "idle" } else { "flowing" },
                 "subscribers": t.subscribers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
                 "rate_hz": (rate * 100.0).round() / 100.0,
                 "bandwidth_bps": bw.round(),

@@ -157,6 +157,8 @@ pub enum Event {
         session: String,
         namespace: String,
         heartbeat: Duration,
+        /// The `WELCOME` features (the hub's offer, on both ends).
+        features: u64,
     },
     /// A topic event or a control frame for the driver to act on (`SUBSCRIBE`, `ACK`,
     /// `DELIVERED`, `SHARE`, `LINK_REPORT`, a peer's `STATUS`, ...).
@@ -203,6 +205,8 @@ pub struct Accept {
     /// What the robot may do, for its calls and services.
     pub gate: Box<dyn Gate>,
     pub calls: CallsFactory,
+    /// `WELCOME` features the hub offers ([`fleetlink_proto::frame::WELCOME_INTEREST`]).
+    pub features: u64,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -511,12 +515,14 @@ impl LinkSession {
             namespace: accept.namespace.clone(),
             hub_time_ns: (self.wall)(now),
             heartbeat_ms: accept.heartbeat.as_millis().min(u32::MAX as u128) as u32,
+            features: accept.features,
         }));
         self.open(
             accept.session,
             accept.namespace,
             accept.heartbeat,
             accept.calls,
+            accept.features,
             now,
         );
     }
@@ -661,6 +667,7 @@ impl LinkSession {
         namespace: String,
         heartbeat: Duration,
         calls: CallsFactory,
+        features: u64,
         now: Instant,
     ) {
         self.phase = Phase::Open;
@@ -674,6 +681,7 @@ impl LinkSession {
             session,
             namespace,
             heartbeat,
+            features,
         });
     }
 
@@ -718,13 +726,14 @@ impl LinkSession {
                     session,
                     namespace,
                     heartbeat_ms,
+                    features,
                     ..
                 } => {
                     let heartbeat = Duration::from_millis(u64::from(heartbeat_ms.max(10)));
                     let calls = self.calls_factory.take().unwrap_or_else(|| {
                         unreachable!("an agent session is made with its calls factory")
                     });
-                    self.open(session, namespace, heartbeat, calls, now);
+                    self.open(session, namespace, heartbeat, calls, features, now);
                 }
                 Frame::Status { text, .. } => self.close(CloseReason::Refused(text)),
                 _ => {}

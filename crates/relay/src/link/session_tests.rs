@@ -185,6 +185,7 @@ impl Side {
                             calls: Box::new(move |_| {
                                 LinkCalls::new(calls, me, Box::new(SameNames))
                             }),
+                            features: 0,
                         },
                         now,
                     );

@@ -157,6 +157,7 @@ pub async fn write_link<K>(
     const PACK: usize = 64 * 1024;
     // The outbox batch, kept across rounds so a busy writer does not allocate one per round.
     let mut items: Vec<crate::outbox::Taken> = Vec::new();
+    let mut held: Vec<Arc<crate::Message>> = Vec::new();
     loop {
         // 1. Control frames first: they are small and often answers the peer waits for.
         loop {
@@ -250,7 +251,13 @@ pub async fn write_link<K>(
                 break;
             }
         }
-        // 3. A batch from the outbox.
+        // 3. Topics a demand-driven uplink holds back are announced all the same, so the
+        // peer can ask for them.
+        outbox.take_unannounced(&mut held);
+        for msg in held.drain(..) {
+            announce(&mut buf, &mut advertised, &msg, &namer, &outbox);
+        }
+        // 4. A batch from the outbox.
         outbox.take_into(&mut items, 512, 4 << 20, Instant::now());
         let took = items.len();
         for (_, _, msg) in items.drain(..) {
@@ -302,7 +309,7 @@ pub async fn write_link<K>(
                 lanes.push(Lane::start(tid, msg, sized.is_some()));
             }
         }
-        // 4. Topics whose publishers are gone, after their last message.
+        // 5. Topics whose publishers are gone, after their last message.
         if !unadvertise.is_empty() {
             unadvertise.retain(|(t, _)| {
                 if !advertised.contains_key(t)

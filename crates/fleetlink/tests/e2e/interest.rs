@@ -1,0 +1,168 @@
+//! The demand-driven uplink: a robot's topic goes up the link only while someone at the
+//! hub wants it; it stays listed meanwhile (idle), its latest message reaches a new
+//! subscriber at once, and many subscribers at the hub cost one copy on the link.
+
+use std::sync::atomic::Ordering::Relaxed;
+use std::time::Duration;
+
+use fleetlink_qos::TopicQosSpec;
+use fleetlink_relay::{Topic, TopicName};
+use serde_json::json;
+
+use crate::util::*;
+
+fn hub_topic(hub: &TestHub, name: &str) -> Option<std::sync::Arc<Topic>> {
+    hub.state.router.topic(&TopicName::parse(name).unwrap())
+}
+
+/// Messages of `name` the hub received from the robot.
+fn received(hub: &TestHub, name: &str) -> u64 {
+    hub_topic(hub, name).map_or(0, |t| t.stats.messages.load(Relaxed))
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_robot_topic_flows_only_while_someone_at_the_hub_wants_it() {
+    let hub = start_hub().await;
+    let agent = start_agent(&hub, "robot1").await;
+    let mut scan = LocalPublisher::new(&agent.router, "/scan", "std_msgs/msg/String");
+    let mut other = LocalPublisher::new(&agent.router, "/other", "std_msgs/msg/String");
+    for i in 0..20 {
+        scan.publish_json(&json!({ "data": format!("scan {i}") }));
+        other.publish_json(&json!({ "data": format!("other {i}") }));
+    }
+    // Announced but held back: listed at the hub, idle, nothing received.
+    eventually("both topics listed idle at the hub", || {
+        ["/robot1/scan", "/robot1/other"]
+            .iter()
+            .all(|n| hub_topic(&hub, n).is_some_and(|t| t.is_idle()))
+    })
+    .await;
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    assert_eq!(
+        received(&hub, "/robot1/scan"),
+        0,
+        "sent with nobody subscribed"
+    );
+    assert_eq!(received(&hub, "/robot1/other"), 0);
+
+    // A subscriber gets the latest message at once, without waiting for a publish.
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/robot1/scan", "id": "s1"}))
+        .await;
+    let first = within("the cached latest message", op.recv_op("publish")).await;
+    assert_eq!(first["msg"]["data"], "scan 19");
+    assert!(!hub_topic(&hub, "/robot1/scan").unwrap().is_idle());
+
+    // Three subscribers at the hub: each message crosses the link once.
+    let mut more = Vec::new();
+    for i in 0..2 {
+        let mut c = Rosbridge::connect(&hub.ws_url()).await;
+        c.send(json!({"op": "subscribe", "topic": "/robot1/scan", "id": format!("m{i}")}))
+            .await;
+        more.push(c);
+    }
+    // Their subscriptions are in place once the hub's topic has four subscribers: the
+    // three clients and the robot's own link (it receives what is sent to its namespace,
+    // never its own messages).
+    eventually("three subscribers", || {
+        hub_topic(&hub, "/robot1/scan").unwrap().subscriber_count() >= 4
+    })
+    .await;
+    let before = received(&hub, "/robot1/scan");
+    for i in 20..30 {
+        scan.publish_json(&json!({ "data": format!("scan {i}") }));
+    }
+    eventually("ten more messages at the hub", || {
+        received(&hub, "/robot1/scan") >= before + 10
+    })
+    .await;
+    for c in [&mut op].into_iter().chain(more.iter_mut()) {
+        let mut last = String::new();
+        while last != "scan 29" {
+            let m = within("every subscriber's copy", c.recv_op("publish")).await;
+            last = m["msg"]["data"].as_str().unwrap().to_owned();
+        }
+    }
+    tokio::time::sleep(Duration::from_millis(200)).await;
+    assert_eq!(
+        received(&hub, "/robot1/scan"),
+        before + 10,
+        "three subscribers, one copy per message on the link"
+    );
+    // The other topic never moved.
+    assert_eq!(received(&hub, "/robot1/other"), 0);
+
+    // Everyone leaves: the topic is held back again within a second.
+    drop(op);
+    drop(more);
+    within("the topic goes idle", async {
+        while !hub_topic(&hub, "/robot1/scan").is_some_and(|t| t.is_idle()) {
+            tokio::time::sleep(Duration::from_millis(10)).await;
+        }
+    })
+    .await;
+    // Give the agent the INTEREST before counting.
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    let idle_since = received(&hub, "/robot1/scan");
+    for i in 30..50 {
+        scan.publish_json(&json!({ "data": format!("scan {i}") }));
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    assert_eq!(
+        received(&hub, "/robot1/scan"),
+        idle_since,
+        "sent while idle"
+    );
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn always_topics_flow_and_interest_survives_a_reconnect() {
+    let hub = start_hub().await;
+    let mut cfg = uplink_config(&hub, "robot2");
+    cfg.topic_qos = vec![(
+        TopicName::parse("/heartbeat").unwrap(),
+        TopicQosSpec {
+            always: Some(true),
+            ..Default::default()
+        },
+    )];
+    let agent = start_agent_with(cfg, false).await;
+    agent.wait_connected().await;
+    let mut beat = LocalPublisher::new(&agent.router, "/heartbeat", "std_msgs/msg/String");
+    let mut pose = LocalPublisher::new(&agent.router, "/pose", "std_msgs/msg/String");
+    for i in 0..5 {
+        beat.publish_json(&json!({ "data": format!("beat {i}") }));
+        pose.publish_json(&json!({ "data": format!("pose {i}") }));
+    }
+    eventually("the always topic arrives with nobody subscribed", || {
+        received(&hub, "/robot2/heartbeat") == 5
+    })
+    .await;
+    eventually("pose listed", || hub_topic(&hub, "/robot2/pose").is_some()).await;
+    assert_eq!(received(&hub, "/robot2/pose"), 0);
+
+    // A subscriber, then a hub restart: after the reconnect the subscriber's resubscribe
+    // is interest again, and the robot's latest pose reaches it.
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/robot2/pose", "id": "p"}))
+        .await;
+    let m = within("pose", op.recv_op("publish")).await;
+    assert_eq!(m["msg"]["data"], "pose 4");
+    let (addr, dir) = (hub.addr, hub.data_dir.clone());
+    drop(op);
+    hub.shutdown().await;
+    agent.wait_disconnected().await;
+    pose.publish_json(&json!({ "data": "pose while down" }));
+    let hub = start_hub_at(addr, dir, Duration::from_millis(500)).await;
+    agent.wait_connected().await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/robot2/pose", "id": "p"}))
+        .await;
+    let m = within("pose after the reconnect", op.recv_op("publish")).await;
+    assert_eq!(m["msg"]["data"], "pose while down");
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
