@@ -598,7 +598,12 @@ async fn a_demand_driven_uplink_sends_a_topic_only_while_it_is_wanted() {
         other => panic!("expected the topic announced and nothing else, got {other:?}"),
     };
     assert!(outbox.is_held_back(alias));
-    assert_eq!(map.stats.held_back.load(std::sync::atomic::Ordering::Relaxed), 5);
+    assert_eq!(
+        map.stats
+            .held_back
+            .load(std::sync::atomic::Ordering::Relaxed),
+        5
+    );
 
     // Interest: the latest message at once, then what is published.
     outbox.set_wanted(alias, true, std::time::Instant::now());
