@@ -65,6 +65,10 @@ pub struct TopicQos {
     /// topic back while nobody does). No-drop topics always are.
     #[serde(default)]
     pub always: bool,
+    /// A message older than this (milliseconds since it was received) when its turn on
+    /// the link comes is dropped (`too_old`); `None`: no limit. No-drop topics take none.
+    #[serde(default)]
+    pub max_age_ms: Option<u64>,
 }
 
 fn default_priority() -> f32 {
@@ -87,6 +91,7 @@ impl Default for TopicQos {
             queue: DEFAULT_QUEUE,
             no_drop: false,
             always: false,
+            max_age_ms: None,
         }
     }
 }
@@ -100,6 +105,7 @@ impl TopicQos {
             queue,
             no_drop: false,
             always: false,
+            max_age_ms: None,
         }
     }
 
@@ -188,6 +194,19 @@ impl TopicQos {
         if self.queue == 0 {
             return Err(QosError::invalid("queue", "must be at least 1".to_string()));
         }
+        if self.max_age_ms == Some(0) {
+            return Err(QosError::invalid(
+                "max_age",
+                "must be longer than 0 (leave it out for no limit)".to_string(),
+            ));
+        }
+        if self.no_drop && self.max_age_ms.is_some() {
+            return Err(QosError::invalid(
+                "max_age",
+                "a no_drop topic never drops a message, however old; remove one of the two"
+                    .to_string(),
+            ));
+        }
         if self.policy == Policy::Latest && self.queue != 1 {
             return Err(QosError::invalid(
                 "queue",
@@ -236,6 +255,27 @@ pub struct TopicQosSpec {
     pub queue: Option<usize>,
     pub no_drop: Option<bool>,
     pub always: Option<bool>,
+    /// `500ms`, `2s`, `1m` (or a number of milliseconds).
+    #[serde(default, deserialize_with = "age")]
+    pub max_age: Option<std::time::Duration>,
+}
+
+/// An age limit as written: a duration with its unit (`500ms`, `2s`), or milliseconds.
+fn age<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<std::time::Duration>, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Written {
+        Millis(u64),
+        Text(String),
+    }
+    match Written::deserialize(d)? {
+        Written::Millis(ms) => Ok(Some(std::time::Duration::from_millis(ms))),
+        Written::Text(t) => humantime::parse_duration(t.trim()).map(Some).map_err(|e| {
+            serde::de::Error::custom(format!(
+                "max_age {t:?}: {e}; write a duration with its unit, e.g. 500ms or 2s"
+            ))
+        }),
+    }
 }
 
 impl TopicQosSpec {
@@ -270,6 +310,9 @@ impl TopicQosSpec {
         }
         if let Some(a) = self.always {
             qos.always = a;
+        }
+        if let Some(age) = self.max_age {
+            qos.max_age_ms = Some(age.as_millis().min(u128::from(u64::MAX)) as u64);
         }
         if let Some(nd) = self.no_drop {
             qos.no_drop = nd;

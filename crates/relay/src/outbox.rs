@@ -101,11 +101,20 @@ struct Demand {
     /// Held-back topics the writer has yet to announce on this connection (an idle topic
     /// still appears at the hub, which cannot want what it has not heard of).
     unannounced: HashSet<u32, IdHash>,
+    /// Topics with an age limit (`max_age`): older messages are not sent.
+    max_age: HashMap<u32, Duration, IdHash>,
 }
 
 impl Demand {
     fn flows(&self, topic: u32) -> bool {
         !self.driven || self.wanted.contains(&topic) || self.always.contains(&topic)
+    }
+
+    /// Whether `msg` of `topic` is past its topic's age limit at `now`.
+    fn too_old(&self, topic: u32, msg: &Message, now: Instant) -> bool {
+        self.max_age
+            .get(&topic)
+            .is_some_and(|age| now.saturating_duration_since(msg.received()) > *age)
     }
 }
 
@@ -259,6 +268,9 @@ impl Outbox {
                     let mut q = qos_for(topic);
                     if q.always || q.no_drop {
                         demand.always.insert(tid);
+                    }
+                    if let Some(ms) = q.max_age_ms.filter(|_| !q.no_drop) {
+                        demand.max_age.insert(tid, Duration::from_millis(ms));
                     }
                     if q.no_drop && reliable.is_durable() {
                         // Waiting messages are on disk too: the journal's byte bound
@@ -554,7 +566,7 @@ impl Outbox {
         let Some(latest) = demand.latest.get(&alias).cloned() else {
             return;
         };
-        if sched.queued(QosTopic(alias)) > 0 {
+        if sched.queued(QosTopic(alias)) > 0 || demand.too_old(alias, &latest, now) {
             return;
         }
         link.offered += latest.wire_len() as u64;
@@ -831,6 +843,16 @@ impl Outbox {
                         sched.on_acked(1, t);
                         continue;
                     };
+                    if demand.too_old(tid.0, &m, now) {
+                        // Stale by the time its turn came (after a blackout, say): a
+                        // reconnect does not flood the hub with it.
+                        sched.on_acked(1, t);
+                        if let Some(s) = st.slots.get(slot) {
+                            s.stats.record_drop(DropReason::TooOld);
+                        }
+                        self.dropped.fetch_add(1, Relaxed);
+                        continue;
+                    }
                     let delivery = st.slots.get(slot).map(|s| s.delivery).unwrap_or_default();
                     bytes += m.wire_len();
                     items.push((*slot, delivery, m));

@@ -26,14 +26,17 @@ pub enum DropReason {
     Backpressure,
     /// It could not be converted to the encoding the subscriber asked for.
     Encode,
+    /// Older than its topic's `max_age` when its turn on the link came.
+    TooOld,
 }
 
 impl DropReason {
-    pub const ALL: [DropReason; 4] = [
+    pub const ALL: [DropReason; 5] = [
         DropReason::RateLimit,
         DropReason::Policy,
         DropReason::Backpressure,
         DropReason::Encode,
+        DropReason::TooOld,
     ];
 
     pub fn as_str(self) -> &'static str {
@@ -42,6 +45,7 @@ impl DropReason {
             DropReason::Policy => "policy",
             DropReason::Backpressure => "backpressure",
             DropReason::Encode => "encode_error",
+            DropReason::TooOld => "too_old",
         }
     }
 
@@ -194,6 +198,7 @@ pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: us
         },
         no_drop: false,
         always: false,
+        max_age_ms: None,
     }
 }
 

@@ -53,7 +53,12 @@ fn link_and_publisher(router: &Router, pattern: &str) -> (Arc<Outbox>, ClientId)
 /// An agent-style uplink (a scheduled outbox) subscribed to everything on `router`, and a
 /// publisher.
 fn uplink_and_publisher(router: &Router) -> (Arc<Outbox>, ClientId) {
-    use fleetlink_qos::{SchedulerConfig, TopicQos};
+    uplink_with_qos(router, fleetlink_qos::TopicQos::default())
+}
+
+/// [`uplink_and_publisher`] with `qos` for every topic.
+fn uplink_with_qos(router: &Router, qos: fleetlink_qos::TopicQos) -> (Arc<Outbox>, ClientId) {
+    use fleetlink_qos::SchedulerConfig;
     use fleetlink_relay::reliable::ReliableOut;
     let (link, outbox) = router.connect_with(
         ClientKind::Internal {
@@ -64,7 +69,7 @@ fn uplink_and_publisher(router: &Router) -> (Arc<Outbox>, ClientId) {
             Outbox::scheduled(
                 id,
                 SchedulerConfig::default(),
-                Arc::new(|_| TopicQos::default()),
+                Arc::new(move |_| qos.clone()),
                 ReliableOut::in_memory(),
             )
         },
@@ -688,4 +693,54 @@ async fn a_publisher_hears_when_demand_for_its_topic_changes() {
     assert_eq!(watch.take(), vec![topic.id()]);
     assert!(!topic.wanted_by_others(robot));
     assert!(watch.take().is_empty());
+}
+
+/// An age limit: a message older than its topic's `max_age` when its turn comes is not
+/// sent (counted `too_old`), and a held-back topic's latest message that has grown too old
+/// is not sent when interest comes.
+#[tokio::test]
+async fn messages_past_their_topics_age_limit_are_not_sent() {
+    use fleetlink_relay::queue::DropReason;
+    let router = Arc::new(Router::default());
+    let qos = fleetlink_qos::TopicQos {
+        max_age_ms: Some(100),
+        ..Default::default()
+    };
+    let (outbox, publisher) = uplink_with_qos(&router, qos);
+    let scan = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/scan").unwrap(),
+            Schema::named("t/Scan"),
+            false,
+        )
+        .unwrap();
+    // Queued while no writer runs (the link is down), then aged past the limit.
+    scan.publish(publisher, 1, 0, Payload::json(&b"1"[..]));
+    tokio::time::sleep(Duration::from_millis(250)).await;
+    scan.publish(publisher, 2, 0, Payload::json(&b"2"[..]));
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    let sent: Vec<Vec<u8>> = frames_within(&mut rx, Duration::from_millis(200))
+        .await
+        .into_iter()
+        .filter_map(|f| match f {
+            Frame::Message { payload, .. } => Some(payload.to_vec()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(sent, vec![b"2".to_vec()], "the stale message went out");
+    assert_eq!(scan.stats.drops(DropReason::TooOld), 1);
+
+    // Held back until its latest message is too old: interest sends nothing stale.
+    outbox.set_demand_driven(true);
+    scan.publish(publisher, 3, 0, Payload::json(&b"3"[..]));
+    tokio::time::sleep(Duration::from_millis(250)).await;
+    let alias = scan.id().0;
+    outbox.set_wanted(alias, true, std::time::Instant::now());
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert!(
+        !got.iter().any(|f| matches!(f, Frame::Message { .. })),
+        "{got:?}"
+    );
+    writer.abort();
 }

@@ -80,6 +80,10 @@ class Net:
                      "dev", self.robot_dev, "nud", "permanent")
         self.run(self.hub_ns, "ip", "link", "set", self.hub_dev, "up" if up else "down")
 
+    def robot_tx_bytes(self):
+        """Bytes the robot's interface has sent (the uplink's cost, headers included)."""
+        return int(self.run(self.robot_ns, "cat", f"/sys/class/net/{self.robot_dev}/statistics/tx_bytes"))
+
     def shape(self, mbit):
         """Robot egress (the uplink) through a token bucket; None removes it.
 
@@ -235,6 +239,16 @@ class Fleet:
         except (OSError, ValueError, KeyError):
             return None
         return next((x for x in robots if x.get("name") == name), None)
+
+    def hub_topics(self):
+        """The hub's topic listing (GET /api/v1/topics), [] if it did not answer in 2 s."""
+        req = urllib.request.Request(f"http://127.0.0.1:{self.hub_port}/api/v1/topics",
+                                     headers={"Authorization": f"Bearer {self.op_token}"})
+        try:
+            with urllib.request.urlopen(req, timeout=2) as r:
+                return json.load(r)["topics"]
+        except (OSError, ValueError, KeyError):
+            return []
 
     def hub_url(self, across_link=False):
         """From the hub namespace (loopback), or across the veth from the robot's."""

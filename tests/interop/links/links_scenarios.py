@@ -833,6 +833,105 @@ def scenario_calls_dead_link(fleet, nominal):
     return rows
 
 
+IDLE_TARGET_BPS = 2048   # the robot's link with nobody subscribed: heartbeats and reports
+INTEREST_STOP_S = 1.0    # unsubscribing stops a topic within this
+ONE_COPY_RATIO = 1.3     # three subscribers at the hub cost at most this x one
+
+
+def uplink_rate(fleet, secs):
+    """Bytes per second the robot's interface sends over `secs`."""
+    b0, t0 = fleet.net.robot_tx_bytes(), time.monotonic()
+    time.sleep(secs)
+    return (fleet.net.robot_tx_bytes() - b0) / (time.monotonic() - t0)
+
+
+class Viewer:
+    """A rosbridge client at the hub subscribed to one topic (websockets, JSON); counts
+    what it receives on a thread of its own."""
+
+    def __init__(self, fleet, topic):
+        import threading
+        self.topic, self.count, self.first_at = topic, 0, None
+        self.ws = connect(f"ws://127.0.0.1:{fleet.hub_port}/",
+                          additional_headers={"Authorization": f"Bearer {fleet.op_token}"},
+                          max_size=64 << 20, open_timeout=5, close_timeout=1)
+        self.sent_at = time.monotonic()
+        self.ws.send(json.dumps({"op": "subscribe", "topic": topic, "id": "interest"}))
+        self.thread = threading.Thread(target=self._read, daemon=True)
+        self.thread.start()
+
+    def _read(self):
+        try:
+            for frame in self.ws:
+                if isinstance(frame, str) and '"publish"' in frame[:40]:
+                    self.count += 1
+                    if self.first_at is None:
+                        self.first_at = time.monotonic()
+        except Exception:  # closed by the scenario
+            pass
+
+    def close(self):
+        self.ws.close()
+        self.thread.join(timeout=2)
+
+
+def scenario_interest(fleet, _nominal):
+    """The demo sensors on the robot, nobody subscribed: the robot's link carries
+    heartbeats and reports only. One viewer at the hub makes its topic (and only it) flow;
+    three viewers cost one copy on the link; when they leave, the topic stops within a
+    second."""
+    rows = []
+    fleet.start_agent(sim="{}")
+    viewers = []
+    try:
+        wait_until(lambda: sum(1 for t in fleet.hub_topics()
+                               if t["name"].startswith("/robot1/") and t.get("state") == "idle") >= 5,
+                   15, "the simulated robot's five topics listed idle at the hub")
+        time.sleep(1.0)  # the connection's first announcements are behind
+        idle = uplink_rate(fleet, 5.0)
+        rows.append(("idle uplink, demo sensors, nobody subscribed", f"{idle:.0f} B/s",
+                     f"<= {IDLE_TARGET_BPS} B/s", idle <= IDLE_TARGET_BPS))
+        listed = {t["name"]: t for t in fleet.hub_topics()}
+        scan = next((n for n in listed if n.endswith("/scan")), None)
+        if scan is None:
+            raise Failed(f"no scan topic listed: {sorted(listed)}")
+
+        viewers.append(Viewer(fleet, scan))
+        wait_until(lambda: viewers[0].count > 0, 5, f"a message on {scan}")
+        first_ms = (viewers[0].first_at - viewers[0].sent_at) * 1e3
+        rows.append((f"first {scan} after subscribing", f"{first_ms:.0f} ms", "info", None))
+        time.sleep(0.5)
+        one = uplink_rate(fleet, 3.0)
+        states = {t["name"]: t.get("state") for t in fleet.hub_topics() if t["name"].startswith("/robot1/")}
+        others = sorted(n for n, st in states.items() if n != scan and st != "idle")
+        rows.append((f"one viewer of {scan}", f"{one:.0f} B/s; {states.get(scan)}; others flowing: {others or 'none'}",
+                     "the topic flows, no other", states.get(scan) == "flowing" and not others and one > idle * 2))
+
+        viewers += [Viewer(fleet, scan), Viewer(fleet, scan)]
+        wait_until(lambda: all(v.count > 0 for v in viewers), 5, "all three viewers receive")
+        three = uplink_rate(fleet, 3.0)
+        rows.append(("three viewers of the topic", f"{three:.0f} B/s ({three / one:.2f} x one)",
+                     f"<= {ONE_COPY_RATIO} x one", three <= one * ONE_COPY_RATIO))
+
+        for v in viewers:
+            v.close()
+        viewers = []
+        t_close = time.monotonic()
+        time.sleep(INTEREST_STOP_S)
+        after = uplink_rate(fleet, 3.0)
+        rows.append((f"uplink from {INTEREST_STOP_S:.0f} s after the viewers left", f"{after:.0f} B/s",
+                     f"<= {IDLE_TARGET_BPS} B/s", after <= IDLE_TARGET_BPS))
+        state = next((t.get("state") for t in fleet.hub_topics() if t["name"] == scan), None)
+        rows.append((f"{scan} listed", f"{state} ({time.monotonic() - t_close:.1f} s after)", "idle", state == "idle"))
+    finally:
+        for v in viewers:
+            v.close()
+        fleet.stop_agent()
+    for row in rows:
+        print(f"   {row[0]}: {row[1]} [{'ok' if row[3] else ('' if row[3] is None else 'FAIL')}]", flush=True)
+    return rows
+
+
 SCENARIOS = [
     ("1", "blackouts 5/10/30 s", scenario_blackouts),
     ("2", "bandwidth ramp 100 -> 4 Mbit/s", scenario_ramp),
@@ -840,4 +939,5 @@ SCENARIOS = [
     ("4", "agent kill -9 during an outage", scenario_agent_restart),
     ("5", "slowloris", scenario_slowloris),
     ("6", "dead link with calls in flight", scenario_calls_dead_link),
+    ("7", "interest: idle robot link, viewers come and go", scenario_interest),
 ]

@@ -597,3 +597,35 @@ fn issue36_name_longer_than_63_bytes_or_with_a_dash_is_refused_with_the_rule() {
         .expect("63 bytes");
     assert_eq!(cfg.name.as_str().len(), 63);
 }
+
+#[test]
+fn topics_take_always_and_an_age_limit_with_its_unit() {
+    let cfg = AgentConfig::from_str(
+        "name: r1\ntopics:\n  /scan: { max_age: 500ms, always: true }\n  /odom: { max_age: 2s }\n  /tf: { max_age: 250 }\n",
+        "robot.yaml",
+    )
+    .expect("valid");
+    assert_eq!(
+        cfg.topics["/scan"].max_age,
+        Some(std::time::Duration::from_millis(500))
+    );
+    assert_eq!(cfg.topics["/scan"].always, Some(true));
+    assert_eq!(
+        cfg.topics["/odom"].max_age,
+        Some(std::time::Duration::from_secs(2))
+    );
+    assert_eq!(
+        cfg.topics["/tf"].max_age,
+        Some(std::time::Duration::from_millis(250))
+    );
+}
+
+#[test]
+fn a_bad_age_limit_says_how_to_write_one() {
+    let text = err("name: r1\ntopics:\n  /scan: { max_age: soon }\n").to_string();
+    assert!(text.starts_with("robot.yaml:3:"), "{text}");
+    assert!(text.contains("500ms"), "{text}");
+    let text = err("name: r1\ntopics:\n  /map: { no_drop: true, max_age: 1s }\n").to_string();
+    assert!(text.contains("max_age"), "{text}");
+    assert!(text.contains("no_drop"), "{text}");
+}
