@@ -50,4 +50,6 @@ export interface TopicInfo {
   bytes: number;
   last_message_ms: number | null;
   drops?: Record<string, number>;
+  /** A robot's topic nobody wants is held back on the robot: `idle`. */
+  state?: "flowing" | "idle";
 }

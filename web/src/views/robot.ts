@@ -277,7 +277,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   const tbody = el("tbody");
   table.appendChild(tbody);
   topicsP.body.appendChild(table);
-  const rows = new Map<string, { rate: Sparkline; bw: Sparkline; lat: Sparkline; s: [Series, Series, Series]; drops: HTMLElement }>();
+  const rows = new Map<string, { name: HTMLElement; rate: Sparkline; bw: Sparkline; lat: Sparkline; s: [Series, Series, Series]; drops: HTMLElement }>();
   const link = new Series(3, 300);
   const linkChart = new Chart(linkP.body, link, [
     { label: "RTT ms", colour: "#f2994a", scale: "ms" },
@@ -315,9 +315,12 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
         tr.append(...cells);
         tbody.appendChild(tr);
         const s: [Series, Series, Series] = [new Series(1, 120), new Series(1, 120), new Series(1, 120)];
-        r = { rate: new Sparkline(cells[2], s[0], "#2f80ed"), bw: new Sparkline(cells[3], s[1], "#27ae60"), lat: new Sparkline(cells[4], s[2], "#eb5757"), s, drops: cells[5] };
+        r = { name: cells[0], rate: new Sparkline(cells[2], s[0], "#2f80ed"), bw: new Sparkline(cells[3], s[1], "#27ae60"), lat: new Sparkline(cells[4], s[2], "#eb5757"), s, drops: cells[5] };
         rows.set(t.name, r);
       }
+      // Held back on the robot while nobody watches; opening a panel makes it flow.
+      r.name.textContent = t.state === "idle" ? `${t.name} (idle)` : t.name;
+      r.name.title = t.state === "idle" ? "nobody is subscribed: the robot holds this topic back" : "";
       const lat = clocks.get(t.name)?.lastLatency ?? NaN;
       r.s[0].push(now, t.rate_hz);
       r.s[1].push(now, t.bandwidth_bps);
