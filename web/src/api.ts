@@ -50,6 +50,7 @@ export interface TopicInfo {
   bytes: number;
   last_message_ms: number | null;
   drops?: Record<string, number>;
-  /** A robot's topic nobody wants is held back on the robot: `idle`. */
-  state?: "flowing" | "idle";
+  /** A robot's topic nobody wants is held back on the robot: `idle`; `pull`: sent only
+   * when asked (POST /api/v1/robots/{robot}/topics/{topic}/pull). */
+  state?: "flowing" | "idle" | "pull";
 }

@@ -778,6 +778,7 @@ impl Uplink {
             LinkEvent::Control(Frame::Interest { alias, wanted }) => {
                 self.outbox.set_wanted(alias, wanted, Instant::now());
             }
+            LinkEvent::Control(Frame::Pull { alias }) => self.outbox.pull(alias, Instant::now()),
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {
                 self.outbox.on_delivered(alias, seq);
             }

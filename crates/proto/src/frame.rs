@@ -64,6 +64,7 @@ pub enum FrameKind {
     Cancel = 0x16,
     CallChunk = 0x17,
     Interest = 0x18,
+    Pull = 0x19,
 }
 
 /// Severity of a `STATUS` frame.
@@ -132,6 +133,9 @@ pub const SERVICE_ACTION: u8 = 0x01;
 /// with `SERVICE_ADVERTISE` for every matching service it offers, now and as they appear,
 /// and `SERVICE_UNADVERTISE` as they go.
 pub const SUBSCRIBE_SERVICES: u8 = 0x02;
+/// `ADVERTISE` flag: a pull topic, sent only when the receiver asks (`PULL`), one message
+/// per request.
+pub const ADVERTISE_PULL: u8 = 0x04;
 /// `WELCOME` feature: the hub tells the agent which of its topics are wanted (`INTEREST`),
 /// and the agent sends a topic only while it is (demand-driven uplink).
 pub const WELCOME_INTEREST: u64 = 0x01;
@@ -321,6 +325,10 @@ pub enum Frame {
     /// unknown kind) and send everything.
     /// `alias varint | wanted u8`
     Interest { alias: u32, wanted: bool },
+    /// Hub → agent: send the latest message of the pull topic the agent announced as
+    /// `alias` (one message; nothing if it has none, or none younger than its age limit).
+    /// `alias varint`
+    Pull { alias: u32 },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -352,6 +360,7 @@ impl Frame {
             Frame::Cancel { .. } => FrameKind::Cancel as u8,
             Frame::CallChunk { .. } => FrameKind::CallChunk as u8,
             Frame::Interest { .. } => FrameKind::Interest as u8,
+            Frame::Pull { .. } => FrameKind::Pull as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -405,6 +414,7 @@ impl Frame {
                 put_varint(b, u64::from(*alias));
                 b.put_u8(u8::from(*wanted));
             }
+            Frame::Pull { alias } => put_varint(b, u64::from(*alias)),
             Frame::Advertise {
                 alias,
                 topic,
@@ -782,6 +792,9 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                     ));
                 }
             },
+        },
+        0x19 => Frame::Pull {
+            alias: r.varint_u32("PULL.alias")?,
         },
         other => Frame::Unknown { kind: other },
     };

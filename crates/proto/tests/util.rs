@@ -46,6 +46,10 @@ pub fn welcome() -> impl Strategy<Value = Frame> {
         )
 }
 
+pub fn pull() -> impl Strategy<Value = Frame> {
+    any::<u32>().prop_map(|alias| Frame::Pull { alias })
+}
+
 pub fn interest() -> impl Strategy<Value = Frame> {
     (any::<u32>(), any::<bool>()).prop_map(|(alias, wanted)| Frame::Interest { alias, wanted })
 }
@@ -315,7 +319,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x19u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x1au8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -344,6 +348,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         cancel(),
         call_chunk(),
         interest(),
+        pull(),
         unknown(),
     ]
 }
@@ -369,6 +374,7 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             alias: 300,
             wanted: true,
         },
+        Frame::Pull { alias: 300 },
         Frame::Advertise {
             alias: 300,
             topic: "/scan".into(),

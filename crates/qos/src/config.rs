@@ -9,6 +9,18 @@ use serde::Deserialize;
 
 use crate::error::QosError;
 
+/// How a topic goes up the link (see `docs/qos.md`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Mode {
+    /// Every message while someone wants the topic (or always, with `always: true`).
+    #[default]
+    Stream,
+    /// Only on request: the agent keeps the latest message and sends exactly one each time
+    /// a subscriber asks (`pull`).
+    Pull,
+}
+
 /// What a bounded per-topic queue does when it is full (see `docs/qos.md`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
@@ -69,6 +81,9 @@ pub struct TopicQos {
     /// the link comes is dropped (`too_old`); `None`: no limit. No-drop topics take none.
     #[serde(default)]
     pub max_age_ms: Option<u64>,
+    /// `pull`: sent only when a subscriber asks, one message per request.
+    #[serde(default)]
+    pub mode: Mode,
 }
 
 fn default_priority() -> f32 {
@@ -92,6 +107,7 @@ impl Default for TopicQos {
             no_drop: false,
             always: false,
             max_age_ms: None,
+            mode: Mode::Stream,
         }
     }
 }
@@ -106,6 +122,7 @@ impl TopicQos {
             no_drop: false,
             always: false,
             max_age_ms: None,
+            mode: Mode::Stream,
         }
     }
 
@@ -200,6 +217,16 @@ impl TopicQos {
                 "must be longer than 0 (leave it out for no limit)".to_string(),
             ));
         }
+        if self.mode == Mode::Pull && (self.no_drop || self.always) {
+            return Err(QosError::invalid(
+                "mode",
+                format!(
+                    "a pull topic is sent only when asked, which `{}: true` contradicts; \
+                     remove one of the two",
+                    if self.no_drop { "no_drop" } else { "always" }
+                ),
+            ));
+        }
         if self.no_drop && self.max_age_ms.is_some() {
             return Err(QosError::invalid(
                 "max_age",
@@ -258,6 +285,7 @@ pub struct TopicQosSpec {
     /// `500ms`, `2s`, `1m` (or a number of milliseconds).
     #[serde(default, deserialize_with = "age")]
     pub max_age: Option<std::time::Duration>,
+    pub mode: Option<Mode>,
 }
 
 /// An age limit as written: a duration with its unit (`500ms`, `2s`), or milliseconds.
@@ -311,8 +339,16 @@ impl TopicQosSpec {
         if let Some(a) = self.always {
             qos.always = a;
         }
+        if let Some(m) = self.mode {
+            qos.mode = m;
+        }
         if let Some(age) = self.max_age {
             qos.max_age_ms = Some(age.as_millis().min(u128::from(u64::MAX)) as u64);
+        }
+        // A pull topic or an age limit chosen for a topic that is no-drop only by default
+        // (`/map`, `/tf_static`) ends its no-drop default, as a dropping policy does.
+        if (self.mode == Some(Mode::Pull) || self.max_age.is_some()) && self.no_drop.is_none() {
+            qos.no_drop = false;
         }
         if let Some(nd) = self.no_drop {
             qos.no_drop = nd;

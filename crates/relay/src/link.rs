@@ -19,7 +19,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use bytes::Bytes;
-use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_RELIABLE, Frame};
+use fleetlink_proto::frame::{ADVERTISE_LATCHED, ADVERTISE_PULL, ADVERTISE_RELIABLE, Frame};
 use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
@@ -45,6 +45,8 @@ pub struct InTopic {
     /// No-drop: sequence numbers are the sender's stream numbering; confirm with
     /// `DELIVERED`.
     pub reliable: bool,
+    /// A pull topic: sent only when asked (`PULL`).
+    pub pull: bool,
 }
 
 /// What a received frame means for the router.
@@ -126,6 +128,7 @@ impl LinkIn {
                     encoding,
                     latched: flags & ADVERTISE_LATCHED != 0,
                     reliable: flags & ADVERTISE_RELIABLE != 0,
+                    pull: flags & ADVERTISE_PULL != 0,
                 };
                 self.aliases.insert(alias, t.clone());
                 LinkEvent::Advertise { alias, topic: t }

@@ -78,8 +78,13 @@ enum Service {
         refusal_logged: Option<Instant>,
         /// What the hub wants, and each topic's latest message.
         demand: Box<Demand>,
+        /// Messages of pull topics asked for, waiting for the writer.
+        pulled: VecDeque<Arc<Message>>,
     },
 }
+
+/// Pull requests waiting for the writer at most (more are dropped: the peer asks again).
+const MAX_PULLED: usize = 64;
 
 /// Most payload bytes of one topic's latest message kept while the topic is held back;
 /// a larger message is not kept (the next one is sent when interest comes).
@@ -103,10 +108,15 @@ struct Demand {
     unannounced: HashSet<u32, IdHash>,
     /// Topics with an age limit (`max_age`): older messages are not sent.
     max_age: HashMap<u32, Duration, IdHash>,
+    /// Pull topics: sent only when asked ([`Outbox::pull`]).
+    pull: HashSet<u32, IdHash>,
 }
 
 impl Demand {
     fn flows(&self, topic: u32) -> bool {
+        if self.pull.contains(&topic) {
+            return false;
+        }
         !self.driven || self.wanted.contains(&topic) || self.always.contains(&topic)
     }
 
@@ -207,6 +217,7 @@ impl Outbox {
                 reliable: Box::new(reliable),
                 refusal_logged: None,
                 demand: Box::default(),
+                pulled: VecDeque::new(),
             },
         )
     }
@@ -271,6 +282,9 @@ impl Outbox {
                     }
                     if let Some(ms) = q.max_age_ms.filter(|_| !q.no_drop) {
                         demand.max_age.insert(tid, Duration::from_millis(ms));
+                    }
+                    if q.mode == fleetlink_qos::Mode::Pull && !q.no_drop {
+                        demand.pull.insert(tid);
                     }
                     if q.no_drop && reliable.is_durable() {
                         // Waiting messages are on disk too: the journal's byte bound
@@ -577,6 +591,32 @@ impl Outbox {
         }
     }
 
+    /// The peer asks for one message of the pull topic with link alias `alias`: its latest
+    /// goes out (unless it has none, or none within its age limit). Pulled messages are
+    /// taken even though the topic does not flow.
+    pub fn pull(&self, alias: u32, now: Instant) {
+        let mut st = self.lock();
+        let st = &mut *st;
+        let Service::Scheduled { demand, pulled, .. } = &mut st.service else {
+            return;
+        };
+        if !demand.pull.contains(&alias) {
+            return;
+        }
+        let Some(latest) = demand.latest.get(&alias).cloned() else {
+            return;
+        };
+        if demand.too_old(alias, &latest, now) {
+            return;
+        }
+        // Queued beside the scheduler (a request is rare and small in number): the writer
+        // takes it with the next batch.
+        if pulled.len() < MAX_PULLED {
+            pulled.push_back(latest);
+            self.notify.notify_one();
+        }
+    }
+
     /// The latest messages of held-back topics not yet announced on this connection: the
     /// writer announces their topics (`ADVERTISE`) without sending them.
     pub fn take_unannounced(&self, out: &mut Vec<Arc<Message>>) {
@@ -628,6 +668,9 @@ impl Outbox {
         match &self.lock().service {
             Service::Scheduled { sched, .. } if sched.is_no_drop(QosTopic(alias)) => {
                 fleetlink_proto::frame::ADVERTISE_RELIABLE
+            }
+            Service::Scheduled { demand, .. } if demand.pull.contains(&alias) => {
+                fleetlink_proto::frame::ADVERTISE_PULL
             }
             _ => 0,
         }
@@ -810,9 +853,17 @@ impl Outbox {
                 by_topic,
                 reliable,
                 demand,
+                pulled,
                 ..
             } => {
                 let t = Nanos::since(*origin, now);
+                while items.len() < max_items
+                    && let Some(m) = pulled.pop_front()
+                {
+                    let slot = by_topic.get(&m.topic.id.0).copied().unwrap_or(SlotId(0));
+                    bytes += m.wire_len();
+                    items.push((slot, Delivery::default(), m));
+                }
                 while items.len() < max_items && bytes < max_bytes {
                     let Some((tid, m)) = sched.poll_next(t) else {
                         break;

@@ -199,6 +199,7 @@ pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: us
         no_drop: false,
         always: false,
         max_age_ms: None,
+        mode: fleetlink_qos::Mode::Stream,
     }
 }
 

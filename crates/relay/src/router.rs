@@ -111,6 +111,8 @@ pub struct Topic {
     /// Its publisher (a robot's link) was told that nobody wants it, so it does not
     /// flow: listings show it idle.
     idle: std::sync::atomic::AtomicBool,
+    /// Its publisher sends it only when asked ([`Router::request_pull`]).
+    pull: std::sync::atomic::AtomicBool,
 }
 
 /// Where a publisher hears that the demand for its topics may have changed: the topics
@@ -120,6 +122,8 @@ pub struct Topic {
 #[derive(Default)]
 pub struct DemandWatch {
     changed: Mutex<HashSet<TopicId>>,
+    /// Pull requests since the last look, coalesced per topic.
+    pulls: Mutex<HashSet<TopicId>>,
     notify: tokio::sync::Notify,
 }
 
@@ -133,6 +137,23 @@ impl DemandWatch {
         if fresh {
             self.notify.notify_one();
         }
+    }
+
+    fn pull(&self, topic: TopicId) {
+        self.pulls
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(topic);
+        self.notify.notify_one();
+    }
+
+    /// The topics someone asked to pull since the last call.
+    pub fn take_pulls(&self) -> Vec<TopicId> {
+        self.pulls
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .drain()
+            .collect()
     }
 
     /// The topics whose subscribers changed since the last call.
@@ -242,6 +263,16 @@ impl Topic {
     /// True while its publisher holds it back because nobody wants it.
     pub fn is_idle(&self) -> bool {
         self.idle.load(Relaxed)
+    }
+
+    /// Marks the topic as one its publisher sends only when asked.
+    pub fn set_pull(&self, pull: bool) {
+        self.pull.store(pull, Relaxed);
+    }
+
+    /// True if its publisher sends it only when asked ([`Router::request_pull`]).
+    pub fn is_pull(&self) -> bool {
+        self.pull.load(Relaxed)
     }
 
     /// Fans `payload` out to every subscriber (its origin only if that is a rosbridge
@@ -612,6 +643,23 @@ impl Router {
         self.lock().demand.entry(client).or_default().clone()
     }
 
+    /// Asks the publishers of `name` that send it only on request for one message (which
+    /// then reaches the topic's subscribers). False if no such publisher has it.
+    pub fn request_pull(&self, name: &TopicName) -> bool {
+        let st = self.lock();
+        let Some(topic) = st.topics.get(name) else {
+            return false;
+        };
+        let mut asked = false;
+        for p in st.publishers.get(name).into_iter().flatten() {
+            if let Some(w) = st.demand.get(p) {
+                w.pull(topic.id());
+                asked = true;
+            }
+        }
+        asked && topic.is_pull()
+    }
+
     /// The topic with this id, if it exists.
     pub fn topic_by_id(&self, id: TopicId) -> Option<Arc<Topic>> {
         self.lock().topics.values().find(|t| t.id() == id).cloned()
@@ -633,6 +681,7 @@ impl Router {
             latch: Default::default(),
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
             idle: Default::default(),
+            pull: Default::default(),
         });
         st.topics.insert(name.clone(), topic.clone());
         // Pattern subscriptions pick up new topics as they appear.

@@ -744,3 +744,49 @@ async fn messages_past_their_topics_age_limit_are_not_sent() {
     );
     writer.abort();
 }
+
+/// A pull topic: announced flagged `ADVERTISE_PULL`, never sent by itself (even when
+/// wanted); each pull sends its latest message once.
+#[tokio::test]
+async fn a_pull_topic_goes_out_only_when_pulled() {
+    let router = Arc::new(Router::default());
+    let qos = fleetlink_qos::TopicQos {
+        mode: fleetlink_qos::Mode::Pull,
+        ..Default::default()
+    };
+    let (outbox, publisher) = uplink_with_qos(&router, qos);
+    let map = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/map").unwrap(),
+            Schema::named("t/Map"),
+            false,
+        )
+        .unwrap();
+    outbox.set_demand_driven(true);
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    map.publish(publisher, 1, 0, Payload::json(&b"1"[..]));
+    map.publish(publisher, 2, 0, Payload::json(&b"2"[..]));
+    let frames = frames_within(&mut rx, Duration::from_millis(200)).await;
+    let alias = match frames.as_slice() {
+        [Frame::Advertise { alias, flags, .. }] if flags & frame::ADVERTISE_PULL != 0 => *alias,
+        other => panic!("expected the topic announced as pull, got {other:?}"),
+    };
+    outbox.set_wanted(alias, true, std::time::Instant::now());
+    map.publish(publisher, 3, 0, Payload::json(&b"3"[..]));
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert!(got.is_empty(), "sent without a pull: {got:?}");
+    for _ in 0..2 {
+        outbox.pull(alias, std::time::Instant::now());
+        let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+        let payloads: Vec<Vec<u8>> = got
+            .iter()
+            .filter_map(|f| match f {
+                Frame::Message { payload, .. } => Some(payload.to_vec()),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(payloads, vec![b"3".to_vec()]);
+    }
+    writer.abort();
+}

@@ -277,7 +277,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   const tbody = el("tbody");
   table.appendChild(tbody);
   topicsP.body.appendChild(table);
-  const rows = new Map<string, { name: HTMLElement; rate: Sparkline; bw: Sparkline; lat: Sparkline; s: [Series, Series, Series]; drops: HTMLElement }>();
+  const rows = new Map<string, { name: HTMLElement; cell: HTMLElement; pull: HTMLButtonElement | null; rate: Sparkline; bw: Sparkline; lat: Sparkline; s: [Series, Series, Series]; drops: HTMLElement }>();
   const link = new Series(3, 300);
   const linkChart = new Chart(linkP.body, link, [
     { label: "RTT ms", colour: "#f2994a", scale: "ms" },
@@ -310,17 +310,39 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       if (!r) {
         const tr = el("tr");
         const cells = Array.from({ length: 6 }, () => el("td"));
-        cells[0].textContent = t.name;
+        const label = el("span", "", t.name);
+        cells[0].append(label);
         cells[1].textContent = t.type;
         tr.append(...cells);
         tbody.appendChild(tr);
         const s: [Series, Series, Series] = [new Series(1, 120), new Series(1, 120), new Series(1, 120)];
-        r = { name: cells[0], rate: new Sparkline(cells[2], s[0], "#2f80ed"), bw: new Sparkline(cells[3], s[1], "#27ae60"), lat: new Sparkline(cells[4], s[2], "#eb5757"), s, drops: cells[5] };
+        r = { name: label, cell: cells[0], pull: null, rate: new Sparkline(cells[2], s[0], "#2f80ed"), bw: new Sparkline(cells[3], s[1], "#27ae60"), lat: new Sparkline(cells[4], s[2], "#eb5757"), s, drops: cells[5] };
         rows.set(t.name, r);
       }
-      // Held back on the robot while nobody watches; opening a panel makes it flow.
-      r.name.textContent = t.state === "idle" ? `${t.name} (idle)` : t.name;
-      r.name.title = t.state === "idle" ? "nobody is subscribed: the robot holds this topic back" : "";
+      // Held back on the robot while nobody watches; opening a panel makes it flow. A pull
+      // topic comes only when asked: one message per press of its button.
+      r.name.textContent = t.state === "idle" || t.state === "pull" ? `${t.name} (${t.state})` : t.name;
+      r.name.title =
+        t.state === "idle" ? "nobody is subscribed: the robot holds this topic back"
+        : t.state === "pull" ? "sent only when asked: one message per pull" : "";
+      if (t.state === "pull" && !r.pull) {
+        const out = el("div", "pulled");
+        const topic = t.name;
+        const b = button("pull", "small", async () => {
+          b.disabled = true;
+          try {
+            const local = topic.slice(name.length + 2);
+            const v = await api<{ msg: unknown }>(`/api/v1/robots/${encodeURIComponent(name)}/topics/${local}/pull`, { method: "POST" });
+            out.replaceChildren(jsonTree(v.msg, topic));
+          } catch (e) {
+            out.textContent = `pull failed: ${(e as Error).message}`;
+          } finally {
+            b.disabled = false;
+          }
+        });
+        r.cell.append(" ", b, out);
+        r.pull = b;
+      }
       const lat = clocks.get(t.name)?.lastLatency ?? NaN;
       r.s[0].push(now, t.rate_hz);
       r.s[1].push(now, t.bandwidth_bps);

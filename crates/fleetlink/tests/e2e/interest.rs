@@ -16,6 +16,13 @@ fn hub_topic(hub: &TestHub, name: &str) -> Option<std::sync::Arc<Topic>> {
     hub.state.router.topic(&TopicName::parse(name).unwrap())
 }
 
+/// True if `client` receives no publish within `wait`.
+async fn nothing_within(client: &mut Rosbridge, wait: Duration) -> bool {
+    tokio::time::timeout(wait, client.recv_op("publish"))
+        .await
+        .is_err()
+}
+
 /// Messages of `name` the hub received from the robot.
 fn received(hub: &TestHub, name: &str) -> u64 {
     hub_topic(hub, name).map_or(0, |t| t.stats.messages.load(Relaxed))
@@ -246,6 +253,113 @@ async fn after_a_blackout_nothing_older_than_its_age_limit_arrives() {
     );
     logs.sort_unstable();
     assert_eq!(logs, (1..=logged).collect::<Vec<_>>(), "no_drop lost lines");
+    agent.shutdown().await;
+    hub.shutdown().await;
+}
+
+/// A pull topic (`mode: pull`): never sent by itself, even with a subscriber; each pull
+/// (the rosbridge `pull` op, or the REST call) brings exactly one message, the latest.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_pull_topic_sends_exactly_one_message_per_request() {
+    let hub = start_hub().await;
+    let mut cfg = uplink_config(&hub, "robot4");
+    cfg.topic_qos = vec![(
+        TopicName::parse("/map").unwrap(),
+        TopicQosSpec {
+            mode: Some(fleetlink_qos::Mode::Pull),
+            ..Default::default()
+        },
+    )];
+    let agent = start_agent_with(cfg, false).await;
+    agent.wait_connected().await;
+    let mut map = LocalPublisher::new(&agent.router, "/map", "std_msgs/msg/String");
+    let mut odom = LocalPublisher::new(&agent.router, "/odom", "std_msgs/msg/String");
+    for i in 0..5 {
+        map.publish_json(&json!({ "data": format!("map {i}") }));
+        odom.publish_json(&json!({ "data": format!("odom {i}") }));
+    }
+    eventually("the pull topic listed", || {
+        hub_topic(&hub, "/robot4/map").is_some_and(|t| t.is_pull())
+    })
+    .await;
+    let (status, listing) = http_json(
+        hub.addr,
+        "GET",
+        "/api/v1/topics",
+        Some(&hub.operator_token),
+        None,
+    )
+    .await;
+    assert_eq!(status, 200);
+    let state = listing["topics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["name"] == "/robot4/map")
+        .map(|t| t["state"].clone());
+    assert_eq!(state, Some(json!("pull")));
+
+    // Subscribed, nothing comes by itself.
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    op.send(json!({"op": "pull", "topic": "/robot4/map", "id": "early"}))
+        .await;
+    let refused = within("a refusal", op.recv_op("status")).await;
+    assert!(
+        refused["msg"]
+            .as_str()
+            .unwrap()
+            .contains("subscribe to it first"),
+        "{refused}"
+    );
+    op.send(json!({"op": "subscribe", "topic": "/robot4/map", "id": "m"}))
+        .await;
+    assert!(
+        nothing_within(&mut op, Duration::from_millis(300)).await,
+        "a pull topic flowed by itself"
+    );
+    assert_eq!(received(&hub, "/robot4/map"), 0);
+
+    // One pull, one message: the latest.
+    op.send(json!({"op": "pull", "topic": "/robot4/map", "id": "p1"}))
+        .await;
+    let m = within("the pulled message", op.recv_op("publish")).await;
+    assert_eq!(m["msg"]["data"], "map 4");
+    assert!(
+        nothing_within(&mut op, Duration::from_millis(300)).await,
+        "more than one message per pull"
+    );
+    map.publish_json(&json!({ "data": "map 5" }));
+    op.send(json!({"op": "pull", "topic": "/robot4/map", "id": "p2"}))
+        .await;
+    let m = within("the second pull", op.recv_op("publish")).await;
+    assert_eq!(m["msg"]["data"], "map 5");
+    assert_eq!(received(&hub, "/robot4/map"), 2);
+
+    // Over REST: the message in the answer; a streaming topic is refused with the reason.
+    let (status, v) = http_json(
+        hub.addr,
+        "POST",
+        "/api/v1/robots/robot4/topics/map/pull",
+        Some(&hub.operator_token),
+        None,
+    )
+    .await;
+    assert_eq!(status, 200, "{v}");
+    assert_eq!(v["msg"]["data"], "map 5");
+    assert_eq!(v["topic"], "/robot4/map");
+    let (status, v) = http_json(
+        hub.addr,
+        "POST",
+        "/api/v1/robots/robot4/topics/odom/pull",
+        Some(&hub.operator_token),
+        None,
+    )
+    .await;
+    assert_eq!(status, 409, "{v}");
+    assert!(
+        v["error"].as_str().unwrap().contains("not a pull topic"),
+        "{v}"
+    );
     agent.shutdown().await;
     hub.shutdown().await;
 }

@@ -101,6 +101,14 @@ impl RobotLink {
                 self.tell_interest(alias, session);
             }
         }
+        // Someone asked for one message of a pull topic.
+        for topic in self.demand.take_pulls() {
+            if let Some(alias) = self.by_topic.get(&topic).copied()
+                && self.topics.get(&alias).is_some_and(|p| p.topic.is_pull())
+            {
+                session.send(Frame::Pull { alias });
+            }
+        }
     }
 
     /// A read of the link arrived at `at` (the unix clock `unix_ns`): its messages carry
@@ -224,6 +232,7 @@ impl RobotLink {
                 {
                     Ok(t) => {
                         self.by_topic.insert(t.id(), alias);
+                        t.set_pull(topic.pull);
                         if let Some(old) = self.topics.insert(
                             alias,
                             PubTopic {
@@ -253,6 +262,7 @@ impl RobotLink {
                 if let Some(mut p) = self.topics.remove(&alias) {
                     p.topic.stats.flush(&mut p.counts);
                     p.topic.set_idle(false);
+                    p.topic.set_pull(false);
                     self.by_topic.remove(&p.topic.id());
                     self.interest.remove(&alias);
                     if let Ok(name) = TopicName::parse(&topic.name) {

@@ -31,6 +31,11 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/topics", get(topics))
         .route("/api/v1/clients", get(clients))
         .route("/api/v1/robots/{name}/offload", get(offload))
+        // One message of a pull topic (reads data; asks the robot for it).
+        .route(
+            "/api/v1/robots/{name}/topics/{*rest}",
+            axum::routing::post(super::pull::pull),
+        )
 }
 
 fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
@@ -134,7 +139,8 @@ async fn topics(
                 "type": t.meta.schema.type_name,
                 "publishers": t.publishers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
                 // A robot's topic that nobody wants is held back on the robot (idle).
-                "state": if t.topic.is_idle() { "idle" } else { "flowing" },
+                // `pull`: sent only when a subscriber asks (POST …/pull, rosbridge `pull`).
+                "state": if t.topic.is_pull() { "pull" } else if t.topic.is_idle() { "idle" } else { "flowing" },
                 "subscribers": t.subscribers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
                 "rate_hz": (rate * 100.0).round() / 100.0,
                 "bandwidth_bps": bw.round(),

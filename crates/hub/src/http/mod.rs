@@ -20,6 +20,7 @@ pub mod api;
 pub mod caller;
 pub mod dashboard;
 pub mod metrics;
+pub mod pull;
 
 use std::sync::Arc;
 

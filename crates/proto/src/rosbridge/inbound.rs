@@ -74,6 +74,11 @@ pub enum Op {
     Unsubscribe {
         topic: String,
     },
+    /// fleetlink extension: one message of a pull topic, delivered through the caller's
+    /// subscription to it.
+    Pull {
+        topic: String,
+    },
     CallService {
         service: String,
         type_name: Option<String>,
@@ -164,6 +169,7 @@ impl Op {
             Op::Publish { .. } => "publish",
             Op::Subscribe { .. } => "subscribe",
             Op::Unsubscribe { .. } => "unsubscribe",
+            Op::Pull { .. } => "pull",
             Op::CallService { .. } => "call_service",
             Op::AdvertiseService { .. } => "advertise_service",
             Op::UnadvertiseService { .. } => "unadvertise_service",
@@ -582,6 +588,9 @@ fn parse_envelope(
             }
             "unsubscribe" => Op::Unsubscribe {
                 topic: fields.req_str("topic")?,
+            },
+            "pull" => Op::Pull {
+                topic: fields.topic("topic")?,
             },
             "call_service" => Op::CallService {
                 service: fields.topic("service")?,

@@ -683,6 +683,7 @@ impl Session {
                 self.unsubscribe(&topic, id.as_ref());
                 Ok(())
             }
+            Op::Pull { topic } => self.pull(&topic),
             Op::CallService {
                 service,
                 args,
@@ -992,6 +993,25 @@ impl Session {
             .or_default()
             .push((id, sid));
         Ok(())
+    }
+
+    /// fleetlink's `pull`: one message of a pull topic, which comes through this client's
+    /// subscription to it (so it must have one).
+    fn pull(&mut self, topic: &str) -> Result<(), String> {
+        if !self.subs.contains_key(topic) {
+            return Err(format!(
+                "pull {topic}: subscribe to it first (the pulled message comes through the \
+                 subscription)"
+            ));
+        }
+        let name = TopicName::parse(topic).map_err(|e| format!("pull {topic}: {e}"))?;
+        if self.router.request_pull(&name) {
+            Ok(())
+        } else {
+            Err(format!(
+                "pull {topic}: not a pull topic of a connected robot (see its `mode: pull`)"
+            ))
+        }
     }
 
     fn unsubscribe(&mut self, topic: &str, id: Option<&Value>) {
