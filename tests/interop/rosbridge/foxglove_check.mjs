@@ -166,13 +166,20 @@ async function checkLichtblickFlow(c) {
   ok(`typedefs_full_text of all ${readers.size} topics with a definition parse (ros2)`);
   const sim = ["scan", "odom", "pose", "points", "camera/image/compressed"].map((t) => `/${robot}/${t}`);
   // rosbridge keeps one delivery (compression) per topic and connection, so the JSON copy
-  // comes on a second connection.
+  // comes on a second connection. It subscribes first and has a message of each topic
+  // before the raw subscription is made: the first subscriber of an idle robot topic gets
+  // the robot's cached latest message alone, which a later subscriber never sees.
   const j = new Conn(args.url);
   await j.open();
   for (const topic of sim) {
     check(readers.has(topic), `${topic} is not listed with a definition`);
-    c.send({ op: "subscribe", topic, compression: "cbor-raw", id: `raw-${topic}` });
     j.send({ op: "subscribe", topic, id: `json-${topic}`, queue_length: 100 });
+  }
+  for (const topic of sim) {
+    await j.next((f) => !(f instanceof Uint8Array) && f.op === "publish" && f.topic === topic, `a first JSON ${topic} message`);
+  }
+  for (const topic of sim) {
+    c.send({ op: "subscribe", topic, compression: "cbor-raw", id: `raw-${topic}` });
   }
   for (const topic of sim) {
     const isRaw = (f) => f instanceof Uint8Array;

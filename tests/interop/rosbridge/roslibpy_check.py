@@ -27,6 +27,7 @@ import sys
 import threading
 import time
 import urllib.parse
+import urllib.request
 
 import cbor2
 import roslibpy
@@ -294,6 +295,35 @@ def check_invalid_op(ros):
     ok("connection still serves requests after the error")
 
 
+def check_pull(ros, url, robot):
+    """A pull topic (the agent's /markers, `mode: pull`): a roslibpy subscriber gets nothing
+    by itself; each `pull` op brings exactly one message; the REST pull answers with one."""
+    topic = f"/{robot}/markers"
+    got = Inbox()
+    sub = roslibpy.Topic(ros, topic, "visualization_msgs/msg/MarkerArray")
+    sub.subscribe(got.put)
+    time.sleep(1.5)  # markers are published at 2 Hz on the robot
+    check(not got.items, f"pull topic {topic}: {len(got.items)} messages without a pull")
+    ok(f"pull topic {topic}: nothing without a pull (1.5 s)")
+    for n in (1, 2):
+        ros.send_on_ready(roslibpy.Message({"op": "pull", "topic": topic, "id": f"pull-{n}"}))
+        got.wait(n, TIMEOUT, f"message {n} pulled from {topic}")
+        time.sleep(0.8)
+        check(len(got.items) == n, f"pull {n} of {topic}: {len(got.items)} messages, want {n}")
+    check(isinstance(got.items[-1].get("markers"), list), f"pulled {topic}: {str(got.items[-1])[:200]}")
+    ok(f"pull op: exactly one {topic} message per pull ({len(got.items[-1]['markers'])} markers)")
+    sub.unsubscribe()
+    u = urllib.parse.urlparse(url)
+    token = urllib.parse.parse_qs(u.query)["token"][0]
+    req = urllib.request.Request(f"http://{u.hostname}:{u.port}/api/v1/robots/{robot}/topics/markers/pull",
+                                 method="POST", headers={"Authorization": f"Bearer {token}"})
+    with urllib.request.urlopen(req, timeout=TIMEOUT) as r:
+        v = json.load(r)
+    check(v.get("topic") == topic and isinstance(v.get("msg", {}).get("markers"), list),
+          f"REST pull: {str(v)[:200]}")
+    ok(f"REST pull: {topic} answered with {len(v['msg']['markers'])} markers")
+
+
 def publish_until_received(pub_topic, msg, inbox, what, pred):
     """Publishes until the subscriber side has it; bounded in count and time."""
     for _ in range(PUBLISH_ATTEMPTS):
@@ -375,6 +405,7 @@ def main():
         check_params(ros, a.mode)
         check_invalid_op(ros)
         if a.mode == "hub":
+            check_pull(ros, a.url, a.robot)
             check_publish_hub(ros, a.peer_url, a.robot)
         else:
             check_publish_local(ros, a.peer_url, a.robot)

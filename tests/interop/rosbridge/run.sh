@@ -53,6 +53,9 @@ sim:
   point_cloud: { rate_hz: 2, points: $points }
   pose:        { rate_hz: 5 }
   image:       { rate_hz: 2 }
+  markers:     { rate_hz: 2 }
+topics:
+  /markers: { mode: pull }
 EOF
 "$bin" agent --name "$robot" --config "$tmp/agent.yaml" --local-listen 127.0.0.1:0 >"$tmp/agent.log" 2>&1 &
 pids+=($!)
