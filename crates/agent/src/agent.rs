@@ -66,6 +66,7 @@ impl AgentOptions {
                 max_in_flight: 32,
                 tls: tls_client(cfg)?,
                 outbox: cfg.outbox.as_ref().map(|o| o.store()),
+                latest_cache_bytes: cfg.latest_cache_mb.saturating_mul(1 << 20) as usize,
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),

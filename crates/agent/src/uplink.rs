@@ -177,6 +177,8 @@ pub struct UplinkConfig {
     pub tls: Option<Arc<rustls::ClientConfig>>,
     /// The durable outbox for no-drop topics; `None` keeps them in memory only.
     pub outbox: Option<crate::outbox_store::OutboxStoreConfig>,
+    /// Most bytes of topics' latest messages kept (see [`Outbox::set_latest_limit`]).
+    pub latest_cache_bytes: usize,
 }
 
 /// The link's state, observable by tests and the CLI.
@@ -278,6 +280,7 @@ impl Uplink {
             None,
             |id| Outbox::scheduled(id, sched, qos_for, reliable),
         );
+        outbox.set_latest_limit(cfg.latest_cache_bytes);
         let all = Router::compile_pattern(".*").expect("a constant pattern compiles");
         let opts = SubOptions::default();
         router

@@ -192,6 +192,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         max_in_flight: 32,
         tls: None,
         outbox: None,
+        latest_cache_bytes: 64 << 20,
     }
 }
 

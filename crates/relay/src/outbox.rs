@@ -86,9 +86,9 @@ enum Service {
 /// Pull requests waiting for the writer at most (more are dropped: the peer asks again).
 const MAX_PULLED: usize = 64;
 
-/// Most payload bytes of one topic's latest message kept while the topic is held back;
-/// a larger message is not kept (the next one is sent when interest comes).
-pub const LATEST_MAX_BYTES: usize = 8 << 20;
+/// Most payload bytes of all topics' latest messages kept, unless the owner sets another
+/// bound ([`Outbox::set_latest_limit`]).
+pub const LATEST_DEFAULT_LIMIT: usize = 64 << 20;
 
 /// A demand-driven uplink (issue 37): while the hub says nobody wants a topic, its
 /// messages are not sent; the latest one is kept and goes out at once when interest
@@ -101,11 +101,16 @@ struct Demand {
     wanted: HashSet<u32, IdHash>,
     /// Topics that flow whatever the demand: `always: true` and no-drop.
     always: HashSet<u32, IdHash>,
-    /// Each topic's latest message (see [`LATEST_MAX_BYTES`]).
+    /// Each topic's latest message, all of them within `latest_limit` payload bytes
+    /// (`latest_bytes` now): a topic whose newest message does not fit has none kept.
     latest: HashMap<u32, Arc<Message>, IdHash>,
+    latest_bytes: usize,
+    latest_limit: usize,
     /// Held-back topics the writer has yet to announce on this connection (an idle topic
-    /// still appears at the hub, which cannot want what it has not heard of).
-    unannounced: HashSet<u32, IdHash>,
+    /// still appears at the hub, which cannot want what it has not heard of), with a
+    /// message of theirs to announce them by; and those already handed to it.
+    unannounced: HashMap<u32, Arc<Message>, IdHash>,
+    announced: HashSet<u32, IdHash>,
     /// Topics with an age limit (`max_age`): older messages are not sent.
     max_age: HashMap<u32, Duration, IdHash>,
     /// Pull topics: sent only when asked ([`Outbox::pull`]).
@@ -113,6 +118,18 @@ struct Demand {
 }
 
 impl Demand {
+    /// Keeps `msg` as its topic's latest, if it fits the bound with the others.
+    fn keep_latest(&mut self, topic: u32, msg: &Arc<Message>) {
+        if let Some(old) = self.latest.remove(&topic) {
+            self.latest_bytes -= old.payload.len();
+        }
+        let size = msg.payload.len();
+        if self.latest_bytes + size <= self.latest_limit {
+            self.latest_bytes += size;
+            self.latest.insert(topic, msg.clone());
+        }
+    }
+
     fn flows(&self, topic: u32) -> bool {
         if self.pull.contains(&topic) {
             return false;
@@ -216,7 +233,10 @@ impl Outbox {
                 )),
                 reliable: Box::new(reliable),
                 refusal_logged: None,
-                demand: Box::default(),
+                demand: Box::new(Demand {
+                    latest_limit: LATEST_DEFAULT_LIMIT,
+                    ..Demand::default()
+                }),
                 pulled: VecDeque::new(),
             },
         )
@@ -370,15 +390,13 @@ impl Outbox {
                 demand,
                 ..
             } => {
-                if msg.payload.len() <= LATEST_MAX_BYTES {
-                    demand.latest.insert(s.topic, msg.clone());
-                } else {
-                    demand.latest.remove(&s.topic);
-                }
+                demand.keep_latest(s.topic, &msg);
                 if !demand.flows(s.topic) {
                     // Held back: kept as the latest, announced once per connection.
                     s.stats.record_held();
-                    if demand.latest.contains_key(&s.topic) && demand.unannounced.insert(s.topic) {
+                    if !demand.announced.contains(&s.topic)
+                        && demand.unannounced.insert(s.topic, msg).is_none()
+                    {
                         self.notify.notify_one();
                     }
                     return;
@@ -527,7 +545,8 @@ impl Outbox {
             sched.on_link_reset();
             link.reset();
             // A new connection has announced nothing yet.
-            demand.unannounced = demand.latest.keys().copied().collect();
+            demand.announced.clear();
+            demand.unannounced = demand.latest.iter().map(|(t, m)| (*t, m.clone())).collect();
             let again = reliable.take_unconfirmed();
             let mut topics = HashSet::new();
             for (alias, m) in again.into_iter().rev() {
@@ -541,6 +560,18 @@ impl Outbox {
                 if topics.contains(&s.topic) && !sched.no_drop_room(QosTopic(s.topic)) {
                     s.stats.no_drop_flow.set_full();
                 }
+            }
+        }
+    }
+
+    /// Most payload bytes of topics' latest messages this (scheduled) outbox keeps, all
+    /// topics together; 0 keeps none.
+    pub fn set_latest_limit(&self, bytes: usize) {
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
+            demand.latest_limit = bytes;
+            if demand.latest_bytes > bytes {
+                demand.latest.clear();
+                demand.latest_bytes = 0;
             }
         }
     }
@@ -617,8 +648,8 @@ impl Outbox {
         }
     }
 
-    /// The latest messages of held-back topics not yet announced on this connection: the
-    /// writer announces their topics (`ADVERTISE`) without sending them.
+    /// A message of each held-back topic not yet announced on this connection: the writer
+    /// announces their topics (`ADVERTISE`) without sending them.
     pub fn take_unannounced(&self, out: &mut Vec<Arc<Message>>) {
         if !self.scheduled {
             return;
@@ -626,10 +657,13 @@ impl Outbox {
         if let Service::Scheduled { demand, .. } = &mut self.lock().service {
             let Demand {
                 unannounced,
-                latest,
+                announced,
                 ..
             } = &mut **demand;
-            out.extend(unannounced.drain().filter_map(|t| latest.get(&t).cloned()));
+            for (t, m) in unannounced.drain() {
+                announced.insert(t);
+                out.push(m);
+            }
         }
     }
 

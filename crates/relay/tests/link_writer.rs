@@ -790,3 +790,56 @@ async fn a_pull_topic_goes_out_only_when_pulled() {
     }
     writer.abort();
 }
+
+/// The latest-message cache is bounded for all topics together: a topic whose newest
+/// message does not fit has none kept, so interest then waits for its next publish.
+#[tokio::test]
+async fn the_latest_message_cache_keeps_within_its_bound() {
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = uplink_and_publisher(&router);
+    outbox.set_latest_limit(1000);
+    let small = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/small").unwrap(),
+            Schema::named("t/S"),
+            false,
+        )
+        .unwrap();
+    let big = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/big").unwrap(),
+            Schema::named("t/B"),
+            false,
+        )
+        .unwrap();
+    outbox.set_demand_driven(true);
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    small.publish(publisher, 1, 0, Payload::json(vec![b's'; 600]));
+    big.publish(publisher, 1, 0, Payload::json(vec![b'b'; 600]));
+    let announced = frames_within(&mut rx, Duration::from_millis(200)).await;
+    let alias = |name: &str| {
+        announced
+            .iter()
+            .find_map(|f| match f {
+                Frame::Advertise { alias, topic, .. } if topic == name => Some(*alias),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{name} not announced: {announced:?}"))
+    };
+    let (s, b) = (alias("/small"), alias("/big"));
+    // 600 + 600 bytes do not fit 1000: the second topic has nothing kept.
+    outbox.set_wanted(s, true, std::time::Instant::now());
+    outbox.set_wanted(b, true, std::time::Instant::now());
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    let sizes: Vec<usize> = got
+        .iter()
+        .filter_map(|f| match f {
+            Frame::Message { payload, .. } => Some(payload.len()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(sizes, vec![600], "{got:?}");
+    writer.abort();
+}

@@ -82,6 +82,10 @@ pub struct AgentConfig {
     /// The durable outbox for `no_drop` topics; `None` (the default) keeps them in memory,
     /// which survives link outages but not an agent restart.
     pub outbox: Option<OutboxConfig>,
+    /// Most megabytes of topics' latest messages kept for the hub (sent at once when
+    /// someone starts watching a topic, or asks for a pull topic). A topic whose latest
+    /// message does not fit has none kept. Default 64; 0 keeps none.
+    pub latest_cache_mb: u64,
 }
 
 impl Default for AgentConfig {
@@ -101,6 +105,7 @@ impl Default for AgentConfig {
             ros2: None,
             topics: BTreeMap::new(),
             outbox: None,
+            latest_cache_mb: 64,
         }
     }
 }

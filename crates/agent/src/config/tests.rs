@@ -629,3 +629,13 @@ fn a_bad_age_limit_says_how_to_write_one() {
     assert!(text.contains("max_age"), "{text}");
     assert!(text.contains("no_drop"), "{text}");
 }
+
+#[test]
+fn the_latest_message_cache_has_a_bound_in_megabytes() {
+    assert_eq!(AgentConfig::default().latest_cache_mb, 64);
+    let cfg =
+        AgentConfig::from_str("name: r1\nlatest_cache_mb: 16\n", "robot.yaml").expect("valid");
+    assert_eq!(cfg.latest_cache_mb, 16);
+    let text = err("name: r1\nlatest_cache_mb: lots\n").to_string();
+    assert!(text.contains("latest_cache_mb"), "{text}");
+}

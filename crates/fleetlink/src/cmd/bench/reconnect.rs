@@ -120,6 +120,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             max_in_flight: 32,
             tls: None,
             outbox: None,
+            latest_cache_bytes: 64 << 20,
         };
         let opts = AgentOptions {
             uplink,
