@@ -667,6 +667,14 @@ impl Outbox {
         }
     }
 
+    /// The writer withdrew the topic with link alias `alias` (`UNADVERTISE`): if it is
+    /// published again while held back, it is announced again.
+    pub fn forget_announced(&self, alias: u32) {
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
+            demand.announced.remove(&alias);
+        }
+    }
+
     /// Whether the topic with link alias `alias` is held back (nobody wants it).
     pub fn is_held_back(&self, alias: u32) -> bool {
         match &self.lock().service {

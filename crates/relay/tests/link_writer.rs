@@ -843,3 +843,51 @@ async fn the_latest_message_cache_keeps_within_its_bound() {
     assert_eq!(sizes, vec![600], "{got:?}");
     writer.abort();
 }
+
+/// A held-back topic withdrawn (`UNADVERTISE`, its publisher gone) and published again is
+/// announced again, so the peer can still ask for it.
+#[tokio::test]
+async fn a_held_back_topic_published_again_after_its_unadvertise_is_announced_again() {
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = uplink_and_publisher(&router);
+    let odom = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/odom").unwrap(),
+            Schema::named("t/O"),
+            false,
+        )
+        .unwrap();
+    outbox.set_demand_driven(true);
+    let (ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    odom.publish(publisher, 1, 0, Payload::json(&b"1"[..]));
+    let advertises = |fs: &[Frame]| {
+        fs.iter()
+            .filter(|f| matches!(f, Frame::Advertise { .. }))
+            .count()
+    };
+    assert_eq!(
+        advertises(&frames_within(&mut rx, Duration::from_millis(200)).await),
+        1
+    );
+    ctrl_tx
+        .send(Control::Unadvertise {
+            topic: odom.id(),
+            since: std::time::Instant::now(),
+        })
+        .await
+        .unwrap();
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert!(
+        got.iter().any(|f| matches!(f, Frame::Unadvertise { .. })),
+        "{got:?}"
+    );
+    odom.publish(publisher, 2, 0, Payload::json(&b"2"[..]));
+    let got = frames_within(&mut rx, Duration::from_millis(200)).await;
+    assert_eq!(advertises(&got), 1, "not announced again: {got:?}");
+    assert!(
+        !got.iter().any(|f| matches!(f, Frame::Message { .. })),
+        "{got:?}"
+    );
+    writer.abort();
+}

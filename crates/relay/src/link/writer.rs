@@ -322,6 +322,8 @@ pub async fn write_link<K>(
                 }
                 Frame::Unadvertise { alias: t.0 }.encode(&mut buf);
                 advertised.remove(t);
+                // Published again later, a held-back topic is announced again.
+                outbox.forget_announced(t.0);
                 false
             });
         }
