@@ -25,6 +25,8 @@ const MAX_ROUND_BYTES: usize = 1 << 20;
 /// Payloads up to this size are framed straight into each link's pack instead of through
 /// the message's shared frames ([`Message::link_frames`]).
 const ENCODE_IN_PLACE: usize = 1024;
+/// How long a writer whose outbox was closed waits for its owner's close frame.
+const CLOSE_REASON_WAIT: std::time::Duration = std::time::Duration::from_millis(500);
 /// How often an idle writer looks whether an estimator probe is due.
 const PROBE_TICK: std::time::Duration = std::time::Duration::from_millis(50);
 
@@ -334,8 +336,21 @@ pub async fn write_link<K>(
             continue;
         }
         if outbox.is_closed() {
-            let _ = sink.close().await;
-            return;
+            // The router let the client go; its owner ends the link with its reason
+            // (`Control::Close`) right after. Wait a moment for it, so the peer learns the
+            // close code (1007, 1001, ...) instead of a bare close.
+            let until = tokio::time::Instant::now() + CLOSE_REASON_WAIT;
+            loop {
+                match tokio::time::timeout_at(until, control.recv()).await {
+                    Ok(Some(Control::Close(frame))) => {
+                        return finish(&mut sink, &mut buf, frame).await;
+                    }
+                    Ok(Some(Control::Frame(f))) => f.encode(&mut buf),
+                    Ok(Some(_)) => {}
+                    Ok(None) | Err(_) => break,
+                }
+            }
+            return finish(&mut sink, &mut buf, None).await;
         }
         // A scheduled outbox looks for a due probe now and then; a plain one (the hub's)
         // sleeps until there is something to write.
