@@ -660,11 +660,6 @@ impl Router {
         asked && topic.is_pull()
     }
 
-    /// The topic with this id, if it exists.
-    pub fn topic_by_id(&self, id: TopicId) -> Option<Arc<Topic>> {
-        self.lock().topics.values().find(|t| t.id() == id).cloned()
-    }
-
     /// The topic if it exists (publishing to a topic someone else advertised).
     pub fn topic(&self, name: &TopicName) -> Option<Arc<Topic>> {
         self.lock().topics.get(name).cloned()

@@ -576,6 +576,17 @@ async fn frames_within(
     out
 }
 
+/// The payloads of the `MESSAGE` frames among `frames`, in order.
+fn message_payloads(frames: &[Frame]) -> Vec<Vec<u8>> {
+    frames
+        .iter()
+        .filter_map(|f| match f {
+            Frame::Message { payload, .. } => Some(payload.to_vec()),
+            _ => None,
+        })
+        .collect()
+}
+
 /// A demand-driven uplink: a topic nobody wants is announced but its messages are held
 /// back; when interest comes its latest message goes at once (no new publish needed),
 /// then every message while it is wanted, and nothing once interest is gone. An uplink
@@ -612,31 +623,23 @@ async fn a_demand_driven_uplink_sends_a_topic_only_while_it_is_wanted() {
 
     // Interest: the latest message at once, then what is published.
     outbox.set_wanted(alias, true, std::time::Instant::now());
-    let payloads = |fs: &[Frame]| -> Vec<Vec<u8>> {
-        fs.iter()
-            .filter_map(|f| match f {
-                Frame::Message { payload, .. } => Some(payload.to_vec()),
-                _ => None,
-            })
-            .collect()
-    };
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-    assert_eq!(payloads(&got), vec![b"4".to_vec()]);
+    assert_eq!(message_payloads(&got), vec![b"4".to_vec()]);
     map.publish(publisher, 5, 0, Payload::json(&b"5"[..]));
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-    assert_eq!(payloads(&got), vec![b"5".to_vec()]);
+    assert_eq!(message_payloads(&got), vec![b"5".to_vec()]);
 
     // No interest: nothing more goes.
     outbox.set_wanted(alias, false, std::time::Instant::now());
     map.publish(publisher, 6, 0, Payload::json(&b"6"[..]));
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-    assert!(payloads(&got).is_empty(), "{got:?}");
+    assert!(message_payloads(&got).is_empty(), "{got:?}");
 
     // A peer that does not speak of interest gets everything.
     outbox.set_demand_driven(false);
     map.publish(publisher, 7, 0, Payload::json(&b"7"[..]));
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-    assert_eq!(payloads(&got), vec![b"7".to_vec()]);
+    assert_eq!(message_payloads(&got), vec![b"7".to_vec()]);
     writer.abort();
 }
 
@@ -720,14 +723,7 @@ async fn messages_past_their_topics_age_limit_are_not_sent() {
     tokio::time::sleep(Duration::from_millis(250)).await;
     scan.publish(publisher, 2, 0, Payload::json(&b"2"[..]));
     let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
-    let sent: Vec<Vec<u8>> = frames_within(&mut rx, Duration::from_millis(200))
-        .await
-        .into_iter()
-        .filter_map(|f| match f {
-            Frame::Message { payload, .. } => Some(payload.to_vec()),
-            _ => None,
-        })
-        .collect();
+    let sent = message_payloads(&frames_within(&mut rx, Duration::from_millis(200)).await);
     assert_eq!(sent, vec![b"2".to_vec()], "the stale message went out");
     assert_eq!(scan.stats.drops(DropReason::TooOld), 1);
 
@@ -779,14 +775,7 @@ async fn a_pull_topic_goes_out_only_when_pulled() {
     for _ in 0..2 {
         outbox.pull(alias, std::time::Instant::now());
         let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-        let payloads: Vec<Vec<u8>> = got
-            .iter()
-            .filter_map(|f| match f {
-                Frame::Message { payload, .. } => Some(payload.to_vec()),
-                _ => None,
-            })
-            .collect();
-        assert_eq!(payloads, vec![b"3".to_vec()]);
+        assert_eq!(message_payloads(&got), vec![b"3".to_vec()]);
     }
     writer.abort();
 }
@@ -833,13 +822,7 @@ async fn the_latest_message_cache_keeps_within_its_bound() {
     outbox.set_wanted(s, true, std::time::Instant::now());
     outbox.set_wanted(b, true, std::time::Instant::now());
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
-    let sizes: Vec<usize> = got
-        .iter()
-        .filter_map(|f| match f {
-            Frame::Message { payload, .. } => Some(payload.len()),
-            _ => None,
-        })
-        .collect();
+    let sizes: Vec<usize> = message_payloads(&got).iter().map(Vec::len).collect();
     assert_eq!(sizes, vec![600], "{got:?}");
     writer.abort();
 }
