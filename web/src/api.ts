@@ -53,4 +53,9 @@ export interface TopicInfo {
   /** A robot's topic nobody wants is held back on the robot: `idle`; `pull`: sent only
    * when asked (POST /api/v1/robots/{robot}/topics/{topic}/pull). */
   state?: "flowing" | "idle" | "pull";
+  /** Over the robot's link (absent for topics that do not come over one): the bytes as
+   * carried (compressed where it paid), payload bytes over link bytes, link bytes/s. */
+  link_bytes?: number | null;
+  compression_ratio?: number | null;
+  link_bandwidth_bps?: number | null;
 }

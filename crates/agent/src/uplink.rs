@@ -27,7 +27,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
 use fleetlink_proto::frame::{
-    CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, WELCOME_INTEREST,
+    CallStatus, Frame, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, WELCOME_COMPRESSION, WELCOME_INTEREST,
 };
 use fleetlink_proto::{Encoding, SUBPROTOCOL};
 use fleetlink_qos::{SchedulerConfig, TopicQos, TopicQosSpec};
@@ -547,6 +547,9 @@ impl Uplink {
         // older one gets everything.
         self.outbox
             .set_demand_driven(features & WELCOME_INTEREST != 0);
+        // Compressed messages only to a hub that takes them.
+        self.outbox
+            .set_compression_allowed(features & WELCOME_COMPRESSION != 0);
 
         // Everything the hub must know, exactly once on this connection.
         let names = self.cfg.names.clone();

@@ -65,6 +65,8 @@ pub enum FrameKind {
     CallChunk = 0x17,
     Interest = 0x18,
     Pull = 0x19,
+    ZMessage = 0x1a,
+    ZChunk = 0x1b,
 }
 
 /// Severity of a `STATUS` frame.
@@ -136,6 +138,8 @@ pub const SUBSCRIBE_SERVICES: u8 = 0x02;
 /// `ADVERTISE` flag: a pull topic, sent only when the receiver asks (`PULL`), one message
 /// per request.
 pub const ADVERTISE_PULL: u8 = 0x04;
+/// `WELCOME` feature: the hub takes compressed messages (`ZMESSAGE`, `ZCHUNK`).
+pub const WELCOME_COMPRESSION: u64 = 0x02;
 /// `WELCOME` feature: the hub tells the agent which of its topics are wanted (`INTEREST`),
 /// and the agent sends a topic only while it is (demand-driven uplink).
 pub const WELCOME_INTEREST: u64 = 0x01;
@@ -204,6 +208,24 @@ pub enum Frame {
     /// `alias varint | seq varint | stamp_ns u64le | total_len varint | offset varint |
     ///  data (rest)`
     Chunk {
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        total_len: u64,
+        offset: u64,
+        data: Bytes,
+    },
+    /// A compressed message: `MESSAGE`'s layout, the payload a compression envelope
+    /// ([`crate::compress`]). Sent only to a hub that offers [`WELCOME_COMPRESSION`].
+    ZMessage {
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Bytes,
+    },
+    /// A piece of a compressed message: `CHUNK`'s layout; the pieces reassemble to a
+    /// compression envelope. Every piece of one message has the same kind.
+    ZChunk {
         alias: u32,
         seq: u64,
         stamp_ns: u64,
@@ -361,6 +383,8 @@ impl Frame {
             Frame::CallChunk { .. } => FrameKind::CallChunk as u8,
             Frame::Interest { .. } => FrameKind::Interest as u8,
             Frame::Pull { .. } => FrameKind::Pull as u8,
+            Frame::ZMessage { .. } => FrameKind::ZMessage as u8,
+            Frame::ZChunk { .. } => FrameKind::ZChunk as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -450,11 +474,25 @@ impl Frame {
                 seq,
                 stamp_ns,
                 payload,
+            }
+            | Frame::ZMessage {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
             } => {
                 put_message_header(b, *alias, *seq, *stamp_ns);
                 b.put_slice(payload);
             }
             Frame::Chunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            }
+            | Frame::ZChunk {
                 alias,
                 seq,
                 stamp_ns,
@@ -630,18 +668,36 @@ fn put_message_header(b: &mut impl BufMut, alias: u32, seq: u64, stamp_ns: u64) 
 /// Appends a `MESSAGE` frame whose payload is `payload`, copying it once into `buf`.
 /// Same bytes as `Frame::Message{..}.encode` without building the frame first.
 pub fn encode_message(buf: &mut BytesMut, alias: u32, seq: u64, stamp_ns: u64, payload: &[u8]) {
+    encode_message_kind(buf, false, alias, seq, stamp_ns, payload);
+}
+
+/// [`encode_message`], or `ZMESSAGE` when `compressed` (`payload` is then an envelope).
+pub fn encode_message_kind(
+    buf: &mut BytesMut,
+    compressed: bool,
+    alias: u32,
+    seq: u64,
+    stamp_ns: u64,
+    payload: &[u8],
+) {
     let body_len = varint_len(u64::from(alias)) + varint_len(seq) + 8 + payload.len();
     buf.reserve(1 + varint_len(body_len as u64) + body_len);
-    buf.put_u8(FrameKind::Message as u8);
+    buf.put_u8(if compressed {
+        FrameKind::ZMessage
+    } else {
+        FrameKind::Message
+    } as u8);
     put_varint(buf, body_len as u64);
     put_message_header(buf, alias, seq, stamp_ns);
     buf.put_slice(payload);
 }
 
 /// Appends a `CHUNK` frame carrying `data`, which starts at `offset` of a message of
-/// `total_len` bytes.
+/// `total_len` bytes (`ZCHUNK` when `compressed`: the message is an envelope).
+#[allow(clippy::too_many_arguments)]
 pub fn encode_chunk(
     buf: &mut BytesMut,
+    compressed: bool,
     alias: u32,
     seq: u64,
     stamp_ns: u64,
@@ -656,7 +712,11 @@ pub fn encode_chunk(
         + varint_len(offset)
         + data.len();
     buf.reserve(1 + varint_len(body_len as u64) + body_len);
-    buf.put_u8(FrameKind::Chunk as u8);
+    buf.put_u8(if compressed {
+        FrameKind::ZChunk
+    } else {
+        FrameKind::Chunk
+    } as u8);
     put_varint(buf, body_len as u64);
     put_message_header(buf, alias, seq, stamp_ns);
     put_varint(buf, total_len);
@@ -796,6 +856,29 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
         0x19 => Frame::Pull {
             alias: r.varint_u32("PULL.alias")?,
         },
+        0x1a => Frame::ZMessage {
+            alias: r.varint_u32("ZMESSAGE.alias")?,
+            seq: r.varint("ZMESSAGE.seq")?,
+            stamp_ns: r.u64_le("ZMESSAGE.stamp_ns")?,
+            payload: r.rest(),
+        },
+        0x1b => {
+            let alias = r.varint_u32("ZCHUNK.alias")?;
+            let seq = r.varint("ZCHUNK.seq")?;
+            let stamp_ns = r.u64_le("ZCHUNK.stamp_ns")?;
+            let total_len = r.varint("ZCHUNK.total_len")?;
+            let offset = r.varint("ZCHUNK.offset")?;
+            let data = r.rest();
+            check_piece_fits(total_len, offset, &data, "ZCHUNK.offset")?;
+            Frame::ZChunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            }
+        }
         other => Frame::Unknown { kind: other },
     };
     Ok(frame)

@@ -9,12 +9,14 @@
 //!   layouts are in `docs/protocol.md`.
 //! - [`payload`]: a message body as it arrived ([`Payload`]: encoding tag plus shared bytes)
 //!   and the schema that travels with a topic ([`Schema`]).
+//! - [`compress`]: the envelope of a message on a compressed topic (LZ4, zstd or stored).
 //! - [`reassembly`]: turns `CHUNK` frames back into whole messages and `CALL_CHUNK` pieces
 //!   back into whole service/action bodies, with size limits.
 //! - [`rosbridge`]: rosbridge v2 operations, parsed from JSON text or CBOR binary frames,
 //!   and builders for the frames the server sends back.
 //! - [`error`]: decode errors that tell *incomplete* input from *invalid* input.
 
+pub mod compress;
 pub mod error;
 pub mod frame;
 pub mod payload;

@@ -215,11 +215,14 @@ fn trailing_fields_from_a_newer_version_are_ignored() {
 fn rest_of_body(f: &Frame) -> Option<&Bytes> {
     match f {
         Frame::Message { payload, .. }
+        | Frame::ZMessage { payload, .. }
         | Frame::Call { payload, .. }
         | Frame::Goal { payload, .. }
         | Frame::Reply { payload, .. }
         | Frame::Feedback { payload, .. } => Some(payload),
-        Frame::Chunk { data, .. } | Frame::CallChunk { data, .. } => Some(data),
+        Frame::Chunk { data, .. } | Frame::ZChunk { data, .. } | Frame::CallChunk { data, .. } => {
+            Some(data)
+        }
         _ => None,
     }
 }

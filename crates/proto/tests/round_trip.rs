@@ -132,7 +132,7 @@ proptest! {
             unreachable!("util::chunk makes chunks");
         };
         let mut direct = BytesMut::new();
-        encode_chunk(&mut direct, *alias, *seq, *stamp_ns, *total_len, *offset, data);
+        encode_chunk(&mut direct, false, *alias, *seq, *stamp_ns, *total_len, *offset, data);
         prop_assert_eq!(direct.freeze(), f.to_bytes());
     }
 

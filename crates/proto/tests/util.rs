@@ -125,6 +125,46 @@ pub fn message() -> impl Strategy<Value = Frame> {
     )
 }
 
+/// A `ZMESSAGE` (the frame layer does not look inside the envelope).
+pub fn zmessage() -> impl Strategy<Value = Frame> {
+    message().prop_map(|f| match f {
+        Frame::Message {
+            alias,
+            seq,
+            stamp_ns,
+            payload,
+        } => Frame::ZMessage {
+            alias,
+            seq,
+            stamp_ns,
+            payload,
+        },
+        other => other,
+    })
+}
+
+/// A `ZCHUNK`, consistent as [`chunk`] is.
+pub fn zchunk() -> impl Strategy<Value = Frame> {
+    chunk().prop_map(|f| match f {
+        Frame::Chunk {
+            alias,
+            seq,
+            stamp_ns,
+            total_len,
+            offset,
+            data,
+        } => Frame::ZChunk {
+            alias,
+            seq,
+            stamp_ns,
+            total_len,
+            offset,
+            data,
+        },
+        other => other,
+    })
+}
+
 /// A `CHUNK` whose fields are consistent: `offset + data.len() <= total_len`.
 pub fn chunk() -> impl Strategy<Value = Frame> {
     (
@@ -319,7 +359,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x1au8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x1cu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -349,6 +389,8 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         call_chunk(),
         interest(),
         pull(),
+        zmessage(),
+        zchunk(),
         unknown(),
     ]
 }
@@ -409,6 +451,20 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             total_len: 1000,
             offset: 500,
             data: Bytes::from(vec![7; 150]),
+        },
+        Frame::ZMessage {
+            alias: 300,
+            seq: 70_001,
+            stamp_ns: 5,
+            payload: Bytes::from(vec![0x02, 0x80, 0x01, 0xcd]),
+        },
+        Frame::ZChunk {
+            alias: 2,
+            seq: 10,
+            stamp_ns: 5,
+            total_len: 1000,
+            offset: 0,
+            data: Bytes::from(vec![0x01; 150]),
         },
         Frame::Ping { id: 1, sent_ns: 2 },
         Frame::Pong {

@@ -21,6 +21,38 @@ pub enum Mode {
     Pull,
 }
 
+/// How a topic's messages are compressed on the robot's link (see `docs/qos.md`). The
+/// agent decides per message; the hub decompresses once, before fan-out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Compression {
+    /// Sent as published.
+    None,
+    /// LZ4: cheap on the robot's CPU, a smaller saving.
+    Lz4,
+    /// zstd at its default level; ROS Gateway's `zip` and `rawzip` mean this (fleetlink
+    /// always carries a robot's messages in their raw ROS serialization).
+    #[serde(alias = "zip", alias = "rawzip")]
+    Zstd,
+    /// zstd at a fast level where it pays: a topic whose messages do not shrink (JPEG or
+    /// PNG images, already-compressed clouds) is sent as it is and checked again now and
+    /// then; small messages are never compressed.
+    #[default]
+    Auto,
+}
+
+impl Compression {
+    /// Stable lower-case name, as written in configuration.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Compression::None => "none",
+            Compression::Lz4 => "lz4",
+            Compression::Zstd => "zstd",
+            Compression::Auto => "auto",
+        }
+    }
+}
+
 /// What a bounded per-topic queue does when it is full (see `docs/qos.md`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
@@ -84,6 +116,9 @@ pub struct TopicQos {
     /// `pull`: sent only when a subscriber asks, one message per request.
     #[serde(default)]
     pub mode: Mode,
+    /// On the robot's link.
+    #[serde(default)]
+    pub compression: Compression,
 }
 
 fn default_priority() -> f32 {
@@ -108,6 +143,7 @@ impl Default for TopicQos {
             always: false,
             max_age_ms: None,
             mode: Mode::Stream,
+            compression: Compression::Auto,
         }
     }
 }
@@ -123,6 +159,7 @@ impl TopicQos {
             always: false,
             max_age_ms: None,
             mode: Mode::Stream,
+            compression: Compression::Auto,
         }
     }
 
@@ -286,6 +323,7 @@ pub struct TopicQosSpec {
     #[serde(default, deserialize_with = "age")]
     pub max_age: Option<std::time::Duration>,
     pub mode: Option<Mode>,
+    pub compression: Option<Compression>,
 }
 
 /// An age limit as written: a duration with its unit (`500ms`, `2s`), or milliseconds.
@@ -341,6 +379,9 @@ impl TopicQosSpec {
         }
         if let Some(m) = self.mode {
             qos.mode = m;
+        }
+        if let Some(c) = self.compression {
+            qos.compression = c;
         }
         if let Some(age) = self.max_age {
             qos.max_age_ms = Some(age.as_millis().min(u128::from(u64::MAX)) as u64);

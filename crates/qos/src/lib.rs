@@ -42,7 +42,7 @@ pub mod scheduler;
 pub mod time;
 
 pub use capacity::{CapacityAllocator, CapacityConfig, OffloadParams, RobotLinkReport, Share};
-pub use config::{Mode, Policy, TopicQos, TopicQosSpec};
+pub use config::{Compression, Mode, Policy, TopicQos, TopicQosSpec};
 pub use error::QosError;
 pub use link::{LinkConfig, LinkEstimator, Probe};
 pub use queue::{DropReason, Push, TopicQueue};

@@ -8,6 +8,7 @@
 //! link it goes out on. Large messages go out as `CHUNK`s, one chunk per topic per round,
 //! so a small message on another topic overtakes a large one that is half sent.
 
+mod compress;
 pub mod drive;
 pub mod session;
 mod writer;
@@ -68,6 +69,8 @@ pub enum LinkEvent {
         /// Its topic was advertised reliable (no-drop): `seq` is the sender's stream
         /// number, to be confirmed with `DELIVERED`.
         reliable: bool,
+        /// Bytes the message took on the link (compressed, if it came so).
+        wire_len: usize,
     },
     /// Every other frame (HELLO, SUBSCRIBE, PING, ACK, SHARE, ...), as decoded: there is
     /// nothing to resolve on the link for them.
@@ -82,6 +85,11 @@ pub enum LinkError {
     UnknownAlias(u32),
     #[error(transparent)]
     Reassembly(#[from] ReassemblyError),
+    #[error("topic {topic}: {error}")]
+    Compression {
+        topic: String,
+        error: fleetlink_proto::DecodeError,
+    },
 }
 
 /// Per-link receive state: the peer's aliases and partially received chunked messages.
@@ -145,21 +153,13 @@ impl LinkIn {
                 seq,
                 stamp_ns,
                 payload,
-            } => {
-                self.unacked += 1;
-                self.unacked_bytes += payload.len() as u64;
-                let t = self
-                    .aliases
-                    .get(&alias)
-                    .ok_or(LinkError::UnknownAlias(alias))?;
-                LinkEvent::Message {
-                    alias,
-                    seq,
-                    stamp_ns,
-                    payload: Payload::new(t.encoding, payload),
-                    reliable: t.reliable,
-                }
-            }
+            } => self.on_message(alias, seq, stamp_ns, payload, false)?,
+            Frame::ZMessage {
+                alias,
+                seq,
+                stamp_ns,
+                payload,
+            } => self.on_message(alias, seq, stamp_ns, payload, true)?,
             Frame::Chunk {
                 alias,
                 seq,
@@ -167,34 +167,108 @@ impl LinkIn {
                 total_len,
                 offset,
                 data,
-            } => {
-                self.unacked_bytes += data.len() as u64;
-                let t = self
-                    .aliases
-                    .get(&alias)
-                    .ok_or(LinkError::UnknownAlias(alias))?;
-                let (encoding, reliable) = (t.encoding, t.reliable);
-                match self
-                    .reassembly
-                    .push(alias, seq, stamp_ns, total_len, offset, &data)?
-                {
-                    Some(done) => {
-                        self.unacked += 1;
-                        LinkEvent::Message {
-                            alias,
-                            seq: done.seq,
-                            stamp_ns: done.stamp_ns,
-                            payload: Payload::new(encoding, done.payload),
-                            reliable,
-                        }
-                    }
-                    None => LinkEvent::None,
-                }
-            }
+            } => self.on_chunk(alias, seq, stamp_ns, total_len, offset, data, false)?,
+            Frame::ZChunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            } => self.on_chunk(alias, seq, stamp_ns, total_len, offset, data, true)?,
             Frame::Unknown { .. } => LinkEvent::None,
             other => LinkEvent::Control(other),
         })
     }
+
+    /// A whole message; `compressed`: its payload is a compression envelope, opened here,
+    /// once, before the router sees it.
+    fn on_message(
+        &mut self,
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        payload: Bytes,
+        compressed: bool,
+    ) -> Result<LinkEvent, LinkError> {
+        {
+            self.unacked += 1;
+            self.unacked_bytes += payload.len() as u64;
+            let t = self
+                .aliases
+                .get(&alias)
+                .ok_or(LinkError::UnknownAlias(alias))?;
+            let wire_len = payload.len();
+            Ok(LinkEvent::Message {
+                alias,
+                seq,
+                stamp_ns,
+                payload: Payload::new(t.encoding, open(t, payload, compressed)?),
+                reliable: t.reliable,
+                wire_len,
+            })
+        }
+    }
+
+    /// A piece of a large message (of a compressed one, when `compressed`).
+    #[allow(clippy::too_many_arguments)]
+    fn on_chunk(
+        &mut self,
+        alias: u32,
+        seq: u64,
+        stamp_ns: u64,
+        total_len: u64,
+        offset: u64,
+        data: Bytes,
+        compressed: bool,
+    ) -> Result<LinkEvent, LinkError> {
+        Ok({
+            self.unacked_bytes += data.len() as u64;
+            let t = self
+                .aliases
+                .get(&alias)
+                .ok_or(LinkError::UnknownAlias(alias))?;
+            let (encoding, reliable) = (t.encoding, t.reliable);
+            match self
+                .reassembly
+                .push(alias, seq, stamp_ns, total_len, offset, &data)?
+            {
+                Some(done) => {
+                    self.unacked += 1;
+                    let t = self
+                        .aliases
+                        .get(&alias)
+                        .ok_or(LinkError::UnknownAlias(alias))?;
+                    let wire_len = done.payload.len();
+                    // The last piece's kind says what the whole is.
+                    let payload = open(t, done.payload, compressed)?;
+                    LinkEvent::Message {
+                        alias,
+                        seq: done.seq,
+                        stamp_ns: done.stamp_ns,
+                        payload: Payload::new(encoding, payload),
+                        reliable,
+                        wire_len,
+                    }
+                }
+                None => LinkEvent::None,
+            }
+        })
+    }
+}
+
+/// A message's payload as it came on the link, opened from its envelope when it came
+/// compressed (never larger than [`MAX_LINK_MESSAGE`]).
+fn open(topic: &InTopic, bytes: Bytes, compressed: bool) -> Result<Bytes, LinkError> {
+    if !compressed {
+        return Ok(bytes);
+    }
+    fleetlink_proto::compress::open(&bytes, MAX_LINK_MESSAGE).map_err(|error| {
+        LinkError::Compression {
+            topic: topic.name.clone(),
+            error,
+        }
+    })
 }
 
 /// Maps a router topic to the name it has on this link; `None` keeps it off the link.

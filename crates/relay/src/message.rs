@@ -192,6 +192,21 @@ impl Message {
         }
     }
 
+    /// The same message carrying `bytes` instead (its payload as one link carries it:
+    /// compressed); keeps number, stamp, origin and receive time.
+    pub fn with_link_bytes(&self, bytes: Bytes) -> Message {
+        Message {
+            received_ns: self.received_ns,
+            ..Message::new(
+                self.topic.clone(),
+                self.seq,
+                self.stamp_ns,
+                self.origin,
+                Payload::new(self.payload.encoding, bytes),
+            )
+        }
+    }
+
     /// When this router received it; queue lag is measured from here.
     pub fn received(&self) -> Instant {
         crate::unix_nanos_to_instant(self.received_ns)
@@ -316,6 +331,7 @@ impl Message {
                             let offset = (i * DEFAULT_CHUNK_SIZE) as u64;
                             frame::encode_chunk(
                                 &mut b,
+                                false,
                                 alias,
                                 self.seq,
                                 self.stamp_ns,

@@ -115,6 +115,10 @@ struct Demand {
     max_age: HashMap<u32, Duration, IdHash>,
     /// Pull topics: sent only when asked ([`Outbox::pull`]).
     pull: HashSet<u32, IdHash>,
+    /// How each topic is compressed on the link (`compression: none` topics are absent),
+    /// and whether the peer takes compressed messages at all (`WELCOME_COMPRESSION`).
+    compression: HashMap<u32, fleetlink_qos::Compression, IdHash>,
+    compress_allowed: bool,
 }
 
 impl Demand {
@@ -305,6 +309,9 @@ impl Outbox {
                     }
                     if q.mode == fleetlink_qos::Mode::Pull && !q.no_drop {
                         demand.pull.insert(tid);
+                    }
+                    if q.compression != fleetlink_qos::Compression::None {
+                        demand.compression.insert(tid, q.compression);
                     }
                     if q.no_drop && reliable.is_durable() {
                         // Waiting messages are on disk too: the journal's byte bound
@@ -707,14 +714,36 @@ impl Outbox {
 
     /// `ADVERTISE` flags for topic `alias` on this outbox's link.
     pub fn advertise_flags(&self, alias: u32) -> u8 {
+        use fleetlink_proto::frame::{ADVERTISE_PULL, ADVERTISE_RELIABLE};
         match &self.lock().service {
-            Service::Scheduled { sched, .. } if sched.is_no_drop(QosTopic(alias)) => {
-                fleetlink_proto::frame::ADVERTISE_RELIABLE
-            }
-            Service::Scheduled { demand, .. } if demand.pull.contains(&alias) => {
-                fleetlink_proto::frame::ADVERTISE_PULL
+            Service::Scheduled { sched, demand, .. } => {
+                if sched.is_no_drop(QosTopic(alias)) {
+                    ADVERTISE_RELIABLE
+                } else if demand.pull.contains(&alias) {
+                    ADVERTISE_PULL
+                } else {
+                    0
+                }
             }
             _ => 0,
+        }
+    }
+
+    /// Whether the peer takes compressed messages (`WELCOME_COMPRESSION`): until it says
+    /// so, nothing is compressed.
+    pub fn set_compression_allowed(&self, allowed: bool) {
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
+            demand.compress_allowed = allowed;
+        }
+    }
+
+    /// How the topic with link alias `alias` is compressed on this link, if it is.
+    pub fn compression(&self, alias: u32) -> Option<fleetlink_qos::Compression> {
+        match &self.lock().service {
+            Service::Scheduled { demand, .. } if demand.compress_allowed => {
+                demand.compression.get(&alias).copied()
+            }
+            _ => None,
         }
     }
 

@@ -200,6 +200,7 @@ pub fn qos_for_options(queue_length: u32, throttle_ms: u32, default_capacity: us
         always: false,
         max_age_ms: None,
         mode: fleetlink_qos::Mode::Stream,
+        compression: fleetlink_qos::Compression::None,
     }
 }
 

@@ -66,6 +66,10 @@ pub struct StatsBatch {
     bytes: u64,
     /// Deliveries to subscribers' queues.
     pub deliveries: u64,
+    /// Of the counted messages, those that came over a robot's link: their payload bytes,
+    /// and the bytes they took on the link (less, where they came compressed).
+    pub link_raw: u64,
+    pub link_wire: u64,
     /// The second the counted messages fall in.
     second: u64,
     last_ns: u64,
@@ -96,6 +100,10 @@ pub struct TopicStats {
     pub no_drop_flow: NoDropFlow,
     /// Messages a demand-driven uplink kept back because nobody wanted the topic.
     pub held_back: AtomicU64,
+    /// Payload bytes of the messages that came over a robot's link, and the bytes they
+    /// took there ([`TopicStats::link_figures`]).
+    link_raw: AtomicU64,
+    link_wire: AtomicU64,
 }
 
 impl TopicStats {
@@ -146,6 +154,10 @@ impl TopicStats {
         if batch.deliveries > 0 {
             self.deliveries.fetch_add(batch.deliveries, Relaxed);
         }
+        if batch.link_wire > 0 {
+            self.link_raw.fetch_add(batch.link_raw, Relaxed);
+            self.link_wire.fetch_add(batch.link_wire, Relaxed);
+        }
         *batch = StatsBatch::default();
     }
 
@@ -158,6 +170,14 @@ impl TopicStats {
             (old as i128 + (ns as i128 - old as i128) / 8) as u64
         };
         self.latency_ns.store(new, Relaxed);
+    }
+
+    /// Bytes of the messages that came over a robot's link: as the link carried them,
+    /// and their payloads (`None` when none came so). Their ratio is the compression
+    /// ratio on the link.
+    pub fn link_figures(&self) -> Option<(u64, u64)> {
+        let wire = self.link_wire.load(Relaxed);
+        (wire > 0).then(|| (wire, self.link_raw.load(Relaxed)))
     }
 
     pub fn record_held(&self) {

@@ -874,3 +874,206 @@ async fn a_held_back_topic_published_again_after_its_unadvertise_is_announced_ag
     );
     writer.abort();
 }
+
+/// xorshift noise: bytes no compressor can shrink.
+fn noise(n: usize, seed: u64) -> Vec<u8> {
+    let mut x = seed | 1;
+    (0..n)
+        .map(|_| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as u8
+        })
+        .collect()
+}
+
+/// Per-topic compression on the uplink (`compression: auto`, the default): a message
+/// that shrinks goes out compressed (`ZMESSAGE`, or `ZCHUNK`s when still large), one that
+/// does not goes out as it is, and the receiving side gets every payload back exactly. A
+/// peer that did not offer compression gets nothing compressed.
+#[tokio::test]
+async fn the_uplink_compresses_what_pays_and_the_link_opens_it() {
+    use fleetlink_relay::link::{LinkEvent, LinkIn};
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = uplink_and_publisher(&router);
+    let cloud = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/cloud").unwrap(),
+            Schema::named("sensor_msgs/PointCloud2"),
+            false,
+        )
+        .unwrap();
+    let jpeg = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/jpeg").unwrap(),
+            Schema::named("sensor_msgs/CompressedImage"),
+            false,
+        )
+        .unwrap();
+    outbox.set_compression_allowed(true);
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 64);
+    // A repetitive cloud (shrinks to a small ZMESSAGE), a large one with a noisy part
+    // (still larger than a chunk once compressed: ZCHUNKs), and noise (sent as it is).
+    let small_cloud: Vec<u8> = (0..200_000u32).map(|i| (i % 251) as u8).collect();
+    let mut big_cloud = noise(40_000, 7);
+    big_cloud.extend(std::iter::repeat_n(0u8, 400_000));
+    let picture = noise(20_000, 3);
+    cloud.publish(
+        publisher,
+        1,
+        0,
+        Payload::new(fleetlink_proto::Encoding::Cdr, small_cloud.clone()),
+    );
+    cloud.publish(
+        publisher,
+        2,
+        0,
+        Payload::new(fleetlink_proto::Encoding::Cdr, big_cloud.clone()),
+    );
+    jpeg.publish(
+        publisher,
+        1,
+        0,
+        Payload::new(fleetlink_proto::Encoding::Cdr, picture.clone()),
+    );
+
+    let mut link = LinkIn::default();
+    let mut got: Vec<(u32, Vec<u8>, usize)> = Vec::new();
+    let (mut z, mut plain) = (0, 0);
+    let deadline = tokio::time::Instant::now() + Duration::from_secs(10);
+    while got.len() < 3 && tokio::time::Instant::now() < deadline {
+        for f in frames_within(&mut rx, Duration::from_millis(200)).await {
+            match &f {
+                Frame::ZMessage { .. } | Frame::ZChunk { .. } => z += 1,
+                Frame::Message { .. } | Frame::Chunk { .. } => plain += 1,
+                _ => {}
+            }
+            if let LinkEvent::Message {
+                alias,
+                payload,
+                wire_len,
+                ..
+            } = link.on_frame(f).expect("frames the link takes")
+            {
+                got.push((alias, payload.bytes.to_vec(), wire_len));
+            }
+        }
+        // Acknowledge what arrived, so the uplink's window lets the chunks go.
+        if let Some(Frame::Ack { frames, bytes }) = link.take_ack() {
+            outbox.on_acked(frames as usize, bytes, std::time::Instant::now());
+        }
+    }
+    writer.abort();
+    assert_eq!(
+        got.len(),
+        3,
+        "three messages arrive ({z} compressed frames, {plain} plain)"
+    );
+    let by = |want: &[u8]| {
+        got.iter()
+            .find(|(_, p, _)| p == want)
+            .map(|(_, p, wire)| (p.len(), *wire))
+            .expect("payload arrives intact")
+    };
+    let (raw, wire) = by(&small_cloud);
+    assert!(
+        wire * 20 < raw,
+        "repetitive cloud: {wire} of {raw} bytes on the link"
+    );
+    let (raw, wire) = by(&big_cloud);
+    assert!(
+        wire < raw / 5 && wire > 16 * 1024,
+        "big cloud: {wire} of {raw}"
+    );
+    let (raw, wire) = by(&picture);
+    assert_eq!(wire, raw, "noise goes as it is");
+    assert!(z >= 3, "a ZMESSAGE and several ZCHUNKs, got {z}");
+    assert!(plain >= 1, "the picture in plain frames");
+}
+
+/// An uplink whose peer did not offer compression (an older hub) sends every message as
+/// it is.
+#[tokio::test]
+async fn nothing_is_compressed_for_a_peer_that_did_not_offer_it() {
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = uplink_and_publisher(&router);
+    let t = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/cloud").unwrap(),
+            Schema::named("sensor_msgs/PointCloud2"),
+            false,
+        )
+        .unwrap();
+    let (_ctrl_tx, mut rx, writer) = spawn_writer(outbox.clone(), 16);
+    t.publish(
+        publisher,
+        1,
+        0,
+        Payload::new(fleetlink_proto::Encoding::Cdr, vec![0u8; 8_000]),
+    );
+    // Until the message (estimator probes follow while it is unacknowledged).
+    let mut got = Vec::new();
+    while !got
+        .iter()
+        .any(|f| matches!(f, Frame::Message { .. } | Frame::ZMessage { .. }))
+    {
+        got.extend(next_frames(&mut rx).await);
+    }
+    writer.abort();
+    assert_eq!(message_payloads(&got), vec![vec![0u8; 8_000]], "{got:?}");
+}
+
+/// A compressed message that lies (claims more than the message limit, or is not what its
+/// codec says) is an error naming the topic; the link's next message is taken as usual.
+#[test]
+fn a_bad_compressed_message_is_refused_and_the_link_goes_on() {
+    use fleetlink_relay::link::{LinkError, LinkEvent, LinkIn, MAX_LINK_MESSAGE};
+    let mut link = LinkIn::default();
+    link.on_frame(Frame::Advertise {
+        alias: 1,
+        topic: "/cloud".into(),
+        schema: Schema::named("sensor_msgs/PointCloud2"),
+        encoding: fleetlink_proto::Encoding::Cdr,
+        flags: 0,
+    })
+    .unwrap();
+    let mut bomb = bytes::BytesMut::new();
+    bomb.extend_from_slice(&[2]);
+    fleetlink_proto::wire::put_varint(&mut bomb, MAX_LINK_MESSAGE as u64 + 1);
+    bomb.extend_from_slice(&[0; 16]);
+    for payload in [bomb.freeze(), Bytes::from_static(b"\x01\x40garbage")] {
+        let e = link
+            .on_frame(Frame::ZMessage {
+                alias: 1,
+                seq: 1,
+                stamp_ns: 0,
+                payload,
+            })
+            .unwrap_err();
+        assert!(matches!(e, LinkError::Compression { .. }), "{e}");
+        assert!(e.to_string().contains("/cloud"), "{e}");
+    }
+    let ok = link
+        .on_frame(Frame::Message {
+            alias: 1,
+            seq: 2,
+            stamp_ns: 0,
+            payload: Bytes::from_static(b"fine"),
+        })
+        .unwrap();
+    assert!(
+        matches!(
+            ok,
+            LinkEvent::Message {
+                seq: 2,
+                wire_len: 4,
+                ..
+            }
+        ),
+        "{ok:?}"
+    );
+}

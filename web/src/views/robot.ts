@@ -348,7 +348,11 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       r.s[1].push(now, t.bandwidth_bps);
       r.s[2].push(now, Number.isFinite(lat) ? lat : null);
       r.rate.update(`${num(t.rate_hz)} Hz`);
-      r.bw.update(bps(t.bandwidth_bps));
+      // What the robot's link carries, where compression makes it less than the payloads.
+      const ratio = t.compression_ratio ?? 1;
+      r.bw.update(ratio >= 1.05 && t.link_bandwidth_bps != null
+        ? `${bps(t.bandwidth_bps)} · link ${bps(t.link_bandwidth_bps)} (${num(ratio, 1)}×)`
+        : bps(t.bandwidth_bps));
       r.lat.update(Number.isFinite(lat) ? `${num(lat, 0)} ms` : "not subscribed");
       const d = Object.entries(t.drops ?? {}).filter(([, v]) => v);
       r.drops.textContent = d.length ? d.map(([k, v]) => `${k} ${v}`).join(", ") : "0";

@@ -138,6 +138,7 @@ impl RobotLink {
                 stamp_ns,
                 payload,
                 reliable: true,
+                wire_len,
             }) => {
                 let name = session
                     .link_in()
@@ -151,7 +152,7 @@ impl RobotLink {
                 let c = self.confirm.entry(alias).or_default();
                 *c = (*c).max(seq);
                 if fresh {
-                    self.publish(alias, seq, stamp_ns, payload, session);
+                    self.publish(alias, seq, stamp_ns, payload, wire_len, session);
                 }
             }
             Event::Link(ev) => self.on_link(ev, session),
@@ -168,6 +169,7 @@ impl RobotLink {
         seq: u64,
         stamp_ns: u64,
         payload: fleetlink_proto::Payload,
+        wire_len: usize,
         session: &mut LinkSession,
     ) {
         let Some(p) = self.topics.get_mut(&alias) else {
@@ -179,6 +181,8 @@ impl RobotLink {
             return;
         }
         let size = payload.len();
+        p.counts.link_raw += size as u64;
+        p.counts.link_wire += wire_len as u64;
         let (received, received_ns) = self.read_at;
         let view = p.topic.view(&mut p.view);
         p.topic.publish_framed(
@@ -275,8 +279,9 @@ impl RobotLink {
                 seq,
                 stamp_ns,
                 payload,
+                wire_len,
                 ..
-            } => self.publish(alias, seq, stamp_ns, payload, session),
+            } => self.publish(alias, seq, stamp_ns, payload, wire_len, session),
             LinkEvent::Control(Frame::Subscribe { pattern, flags, .. })
                 if flags & SUBSCRIBE_SERVICES != 0 =>
             {

@@ -16,7 +16,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
 use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
-use fleetlink_proto::frame::{Frame, WELCOME_INTEREST};
+use fleetlink_proto::frame::{Frame, WELCOME_COMPRESSION, WELCOME_INTEREST};
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
@@ -177,7 +177,7 @@ pub async fn serve_agent<R, W, P>(
             heartbeat: Duration::from_millis(u64::from(heartbeat_ms)),
             gate: Box::new(gate),
             calls: Box::new(move |_| LinkCalls::new(calls, client, Box::new(SameNames))),
-            features: WELCOME_INTEREST,
+            features: WELCOME_INTEREST | WELCOME_COMPRESSION,
         },
         Instant::now(),
     );

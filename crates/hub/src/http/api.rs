@@ -146,6 +146,11 @@ async fn topics(
                 "bandwidth_bps": bw.round(),
                 "messages": t.stats.messages.load(std::sync::atomic::Ordering::Relaxed),
                 "bytes": t.stats.bytes.load(std::sync::atomic::Ordering::Relaxed),
+                // Over a robot's link: bytes as carried (compressed where it paid), the
+                // payload bytes over those, and the link bytes per second that implies.
+                "link_bytes": t.stats.link_figures().map(|(wire, _)| wire),
+                "compression_ratio": t.stats.link_figures().map(|(wire, raw)| (raw as f64 / wire as f64 * 100.0).round() / 100.0),
+                "link_bandwidth_bps": t.stats.link_figures().map(|(wire, raw)| (bw * wire as f64 / raw.max(1) as f64).round()),
                 "last_message_ms": if last == 0 { Value::Null } else { json!(last / 1_000_000) },
                 "drops": drops,
                 "latency_ms": match t.stats.latency_ns.load(std::sync::atomic::Ordering::Relaxed) {

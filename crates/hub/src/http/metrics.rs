@@ -57,6 +57,31 @@ impl Collector for HubCollector {
                 .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
         }
         let mut m = enc.encode_descriptor(
+            "fleetlink_topic_link_bytes",
+            "Bytes a robot topic's messages took on the robot's link (compressed where they \
+             came so); their payload bytes are fleetlink_topic_link_payload_bytes",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            if let Some((wire, _)) = t.stats.link_figures() {
+                ConstCounter::new(wire)
+                    .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+            }
+        }
+        let mut m = enc.encode_descriptor(
+            "fleetlink_topic_link_payload_bytes",
+            "Payload bytes of the messages that came over a robot's link, before compression",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            if let Some((_, raw)) = t.stats.link_figures() {
+                ConstCounter::new(raw)
+                    .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+            }
+        }
+        let mut m = enc.encode_descriptor(
             "fleetlink_topic_deliveries",
             "Messages queued to subscribers of a topic",
             None,

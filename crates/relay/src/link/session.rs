@@ -792,6 +792,7 @@ impl LinkSession {
                             status_code::CHUNK_ORDER
                         }
                         LinkError::Reassembly(_) => status_code::TOO_LARGE,
+                        LinkError::Compression { .. } => status_code::MALFORMED,
                     };
                     let text = e.to_string();
                     tracing::debug!("from the {}: {text}", self.role.peer());

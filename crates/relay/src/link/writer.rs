@@ -14,6 +14,7 @@ use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
+use super::compress::Compressor;
 use super::{Control, LinkNamer};
 use crate::message::{Message, TopicMeta};
 use crate::names::TopicId;
@@ -41,17 +42,20 @@ struct Lane {
     next: usize,
     /// Payload bytes sent so far, when chunks are cut for this link as they go.
     offset: usize,
+    /// The payload is a compression envelope: its pieces go out as `ZCHUNK`s.
+    compressed: bool,
     waiting: VecDeque<Arc<Message>>,
 }
 
 impl Lane {
-    fn start(topic: TopicId, msg: Arc<Message>, sized: bool) -> Lane {
+    fn start(topic: TopicId, msg: Arc<Message>, sized: bool, compressed: bool) -> Lane {
         Lane {
             topic,
             cached: (!sized).then(|| msg.link_frames()),
             msg,
             next: 0,
             offset: 0,
+            compressed,
             waiting: VecDeque::new(),
         }
     }
@@ -92,6 +96,7 @@ impl Lane {
         let mut b = BytesMut::with_capacity(data.len() + 40);
         fleetlink_proto::frame::encode_chunk(
             &mut b,
+            self.compressed,
             m.topic.id.0,
             m.seq,
             m.stamp_ns,
@@ -150,6 +155,8 @@ pub async fn write_link<K>(
         }
     }
     let mut lanes: Vec<Lane> = Vec::new();
+    // Each topic's compression on this link, looked up on its first message.
+    let mut compressors: HashMap<TopicId, Option<Compressor>> = HashMap::new();
     // Topics to unadvertise once nothing of theirs is queued or in a lane, with when
     // they were last seen without a publisher.
     let mut unadvertise: Vec<(TopicId, Instant)> = Vec::new();
@@ -232,9 +239,14 @@ pub async fn write_link<K>(
                             let (topic, sized) = (lane.topic, lane.cached.is_none());
                             let waiting = std::mem::take(&mut lane.waiting);
                             let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
+                            let (m, compressed) = if carried {
+                                for_link(&mut compressors, &outbox, m)
+                            } else {
+                                (m, false)
+                            };
                             *lane = Lane {
                                 waiting,
-                                ..Lane::start(topic, m, sized)
+                                ..Lane::start(topic, m, sized, compressed)
                             };
                             if !carried {
                                 lane.skip();
@@ -283,9 +295,26 @@ pub async fn write_link<K>(
             }
             // Per message on the hub's fan-out path: these calls read no clock and take no
             // lock unless the outbox is the agent's scheduled uplink.
+            let (msg, compressed) = for_link(&mut compressors, &outbox, msg);
             let sized = outbox.chunk_size();
             let whole = sized.unwrap_or(DEFAULT_CHUNK_SIZE);
-            if msg.payload.len() <= ENCODE_IN_PLACE.min(whole) {
+            if compressed && msg.payload.len() <= whole {
+                // The agent's link is the only one a compressed message goes out on:
+                // framed in place, never through the shared frames.
+                let p = &msg.payload.bytes;
+                fleetlink_proto::frame::encode_message_kind(
+                    &mut buf,
+                    true,
+                    tid.0,
+                    msg.seq,
+                    msg.stamp_ns,
+                    p,
+                );
+                if flush_if_full(&mut sink, &mut buf, PACK).await.is_err() {
+                    return;
+                }
+                outbox.on_written(p.len());
+            } else if msg.payload.len() <= ENCODE_IN_PLACE.min(whole) {
                 // A small message's MESSAGE frame is written straight into the pack: a
                 // few dozen bytes copied per link cost less than building a frame to
                 // share (the payload's bytes are copied as they are, never re-encoded).
@@ -308,7 +337,7 @@ pub async fn write_link<K>(
                 outbox.on_written(msg.payload.len());
             } else {
                 outbox.hold(tid.0, true, Instant::now());
-                lanes.push(Lane::start(tid, msg, sized.is_some()));
+                lanes.push(Lane::start(tid, msg, sized.is_some(), compressed));
             }
         }
         // 5. Topics whose publishers are gone, after their last message.
@@ -377,6 +406,29 @@ pub async fn write_link<K>(
             _ = outbox.ready() => {}
             _ = sleep_until(wake) => {}
         }
+    }
+}
+
+/// The message as it goes on this link, and whether it is compressed: the agent's
+/// uplink compresses where the topic's `compression` says so and it pays; a plain
+/// outbox's (the hub's) messages go as they are, without a lookup.
+fn for_link(
+    compressors: &mut HashMap<TopicId, Option<Compressor>>,
+    outbox: &Outbox,
+    msg: Arc<Message>,
+) -> (Arc<Message>, bool) {
+    if !outbox.is_scheduled() {
+        return (msg, false);
+    }
+    let c = compressors
+        .entry(msg.topic.id)
+        .or_insert_with(|| outbox.compression(msg.topic.id.0).and_then(Compressor::new));
+    match c
+        .as_mut()
+        .and_then(|c| c.apply(&msg.payload.bytes, Instant::now()))
+    {
+        Some(envelope) => (Arc::new(msg.with_link_bytes(envelope)), true),
+        None => (msg, false),
     }
 }
 

@@ -215,7 +215,16 @@ impl Writer {
         let pieces = payload.len().div_ceil(DEFAULT_CHUNK_SIZE);
         for (i, data) in payload.chunks(DEFAULT_CHUNK_SIZE).enumerate() {
             let offset = (i * DEFAULT_CHUNK_SIZE) as u64;
-            frame::encode_chunk(&mut self.buf, ALIAS, seq, stamp_ns, total, offset, data);
+            frame::encode_chunk(
+                &mut self.buf,
+                false,
+                ALIAS,
+                seq,
+                stamp_ns,
+                total,
+                offset,
+                data,
+            );
             if i + 1 < pieces {
                 let out = self.buf.split().freeze();
                 self.sink.feed(WsMessage::Binary(out)).await?;
