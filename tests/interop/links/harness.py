@@ -256,9 +256,10 @@ class Fleet:
         return f"ws://{host}:{self.hub_port}/?token={self.op_token}"
 
     # --- agent
-    def agent_yaml(self, sim):
+    def agent_yaml(self, sim, topics=None):
         """`sim`: False (no simulator), True (the point cloud only) or the `sim:` map as
-        YAML text."""
+        YAML text. `topics`: more entries of the `topics:` map, local name -> QoS as YAML
+        text (`{ compression: none }`)."""
         lines = [
             f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
             "name: robot1",
@@ -273,21 +274,23 @@ class Fleet:
             "  /probe/reliable: { no_drop: true }",
             "  /probe/fast: { priority: 10, policy: latest }",
         ]
+        lines += [f"  {name}: {qos}" for name, qos in (topics or {}).items()]
         if isinstance(sim, str):
             lines.append(f"sim: {sim}")
         elif sim:
             lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
         return "\n".join(lines) + "\n"
 
-    def start_agent(self, sim=False, same_outbox=False):
+    def start_agent(self, sim=False, same_outbox=False, topics=None):
         """A fresh outbox directory per agent, unless this is a restart of the last one (a
-        fresh agent must not replay an earlier scenario's leftovers)."""
+        fresh agent must not replay an earlier scenario's leftovers). `topics`: see
+        `agent_yaml`."""
         if not same_outbox:
             self.agents += 1
             self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
         path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
         with open(path, "w") as f:
-            f.write(self.agent_yaml(sim))
+            f.write(self.agent_yaml(sim, topics))
         self.agent = self.procs.start("agent", self.net.robot_ns, [self.bin, "agent", "--config", path])
         m = self.procs.wait_line(self.agent, r"^  local rosbridge: (ws://[0-9.:]+/)$", 15, "agent start")
         self.local_url = m.group(1)
@@ -337,6 +340,21 @@ class Fleet:
         log = os.path.join(self.tmp, f"{tag}.provider")
         p = self.peer("provider", self.net.hub_ns, log, "--url", self.hub_url(), "--service", service)
         self.procs.wait_line(p, r"^provider: advertised", 15, f"provider of {service} start")
+        return p, log
+
+    def start_sensors(self, tag, hz):
+        """The robot's lidar and camera drivers (peers.py sensors) on the agent's local
+        listener: /cloud and /camera/compressed at `hz`, as rosbridge CBOR."""
+        log = os.path.join(self.tmp, f"{tag}.sensors")
+        p = self.peer("sensors", self.net.robot_ns, log, "--url", self.local_url, "--hz", str(hz))
+        self.procs.wait_line(p, r"^sensors: connected", 15, "lidar and camera publisher start")
+        return p, log
+
+    def start_sensorsub(self, tag):
+        """A roslibpy viewer at the hub of the robot's /cloud and /camera/compressed."""
+        log = os.path.join(self.tmp, f"{tag}.sensorsub")
+        p = self.peer("sensorsub", self.net.hub_ns, log, "--url", self.hub_url())
+        self.procs.wait_line(p, r"^sensorsub: subscribed", 15, "lidar and camera subscriber start")
         return p, log
 
     def start_pub(self, tag, fast_hz=50, reliable_hz=50, start_seq=1, count=0, duration=0):
@@ -439,6 +457,29 @@ def read_pub(path):
 def read_points(path):
     """-> [(recv ns, raw bytes)]"""
     return [(int(p[1]), int(p[2])) for p in read_lines(path) if len(p) == 3 and p[0] == "points"]
+
+
+@dataclass
+class Blob:
+    """One sensor message's data as a peer logged it (peers.py sensors / sensorsub)."""
+    topic: str        # "cloud" or "jpeg"
+    stamp: int        # header.stamp, ns: the message's identity in both logs
+    sha256: str       # of the `data` bytes
+    size: int         # bytes of `data`
+    zstd1: int = None # the publisher's: `data` compressed by zstd at level 1 (None: no zstd module)
+
+
+def read_blobs(path):
+    """A sensors or sensorsub log -> {topic: [Blob]} in log order."""
+    out = {"cloud": [], "jpeg": []}
+    for p in read_lines(path):
+        if len(p) in (5, 6) and p[0] in out:
+            try:
+                out[p[0]].append(Blob(p[0], int(p[2]), p[3], int(p[4]),
+                                      int(p[5]) if len(p) == 6 and p[5] != "-" else None))
+            except ValueError:
+                continue  # a half-written last line
+    return out
 
 
 def percentile(xs, q):

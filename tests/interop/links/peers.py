@@ -18,6 +18,19 @@
   points  plain WebSocket subscriber at the hub on /<robot>/points with compression
           cbor-raw (roslibpy cannot take binary frames); logs "points <recv ns> <bytes>"
           where bytes is the raw ROS serialization's length. Reconnects by itself.
+  sensors plain WebSocket publisher on the agent's local rosbridge listener speaking
+          rosbridge v2 CBOR (binary `advertise` and `publish` ops), as a robot's lidar and
+          camera drivers would: /cloud (sensor_msgs/msg/PointCloud2, an organized 16 x 900
+          lidar cloud, x/y/z/intensity float32 little-endian, 230 kB) and
+          /camera/compressed (sensor_msgs/msg/CompressedImage, "jpeg": a JFIF header, ~60 kB
+          of noise, which entropy-coded image data is, and the end marker) at --hz each, each
+          on its own connection. Logs every publish as "<cloud|jpeg> <seq> <stamp ns>
+          <sha256 of data> <bytes of data> <bytes of data after zstd level 1, or ->", and
+          any `status` the agent sends as "# status ...".
+  sensorsub
+          roslibpy subscriber at the hub on /<robot>/cloud and /<robot>/camera/compressed;
+          logs every message as "<cloud|jpeg> <recv ns> <stamp ns> <sha256 of the
+          base64-decoded data> <bytes>". The stamp identifies a message in both logs.
   loris   slowloris: N TCP connections that send a request line and then one header
           line a second, never finishing; logs "closed <seconds after open>" per
           connection the server closes, "open <n>" at the end for the rest.
@@ -39,10 +52,15 @@ by line, so a record survives a kill of the process under test.
 """
 
 import argparse
+import base64
+import hashlib
 import json
+import math
+import random
 import selectors
 import signal
 import socket
+import struct
 import sys
 import threading
 import time
@@ -52,6 +70,14 @@ import cbor2
 import roslibpy
 from roslibpy.comm.comm_autobahn import AutobahnRosBridgeClientFactory
 from websockets.sync.client import connect as ws_connect
+
+try:  # the reference zstd library (pulled in by rosbags; Python 3.14 has it built in)
+    from backports import zstd
+except ImportError:
+    try:
+        from compression import zstd
+    except ImportError:
+        zstd = None
 
 STRING = "std_msgs/msg/String"
 CONNECT_TIMEOUT = 10.0
@@ -217,6 +243,153 @@ def run_points(a):
             stop.wait(0.2)
 
 
+class Lidar:
+    """A 16-ring lidar (+-15 deg, 900 columns) 0.4 m above the floor of a walled yard
+    (walls 2.5 m high, 9-18 m away). The cloud is organized as lidar drivers publish it:
+    one row per ring, one column per firing, and a ray that saw only sky (above the
+    walls) stays in it as a NaN point. Ranges carry 1 cm of noise, fresh in every sweep;
+    intensity is the sensor's 8-bit reflectivity (an integer in a float32, as drivers
+    report it)."""
+
+    RINGS, COLUMNS, HEIGHT, WALL_H = 16, 900, 0.4, 2.5
+    X, Y = (-12.0, 18.0), (-9.0, 11.0)
+    POINT = struct.Struct("<ffff")  # x, y, z, intensity
+
+    def __init__(self):
+        self.rays = []  # row by row: (unit vector x, y, z, range or None, reflectivity)
+        for r in range(self.RINGS):
+            el = math.radians(-15 + 30 * r / (self.RINGS - 1))
+            se, ce = math.sin(el), math.cos(el)
+            for c in range(self.COLUMNS):
+                az = math.tau * c / self.COLUMNS
+                ca, sa = math.cos(az), math.sin(az)
+                wall = min(d for d in (self.X[1] / ca if ca > 1e-9 else None,
+                                       self.X[0] / ca if ca < -1e-9 else None,
+                                       self.Y[1] / sa if sa > 1e-9 else None,
+                                       self.Y[0] / sa if sa < -1e-9 else None) if d is not None)
+                if se < 0 and self.HEIGHT / -se * ce < wall:
+                    rng, refl = self.HEIGHT / -se, 30.0      # the floor
+                elif 0 <= self.HEIGHT + wall * se / ce <= self.WALL_H:
+                    rng, refl = wall / ce, 100.0             # a wall
+                else:
+                    rng, refl = None, 0.0                    # sky: no return
+                self.rays.append((ce * ca, ce * sa, se, rng, refl))
+
+    def sweep(self, seq):
+        gauss = random.Random(seq).gauss
+        nan, pack = float("nan"), self.POINT.pack
+        out = []
+        for x, y, z, rng, refl in self.rays:
+            if rng is None:
+                out.append(pack(nan, nan, nan, 0.0))
+            else:
+                r = rng + gauss(0, 0.01)
+                out.append(pack(r * x, r * y, r * z, float(round(refl / (1 + 0.05 * r)))))
+        return b"".join(out)
+
+    def message(self, seq, stamp_ns):
+        def field(name, offset):
+            return {"name": name, "offset": offset, "datatype": 7, "count": 1}  # 7: FLOAT32
+        step = self.POINT.size
+        # The type's fields in order, uint8[] as a byte string: the normal form
+        # (crates/msg/src/cbor_check.rs).
+        return {"header": header(stamp_ns, "lidar"), "height": self.RINGS, "width": self.COLUMNS,
+                "fields": [field("x", 0), field("y", 4), field("z", 8), field("intensity", 12)],
+                "is_bigendian": False, "point_step": step, "row_step": self.COLUMNS * step,
+                "data": self.sweep(seq), "is_dense": False}
+
+
+# SOI, then an APP0 JFIF segment (version 1.1, 72 dpi, no thumbnail).
+JFIF = bytes.fromhex("ffd8ffe000104a46494600010101004800480000")
+
+
+def jpeg_message(seq, stamp_ns):
+    """A camera frame: what follows a JPEG's header is entropy-coded data, statistically
+    noise; the size varies from frame to frame, as a camera's does."""
+    rnd = random.Random(seq)
+    return {"header": header(stamp_ns, "camera"), "format": "jpeg",
+            "data": JFIF + rnd.randbytes(60_000 + rnd.randint(-1500, 1500)) + b"\xff\xd9"}
+
+
+def header(stamp_ns, frame_id):
+    return {"stamp": {"sec": stamp_ns // 1_000_000_000, "nanosec": stamp_ns % 1_000_000_000},
+            "frame_id": frame_id}
+
+
+def blob_line(short, seq, stamp_ns, data):
+    zlen = len(zstd.compress(data, level=1)) if zstd is not None else "-"
+    return f"{short} {seq} {stamp_ns} {hashlib.sha256(data).hexdigest()} {len(data)} {zlen}\n"
+
+
+def run_sensors(a):
+    log = LockedLog(open_log(a.log))
+    lidar = Lidar()
+    plan = [("cloud", "/cloud", "sensor_msgs/msg/PointCloud2", lidar.message),
+            ("jpeg", "/camera/compressed", "sensor_msgs/msg/CompressedImage", jpeg_message)]
+    conns = []
+    for short, name, ros_type, make in plan:  # one connection per driver
+        ws = ws_connect(a.url, open_timeout=CONNECT_TIMEOUT, close_timeout=1, max_size=64 << 20)
+        ws.send(cbor2.dumps({"op": "set_level", "level": "warning"}))
+        ws.send(cbor2.dumps({"op": "advertise", "topic": name, "type": ros_type}))
+        conns.append((ws, short, name, make))
+    print("sensors: connected", flush=True)
+    threads = [threading.Thread(target=sensor_loop, args=(c, a.hz, log), daemon=True) for c in conns]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for ws, *_ in conns:
+        ws.close()
+
+
+def sensor_loop(conn, hz, log):
+    ws, short, name, make = conn
+    period, seq, next_at = 1.0 / hz, 0, time.monotonic()
+    while not stop.is_set():
+        seq += 1
+        stamp = time.time_ns()
+        msg = make(seq, stamp)
+        ws.send(cbor2.dumps({"op": "publish", "topic": name, "msg": msg}))
+        log.write(blob_line(short, seq, stamp, msg["data"]))
+        while True:  # what the agent answered: a refused publish says why here
+            try:
+                reply = ws.recv(timeout=0)
+            except TimeoutError:
+                break
+            text = reply if isinstance(reply, str) else json.dumps(cbor2.loads(reply), default=repr)
+            log.write(f"# status {one_line(text)}\n")
+            print(f"sensors: {name}: {one_line(text)}", flush=True)
+        next_at += period
+        delay = next_at - time.monotonic()
+        if delay > 0:
+            stop.wait(delay)
+        else:
+            next_at = time.monotonic()  # fell behind: no burst to catch up
+
+
+def run_sensorsub(a):
+    log = LockedLog(open_log(a.log))
+    ros = ros_connect(a.url)
+    show_status(ros, log)
+
+    def handler(short):
+        def on_msg(m):
+            recv = time.time_ns()
+            st = m["header"]["stamp"]
+            data = m["data"]
+            data = base64.b64decode(data) if isinstance(data, str) else bytes(data)
+            log.write(f"{short} {recv} {st['sec'] * 1_000_000_000 + st['nanosec']} "
+                      f"{hashlib.sha256(data).hexdigest()} {len(data)}\n")
+        return on_msg
+
+    for short, name, ros_type in (("cloud", f"/{a.robot}/cloud", "sensor_msgs/msg/PointCloud2"),
+                                  ("jpeg", f"/{a.robot}/camera/compressed", "sensor_msgs/msg/CompressedImage")):
+        roslibpy.Topic(ros, name, ros_type).subscribe(handler(short))
+    print("sensorsub: subscribed", flush=True)
+    stop.wait()
+    ros.close()
+
+
 def run_loris(a):
     log = open_log(a.log)
     sel = selectors.DefaultSelector()
@@ -356,7 +529,11 @@ def main():
     p.add_argument("--hz", type=float, default=50)
     p.add_argument("--log", required=True)
     p.set_defaults(start_seq=1, count=0, duration=0)
-    for name in ("sub", "points"):
+    p = sp.add_parser("sensors")
+    p.add_argument("--url", required=True, help="the agent's local listener")
+    p.add_argument("--hz", type=float, default=5)
+    p.add_argument("--log", required=True)
+    for name in ("sub", "points", "sensorsub"):
         p = sp.add_parser(name)
         p.add_argument("--url", required=True, help="hub URL with ?token=")
         p.add_argument("--robot", default="robot1")
@@ -382,7 +559,8 @@ def main():
     signal.signal(signal.SIGTERM, on_term)
     signal.signal(signal.SIGINT, on_term)
     {"pub": run_pub, "direct": run_direct, "sub": run_sub, "points": run_points, "loris": run_loris,
-     "caller": run_caller, "provider": run_provider}[a.cmd](a)
+     "caller": run_caller, "provider": run_provider, "sensors": run_sensors,
+     "sensorsub": run_sensorsub}[a.cmd](a)
     return 0
 
 

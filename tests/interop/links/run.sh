@@ -2,8 +2,8 @@
 # Bad-links reliability suite: a hub and an agent in two network namespaces joined by a
 # veth pair; blackouts (link down/up), a tbf bandwidth ramp, kill -9 of the hub and of
 # the agent, a slowloris attack, and a link cut while service calls cross it both ways,
-# with real roslibpy peers on both sides; and what the robot's link carries while nobody wants its
-# topics (interest).
+# with real roslibpy peers on both sides; what the robot's link carries while nobody wants its
+# topics (interest); and what compression saves on it (a lidar cloud and a JPEG).
 #
 # This script owns the namespace plumbing; links_check.py drives the scenarios
 # (links_scenarios.py) and asserts their outcomes (see its docstring and
@@ -18,7 +18,7 @@
 #
 # Env: FLEETLINK_BIN (default target/release/fleetlink), PYTHON (default .venv/bin/python),
 #      LINKS_OUT (results directory, default target/interop-links),
-#      LINKS_SCENARIOS ("1 2 3 4 5 6 7"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
+#      LINKS_SCENARIOS ("1 2 3 4 5 6 7 8"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
 #      LINKS_KEEP (non-empty: keep the logs and records in the temp directory),
 #      LINKS_IDLE_P99_FLOOR_MS (15: the ramp's latency bound is 2 x max(idle p99, floor)).
 set -euo pipefail

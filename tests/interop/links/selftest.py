@@ -6,9 +6,9 @@ import os
 import sys
 import tempfile
 
-from harness import Rx, log_time_ns, read_calls, reliable_audit
-from links_scenarios import (bulk_rate, first_error, offline_row, ok_run, pending_row, recovery,
-                             recovery_ratio)
+from harness import Rx, log_time_ns, read_blobs, read_calls, reliable_audit
+from links_scenarios import (bulk_rate, first_error, intact_row, offline_row, ok_run, pending_row,
+                             recovery, recovery_ratio)
 
 S = 1_000_000_000
 MS = 1_000_000
@@ -76,6 +76,31 @@ def check_calls():
     assert t == 1764265680123456000, t
 
 
+def blob_records(lines):
+    with tempfile.NamedTemporaryFile("w", suffix=".sensors", delete=False) as f:
+        f.write("\n".join(lines) + "\n")
+    try:
+        return read_blobs(f.name)
+    finally:
+        os.unlink(f.name)
+
+
+def check_blobs():
+    """The viewer's copies matched to the publisher's by stamp (peers.py sensors and
+    sensorsub logs): one copy with other bytes fails, as does nothing to compare."""
+    sent = blob_records([f"cloud {i} {1000 + i} {'ab'[i % 2] * 64} 230400 121000" for i in range(1, 5)]
+                        + ["# status {}", "cloud 5 1005 cd"])  # a half-written last line
+    assert [b.stamp for b in sent["cloud"]] == [1001, 1002, 1003, 1004] and sent["cloud"][0].zstd1 == 121000
+    got = [f"cloud {9000 + i} {1000 + i} {'ab'[i % 2] * 64} 230400" for i in (2, 3)]
+    run = {"sent": sent, "got": blob_records(got)}
+    row = intact_row("auto", run, "cloud")
+    assert row[3] is True and row[1].startswith("2/2 identical (2 received, 4 published)"), row
+    run["got"] = blob_records(got + [f"cloud 9004 1004 {'c' * 64} 230400"])
+    assert intact_row("auto", run, "cloud")[3] is False, "a copy with other bytes passes"
+    run["got"] = blob_records([f"cloud 9009 999 {'a' * 64} 230400"])
+    assert intact_row("auto", run, "cloud")[3] is False, "nothing matched passes"
+
+
 def main():
     t_up = 100 * S
     rx = fast_records(t_up, t_up + 3 * S)
@@ -104,6 +129,7 @@ def main():
     assert got < 3.0, f"a bulk flow that stops mid-step still meets its target: {got}"
     assert bulk_rate([], 0, S, 3.0) == 0.0
     check_calls()
+    check_blobs()
     print("selftest: measurement helpers ok")
     return 0
 
