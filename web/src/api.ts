@@ -39,6 +39,9 @@ export interface RobotInfo {
   demand_bps?: number;
   clock_offset_ms?: number | null;
   topics: string[];
+  /** The robot's data budget as its agent last reported it (absent: none). Bytes per
+   * second and per day on the wire; `thinned`: topics it holds back now. */
+  budget?: { max_bps: number | null; day_bytes: number | null; used_bytes: number; use_bps: number; thinned: string[] } | null;
 }
 
 export interface TopicInfo {
@@ -58,4 +61,6 @@ export interface TopicInfo {
   link_bytes?: number | null;
   compression_ratio?: number | null;
   link_bandwidth_bps?: number | null;
+  /** Held back by its robot's data budget now (thinned or paused). */
+  thinned?: boolean;
 }

@@ -179,6 +179,8 @@ pub struct UplinkConfig {
     pub outbox: Option<crate::outbox_store::OutboxStoreConfig>,
     /// Most bytes of topics' latest messages kept (see [`Outbox::set_latest_limit`]).
     pub latest_cache_bytes: usize,
+    /// The robot's data budget, if any (`link.budget`).
+    pub budget: Option<fleetlink_qos::BudgetConfig>,
 }
 
 /// The link's state, observable by tests and the CLI.
@@ -281,6 +283,7 @@ impl Uplink {
             |id| Outbox::scheduled(id, sched, qos_for, reliable),
         );
         outbox.set_latest_limit(cfg.latest_cache_bytes);
+        outbox.set_data_budget(cfg.budget, Instant::now());
         let all = Router::compile_pattern(".*").expect("a constant pattern compiles");
         let opts = SubOptions::default();
         router
@@ -730,6 +733,14 @@ impl Uplink {
                 demand_bps: f.demand_bps as u64,
                 rate_bps: f.rate_bps as u64,
                 latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
+            });
+        }
+        if let Some(b) = self.outbox.budget_figures(Instant::now()) {
+            session.send(Frame::Budget {
+                max_bps: b.max_bytes_per_sec.map_or(0, |r| r.round() as u64),
+                day_bytes: b.bytes_per_day.map_or(0, |d| d.round() as u64),
+                used_bytes: b.used_bytes,
+                thinned: b.thinned,
             });
         }
     }

@@ -193,6 +193,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         tls: None,
         outbox: None,
         latest_cache_bytes: 64 << 20,
+        budget: None,
     }
 }
 

@@ -48,6 +48,43 @@ pub struct LiveRobot {
     control: mpsc::Sender<Control>,
     /// Cancelled when a newer connection of the robot replaces this one.
     replaced: CancellationToken,
+    /// From the agent's last `BUDGET`, if the robot has a data budget.
+    pub budget: Mutex<Option<RobotBudget>>,
+}
+
+/// A robot's data budget as its agent last reported it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RobotBudget {
+    /// The rate limit and the daily allowance, bytes (per second, per day), if set.
+    pub max_bps: Option<u64>,
+    pub day_bytes: Option<u64>,
+    /// Bytes counted against the budget since the agent set it, and the rate at which
+    /// they grew between the last two reports (bytes/s).
+    pub used_bytes: u64,
+    pub use_bps: f64,
+    /// Hub topic names the budget held back lately.
+    pub thinned: Vec<String>,
+    /// When this report came (unix ns).
+    pub at_ns: u64,
+}
+
+impl RobotBudget {
+    /// `next` (what the agent reports now) with the rate since this one.
+    pub fn then(&self, mut next: RobotBudget) -> RobotBudget {
+        let dt = next.at_ns.saturating_sub(self.at_ns) as f64 / 1e9;
+        if dt > 0.2 && next.used_bytes >= self.used_bytes {
+            let now = (next.used_bytes - self.used_bytes) as f64 / dt;
+            // Smoothed over a few reports, as the dashboard shows it.
+            next.use_bps = if self.use_bps == 0.0 {
+                now
+            } else {
+                self.use_bps + (now - self.use_bps) / 4.0
+            };
+        } else {
+            next.use_bps = self.use_bps;
+        }
+        next
+    }
 }
 
 /// Clock offset from ping/pong exchanges, NTP style: each exchange bounds the offset
@@ -90,6 +127,7 @@ impl LiveRobot {
             clock_offset: AtomicI64::new(i64::MIN),
             control: l.control,
             replaced: l.replaced,
+            budget: Mutex::new(None),
         }
     }
 

@@ -67,6 +67,7 @@ pub enum FrameKind {
     Pull = 0x19,
     ZMessage = 0x1a,
     ZChunk = 0x1b,
+    Budget = 0x1c,
 }
 
 /// Severity of a `STATUS` frame.
@@ -233,6 +234,16 @@ pub enum Frame {
         offset: u64,
         data: Bytes,
     },
+    /// Agent → hub, about once a second while the robot has a data budget: what it allows
+    /// (0 = no such limit), the bytes counted against it, and the topics it held back
+    /// lately. `max_bps varint | day_bytes varint | used_bytes varint | count varint |
+    /// alias varint × count`
+    Budget {
+        max_bps: u64,
+        day_bytes: u64,
+        used_bytes: u64,
+        thinned: Vec<u32>,
+    },
     /// `id u64le | sent_ns u64le`
     Ping { id: u64, sent_ns: u64 },
     /// `id u64le | echo_ns u64le | responder_ns u64le`
@@ -385,6 +396,7 @@ impl Frame {
             Frame::Pull { .. } => FrameKind::Pull as u8,
             Frame::ZMessage { .. } => FrameKind::ZMessage as u8,
             Frame::ZChunk { .. } => FrameKind::ZChunk as u8,
+            Frame::Budget { .. } => FrameKind::Budget as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -439,6 +451,20 @@ impl Frame {
                 b.put_u8(u8::from(*wanted));
             }
             Frame::Pull { alias } => put_varint(b, u64::from(*alias)),
+            Frame::Budget {
+                max_bps,
+                day_bytes,
+                used_bytes,
+                thinned,
+            } => {
+                put_varint(b, *max_bps);
+                put_varint(b, *day_bytes);
+                put_varint(b, *used_bytes);
+                put_varint(b, thinned.len() as u64);
+                for a in thinned {
+                    put_varint(b, u64::from(*a));
+                }
+            }
             Frame::Advertise {
                 alias,
                 topic,
@@ -856,6 +882,28 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
         0x19 => Frame::Pull {
             alias: r.varint_u32("PULL.alias")?,
         },
+        0x1c => {
+            let max_bps = r.varint("BUDGET.max_bps")?;
+            let day_bytes = r.varint("BUDGET.day_bytes")?;
+            let used_bytes = r.varint("BUDGET.used_bytes")?;
+            let count = r.varint("BUDGET.count")?;
+            // Every alias takes at least a byte: a count past the body is a lie.
+            if count > r.remaining() as u64 {
+                return Err(DecodeError::invalid(
+                    "BUDGET.count",
+                    format!("{count} aliases in {} bytes", r.remaining()),
+                ));
+            }
+            let thinned = (0..count)
+                .map(|_| r.varint_u32("BUDGET.alias"))
+                .collect::<Result<_, _>>()?;
+            Frame::Budget {
+                max_bps,
+                day_bytes,
+                used_bytes,
+                thinned,
+            }
+        }
         0x1a => Frame::ZMessage {
             alias: r.varint_u32("ZMESSAGE.alias")?,
             seq: r.varint("ZMESSAGE.seq")?,

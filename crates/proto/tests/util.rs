@@ -50,6 +50,21 @@ pub fn pull() -> impl Strategy<Value = Frame> {
     any::<u32>().prop_map(|alias| Frame::Pull { alias })
 }
 
+pub fn budget() -> impl Strategy<Value = Frame> {
+    (
+        any::<u64>(),
+        any::<u64>(),
+        any::<u64>(),
+        prop::collection::vec(any::<u32>(), 0..20),
+    )
+        .prop_map(|(max_bps, day_bytes, used_bytes, thinned)| Frame::Budget {
+            max_bps,
+            day_bytes,
+            used_bytes,
+            thinned,
+        })
+}
+
 pub fn interest() -> impl Strategy<Value = Frame> {
     (any::<u32>(), any::<bool>()).prop_map(|(alias, wanted)| Frame::Interest { alias, wanted })
 }
@@ -359,7 +374,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x1cu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x1du8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -391,6 +406,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         pull(),
         zmessage(),
         zchunk(),
+        budget(),
         unknown(),
     ]
 }
@@ -465,6 +481,12 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             total_len: 1000,
             offset: 0,
             data: Bytes::from(vec![0x01; 150]),
+        },
+        Frame::Budget {
+            max_bps: 25_000,
+            day_bytes: 500_000_000,
+            used_bytes: 1 << 40,
+            thinned: vec![3, 300],
         },
         Frame::Ping { id: 1, sent_ns: 2 },
         Frame::Pong {

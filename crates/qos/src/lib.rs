@@ -17,6 +17,8 @@
 //! - [`rate_limit`] — per-topic message rate limit.
 //! - [`scheduler`] — the Robofleet uplink scheduler ([`Scheduler`]): no-drop FIFO first,
 //!   then priority × wait, paused by frames in flight and the byte budget.
+//! - [`budget`] — a robot's data budget ([`DataBudget`]): a rate and/or a daily
+//!   allowance on its link, which holds back all but protected topics while spent.
 //! - [`link`] — link estimation from echo probes and acknowledged frames
 //!   ([`LinkEstimator`]): rate, latency, clock offset, pacing rate.
 //! - [`capacity`] — capacity shares for robots on one access link and the offload signal
@@ -28,6 +30,7 @@
 //! The configuration reference and the algorithms' conventions are in `docs/qos.md`.
 
 pub mod afr;
+pub mod budget;
 pub mod capacity;
 pub mod config;
 mod error;
@@ -41,6 +44,7 @@ pub mod rng;
 pub mod scheduler;
 pub mod time;
 
+pub use budget::{BudgetConfig, DataBudget};
 pub use capacity::{CapacityAllocator, CapacityConfig, OffloadParams, RobotLinkReport, Share};
 pub use config::{Compression, Mode, Policy, TopicQos, TopicQosSpec};
 pub use error::QosError;

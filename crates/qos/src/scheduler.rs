@@ -21,6 +21,7 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap, VecDeque};
 use std::sync::Arc;
 
+use crate::budget::DataBudget;
 use crate::config::TopicQos;
 use crate::error::QosError;
 use crate::queue::{DropReason, Push, TopicQueue};
@@ -106,6 +107,8 @@ struct Topic<T> {
     ready: bool,
     /// Not eligible for now ([`Scheduler::set_held`]): its messages wait in its queue.
     held: bool,
+    /// When it last had to wait because the data budget was closed.
+    thinned_at: Option<Nanos>,
 }
 
 #[derive(Debug)]
@@ -153,6 +156,8 @@ pub struct Scheduler<T> {
     in_flight_bytes: usize,
     window_bytes: Option<usize>,
     budget: Option<Budget>,
+    /// The robot's data budget, if its owner set one (see [`crate::budget`]).
+    data_budget: Option<DataBudget>,
 }
 
 impl<T: WireLen> Scheduler<T> {
@@ -171,6 +176,7 @@ impl<T: WireLen> Scheduler<T> {
             in_flight_bytes: 0,
             window_bytes: None,
             budget: None,
+            data_budget: None,
         }
     }
 
@@ -221,6 +227,7 @@ impl<T: WireLen> Scheduler<T> {
             last_sent: None,
             ready: false,
             held: false,
+            thinned_at: None,
         });
         self.index.insert(id, index);
         Ok(())
@@ -324,7 +331,14 @@ impl<T: WireLen> Scheduler<T> {
                 }
                 (index, item)
             }
-            None => self.pick_weighted(now)?,
+            None => {
+                // A closed data budget leaves only the protected priorities eligible.
+                let eligible = self.budget_eligible(now);
+                // Under a data budget the highest priority goes first, so what the budget
+                // leaves is taken from the lowest priorities up.
+                let strict = self.data_budget.is_some();
+                self.pick_weighted(now, eligible, strict)?
+            }
         };
         let topic = &mut self.topics[index as usize];
         topic.last_sent = Some(now);
@@ -369,11 +383,57 @@ impl<T: WireLen> Scheduler<T> {
         }
     }
 
-    /// Pops from the topic with the largest `priority × wait`, skipping held topics (they
-    /// leave the heap when met and return on release).
-    fn pick_weighted(&mut self, now: Nanos) -> Option<(u32, T)> {
+    /// How many groups (from the highest priority) may send now under the data budget:
+    /// all of them while the next message of the highest ready priority fits it (or is
+    /// protected), else only the protected ones — the others wait, and are noted thinned.
+    fn budget_eligible(&mut self, now: Nanos) -> usize {
+        let all = self.groups.len();
+        let Some(b) = self.data_budget.as_mut() else {
+            return all;
+        };
+        let protect = f64::from(b.config().protect_priority);
+        let protected = self.group_priority.partition_point(|p| *p >= protect);
+        let Some(g) = self.group_head.iter().position(|h| h.is_finite()) else {
+            return all;
+        };
+        if g < protected {
+            return all;
+        }
+        let cost = self.groups[g].ready.peek().map_or(0, |Reverse((_, i))| {
+            match &self.topics[*i as usize].lane {
+                Lane::Queue(q) => q.peek().map_or(0, |m| m.wire_len()),
+                Lane::NoDrop { .. } => 0,
+            }
+        });
+        if b.admits(cost, now) {
+            return all;
+        }
+        self.mark_thinned(protected, now);
+        protected
+    }
+
+    /// Notes that the ready topics of groups `from..` wait for the data budget at `now`.
+    fn mark_thinned(&mut self, from: usize, now: Nanos) {
+        for g in &self.groups[from..] {
+            for Reverse((_, index)) in g.ready.iter() {
+                self.topics[*index as usize].thinned_at = Some(now);
+            }
+        }
+    }
+
+    /// Pops from the topic with the largest `priority × wait` among the first `eligible`
+    /// groups (the highest priorities) — or, `strict`, from the highest priority that has
+    /// something ready — skipping held topics (they leave the heap when met and return on
+    /// release).
+    fn pick_weighted(&mut self, now: Nanos, eligible: usize, strict: bool) -> Option<(u32, T)> {
         loop {
-            let g = self.best_group(now)?;
+            let g = if strict {
+                self.group_head[..eligible]
+                    .iter()
+                    .position(|h| h.is_finite())?
+            } else {
+                self.best_group(now, eligible)?
+            };
             let Reverse((_, index)) = self.groups[g].ready.pop()?;
             self.refresh_head(g);
             let topic = &mut self.topics[index as usize];
@@ -398,7 +458,7 @@ impl<T: WireLen> Scheduler<T> {
     /// The group whose longest-waiting ready topic has the largest `priority × wait`.
     /// Groups are in descending priority, so on equal scores the higher priority wins
     /// (strict `>`).
-    fn best_group(&self, now: Nanos) -> Option<usize> {
+    fn best_group(&self, now: Nanos, eligible: usize) -> Option<usize> {
         let now_f = now.0 as f64;
         let mut best = f64::NEG_INFINITY;
         let mut best_g = usize::MAX;
@@ -406,7 +466,10 @@ impl<T: WireLen> Scheduler<T> {
         // compared a block at a time (a branch-free max the compiler vectorises); only a
         // block that beats the best so far is searched for its index.
         const BLOCK: usize = 8;
-        let (prio, head) = (&self.group_priority, &self.group_head);
+        let (prio, head) = (
+            &self.group_priority[..eligible],
+            &self.group_head[..eligible],
+        );
         for (b, (ps, hs)) in prio.chunks(BLOCK).zip(head.chunks(BLOCK)).enumerate() {
             let mut scores = [f64::NEG_INFINITY; BLOCK];
             for i in 0..ps.len() {
@@ -470,10 +533,53 @@ impl<T: WireLen> Scheduler<T> {
         };
     }
 
-    /// The time at which [`Self::poll_next`] may succeed again when only the byte budget
-    /// holds it back; `None` if sending is not budget-limited (nothing queued, a free
-    /// window, or waiting on acknowledgements).
+    /// Sets (or lifts, with `None`) the robot's data budget.
+    pub fn set_data_budget(&mut self, budget: Option<DataBudget>) {
+        self.data_budget = budget;
+    }
+
+    pub fn data_budget(&self) -> Option<&DataBudget> {
+        self.data_budget.as_ref()
+    }
+
+    /// `bytes` left on the link at `now`: taken from the data budget, if one is set.
+    pub fn debit_data(&mut self, bytes: usize, now: Nanos) {
+        if let Some(b) = &mut self.data_budget {
+            b.debit(bytes, now);
+        }
+    }
+
+    /// `bytes` debited that did not leave after all (see [`DataBudget::credit`]).
+    pub fn credit_data(&mut self, bytes: usize) {
+        if let Some(b) = &mut self.data_budget {
+            b.credit(bytes);
+        }
+    }
+
+    /// Topics that had to wait for the data budget at or after `since`.
+    pub fn thinned_since(&self, since: Nanos) -> impl Iterator<Item = TopicId> + '_ {
+        self.topics
+            .iter()
+            .filter(move |t| t.thinned_at.is_some_and(|at| at >= since))
+            .map(|t| t.id)
+    }
+
+    /// The time at which [`Self::poll_next`] may succeed again when only a byte budget
+    /// (the capacity share, or the data budget) holds it back; `None` if sending is not
+    /// budget-limited (nothing queued, a free window, or waiting on acknowledgements).
     pub fn poll_timeout(&self, now: Nanos) -> Option<Nanos> {
+        let data = self
+            .data_budget
+            .as_ref()
+            .and_then(DataBudget::opens_at)
+            .filter(|at| *at > now && self.has_queued());
+        match (self.share_timeout(now), data) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    fn share_timeout(&self, now: Nanos) -> Option<Nanos> {
         let b = self.budget.as_ref()?;
         if !self.has_queued()
             || self.in_flight >= self.config.max_in_flight

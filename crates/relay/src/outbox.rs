@@ -161,6 +161,29 @@ fn log_refusal(last: &mut Option<Instant>, now: Instant, topic: &crate::TopicNam
     tracing::error!("no_drop topic {topic}: message refused: {why}");
 }
 
+/// How long after it last waited for the data budget a topic counts as thinned.
+const THINNED_RECENT: Duration = Duration::from_secs(2);
+
+/// What a message of `len` payload bytes costs on the wire, as a data plan counts it: its
+/// frame header (about 16 bytes) and, per full-size segment, TCP, IP and Ethernet headers
+/// (66 bytes with TCP timestamps, 1,448 bytes of data a segment). Small messages share
+/// segments and WebSocket messages, so this overcounts them a little.
+pub fn wire_cost(len: usize) -> usize {
+    let framed = len + 16;
+    framed + framed.div_ceil(1448) * 66
+}
+
+/// A data budget's figures ([`Outbox::budget_figures`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BudgetFigures {
+    pub max_bytes_per_sec: Option<f64>,
+    pub bytes_per_day: Option<f64>,
+    /// Bytes counted against the budget since it was set.
+    pub used_bytes: u64,
+    /// Link aliases of the topics the budget held back in the last two seconds.
+    pub thinned: Vec<u32>,
+}
+
 /// A link report for the hub: demand, delivered rate and one-way latency.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct LinkFigures {
@@ -481,6 +504,40 @@ impl Outbox {
             let t = Nanos::since(*origin, Instant::now());
             link.on_written(bytes, t);
         }
+    }
+
+    /// A message counted against the data budget at `raw` payload bytes went out as
+    /// `sent` (compressed): the difference goes back to the budget.
+    pub fn on_compressed(&self, raw: usize, sent: usize) {
+        if let Service::Scheduled { sched, .. } = &mut self.lock().service {
+            sched.credit_data(wire_cost(raw).saturating_sub(wire_cost(sent)));
+        }
+    }
+
+    /// Sets (or lifts) the robot's data budget (see [`fleetlink_qos::budget`]).
+    pub fn set_data_budget(&self, budget: Option<fleetlink_qos::BudgetConfig>, now: Instant) {
+        if let Service::Scheduled { origin, sched, .. } = &mut self.lock().service {
+            let t = Nanos::since(*origin, now);
+            sched.set_data_budget(budget.map(|b| fleetlink_qos::DataBudget::new(b, t)));
+        }
+        self.notify.notify_one();
+    }
+
+    /// The data budget's figures for the hub, if a budget is set: the bytes per second it
+    /// allows, the bytes it counted, and the topics (link aliases) it held back lately.
+    pub fn budget_figures(&self, now: Instant) -> Option<BudgetFigures> {
+        let st = self.lock();
+        let Service::Scheduled { origin, sched, .. } = &st.service else {
+            return None;
+        };
+        let b = sched.data_budget()?;
+        let since = Nanos::since(*origin, now).saturating_sub(THINNED_RECENT.into());
+        Some(BudgetFigures {
+            max_bytes_per_sec: b.config().max_bytes_per_sec,
+            bytes_per_day: b.config().bytes_per_day,
+            used_bytes: b.used(),
+            thinned: sched.thinned_since(since).map(|t| t.0).collect(),
+        })
     }
 
     /// Whether this outbox schedules its link (the agent's uplink) rather than serving
@@ -933,6 +990,7 @@ impl Outbox {
                 {
                     let slot = by_topic.get(&m.topic.id.0).copied().unwrap_or(SlotId(0));
                     bytes += m.wire_len();
+                    sched.debit_data(wire_cost(m.wire_len()), t);
                     items.push((slot, Delivery::default(), m));
                 }
                 while items.len() < max_items && bytes < max_bytes {
@@ -940,10 +998,15 @@ impl Outbox {
                         break;
                     };
                     st.queued = st.queued.saturating_sub(1);
+                    // Counted against the data budget now, so one batch cannot overdraw
+                    // it (given back below when the message is not sent after all).
+                    let cost = wire_cost(m.wire_len());
+                    sched.debit_data(cost, t);
                     if !demand.flows(tid.0) {
                         // Queued before interest went: not sent, and no longer counted
                         // in flight.
                         sched.on_acked(1, t);
+                        sched.credit_data(cost);
                         continue;
                     }
                     if sched.is_no_drop(tid) {
@@ -963,12 +1026,14 @@ impl Outbox {
                         // Unsubscribed while queued: it was in flight by the scheduler's
                         // count, so acknowledge it locally.
                         sched.on_acked(1, t);
+                        sched.credit_data(cost);
                         continue;
                     };
                     if demand.too_old(tid.0, &m, now) {
                         // Stale by the time its turn came (after a blackout, say): a
                         // reconnect does not flood the hub with it.
                         sched.on_acked(1, t);
+                        sched.credit_data(cost);
                         if let Some(s) = st.slots.get(slot) {
                             s.stats.record_drop(DropReason::TooOld);
                         }

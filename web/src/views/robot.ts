@@ -304,6 +304,12 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     if (!started && me?.online) start(topics);
     const now = Date.now() / 1000;
     if (me?.online) link.push(now, me.rtt_ms ?? null, me.latency_ms ?? null, me.link_rate_bps != null ? me.link_rate_bps / 1e6 : null);
+    // The data budget: what it allows, what the link uses, which topics give way.
+    const b = me?.budget;
+    const limits = b ? [b.max_bps != null ? `${bps(b.max_bps)}` : "", b.day_bytes != null ? `${num(b.day_bytes / 1e6, 0)} MB/day` : ""].filter((x) => x) : [];
+    linkP.info.textContent = b
+      ? ` · budget ${limits.join(" and ")}: using ${bps(b.use_bps)}${b.thinned.length ? `, thinning ${b.thinned.length} topic${b.thinned.length > 1 ? "s" : ""}` : ""}`
+      : "";
     linkChart.update();
     for (const t of topics.filter((x) => x.name.startsWith(`/${name}/`))) {
       let r = rows.get(t.name);
@@ -321,10 +327,12 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       }
       // Held back on the robot while nobody watches; opening a panel makes it flow. A pull
       // topic comes only when asked: one message per press of its button.
-      r.name.textContent = t.state === "idle" || t.state === "pull" ? `${t.name} (${t.state})` : t.name;
+      const state = t.state === "idle" || t.state === "pull" ? t.state : t.thinned ? "thinned" : "";
+      r.name.textContent = state ? `${t.name} (${state})` : t.name;
       r.name.title =
         t.state === "idle" ? "nobody is subscribed: the robot holds this topic back"
-        : t.state === "pull" ? "sent only when asked: one message per pull" : "";
+        : t.state === "pull" ? "sent only when asked: one message per pull"
+        : t.thinned ? "the robot's data budget holds this topic back (lowest priorities first)" : "";
       if (t.state === "pull" && !r.pull) {
         const out = el("div", "pulled");
         const topic = t.name;

@@ -86,6 +86,49 @@ pub struct AgentConfig {
     /// someone starts watching a topic, or asks for a pull topic). A topic whose latest
     /// message does not fit has none kept. Default 64; 0 keeps none.
     pub latest_cache_mb: u64,
+    /// The robot's link: its data budget.
+    pub link: LinkSettings,
+}
+
+/// `link:` — what the robot's link may carry.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct LinkSettings {
+    /// A data budget; `None` (the default): none.
+    pub budget: Option<BudgetSettings>,
+}
+
+/// `link.budget:` — at most `max_kbps` and/or `mb_per_day` on the link; as the budget is
+/// spent, topics below `protect_priority` are thinned, lowest priority first
+/// (docs/qos.md, "A data budget").
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BudgetSettings {
+    /// Kilobits per second (1 kbit = 1,000 bits), bytes on the wire.
+    #[serde(default)]
+    pub max_kbps: Option<f64>,
+    /// Megabytes (10^6 bytes) a day, at an even pace (an hour of it may go in a burst).
+    #[serde(default)]
+    pub mb_per_day: Option<f64>,
+    /// Topics of this priority or more are never held back. Default 10 (motion commands
+    /// and emergency stops; no-drop topics are never held back either).
+    #[serde(default = "default_protect_priority")]
+    pub protect_priority: f32,
+}
+
+fn default_protect_priority() -> f32 {
+    fleetlink_qos::budget::DEFAULT_PROTECT_PRIORITY
+}
+
+impl BudgetSettings {
+    /// The scheduler's form.
+    pub fn to_config(&self) -> fleetlink_qos::BudgetConfig {
+        fleetlink_qos::BudgetConfig {
+            max_bytes_per_sec: self.max_kbps.map(|k| k * 1000.0 / 8.0),
+            bytes_per_day: self.mb_per_day.map(|m| m * 1e6),
+            protect_priority: self.protect_priority,
+        }
+    }
 }
 
 impl Default for AgentConfig {
@@ -106,6 +149,7 @@ impl Default for AgentConfig {
             topics: BTreeMap::new(),
             outbox: None,
             latest_cache_mb: 64,
+            link: LinkSettings::default(),
         }
     }
 }

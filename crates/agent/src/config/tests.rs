@@ -639,3 +639,27 @@ fn the_latest_message_cache_has_a_bound_in_megabytes() {
     let text = err("name: r1\nlatest_cache_mb: lots\n").to_string();
     assert!(text.contains("latest_cache_mb"), "{text}");
 }
+
+#[test]
+fn a_data_budget_is_a_rate_and_or_a_daily_allowance() {
+    let cfg = AgentConfig::from_str(
+        "name: r1\nlink:\n  budget: { mb_per_day: 500, max_kbps: 400 }\n",
+        "robot.yaml",
+    )
+    .expect("valid");
+    let b = cfg.link.budget.as_ref().expect("a budget").to_config();
+    assert_eq!(b.max_bytes_per_sec, Some(50_000.0));
+    assert_eq!(b.bytes_per_day, Some(500e6));
+    assert_eq!(b.protect_priority, 10.0);
+    assert!(AgentConfig::default().link.budget.is_none());
+    let text = err("name: r1\nlink:\n  budget: { protect_priority: 8 }\n").to_string();
+    assert!(
+        text.contains("link.budget") && text.contains("max_kbps"),
+        "{text}"
+    );
+    let text = err("name: r1\nlink:\n  budget: { max_kbps: -3 }\n").to_string();
+    assert!(text.starts_with("robot.yaml:3:"), "{text}");
+    assert!(text.contains("max_kbps") && text.contains("> 0"), "{text}");
+    let text = err("name: r1\nlink:\n  budget: { mb_a_day: 5 }\n").to_string();
+    assert!(text.contains("mb_a_day"), "{text}");
+}

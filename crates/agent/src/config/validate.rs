@@ -101,6 +101,33 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
             ));
         }
     }
+    if let Some(b) = &cfg.link.budget {
+        for (field, v, unit) in [
+            ("link.budget.max_kbps", b.max_kbps, "kilobits per second"),
+            ("link.budget.mb_per_day", b.mb_per_day, "megabytes a day"),
+        ] {
+            if let Some(v) = v
+                && !(v.is_finite() && v > 0.0)
+            {
+                return Err(problem(
+                    field.into(),
+                    format!("must be > 0 ({unit}), got {v}"),
+                ));
+            }
+        }
+        if b.max_kbps.is_none() && b.mb_per_day.is_none() {
+            return Err(problem(
+                "link.budget".into(),
+                "sets no limit: give max_kbps (kilobits per second) and/or mb_per_day",
+            ));
+        }
+        if !(b.protect_priority.is_finite() && b.protect_priority > 0.0) {
+            return Err(problem(
+                "link.budget.protect_priority".into(),
+                format!("must be a number > 0, got {}", b.protect_priority),
+            ));
+        }
+    }
     if cfg.heartbeat_ms == 0 {
         return Err(problem("heartbeat_ms".into(), "must be > 0, got 0"));
     }

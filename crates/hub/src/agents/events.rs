@@ -322,6 +322,29 @@ impl RobotLink {
                 self.live.rate_bps.store(rate_bps, Relaxed);
                 self.live.latency_ns.store(latency_ns, Relaxed);
             }
+            LinkEvent::Control(Frame::Budget {
+                max_bps,
+                day_bytes,
+                used_bytes,
+                thinned,
+            }) => {
+                let report = crate::registry::RobotBudget {
+                    max_bps: (max_bps > 0).then_some(max_bps),
+                    day_bytes: (day_bytes > 0).then_some(day_bytes),
+                    used_bytes,
+                    use_bps: 0.0,
+                    thinned: thinned
+                        .iter()
+                        .filter_map(|a| self.topics.get(a).map(|p| p.name.to_string()))
+                        .collect(),
+                    at_ns: fleetlink_relay::unix_nanos(),
+                };
+                let mut b = self.live.budget.lock().unwrap_or_else(|p| p.into_inner());
+                *b = Some(match b.take() {
+                    Some(prev) => prev.then(report),
+                    None => report,
+                });
+            }
             LinkEvent::Control(Frame::Status { level, text, .. }) => {
                 tracing::info!(robot = %self.live.name, level = level.as_str(), "agent status: {text}");
             }

@@ -93,6 +93,14 @@ async fn robots(
                 "link_rate_bps": r.rate_bps.load(std::sync::atomic::Ordering::Relaxed),
                 "latency_ms": r.latency_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
                 "clock_offset_ms": r.clock_offset_ns().map(|o| o as f64 / 1e6),
+                // The robot's data budget, as its agent last reported it.
+                "budget": r.budget.lock().unwrap_or_else(|p| p.into_inner()).as_ref().map(|b| json!({
+                    "max_bps": b.max_bps,
+                    "day_bytes": b.day_bytes,
+                    "used_bytes": b.used_bytes,
+                    "use_bps": b.use_bps.round(),
+                    "thinned": b.thinned,
+                })),
         }));
     }
     let store = st.store.clone();
@@ -124,6 +132,20 @@ async fn topics(
 ) -> Json<Value> {
     let now = fleetlink_relay::unix_nanos();
     let mut access = st.security.access(me);
+    // Topics a robot's data budget holds back now.
+    let thinned: std::collections::HashSet<String> = st
+        .registry
+        .list()
+        .iter()
+        .filter_map(|r| {
+            r.budget
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .as_ref()
+                .map(|b| b.thinned.clone())
+        })
+        .flatten()
+        .collect();
     let list: Vec<Value> = st
         .router
         .topics()
@@ -141,6 +163,8 @@ async fn topics(
                 // A robot's topic that nobody wants is held back on the robot (idle).
                 // `pull`: sent only when a subscriber asks (POST …/pull, rosbridge `pull`).
                 "state": if t.topic.is_pull() { "pull" } else if t.topic.is_idle() { "idle" } else { "flowing" },
+                // Held back by its robot's data budget lately (thinned or paused).
+                "thinned": thinned.contains(t.meta.name.as_str()),
                 "subscribers": t.subscribers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
                 "rate_hz": (rate * 100.0).round() / 100.0,
                 "bandwidth_bps": bw.round(),

@@ -154,9 +154,60 @@ impl Collector for HubCollector {
             MetricType::Gauge,
         )?;
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
+        encode_budgets(&st.registry.list(), &mut enc)?;
         encode_audit(&st.security.audit, &mut enc)?;
         encode_front_door(&st.limits, &mut enc)
     }
+}
+
+/// Robots' data budgets: what each allows, what it counted, which topics it holds back.
+fn encode_budgets(
+    robots: &[Arc<crate::registry::LiveRobot>],
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    let budgets: Vec<(String, crate::registry::RobotBudget)> = robots
+        .iter()
+        .filter_map(|r| {
+            let b = r.budget.lock().unwrap_or_else(|p| p.into_inner()).clone()?;
+            Some((r.name.clone(), b))
+        })
+        .collect();
+    let mut m = enc.encode_descriptor(
+        "fleetlink_robot_budget_used_bytes",
+        "Bytes a robot's link counted against its data budget since the agent set it",
+        None,
+        MetricType::Counter,
+    )?;
+    for (name, b) in &budgets {
+        ConstCounter::new(b.used_bytes).encode(m.encode_family(&[("robot", name.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_robot_budget_allowed_bps",
+        "Bytes per second a robot's data budget allows over the long run (the lower of its \
+         rate limit and its daily pace)",
+        None,
+        MetricType::Gauge,
+    )?;
+    for (name, b) in &budgets {
+        let day = b.day_bytes.map(|d| d as f64 / 86_400.0);
+        let allowed = [b.max_bps.map(|r| r as f64), day]
+            .into_iter()
+            .flatten()
+            .fold(f64::INFINITY, f64::min);
+        ConstGauge::new(allowed).encode(m.encode_family(&[("robot", name.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_thinned",
+        "1 while a robot's data budget holds the topic back (thinned or paused)",
+        None,
+        MetricType::Gauge,
+    )?;
+    for (_, b) in &budgets {
+        for t in &b.thinned {
+            ConstGauge::new(1).encode(m.encode_family(&[("topic", t.as_str())])?)?;
+        }
+    }
+    Ok(())
 }
 
 /// The audit log's writer: what it stored and what it lost. A lost record is an

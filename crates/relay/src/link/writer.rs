@@ -427,7 +427,11 @@ fn for_link(
         .as_mut()
         .and_then(|c| c.apply(&msg.payload.bytes, Instant::now()))
     {
-        Some(envelope) => (Arc::new(msg.with_link_bytes(envelope)), true),
+        Some(envelope) => {
+            // The data budget counted the message at its full size.
+            outbox.on_compressed(msg.payload.len(), envelope.len());
+            (Arc::new(msg.with_link_bytes(envelope)), true)
+        }
         None => (msg, false),
     }
 }

@@ -121,6 +121,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             tls: None,
             outbox: None,
             latest_cache_bytes: 64 << 20,
+            budget: None,
         };
         let opts = AgentOptions {
             uplink,
