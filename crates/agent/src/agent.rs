@@ -282,13 +282,14 @@ impl Agent {
         let mut parts = Vec::new();
         let ros1 = self.ros1.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let interest = Some(self.uplink.read_interest());
             let stats = Arc::new(fleetlink_ros1::Ros1Stats::default());
             parts.push(crate::status::Part {
                 name: "ros1",
                 report: stats.clone(),
             });
             tokio::spawn(async move {
-                if let Err(e) = fleetlink_ros1::run(opts, router, stats, shutdown).await {
+                if let Err(e) = fleetlink_ros1::run(opts, router, stats, interest, shutdown).await {
                     tracing::error!("{e}");
                 }
             })
@@ -300,6 +301,7 @@ impl Agent {
         // the runtime were a deadlock in the Cyclone test peers: docs/ros2.md, "Tests".)
         let ros2 = self.ros2.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let interest = Some(self.uplink.read_interest());
             let stats = Arc::new(fleetlink_ros2::Ros2Stats::default());
             parts.push(crate::status::Part {
                 name: "ros2",
@@ -321,7 +323,9 @@ impl Agent {
                         }
                     };
                     rt.block_on(async move {
-                        if let Err(e) = fleetlink_ros2::run(opts, router, stats, shutdown).await {
+                        if let Err(e) =
+                            fleetlink_ros2::run(opts, router, stats, interest, shutdown).await
+                        {
                             tracing::error!("{e}");
                         }
                     })

@@ -234,6 +234,15 @@ pub struct Uplink {
 }
 
 impl Uplink {
+    /// What the robot's ROS bridges ask before reading a topic from the graph.
+    pub fn read_interest(&self) -> Arc<fleetlink_relay::read_interest::ReadInterest> {
+        Arc::new(fleetlink_relay::read_interest::ReadInterest::new(
+            self.router.clone(),
+            self.client,
+            self.outbox.clone(),
+        ))
+    }
+
     /// Attaches the uplink to the local router: from now on every local topic is queued
     /// for the hub. With a durable outbox, what a previous run left unconfirmed is queued
     /// first.

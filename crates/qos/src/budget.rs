@@ -5,7 +5,8 @@
 //! Each limit is a token bucket the link's bytes are taken from: every message the agent
 //! sends, protected or not, counted when the scheduler lets it go (so one batch cannot
 //! overdraw the budget) and corrected when it leaves smaller (compressed). A rate limit's
-//! bucket holds a second of it (at least 64 KiB), so the rate holds over any minute; the
+//! bucket holds a second of it (at least 64 KiB, and deeper when a message needs it, up to
+//! five seconds), so the rate holds over any minute; the
 //! daily allowance refills at its pace (a day's bytes spread over 86,400 s) and starts
 //! with, and saves up to, an hour of it, so a robot may burst after a quiet spell but not
 //! outrun the day's pace for long.
@@ -26,10 +27,23 @@ use crate::time::Nanos;
 const DAY_SECS: f64 = 86_400.0;
 /// Depth of the rate limit's bucket, in seconds of its rate ...
 const RATE_BURST_SECS: f64 = 1.0;
-/// ... but never less than this many bytes, so an ordinary large message fits.
+/// ... but never less than this many bytes, so an ordinary large message fits ...
 const RATE_BURST_MIN: f64 = 64.0 * 1024.0;
+/// ... and deepened to fit the largest message asked for (with a quarter to spare), up to
+/// this many seconds of its rate: a message larger than the bucket would overdraw it and
+/// hold the next messages of higher priorities back until the overdraft is paid.
+const RATE_BURST_MAX_SECS: f64 = 5.0;
 /// Depth of the daily allowance's bucket, in seconds of its pace (an hour).
 const DAY_BURST_SECS: f64 = 3_600.0;
+
+/// What a message of `len` payload bytes costs on the wire, as a data plan counts it: its
+/// frame header (about 16 bytes) and, per full-size segment, TCP, IP and Ethernet headers
+/// (66 bytes with TCP timestamps, 1,448 bytes of data a segment). Small messages share
+/// segments and WebSocket messages, so this overcounts them a little.
+pub fn wire_cost(len: usize) -> usize {
+    let framed = len + 16;
+    framed + framed.div_ceil(1448) * 66
+}
 
 /// A data budget as configured (validated by the agent's configuration).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,6 +75,14 @@ impl Bucket {
             depth,
             tokens: depth,
             at: now,
+        }
+    }
+
+    /// Deepens the bucket (not its tokens) so a message costing `cost` fits, within
+    /// `max_depth`.
+    fn fit(&mut self, cost: f64, max_depth: f64) {
+        if cost > self.depth {
+            self.depth = (cost * 1.25).min(max_depth).max(self.depth);
         }
     }
 
@@ -139,6 +161,9 @@ impl DataBudget {
     /// does not overdraw the budget that the next messages of higher priorities need.
     pub fn admits(&mut self, cost: usize, now: Nanos) -> bool {
         let cost = cost as f64;
+        if let Some(r) = &mut self.rate {
+            r.fit(cost, r.bytes_per_sec * RATE_BURST_MAX_SECS);
+        }
         let ok = [&mut self.rate, &mut self.day]
             .into_iter()
             .flatten()
@@ -281,8 +306,15 @@ mod tests {
         let at = b.opens_at().unwrap();
         assert!((at.as_secs_f64() - 0.1).abs() < 1e-3, "{at}");
         assert!(b.admits(20_000, secs(0.1001)));
-        // 500 kB never fit a 100 kB bucket: it goes when the bucket is full.
-        assert!(!b.admits(500_000, secs(0.5)));
-        assert!(b.admits(500_000, secs(0.91)));
+        // A 200 kB message deepens the bucket to fit it (250 kB, within 5 s of the rate),
+        // and goes when that much is saved ...
+        // (10 kB left at 0 s, 100 kB/s: 200 kB saved at 1.9 s).
+        assert!(!b.admits(200_000, secs(0.5)));
+        assert!(!b.admits(200_000, secs(1.8)));
+        assert!(b.admits(200_000, secs(1.91)));
+        // ... but 1 MB never fits (500 kB at most): it goes when the bucket is full.
+        b.debit(200_000, secs(1.91)); // 1 kB left
+        assert!(!b.admits(1_000_000, secs(5.0)));
+        assert!(b.admits(1_000_000, secs(6.91)));
     }
 }

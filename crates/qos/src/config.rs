@@ -30,8 +30,8 @@ pub enum Compression {
     None,
     /// LZ4: cheap on the robot's CPU, a smaller saving.
     Lz4,
-    /// zstd at its default level; ROS Gateway's `zip` and `rawzip` mean this (fleetlink
-    /// always carries a robot's messages in their raw ROS serialization).
+    /// zstd at its default level; ROS Gateway's `zip` and `rawzip` mean this (the ROS
+    /// bridges carry a robot's messages in their raw ROS serialization).
     #[serde(alias = "zip", alias = "rawzip")]
     Zstd,
     /// zstd at a fast level where it pays: a topic whose messages do not shrink (JPEG or

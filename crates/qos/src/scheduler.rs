@@ -158,6 +158,9 @@ pub struct Scheduler<T> {
     budget: Option<Budget>,
     /// The robot's data budget, if its owner set one (see [`crate::budget`]).
     data_budget: Option<DataBudget>,
+    /// The budget held the unprotected topics back at the last look: a message such a
+    /// topic loses from its queue meanwhile is lost to the budget (the topic is thinned).
+    budget_refused: bool,
 }
 
 impl<T: WireLen> Scheduler<T> {
@@ -177,6 +180,7 @@ impl<T: WireLen> Scheduler<T> {
             window_bytes: None,
             budget: None,
             data_budget: None,
+            budget_refused: false,
         }
     }
 
@@ -255,6 +259,11 @@ impl<T: WireLen> Scheduler<T> {
             }
             Lane::Queue(queue) => {
                 let outcome = queue.push(item, now);
+                if self.budget_refused
+                    && matches!(&outcome, Push::Dropped { reason, .. } if *reason != DropReason::RateLimit)
+                {
+                    t.thinned_at = Some(now);
+                }
                 if !t.ready && !t.held && !queue.is_empty() {
                     t.ready = true;
                     let since = t.last_sent.unwrap_or(now);
@@ -385,9 +394,11 @@ impl<T: WireLen> Scheduler<T> {
 
     /// How many groups (from the highest priority) may send now under the data budget:
     /// all of them while the next message of the highest ready priority fits it (or is
-    /// protected), else only the protected ones — the others wait, and are noted thinned.
+    /// protected), else only the protected ones — the others wait (and a topic whose queue
+    /// drops a message meanwhile is noted thinned, see [`Scheduler::offer`]).
     fn budget_eligible(&mut self, now: Nanos) -> usize {
         let all = self.groups.len();
+        self.budget_refused = false;
         let Some(b) = self.data_budget.as_mut() else {
             return all;
         };
@@ -405,20 +416,12 @@ impl<T: WireLen> Scheduler<T> {
                 Lane::NoDrop { .. } => 0,
             }
         });
-        if b.admits(cost, now) {
+        // Asked at what the message will be counted (see `Outbox::take_into`).
+        if b.admits(crate::budget::wire_cost(cost), now) {
             return all;
         }
-        self.mark_thinned(protected, now);
+        self.budget_refused = true;
         protected
-    }
-
-    /// Notes that the ready topics of groups `from..` wait for the data budget at `now`.
-    fn mark_thinned(&mut self, from: usize, now: Nanos) {
-        for g in &self.groups[from..] {
-            for Reverse((_, index)) in g.ready.iter() {
-                self.topics[*index as usize].thinned_at = Some(now);
-            }
-        }
     }
 
     /// Pops from the topic with the largest `priority × wait` among the first `eligible`
@@ -556,7 +559,8 @@ impl<T: WireLen> Scheduler<T> {
         }
     }
 
-    /// Topics that had to wait for the data budget at or after `since`.
+    /// Topics that lost a message to the data budget at or after `since` (their queue
+    /// dropped one while the budget held them back).
     pub fn thinned_since(&self, since: Nanos) -> impl Iterator<Item = TopicId> + '_ {
         self.topics
             .iter()

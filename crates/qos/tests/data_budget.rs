@@ -54,8 +54,10 @@ fn run(
         }
         while let Some((topic, m)) = s.poll_next(now) {
             s.on_acked(1, now);
-            s.debit_data(m.len, now);
-            bytes += m.len as u64;
+            // Counted as the agent counts it: with its headers on the wire.
+            let cost = fleetlink_qos::budget::wire_cost(m.len);
+            s.debit_data(cost, now);
+            bytes += cost as u64;
             let i = sources.iter().position(|x| x.id == topic).unwrap();
             counts[i].1 += 1;
         }

@@ -48,6 +48,7 @@ pub mod outbox;
 pub mod params;
 pub mod png;
 pub mod queue;
+pub mod read_interest;
 pub mod reliable;
 pub mod rosbridge;
 pub mod router;

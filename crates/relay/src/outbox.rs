@@ -16,6 +16,7 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::rosbridge::Compression;
 use tokio::sync::Notify;
 
+use fleetlink_qos::budget::wire_cost;
 use fleetlink_qos::{
     LinkConfig, LinkEstimator, Nanos, Push, Scheduler, SchedulerConfig, TopicId as QosTopic,
     TopicQos,
@@ -161,17 +162,8 @@ fn log_refusal(last: &mut Option<Instant>, now: Instant, topic: &crate::TopicNam
     tracing::error!("no_drop topic {topic}: message refused: {why}");
 }
 
-/// How long after it last waited for the data budget a topic counts as thinned.
+/// How long after it last lost a message to the data budget a topic counts as thinned.
 const THINNED_RECENT: Duration = Duration::from_secs(2);
-
-/// What a message of `len` payload bytes costs on the wire, as a data plan counts it: its
-/// frame header (about 16 bytes) and, per full-size segment, TCP, IP and Ethernet headers
-/// (66 bytes with TCP timestamps, 1,448 bytes of data a segment). Small messages share
-/// segments and WebSocket messages, so this overcounts them a little.
-pub fn wire_cost(len: usize) -> usize {
-    let framed = len + 16;
-    framed + framed.div_ceil(1448) * 66
-}
 
 /// A data budget's figures ([`Outbox::budget_figures`]).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -180,7 +172,8 @@ pub struct BudgetFigures {
     pub bytes_per_day: Option<f64>,
     /// Bytes counted against the budget since it was set.
     pub used_bytes: u64,
-    /// Link aliases of the topics the budget held back in the last two seconds.
+    /// Link aliases of the topics that lost a message to the budget in the last two
+    /// seconds.
     pub thinned: Vec<u32>,
 }
 
@@ -216,6 +209,8 @@ pub struct Outbox {
     /// Served by the scheduler (the agent's uplink); fixed at construction, so the
     /// per-frame link calls of a plain outbox return without taking the lock.
     scheduled: bool,
+    /// Woken when the peer's demand changes ([`Outbox::interest_changed`]).
+    interest: Notify,
 }
 
 /// A message taken by the writer: its slot, how to deliver it, the message.
@@ -284,6 +279,7 @@ impl Outbox {
             dropped: AtomicU64::new(0),
             sent: AtomicU64::new(0),
             scheduled,
+            interest: Notify::new(),
         })
     }
 
@@ -524,7 +520,7 @@ impl Outbox {
     }
 
     /// The data budget's figures for the hub, if a budget is set: the bytes per second it
-    /// allows, the bytes it counted, and the topics (link aliases) it held back lately.
+    /// allows, the bytes it counted, and the topics (link aliases) it thinned lately.
     pub fn budget_figures(&self, now: Instant) -> Option<BudgetFigures> {
         let st = self.lock();
         let Service::Scheduled { origin, sched, .. } = &st.service else {
@@ -647,6 +643,7 @@ impl Outbox {
             demand.driven = driven;
         }
         self.notify.notify_one();
+        self.interest.notify_waiters();
     }
 
     /// The peer wants the topic with link alias `alias` (or no longer does). When it
@@ -665,10 +662,16 @@ impl Outbox {
             return;
         };
         if !wanted {
-            demand.wanted.remove(&alias);
+            if demand.wanted.remove(&alias) {
+                self.interest.notify_waiters();
+            }
             return;
         }
-        if !demand.wanted.insert(alias) || demand.always.contains(&alias) {
+        if !demand.wanted.insert(alias) {
+            return;
+        }
+        self.interest.notify_waiters();
+        if demand.always.contains(&alias) {
             return;
         }
         demand.unannounced.remove(&alias);
@@ -736,6 +739,33 @@ impl Outbox {
     pub fn forget_announced(&self, alias: u32) {
         if let Service::Scheduled { demand, .. } = &mut self.lock().service {
             demand.announced.remove(&alias);
+        }
+    }
+
+    /// Whether the topic with link alias `alias` needs reading from its source for this
+    /// link: it is sent (wanted, `always`, no-drop, or a peer that does not say what it
+    /// wants) or a pull topic (its latest message must be at hand).
+    pub fn reads(&self, alias: u32) -> bool {
+        match &self.lock().service {
+            Service::Scheduled { demand, .. } => {
+                demand.flows(alias) || demand.pull.contains(&alias)
+            }
+            Service::RoundRobin { .. } => true,
+        }
+    }
+
+    /// Returns when the peer's demand next changes (a topic wanted or let go, interest
+    /// turned on or off).
+    pub async fn interest_changed(&self) {
+        self.interest.notified().await
+    }
+
+    /// Lets go of the latest message kept for topic `alias`.
+    pub fn forget_latest(&self, alias: u32) {
+        if let Service::Scheduled { demand, .. } = &mut self.lock().service
+            && let Some(old) = demand.latest.remove(&alias)
+        {
+            demand.latest_bytes -= old.payload.len();
         }
     }
 

@@ -255,6 +255,14 @@ impl Topic {
             .any(|s| s.client != publisher || s.own)
     }
 
+    /// Whether a client other than those in `but` subscribes to the topic.
+    pub fn has_subscriber_besides(&self, but: &[ClientId]) -> bool {
+        self.subscribers
+            .load()
+            .iter()
+            .any(|s| !but.contains(&s.client))
+    }
+
     /// Marks the topic idle (its publisher was told nobody wants it) or flowing.
     pub fn set_idle(&self, idle: bool) {
         self.idle.store(idle, Relaxed);

@@ -14,6 +14,7 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::CallStatus;
 use fleetlink_relay::calls::{CallRequest, ChannelPeer, PeerMsg, ServiceChange};
+use fleetlink_relay::read_interest::ReadInterest;
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::{ClientKind, Message, Router, TopicName};
 use tokio::net::TcpListener;
@@ -40,6 +41,7 @@ pub async fn run(
     opts: Ros1Options,
     router: Arc<Router>,
     stats: Arc<Ros1Stats>,
+    interest: Option<Arc<ReadInterest>>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros1Error> {
     let bind = |what| move |source| Ros1Error::Bind { what, source };
@@ -98,9 +100,23 @@ pub async fn run(
         )),
         tokio::spawn(discovery(node.clone(), shutdown.clone())),
     ];
+    // Topics nobody wants are not read (with an agent's uplink to ask).
+    let mut look = tokio::time::interval(INTEREST_LOOK);
+    look.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
     loop {
         tokio::select! {
             _ = shutdown.cancelled() => break,
+            // (A change between two turns of this loop is seen at the next look.)
+            _ = interest_changed(&interest) => {
+                if let Some(i) = &interest {
+                    follow_interest(&node, i, Instant::now());
+                }
+            }
+            _ = look.tick(), if interest.is_some() => {
+                if let Some(i) = &interest {
+                    follow_interest(&node, i, Instant::now());
+                }
+            }
             _ = outbox.ready() => loop {
                 let batch = outbox.take(64, 8 << 20, Instant::now());
                 if batch.items.is_empty() {
@@ -256,6 +272,18 @@ fn reconcile(node: &Arc<Node>, topic: &str, publishers: &[String], prune: bool) 
     let Some(sub) = st.subs.get_mut(topic) else {
         return;
     };
+    if prune || sub.publishers.is_empty() {
+        sub.publishers = wanted.iter().map(|s| (*s).to_owned()).collect();
+    } else {
+        for api in &wanted {
+            if !sub.publishers.iter().any(|p| p == api) {
+                sub.publishers.push((*api).to_owned());
+            }
+        }
+    }
+    if sub.paused {
+        return; // connected again when someone wants the topic
+    }
     if prune {
         sub.conns.retain(|api, c| {
             let keep = wanted.contains(api.as_str());
@@ -284,6 +312,59 @@ fn reconcile(node: &Arc<Node>, topic: &str, publishers: &[String], prune: bool) 
                 abort: task.abort_handle(),
             },
         );
+    }
+}
+
+/// How long a topic goes unwanted before the bridge stops reading it. A topic that a
+/// viewer opens and closes now and then keeps its connections (reconnecting costs more
+/// than reading a few seconds more); one nobody looks at stops costing the robot.
+pub const UNWANTED_BEFORE_PAUSE: Duration = Duration::from_secs(10);
+/// How often the bridge looks at what is wanted, besides when the hub's demand changes.
+const INTEREST_LOOK: Duration = Duration::from_secs(1);
+
+/// Returns when the link's demand changes; never without an uplink to ask.
+async fn interest_changed(interest: &Option<Arc<ReadInterest>>) {
+    match interest {
+        Some(i) => i.changed().await,
+        None => std::future::pending().await,
+    }
+}
+
+/// Pauses reading the topics nobody has wanted for [`UNWANTED_BEFORE_PAUSE`] (their
+/// publisher connections closed; the master registration kept, so publisher lists stay
+/// current) and resumes those wanted again (connected to their publishers at once).
+fn follow_interest(node: &Arc<Node>, interest: &ReadInterest, now: Instant) {
+    let mut resume = Vec::new();
+    {
+        let mut st = node.lock();
+        for (topic, sub) in st.subs.iter_mut() {
+            let Ok(name) = TopicName::parse(topic) else {
+                continue;
+            };
+            if interest.wanted(&name, node.client) {
+                sub.unwanted_since = None;
+                if sub.paused {
+                    sub.paused = false;
+                    tracing::info!("ros1: {topic} is wanted again; reading it");
+                    resume.push((topic.clone(), sub.publishers.clone()));
+                }
+                continue;
+            }
+            let since = *sub.unwanted_since.get_or_insert(now);
+            if !sub.paused && now.saturating_duration_since(since) >= UNWANTED_BEFORE_PAUSE {
+                sub.paused = true;
+                for c in sub.conns.values() {
+                    c.abort.abort();
+                }
+                sub.conns.clear();
+                interest.stopped_reading(&name);
+                node.stats.paused.fetch_add(1, Relaxed);
+                tracing::info!("ros1: nobody wants {topic}; no longer reading it");
+            }
+        }
+    }
+    for (topic, publishers) in resume {
+        reconcile(node, &topic, &publishers, true);
     }
 }
 
@@ -589,6 +670,9 @@ async fn follow_topics(node: &Arc<Node>, wanted: &[(String, String)]) {
                 ros_type: ty.clone(),
                 conns: Default::default(),
                 seq: Arc::new(AtomicU64::new(0)),
+                publishers: Vec::new(),
+                paused: false,
+                unwanted_since: None,
             },
         );
         match node.master.register_subscriber(&topic, &ty).await {

@@ -148,6 +148,12 @@ pub struct Subscription {
     pub conns: HashMap<String, Conn>,
     /// Sequence numbers of messages published into the router, shared by connections.
     pub seq: Arc<AtomicU64>,
+    /// The publishers' APIs the master last listed, kept while reading is paused.
+    pub publishers: Vec<String>,
+    /// Not read for now: nobody wants the topic ([`crate::bridge`], `follow_interest`).
+    pub paused: bool,
+    /// Since when nobody has wanted it, while that lasts.
+    pub unwanted_since: Option<std::time::Instant>,
 }
 
 pub struct Conn {
@@ -201,6 +207,8 @@ pub struct Ros1Stats {
     pub dropped_down: AtomicU64,
     /// Each type mismatch as its log line says it.
     pub problems: Problems,
+    /// Times a topic stopped being read because nobody wanted it.
+    pub paused: AtomicU64,
 }
 
 impl AdapterReport for Ros1Stats {
@@ -212,6 +220,7 @@ impl AdapterReport for Ros1Stats {
             ("dropped_down", get(&self.dropped_down)),
             ("type_mismatches", get(&self.type_mismatches)),
             ("master_registrations", get(&self.master_registrations)),
+            ("paused_reading", get(&self.paused)),
         ]
     }
 
@@ -688,6 +697,9 @@ mod tests {
                 ros_type: "std_msgs/String".into(),
                 conns: HashMap::new(),
                 seq: Arc::default(),
+                publishers: Vec::new(),
+                paused: false,
+                unwanted_since: None,
             },
         );
         let update = |topic: &str, i: usize| {

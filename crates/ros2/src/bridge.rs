@@ -15,6 +15,7 @@ use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::ChannelPeer;
 use fleetlink_relay::names::ClientId;
+use fleetlink_relay::read_interest::ReadInterest;
 use fleetlink_relay::router::{RouteError, SubOptions, Target};
 use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
@@ -125,6 +126,8 @@ pub struct Stats {
     /// Times it rejoined because rustdds had lost a participant that still announced
     /// itself ([`crate::lost_peers`]).
     pub stranded_peer_rejoins: AtomicU64,
+    /// Times a topic's reader was dropped because nobody wanted the topic.
+    pub paused_reading: AtomicU64,
     /// Each unknown type and type mismatch as its log line says it.
     pub problems: Problems,
 }
@@ -141,6 +144,7 @@ impl AdapterReport for Stats {
             ("participant_restarts", get(&self.participant_restarts)),
             ("network_rejoins", get(&self.network_rejoins)),
             ("stranded_peer_rejoins", get(&self.stranded_peer_rejoins)),
+            ("paused_reading", get(&self.paused_reading)),
         ]
     }
 
@@ -149,11 +153,30 @@ impl AdapterReport for Stats {
     }
 }
 
-/// A local topic sent up: its router topic, the writers feeding it, its reader task.
+/// A local topic sent up: its router topic, the writers feeding it, its reader task
+/// (none while nobody wants the topic read), and what makes its reader again.
 struct Up {
     writers: HashSet<GUID>,
-    task: AbortHandle,
+    task: Option<AbortHandle>,
+    reading: Arc<Reading>,
+    /// Since when nobody has wanted it, while that lasts.
+    unwanted_since: Option<Instant>,
 }
+
+/// What a bridged-up topic's reader is made from, kept while the topic is not read.
+struct Reading {
+    dds_topic: String,
+    dds_type: String,
+    qos: QosPolicies,
+    topic: Arc<Topic>,
+    /// Numbers of the messages put into the router, across readers.
+    seq: AtomicU64,
+}
+
+/// How long a topic goes unwanted before the bridge drops its reader. A topic that a
+/// viewer opens and closes now and then keeps its reader (matching a new one costs more
+/// than reading a few seconds more); one nobody looks at stops costing the robot.
+pub const UNWANTED_BEFORE_PAUSE: std::time::Duration = std::time::Duration::from_secs(10);
 
 /// A router topic written into the graph.
 struct Down {
@@ -281,6 +304,8 @@ pub struct Bridge {
     /// The readers and writers the bridge has made.
     pub(crate) endpoints: Arc<OwnEndpoints>,
     state: Mutex<State>,
+    /// Asked whether a topic needs reading at all (with an agent's uplink).
+    interest: Option<Arc<ReadInterest>>,
 }
 
 impl Bridge {
@@ -545,13 +570,14 @@ pub async fn run(
     opts: Ros2Options,
     router: Arc<Router>,
     stats: Arc<Stats>,
+    interest: Option<Arc<ReadInterest>>,
     shutdown: CancellationToken,
 ) -> Result<(), Ros2Error> {
     const FIRST_PAUSE: std::time::Duration = std::time::Duration::from_secs(1);
     let mut pause = FIRST_PAUSE;
     loop {
         let started = Instant::now();
-        let ended = run_participant(opts.clone(), &router, &stats, &shutdown).await;
+        let ended = run_participant(opts.clone(), &router, &stats, &interest, &shutdown).await;
         if started.elapsed() > std::time::Duration::from_secs(60) {
             pause = FIRST_PAUSE;
         }
@@ -607,6 +633,7 @@ async fn run_participant(
     opts: Ros2Options,
     router: &Arc<Router>,
     stats: &Arc<Stats>,
+    interest: &Option<Arc<ReadInterest>>,
     shutdown: &CancellationToken,
 ) -> Result<End, Ros2Error> {
     let domain = opts.domain_id;
@@ -644,6 +671,7 @@ async fn run_participant(
         own,
         endpoints: Arc::default(),
         state: Mutex::new(State::default()),
+        interest: interest.clone(),
     });
     let mut node_info = crate::node_info::NodeInfo::new(&bridge).map_err(Ros2Error::Endpoint)?;
     tracing::info!(
@@ -711,6 +739,8 @@ async fn run_participant(
                 discover(&bridge);
                 node_info.refresh(&bridge);
             }
+            // (A change between two turns of this loop is seen at the next tick.)
+            _ = interest_changed(interest) => follow_interest(&bridge, Instant::now()),
             _ = outbox.ready() => loop {
                 let batch = outbox.take(64, 8 << 20, Instant::now());
                 if batch.items.is_empty() {
@@ -733,8 +763,8 @@ async fn run_participant(
         }
     };
     let st = std::mem::take(&mut *bridge.lock());
-    for up in st.up.values() {
-        up.task.abort();
+    for task in st.up.values().filter_map(|u| u.task.as_ref()) {
+        task.abort();
     }
     for r in st.remotes.values() {
         r.abort();
@@ -794,7 +824,64 @@ fn discover(bridge: &Arc<Bridge>) {
             start_up(bridge, &ros, &ws);
         }
     }
+    follow_interest(bridge, Instant::now());
     services::discover(bridge);
+}
+
+/// Returns when the link's demand changes; never without an uplink to ask.
+async fn interest_changed(interest: &Option<Arc<ReadInterest>>) {
+    match interest {
+        Some(i) => i.changed().await,
+        None => std::future::pending().await,
+    }
+}
+
+/// Drops the reader of each topic nobody has wanted for [`UNWANTED_BEFORE_PAUSE`] (the
+/// local writers then stop sending to the agent) and makes one again for each topic
+/// wanted again.
+fn follow_interest(bridge: &Arc<Bridge>, now: Instant) {
+    let Some(interest) = &bridge.interest else {
+        return;
+    };
+    let mut resume = Vec::new();
+    {
+        let mut st = bridge.lock();
+        for (ros, up) in st.up.iter_mut() {
+            let name = up.reading.topic.name();
+            if interest.wanted(&name, bridge.client) {
+                up.unwanted_since = None;
+                if up.task.is_none() {
+                    resume.push(ros.clone());
+                }
+                continue;
+            }
+            let since = *up.unwanted_since.get_or_insert(now);
+            if let Some(task) = &up.task
+                && now.saturating_duration_since(since) >= UNWANTED_BEFORE_PAUSE
+            {
+                task.abort(); // the reader goes with its task
+                up.task = None;
+                interest.stopped_reading(&name);
+                bridge.stats.paused_reading.fetch_add(1, Relaxed);
+                tracing::info!("ros2: nobody wants {ros}; no longer reading it");
+            }
+        }
+    }
+    for ros in resume {
+        let Some(reading) = bridge.lock().up.get(&ros).map(|u| u.reading.clone()) else {
+            continue;
+        };
+        match bridge.reader(&reading.dds_topic, &reading.dds_type, reading.qos.clone()) {
+            Ok(reader) => {
+                let task = tokio::spawn(pump_up(bridge.clone(), reading, reader)).abort_handle();
+                if let Some(up) = bridge.lock().up.get_mut(&ros) {
+                    up.task = Some(task);
+                }
+                tracing::info!("ros2: {ros} is wanted again; reading it");
+            }
+            Err(e) => tracing::warn!("ros2: cannot read {ros} again: {e}"),
+        }
+    }
 }
 
 /// Starts bridging local topic `ros` up, with a reader matching its first writer.
@@ -864,7 +951,7 @@ fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::Disc
             return;
         }
     };
-    let reader = match bridge.reader(&p.topic_name, &p.type_name, qos) {
+    let reader = match bridge.reader(&p.topic_name, &p.type_name, qos.clone()) {
         Ok(r) => r,
         Err(e) => {
             tracing::warn!("ros2: cannot bridge {ros}: {e}");
@@ -877,7 +964,14 @@ fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::Disc
         if latched { ", latched" } else { "" },
         if reliable { "" } else { ", best effort" }
     );
-    let task = tokio::spawn(pump_up(bridge.clone(), topic, reader)).abort_handle();
+    let reading = Arc::new(Reading {
+        dds_topic: p.topic_name.clone(),
+        dds_type: p.type_name.clone(),
+        qos,
+        topic,
+        seq: AtomicU64::new(0),
+    });
+    let task = tokio::spawn(pump_up(bridge.clone(), reading.clone(), reader)).abort_handle();
     bridge.lock().up.insert(
         ros.to_owned(),
         Up {
@@ -885,7 +979,9 @@ fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::Disc
                 .iter()
                 .map(|w| w.publication_topic_data.key)
                 .collect(),
-            task,
+            task: Some(task),
+            reading,
+            unwanted_since: None,
         },
     );
 }
@@ -895,7 +991,9 @@ fn stop_up(bridge: &Bridge, ros: &str) {
     let Some(up) = bridge.lock().up.remove(ros) else {
         return;
     };
-    up.task.abort();
+    if let Some(task) = up.task {
+        task.abort();
+    }
     if let Ok(name) = TopicName::parse(ros) {
         bridge.router.unadvertise(bridge.client, &name);
     }
@@ -903,9 +1001,9 @@ fn stop_up(bridge: &Bridge, ros: &str) {
 }
 
 /// Forwards a reader's samples to the router as they arrived.
-async fn pump_up(bridge: Arc<Bridge>, topic: Arc<Topic>, reader: RawReader) {
+async fn pump_up(bridge: Arc<Bridge>, reading: Arc<Reading>, reader: RawReader) {
+    let topic = &reading.topic;
     let mut samples = reader.async_sample_stream();
-    let mut seq = 0u64;
     while let Some(r) = samples.next().await {
         match r {
             Ok(sample) => {
@@ -913,7 +1011,7 @@ async fn pump_up(bridge: Arc<Bridge>, topic: Arc<Topic>, reader: RawReader) {
                 if bridge.is_own(sample.sample_info().writer_guid()) {
                     continue;
                 }
-                seq += 1;
+                let seq = reading.seq.fetch_add(1, Relaxed) + 1;
                 topic.publish(
                     bridge.client,
                     seq,

@@ -21,6 +21,7 @@ const { values: o } = parseArgs({
     shots: { type: "string" }, robot: { type: "string", default: "robot1" },
     browser: { type: "string", default: "/usr/bin/chromium" },
     "offline-robot": { type: "string" }, "offline-pid": { type: "string" },
+    "pull-robot": { type: "string" },
   },
 });
 mkdirSync(o.shots, { recursive: true });
@@ -228,6 +229,22 @@ try {
   await page.click(".filters button[type=submit]");
   const logins = await until(page, () => { const rows = [...document.querySelectorAll("table.audit tbody tr")]; return /page 1/.test(document.querySelector(".pager").textContent) && rows.length > 0 && rows.every((r) => r.children[3].textContent === "login") && rows.map((r) => r.children[1].textContent); }, null, 5000, "audit log filtered by action");
   if (logins) check(logins.includes(`user:${o.user}`), `audit filter action=login: ${logins.join(", ")}`);
+  // --- a pull topic (the robot sends /markers only when asked): its button in the topic
+  // table asks the hub (POST …/topics/markers/pull), which asks the robot for one message
+  // and shows it.
+  if (o["pull-robot"]) {
+    step = "pull";
+    const pr = o["pull-robot"];
+    await page.goto(`${o.url}#/robot/${pr}`);
+    const ready = await until(page, () => !!([...document.querySelectorAll("table.topics tbody tr")].find((tr) => /\/markers \(pull\)/.test(tr.children[0].textContent)))?.querySelector("button"), null, 10000, `${pr}: /markers listed as a pull topic with its button`);
+    if (ready) {
+      ok(`${pr}: /markers listed "(pull)" with a pull button`);
+      await page.evaluate(() => ([...document.querySelectorAll("table.topics tbody tr")].find((tr) => /\/markers \(pull\)/.test(tr.children[0].textContent))).querySelector("button").click());
+      const shown = await until(page, () => { const t = ([...document.querySelectorAll("table.topics tbody tr")].find((tr) => /\/markers \(pull\)/.test(tr.children[0].textContent)))?.querySelector(".pulled")?.textContent ?? ""; return t.length > 20 && t; }, null, 10000, `${pr}: the pulled message shown`);
+      if (shown) check(/markers/.test(shown) && !/pull failed/.test(shown), `pull button: one MarkerArray pulled from ${pr} and shown (${shown.slice(0, 60)}…)`);
+      await shot(page, "7-pull", true);
+    }
+  }
   check(errors.length === 0, `no page errors (${errors.slice(0, 3).join(" | ")})`);
   // Sign out ends the session at the hub: the token no longer opens the API.
   step = "signout";

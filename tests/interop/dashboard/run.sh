@@ -68,6 +68,8 @@ alice_password="dashboard-$RANDOM-$RANDOM"
 printf '%s\n' "$alice_password" | admin users add alice --group admin >/dev/null
 # A fourth robot outside the demo process, stopped mid-test to see it go offline.
 robot4_token="$(admin token robot robot4)"
+# A fifth whose /markers is a pull topic (the topic table's pull button).
+robot5_token="$(admin token robot robot5)"
 admin rules import - >/dev/null <<'RULES'
 rules:
   - subject: {user: viewer}
@@ -94,18 +96,31 @@ EOF
 "$bin" agent --name robot4 --config "$tmp/robot4.yaml" >"$tmp/agent.log" 2>&1 &
 pids+=($!)
 robot4_pid=$!
-# Ready: four robots online (bounded, 15 s).
+cat >"$tmp/robot5.yaml" <<EOF
+hub: ws://$addr/
+name: robot5
+token: $robot5_token
+local_rosbridge: null
+sim:
+  seed: 5
+  markers: { rate_hz: 2 }
+topics:
+  /markers: { mode: pull }
+EOF
+"$bin" agent --config "$tmp/robot5.yaml" >"$tmp/agent5.log" 2>&1 &
+pids+=($!)
+# Ready: five robots online (bounded, 15 s).
 for i in $(seq 150); do
     n="$(curl -fsS -H "Authorization: Bearer $op_token" "http://$addr/api/v1/robots" 2>/dev/null | grep -o '"online":true' | wc -l || true)"
-    [ "$n" -ge 4 ] && break
-    [ "$i" -eq 150 ] && { echo "FAIL: 4 robots not online within 15 s" >&2; exit 1; }
+    [ "$n" -ge 5 ] && break
+    [ "$i" -eq 150 ] && { echo "FAIL: 5 robots not online within 15 s" >&2; exit 1; }
     sleep 0.1
 done
 
 echo "== headless Chromium"
 if ! timeout --kill-after=5 120 node "$here/dashboard_check.mjs" --url "http://$addr/" \
         --user alice --password "$alice_password" --viewer-token "$viewer_token" --shots "$shots" \
-        --offline-robot robot4 --offline-pid "$robot4_pid"; then
+        --offline-robot robot4 --offline-pid "$robot4_pid" --pull-robot robot5; then
     failed+=("browser checks")
 fi
 kill -0 "${pids[0]}" 2>/dev/null || failed+=("demo process died")

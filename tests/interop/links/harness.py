@@ -216,14 +216,20 @@ class Fleet:
         self.hub_port = int(m.group(1))
         return self.hub
 
-    def hub_drops(self, topic):
-        """Messages of `topic` the hub's subscriber queues lost (its /metrics), or None."""
+    def metrics(self):
+        """The hub's /metrics text, or None if it did not answer within 5 s."""
         req = urllib.request.Request(f"http://127.0.0.1:{self.hub_port}/metrics",
                                      headers={"Authorization": f"Bearer {self.op_token}"})
         try:
             with urllib.request.urlopen(req, timeout=5) as r:
-                text = r.read().decode()
+                return r.read().decode()
         except OSError:
+            return None
+
+    def hub_drops(self, topic):
+        """Messages of `topic` the hub's subscriber queues lost (its /metrics), or None."""
+        text = self.metrics()
+        if text is None:
             return None
         return sum(float(ln.rsplit(" ", 1)[1]) for ln in text.splitlines()
                    if ln.startswith("fleetlink_topic_drops") and f'topic="{topic}"' in ln)
@@ -256,10 +262,11 @@ class Fleet:
         return f"ws://{host}:{self.hub_port}/?token={self.op_token}"
 
     # --- agent
-    def agent_yaml(self, sim, topics=None):
+    def agent_yaml(self, sim, topics=None, link=None):
         """`sim`: False (no simulator), True (the point cloud only) or the `sim:` map as
         YAML text. `topics`: more entries of the `topics:` map, local name -> QoS as YAML
-        text (`{ compression: none }`)."""
+        text (`{ compression: none }`). `link`: the `link:` map as YAML text
+        (`{ budget: { max_kbps: 400 } }`), None for none."""
         lines = [
             f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
             "name: robot1",
@@ -275,22 +282,24 @@ class Fleet:
             "  /probe/fast: { priority: 10, policy: latest }",
         ]
         lines += [f"  {name}: {qos}" for name, qos in (topics or {}).items()]
+        if link is not None:
+            lines.append(f"link: {link}")
         if isinstance(sim, str):
             lines.append(f"sim: {sim}")
         elif sim:
             lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
         return "\n".join(lines) + "\n"
 
-    def start_agent(self, sim=False, same_outbox=False, topics=None):
+    def start_agent(self, sim=False, same_outbox=False, topics=None, link=None):
         """A fresh outbox directory per agent, unless this is a restart of the last one (a
-        fresh agent must not replay an earlier scenario's leftovers). `topics`: see
-        `agent_yaml`."""
+        fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`:
+        see `agent_yaml`."""
         if not same_outbox:
             self.agents += 1
             self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
         path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
         with open(path, "w") as f:
-            f.write(self.agent_yaml(sim, topics))
+            f.write(self.agent_yaml(sim, topics, link))
         self.agent = self.procs.start("agent", self.net.robot_ns, [self.bin, "agent", "--config", path])
         m = self.procs.wait_line(self.agent, r"^  local rosbridge: (ws://[0-9.:]+/)$", 15, "agent start")
         self.local_url = m.group(1)
@@ -355,6 +364,25 @@ class Fleet:
         log = os.path.join(self.tmp, f"{tag}.sensorsub")
         p = self.peer("sensorsub", self.net.hub_ns, log, "--url", self.hub_url())
         self.procs.wait_line(p, r"^sensorsub: subscribed", 15, "lidar and camera subscriber start")
+        return p, log
+
+    def start_twist(self, tag, topic, hz):
+        """A program on the robot publishing a motion command (geometry_msgs/msg/Twist) on
+        `topic` at `hz` on the agent's local listener."""
+        log = os.path.join(self.tmp, f"{tag}.twist")
+        p = self.peer("twist", self.net.robot_ns, log, "--url", self.local_url, "--topic", topic,
+                      "--hz", str(hz))
+        self.procs.wait_line(p, r"^twist: connected", 15, f"{topic} publisher start")
+        return p, log
+
+    def start_watch(self, tag, topics):
+        """A roslibpy viewer at the hub of `topics`: {short: (hub name, ROS type)}."""
+        log = os.path.join(self.tmp, f"{tag}.watch")
+        args = []
+        for short, (name, ros_type) in topics.items():
+            args += ["--topic", f"{short}={name}={ros_type}"]
+        p = self.peer("watch", self.net.hub_ns, log, "--url", self.hub_url(), *args)
+        self.procs.wait_line(p, r"^watch: subscribed", 15, "hub viewer start")
         return p, log
 
     def start_pub(self, tag, fast_hz=50, reliable_hz=50, start_seq=1, count=0, duration=0):
@@ -451,6 +479,32 @@ def read_pub(path):
     for p in read_lines(path):
         if len(p) == 3 and p[0].startswith("/probe/"):
             out[p[0][len("/probe/"):]].append((int(p[1]), int(p[2])))
+    return out
+
+
+def read_twist(path):
+    """A twist publisher's log -> [(seq, sent ns)]."""
+    out = []
+    for p in read_lines(path):
+        if len(p) == 3 and p[0] == "twist":
+            try:
+                out.append((int(p[1]), int(p[2])))
+            except ValueError:
+                continue  # a half-written last line
+    return out
+
+
+def read_watch(path):
+    """A hub viewer's log (peers.py watch) -> {short: [(recv ns, id or None)]}."""
+    out = {}
+    for p in read_lines(path):
+        if len(p) != 3:
+            continue
+        try:
+            rec = (int(p[1]), None if p[2] == "-" else int(p[2]))
+        except ValueError:
+            continue  # a half-written last line
+        out.setdefault(p[0], []).append(rec)
     return out
 
 

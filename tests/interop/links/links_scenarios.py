@@ -13,7 +13,7 @@ import time
 from websockets.sync.client import connect
 
 from harness import (Failed, log_time_ns, now_ns, percentile, read_blobs, read_calls, read_points,
-                     read_pub, read_sub, reliable_audit, wait_until)
+                     read_pub, read_sub, read_twist, read_watch, reliable_audit, wait_until)
 
 IDLE_P99_FLOOR_MS = float(os.environ.get("LINKS_IDLE_P99_FLOOR_MS", "15"))
 PROBE_MBIT = 0.2          # the probes (2 x 50 Hz small strings) and pings, on the wire
@@ -1076,6 +1076,162 @@ def scenario_compression(fleet, _nominal):
     return rows
 
 
+# --- 9. a data budget
+
+BUDGET_KBPS = 400                        # link: { budget: { max_kbps } }: kbit/s ...
+BUDGET_BPS = BUDGET_KBPS * 1000 / 8      # ... 50,000 B/s, against ~1.35 MB/s of demand
+BUDGET_TOLERANCE = 0.10                  # the veth's rate over the minute: within 10 % of it
+BUDGET_WINDOW_S = 60.0
+BUDGET_WARMUP_S = 5.0                    # past the first second's full bucket
+BUDGET_SAMPLE_S = 1.0                    # the hub's budget report: about once a second
+KEPT_SHARE = 0.95                        # of the highest priorities' rates
+MOTION_TOPIC = "/cmd_vel_echo"           # geometry_msgs/msg/Twist: priority 10, protected
+MOTION_HZ = 20
+# The simulator's five sensors (sim: {}), each `always: true` so all of them want the link;
+# nominal rates and default priorities (docs/qos.md) for the report.
+BUDGET_SIM = {"/odom": (20, 8), "/pose": (10, 8), "/scan": (10, 3),
+              "/camera/image/compressed": (10, 2), "/points": (5, 1)}
+ODOM_HZ = BUDGET_SIM["/odom"][0]
+
+
+def budget_report(fleet, timeout=5.0):
+    """The robot's next budget report at the hub: polls GET /api/v1/robots until its
+    `used_bytes` changes (a report arrived), so a window starts and ends on one.
+    -> (monotonic s, ns, the robot's listing)."""
+    first = fleet.robot_status()
+    used = ((first or {}).get("budget") or {}).get("used_bytes")
+
+    def fresh():
+        st = fleet.robot_status()
+        b = (st or {}).get("budget")
+        return st if b is not None and b.get("used_bytes") != used else None
+    st = wait_until(fresh, timeout, "a budget report from robot1 at the hub", interval=0.02)
+    return time.monotonic(), now_ns(), st
+
+
+def metric_lines(text, name):
+    return [ln for ln in (text or "").splitlines() if ln.startswith(name + "{")]
+
+
+def scenario_budget(fleet, _nominal):
+    """The simulated robot's five sensors, every topic `always: true` (~1.35 MB/s wanted),
+    and a program on the robot publishing a motion command (Twist, priority 10: protected)
+    at 20 Hz, under `link: { budget: { max_kbps: 400 } }` (50,000 B/s). Over a minute the
+    robot's veth must send within 10 % of the budget, the motion command and the odometry
+    (priority 8, the highest the budget covers) must keep their rates at a hub viewer, and
+    the hub must report the budget and list the point cloud (priority 1) as thinned, never
+    the motion command."""
+    hub = {t: f"/robot1{t}" for t in BUDGET_SIM}
+    motion = f"/robot1{MOTION_TOPIC}"
+    fleet.start_agent(sim="{}", topics={t: "{ always: true }" for t in BUDGET_SIM},
+                      link=f"{{ budget: {{ max_kbps: {BUDGET_KBPS} }} }}")
+    watch = twist = None
+    samples = []
+    try:
+        watch, watch_log = fleet.start_watch("budget", {
+            "twist": (motion, "geometry_msgs/msg/Twist"), "odom": (hub["/odom"], "nav_msgs/msg/Odometry")})
+        twist, twist_log = fleet.start_twist("budget", MOTION_TOPIC, MOTION_HZ)
+        wait_until(lambda: all(len(read_watch(watch_log).get(k, [])) >= 5 for k in ("twist", "odom")), 15,
+                   f"{motion} and {hub['/odom']} at the hub viewer")
+        time.sleep(BUDGET_WARMUP_S)
+        m0, t0, st0 = budget_report(fleet)
+        b0 = fleet.net.robot_tx_bytes()
+        topics0 = {t["name"]: t for t in fleet.hub_topics()}
+        while time.monotonic() < m0 + BUDGET_WINDOW_S - BUDGET_SAMPLE_S:
+            time.sleep(BUDGET_SAMPLE_S)
+            st = fleet.robot_status()
+            if st is not None and st.get("budget") is not None:
+                samples.append(st)
+        m1, t1, st1 = budget_report(fleet)
+        b1 = fleet.net.robot_tx_bytes()
+        topics1 = {t["name"]: t for t in fleet.hub_topics()}
+        metrics = fleet.metrics()
+        fleet.procs.stop(twist)
+        twist = None
+        time.sleep(1.0)  # the last motion commands' way to the viewer
+    finally:
+        for p in (twist, watch):
+            if p is not None:
+                fleet.procs.stop(p)
+        fleet.stop_agent()
+    w = m1 - m0
+    rows = []
+
+    veth = (b1 - b0) / w
+    lo, hi = BUDGET_BPS * (1 - BUDGET_TOLERANCE), BUDGET_BPS * (1 + BUDGET_TOLERANCE)
+    rows.append((f"robot uplink (veth tx) over {w:.1f} s, budget {BUDGET_KBPS} kbit/s = {BUDGET_BPS:,.0f} B/s",
+                 f"{veth:,.0f} B/s ({veth / BUDGET_BPS - 1:+.1%})",
+                 f"{lo:,.0f}-{hi:,.0f} B/s (within {BUDGET_TOLERANCE:.0%})", lo <= veth <= hi))
+    b_0, b_1 = st0["budget"], st1["budget"]
+    used = (b_1["used_bytes"] - b_0["used_bytes"]) / w
+    demand = percentile([st.get("demand_bps") or 0 for st in samples], 50)
+    link_rate = percentile([st.get("link_rate_bps") or 0 for st in samples], 50)
+    rows.append(("counted against the budget (hub: budget.used_bytes) in the same window",
+                 f"{used:,.0f} B/s (veth - counted: {veth - used:,.0f} B/s); the agent's reports "
+                 f"(medians): demand_bps {demand:,.0f}, link_rate_bps {link_rate:,.0f}", "", None))
+    rows.append(("the hub's budget report (GET /api/v1/robots)",
+                 f"max_bps {b_1.get('max_bps')}, day_bytes {b_1.get('day_bytes')}, "
+                 f"use_bps {b_1.get('use_bps')}", f"max_bps = {BUDGET_BPS:.0f}",
+                 b_1.get("max_bps") == round(BUDGET_BPS)))
+
+    # The motion command: every one published in the window, at the viewer.
+    sent = [q for q, t in read_twist(twist_log) if t0 <= t < t1]
+    rx = read_watch(watch_log)
+    got = {i for _, i in rx.get("twist", [])}
+    kept = sum(1 for q in sent if q in got) / len(sent) if sent else 0.0
+    rows.append((f"{motion} (Twist, priority 10: protected) at the hub viewer",
+                 f"{kept:.1%}: {sum(1 for q in sent if q in got)}/{len(sent)} published in the window "
+                 f"({len(sent) / w:.1f} Hz)", f">= {KEPT_SHARE:.0%}", kept >= KEPT_SHARE))
+    odom = sorted(i for r, i in rx.get("odom", []) if t0 <= r < t1)
+    odom_hz = len(odom) / w
+    gap = max((b - a for a, b in zip(odom, odom[1:])), default=0) / 1e6
+    rows.append((f"{hub['/odom']} (Odometry, priority 8: the highest the budget covers) at the hub viewer",
+                 f"{odom_hz:.2f} Hz ({odom_hz / ODOM_HZ:.1%} of the simulator's {ODOM_HZ} Hz); "
+                 f"longest gap between stamps {gap:.0f} ms",
+                 f">= {KEPT_SHARE:.0%} of {ODOM_HZ} Hz", odom_hz >= KEPT_SHARE * ODOM_HZ))
+
+    def hz(name):
+        a, b = topics0.get(name, {}).get("messages") or 0, topics1.get(name, {}).get("messages") or 0
+        return (b - a) / w
+    rates = [f"{t[1:]} {hz(hub[t]):.2f}/{nominal} ({prio})" for t, (nominal, prio) in BUDGET_SIM.items()]
+    rates.append(f"{MOTION_TOPIC[1:]} {hz(motion):.2f}/{MOTION_HZ} (10)")
+    rows.append(("messages/s at the hub in the window / nominal (priority)", ", ".join(rates), "", None))
+
+    # Which topics the hub listed thinned, sampled about once a second over the minute (the
+    # samples are kept beside the logs: budget-samples.jsonl).
+    with open(os.path.join(fleet.tmp, "budget-samples.jsonl"), "w") as f:
+        for st in samples:
+            f.write(json.dumps(st) + "\n")
+    named = [hub[t] for t in BUDGET_SIM] + [motion]
+    share = {n: sum(1 for st in samples if n in st["budget"].get("thinned", [])) / max(1, len(samples))
+             for n in named}
+    others = sorted({n for st in samples for n in st["budget"].get("thinned", [])} - set(named))
+    listing = ", ".join(f"{n.rsplit('/robot1/', 1)[1]} {share[n]:.0%}" for n in named)
+    if others:
+        listing += f"; others: {others}"
+    rows.append((f"listed in budget.thinned (GET /api/v1/robots), share of {len(samples)} samples",
+                 listing, "", None))
+    rows.append((f"{hub['/points']} (priority 1, paused) in budget.thinned", f"{share[hub['/points']]:.0%} of samples",
+                 "100 %", bool(samples) and share[hub["/points"]] == 1.0))
+    rows.append((f"{motion} (protected) in budget.thinned", f"{share[motion]:.0%} of samples",
+                 "0 %", bool(samples) and share[motion] == 0.0))
+    rows.append((f"{hub['/odom']} (the highest the budget covers, kept at its rate) in budget.thinned",
+                 f"{share[hub['/odom']]:.0%} of samples", "0 %", bool(samples) and share[hub["/odom"]] == 0.0))
+    flag = {n: topics1.get(n, {}).get("thinned") for n in (hub["/points"], motion, hub["/odom"])}
+    rows.append(("thinned per topic at the end (GET /api/v1/topics)",
+                 ", ".join(f"{n}: {v}" for n, v in flag.items()),
+                 f"{hub['/points']} true, {motion} false",
+                 flag[hub["/points"]] is True and flag[motion] is False))
+    cloud = [ln for ln in metric_lines(metrics, "fleetlink_topic_thinned") if f'topic="{hub["/points"]}"' in ln]
+    allowed = metric_lines(metrics, "fleetlink_robot_budget_allowed_bps")
+    rows.append(("/metrics at the end", "; ".join(cloud + allowed) or "no budget metrics",
+                 f'fleetlink_topic_thinned{{topic="{hub["/points"]}"}} 1',
+                 len(cloud) == 1 and cloud[0].rsplit(" ", 1)[1] == "1"))
+    for row in rows:
+        print(f"   {row[0]}: {row[1]} [{'ok' if row[3] else ('' if row[3] is None else 'FAIL')}]", flush=True)
+    return rows
+
+
 SCENARIOS = [
     ("1", "blackouts 5/10/30 s", scenario_blackouts),
     ("2", "bandwidth ramp 100 -> 4 Mbit/s", scenario_ramp),
@@ -1085,4 +1241,6 @@ SCENARIOS = [
     ("6", "dead link with calls in flight", scenario_calls_dead_link),
     ("7", "interest: idle robot link, viewers come and go", scenario_interest),
     ("8", "compression: auto shrinks a point cloud, leaves a JPEG alone", scenario_compression),
+    ("9", "data budget: 400 kbit/s held over a minute, the highest priorities keep their rates",
+     scenario_budget),
 ]

@@ -31,6 +31,12 @@
           roslibpy subscriber at the hub on /<robot>/cloud and /<robot>/camera/compressed;
           logs every message as "<cloud|jpeg> <recv ns> <stamp ns> <sha256 of the
           base64-decoded data> <bytes>". The stamp identifies a message in both logs.
+  twist   roslibpy publisher on the agent's local rosbridge listener: --topic
+          (geometry_msgs/msg/Twist, a motion command's type) at --hz, the sequence number
+          in linear.x. Logs every publish as "twist <seq> <send ns>".
+  watch   roslibpy subscriber at the hub on each --topic SHORT=NAME=TYPE; logs every
+          message as "<short> <recv ns> <id>", the id being linear.x as an integer (the
+          twist peer's sequence number) for a Twist, else header.stamp in ns, else "-".
   loris   slowloris: N TCP connections that send a request line and then one header
           line a second, never finishing; logs "closed <seconds after open>" per
           connection the server closes, "open <n>" at the end for the rest.
@@ -390,6 +396,55 @@ def run_sensorsub(a):
     ros.close()
 
 
+def run_twist(a):
+    log = open_log(a.log)
+    ros = ros_connect(a.url)
+    topic = roslibpy.Topic(ros, a.topic, "geometry_msgs/msg/Twist")
+    topic.advertise()
+    print("twist: connected", flush=True)
+    zero = {"x": 0.0, "y": 0.0, "z": 0.0}
+    period, seq, next_at = 1.0 / a.hz, 0, time.monotonic()
+    while not stop.is_set():
+        seq += 1
+        now_ns = time.time_ns()
+        topic.publish(roslibpy.Message({"linear": {"x": float(seq), "y": 0.0, "z": 0.0}, "angular": zero}))
+        log.write(f"twist {seq} {now_ns}\n")
+        next_at += period
+        delay = next_at - time.monotonic()
+        if delay > 0:
+            stop.wait(delay)
+        else:
+            next_at = time.monotonic()  # fell behind: no burst to catch up
+    time.sleep(0.5)  # as run_pub: what publish() queued leaves before the close
+    ros.close()
+
+
+def run_watch(a):
+    log = LockedLog(open_log(a.log))
+    ros = ros_connect(a.url)
+    show_status(ros, log)
+
+    def handler(short):
+        def on_msg(m):
+            recv = time.time_ns()
+            if "linear" in m:
+                ident = str(int(m["linear"]["x"]))
+            elif "header" in m:
+                st = m["header"]["stamp"]
+                ident = str(st["sec"] * 1_000_000_000 + st["nanosec"])
+            else:
+                ident = "-"
+            log.write(f"{short} {recv} {ident}\n")
+        return on_msg
+
+    for spec in a.topic:
+        short, name, ros_type = spec.split("=", 2)
+        roslibpy.Topic(ros, name, ros_type).subscribe(handler(short))
+    print("watch: subscribed", flush=True)
+    stop.wait()
+    ros.close()
+
+
 def run_loris(a):
     log = open_log(a.log)
     sel = selectors.DefaultSelector()
@@ -538,6 +593,15 @@ def main():
         p.add_argument("--url", required=True, help="hub URL with ?token=")
         p.add_argument("--robot", default="robot1")
         p.add_argument("--log", required=True)
+    p = sp.add_parser("twist")
+    p.add_argument("--url", required=True, help="the agent's local listener")
+    p.add_argument("--topic", default="/cmd_vel_echo")
+    p.add_argument("--hz", type=float, default=20)
+    p.add_argument("--log", required=True)
+    p = sp.add_parser("watch")
+    p.add_argument("--url", required=True, help="hub URL with ?token=")
+    p.add_argument("--topic", action="append", required=True, help="SHORT=NAME=TYPE, repeatable")
+    p.add_argument("--log", required=True)
     p = sp.add_parser("loris")
     p.add_argument("--host", required=True)
     p.add_argument("--port", type=int, required=True)
@@ -560,7 +624,7 @@ def main():
     signal.signal(signal.SIGINT, on_term)
     {"pub": run_pub, "direct": run_direct, "sub": run_sub, "points": run_points, "loris": run_loris,
      "caller": run_caller, "provider": run_provider, "sensors": run_sensors,
-     "sensorsub": run_sensorsub}[a.cmd](a)
+     "sensorsub": run_sensorsub, "twist": run_twist, "watch": run_watch}[a.cmd](a)
     return 0
 
 

@@ -245,6 +245,23 @@ def publish_once(args):
     check("error" not in got, f"/{args.robot}/oneshot published once (then rosapi topics answered)")
 
 
+def check_resume(args):
+    """A viewer at the hub opens /<robot>/idle_points, which the agent stopped reading:
+    a fresh message arrives within a few seconds (the agent connects to the publisher
+    again and the next 10 Hz message comes up)."""
+    ros = connect(args.hub_url)
+    t0 = time.time()
+    m = first(ros, f"/{args.robot}/idle_points", "sensor_msgs/PointCloud2", wait=10)
+    took = time.time() - t0
+    check(m is not None and m["width"] == 50_000, f"/{args.robot}/idle_points arrived {took:.2f} s after the subscribe")
+    if m is not None:
+        stamp = m["header"]["stamp"]
+        age = t0 - (stamp.get("secs", stamp.get("sec", 0)) + stamp.get("nsecs", stamp.get("nanosec", 0)) / 1e9)
+        # Fresh, not a message kept from before reading stopped.
+        check(age < 3.0, f"the first message was published {age:.2f} s before the subscribe (< 3 s: read afresh)")
+    print(f"resume: {took:.2f} s", flush=True)
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("mode")
@@ -253,7 +270,7 @@ def main():
     p.add_argument("--robot", required=True)
     args = p.parse_args()
     {"serve": serve, "check-up": check_up, "check-after": check_after, "check-status": check_status,
-     "check-params": check_params, "publish-once": publish_once}[args.mode](args)
+     "check-params": check_params, "publish-once": publish_once, "check-resume": check_resume}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

@@ -141,6 +141,39 @@ def oneshot():
     print(f"ok: a rospy subscriber waiting for /oneshot got the hub's single message {ONESHOT!r}", flush=True)
 
 
+IDLE_POINTS = 50_000  # 16 bytes each: an 800 kB cloud at 10 Hz
+
+
+def idle_cloud():
+    """A lidar driver nobody at the hub watches: /idle_points, an 800 kB PointCloud2 at
+    10 Hz. The agent should stop reading it (its connection to this node closes)."""
+    rospy.init_node("idle_cloud", disable_signals=True)
+    pub = rospy.Publisher("/idle_points", PointCloud2, queue_size=2)
+    m = PointCloud2()
+    m.header.frame_id = "lidar"
+    m.height, m.width = 1, IDLE_POINTS
+    m.fields = [PointField(n, 4 * i, PointField.FLOAT32, 1) for i, n in enumerate(["x", "y", "z", "intensity"])]
+    m.is_bigendian, m.point_step, m.row_step, m.is_dense = False, 16, 16 * IDLE_POINTS, True
+    m.data = b"".join(struct.pack("<ffff", (i % 500) * 0.02, (i // 500) * 0.02, 1.0, 7.0) for i in range(IDLE_POINTS))
+    print("idle_cloud ready", flush=True)
+    rate = rospy.Rate(10)
+    while not rospy.is_shutdown():
+        m.header.stamp = rospy.Time.now()
+        pub.publish(m)
+        rate.sleep()
+
+
+def connected_to(node, topic, peer):
+    """Whether `node`'s bus (its slave API's getBusInfo, as `rosnode info` reads it) has a
+    connection on `topic` with `peer`. Prints yes/no."""
+    import xmlrpc.client
+    import rosgraph
+    api = rosgraph.Master("/probe").lookupNode(node)
+    code, _, info = xmlrpc.client.ServerProxy(api).getBusInfo("/probe")
+    hit = code == 1 and any(c[1] == peer and c[4] == topic for c in info)
+    print("yes" if hit else "no", flush=True)
+
+
 def wrongtype():
     rospy.init_node("wrong_type", disable_signals=True)
     rospy.Subscriber("/cmd_vel", String, lambda m: print(f"unexpected: {m}", flush=True))
@@ -157,5 +190,9 @@ if __name__ == "__main__":
         oneshot()
     elif sys.argv[1] == "wrongtype":
         wrongtype()
+    elif sys.argv[1] == "idle_cloud":
+        idle_cloud()
+    elif sys.argv[1] == "connected":
+        connected_to(sys.argv[2], sys.argv[3], sys.argv[4])
     else:
         sys.exit(f"unknown mode {sys.argv[1]}")

@@ -116,7 +116,7 @@ local_rosbridge: null
 ros1:
   master_uri: $ROS_MASTER_URI
   publish:
-    include: [/scan, /points, /custom, /chatter, /after_restart]
+    include: [/scan, /points, /custom, /chatter, /after_restart, /idle_points]
   subscribe: [/cmd_vel, /announce, /chatter, /oneshot]
   services:
     expose: [/set_enabled, /add_two_ints]
@@ -132,6 +132,10 @@ pids+=($!)
 wait_for_line "$tmp/serve.log" '^(serve) ready$' "hub serve" "${pids[-1]}" >/dev/null
 
 step() { echo "== $1"; }
+
+"$rospython" "$here/ros_peer.py" idle_cloud >"$tmp/idle_cloud.log" 2>&1 &
+pids+=($!)
+idle_cloud_pid=${pids[-1]}
 
 step "1. robot -> hub: values and services"
 timeout --kill-after=5 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" || fail "check-up"
@@ -217,6 +221,29 @@ timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-status --hub-url "
 after="$(cmd_count)"
 [ "$after" -gt "$before" ] && echo "ok: /cmd_vel kept flowing ($before -> $after messages)" \
     || fail "/cmd_vel stopped during the mismatch ($before -> $after)"
+
+step "4a. a topic nobody wants is not read from the graph"
+# /idle_points (800 kB at 10 Hz) has had no viewer at the hub since the agent bridged it:
+# after 10 s unwanted the agent closes its connection to the publisher (rospy's own bus
+# info says so) and stops spending CPU on it; a viewer at the hub gets it again at once.
+cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat"; }
+cpu_pct() { # pid seconds -> percent of one core over that window
+    local a b; a="$(cpu_ticks "$1")"; sleep "$2"; b="$(cpu_ticks "$1")"
+    echo "$(( (b - a) * 100 / ($(getconf CLK_TCK) * $2) ))"
+}
+connected() { timeout 20 "$rospython" "$here/ros_peer.py" connected /idle_cloud /idle_points "/fleetlink_$robot" 2>/dev/null || echo "?"; }
+if wait_for_line "$tmp/agent.log" '.*(nobody wants /idle_points); no longer reading it.*' "the agent pausing /idle_points" "$agent_pid" >/dev/null; then
+    echo "ok: the agent stopped reading /idle_points (nobody at the hub wants it)"
+    c="$(connected)"
+    [ "$c" = no ] && echo "ok: rospy's bus info shows no connection from the agent on /idle_points"         || fail "rospy's /idle_cloud still lists a connection to the agent on /idle_points ($c)"
+    paused_agent="$(cpu_pct "$agent_pid" 5)"; paused_pub="$(cpu_pct "$idle_cloud_pid" 5)"
+    timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-resume --hub-url "$hub_url" --robot "$robot"         || fail "check-resume (/idle_points wanted again)"
+    c="$(connected)"
+    [ "$c" = yes ] && echo "ok: rospy's bus info shows the agent connected again on /idle_points"         || fail "no connection from the agent on /idle_points after a viewer came ($c)"
+    echo "figures: CPU with /idle_points unwatched and not read: agent ${paused_agent} %, publisher ${paused_pub} % (see docs/benchmarks.md for the comparison with reading it)"
+else
+    fail "the agent did not stop reading /idle_points: $(grep -m3 idle_points "$tmp/agent.log" || true)"
+fi
 
 step "5. roscore restart"
 kill -TERM "$roscore_pid"; wait "$roscore_pid" 2>/dev/null || true

@@ -322,6 +322,21 @@ def check_late(args):
           f"{name} (a participant started after the agent) arrives at the hub: {m and dict(m)}")
 
 
+def check_resume(args):
+    """A viewer at the hub opens /<robot>/idle_points, which the agent stopped reading:
+    a fresh message arrives within a few seconds (the agent makes its reader again and
+    the next 10 Hz message comes up)."""
+    ros = connect(args.hub_url)
+    t0 = time.time()
+    m = first(ros, f"/{args.robot}/idle_points", "sensor_msgs/msg/PointCloud2", wait=10)
+    took = time.time() - t0
+    check(m is not None and m["width"] == 10_000, f"/{args.robot}/idle_points arrived {took:.2f} s after the subscribe")
+    if m is not None:
+        stamp = m["header"]["stamp"]
+        age = t0 - (stamp.get("sec", stamp.get("secs", 0)) + stamp.get("nanosec", stamp.get("nsecs", 0)) / 1e9)
+        check(age < 3.0, f"the first message was published {age:.2f} s before the subscribe (< 3 s: read afresh)")
+
+
 def check_gone(args):
     name = f"/{args.robot}/late_topic"
     ros = connect(args.hub_url)
@@ -493,7 +508,7 @@ def serve(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds", "check-params", "publish-once"])
+    p.add_argument("mode", choices=["serve", "check-up", "check-latched", "check-calls", "check-action", "check-late", "check-gone", "serve-fib", "check-fastdds", "check-params", "publish-once", "check-resume"])
     p.add_argument("out", nargs="?")
     p.add_argument("--hub-url", required=True)
     p.add_argument("--robot", required=True)
@@ -509,7 +524,7 @@ def main():
     {"serve": serve, "check-up": check_up, "check-latched": check_latched, "check-calls": check_calls,
      "check-action": check_action, "check-late": check_late, "check-gone": check_gone,
      "serve-fib": serve_fib, "check-fastdds": check_fastdds,
-     "check-params": check_params, "publish-once": publish_once}[args.mode](args)
+     "check-params": check_params, "publish-once": publish_once, "check-resume": check_resume}[args.mode](args)
     print(f"{args.mode}: {len(failures)} failure(s)", flush=True)
     os._exit(1 if failures else 0)
 

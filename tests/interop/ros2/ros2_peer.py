@@ -60,6 +60,7 @@ import json
 import os
 import random
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
@@ -523,6 +524,29 @@ def late(args):
         time.sleep(0.2)
 
 
+def idle_cloud(args):
+    """A lidar driver nobody at the hub watches: /idle_points, a 160 kB PointCloud2 at
+    10 Hz. Prints `matched N` whenever the number of readers matched to its writer
+    changes: the agent's reader goes when the agent stops reading the topic, and comes
+    back when a viewer at the hub wants it."""
+    n = 10_000
+    w = Node().writer(topic_name("/idle_points"), T.PointCloud2)
+    fields = [T.PointField(name=f, offset=4 * i, datatype=7, count=1) for i, f in enumerate(["x", "y", "z", "intensity"])]
+    data = list(b"".join(struct.pack("<ffff", (i % 100) * 0.05, (i // 100) * 0.05, 1.0, 7.0) for i in range(n)))
+    log("idle_cloud ready")
+    matched = -1
+    while True:
+        now = time.time()
+        stamp = T.Time(sec=int(now), nanosec=int((now % 1) * 1e9))
+        w.write(T.PointCloud2(header=T.Header(stamp=stamp, frame_id="lidar"), height=1, width=n, fields=fields,
+                              is_bigendian=False, point_step=16, row_step=16 * n, data=data, is_dense=True))
+        m = len(w.get_matched_subscriptions())
+        if m != matched:
+            matched = m
+            log(f"matched {m}")
+        time.sleep(0.1)
+
+
 # ---------------------------------------------------------------- self-test
 
 class SelfTest:
@@ -769,7 +793,7 @@ def delivery_check(args):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "announce-node", "first-message", "call-greet", "call-fib", "late", "delivery-check", "selftest"])
+    p.add_argument("mode", choices=["msg-package", "graph", "announce", "node-info", "announce-node", "first-message", "call-greet", "call-fib", "late", "delivery-check", "selftest", "idle-cloud"])
     p.add_argument("path", nargs="?", help="msg-package: DIR; graph: OUT; delivery-check: (child, internal)")
     p.add_argument("--msg-path")
     p.add_argument("--chatter-stop")
@@ -787,7 +811,7 @@ def main():
         return graph(args)
     if args.mode in ("node-info", "announce-node") and not args.node:
         p.error(f"{args.mode} needs --node")
-    return {"announce": announce, "node-info": node_info, "announce-node": announce_node, "first-message": first_message, "call-greet": call_greet, "call-fib": call_fib, "late": late,
+    return {"announce": announce, "node-info": node_info, "announce-node": announce_node, "first-message": first_message, "call-greet": call_greet, "call-fib": call_fib, "late": late, "idle-cloud": idle_cloud,
             "delivery-check": delivery_check, "selftest": selftest}[args.mode](args)
 
 

@@ -217,7 +217,7 @@ name: $robot
 token: $robot_token
 local_rosbridge: null
 ros2:
-  publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up], exclude: [] }
+  publish: { include: [/scan, /points, /battery, /robot_description, /chatter, /late_topic, /fdds_up, /idle_points], exclude: [] }
   subscribe: [/cmd_vel, /announce, /chatter, /fdds_down, /oneshot]
   services: { expose: [/add_two_ints, /fdds_add_two_ints], offer: ["/cloud/.*"] }
   actions: { expose: [/fibonacci, /fdds_fibonacci], offer: ["/cloud/.*"] }
@@ -329,6 +329,35 @@ step "7. a participant started after the agent"
 ns_bg "$python" "$here/ros2_peer.py" late >"$tmp/late.log" 2>&1 &
 pids+=($!)
 ns_run 40 "$python" "$here/hub_peer.py" check-late --hub-url "$hub_url" --robot "$robot" || fail "check-late (/late_topic)"
+
+step "7b. a topic nobody wants is not read from the graph"
+# /idle_points (160 kB at 10 Hz) has no viewer at the hub: after 10 s unwanted the agent
+# drops its reader (the Cyclone writer sees its matched readers go to 0); a viewer at the
+# hub gets it again at once (matched again).
+ns_bg "$python" "$here/ros2_peer.py" idle-cloud >"$tmp/idle.log" 2>&1 &
+pids+=($!)
+idle_pid=${pids[-1]}
+matched() { # N: wait (bounded) until the writer's last report is `matched N`
+    for _ in $(seq 300); do
+        [ "$(grep '^matched' "$tmp/idle.log" | tail -n1)" = "matched $1" ] && return 0
+        kill -0 "$idle_pid" 2>/dev/null || return 1
+        sleep 0.1
+    done
+    return 1
+}
+if matched 1; then
+    echo "ok: the agent reads /idle_points at first (one reader matched)"
+    if matched 0; then
+        grep -q 'nobody wants /idle_points; no longer reading it' "$tmp/agent.log"             && echo "ok: the agent stopped reading /idle_points: the Cyclone writer has no reader matched"             || fail "the writer lost its reader, but the agent did not say it paused /idle_points"
+        ns_run 40 "$python" "$here/hub_peer.py" check-resume --hub-url "$hub_url" --robot "$robot"             || fail "check-resume (/idle_points wanted again)"
+        matched 1 && echo "ok: the agent reads /idle_points again (its reader matched again)"             || fail "no reader matched /idle_points after a viewer came: $(tail -n 3 "$tmp/idle.log")"
+    else
+        fail "the agent kept reading /idle_points nobody wants: $(grep idle_points "$tmp/agent.log" | tail -n 3)"
+    fi
+else
+    fail "the agent never read /idle_points: $(tail -n 3 "$tmp/idle.log")"
+fi
+kill -TERM "$idle_pid" 2>/dev/null || true
 
 step "8. /chatter both ways: no loop"
 touch "$tmp/chatter.stop"

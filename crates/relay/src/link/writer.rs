@@ -272,7 +272,8 @@ pub async fn write_link<K>(
             announce(&mut buf, &mut advertised, &msg, &namer, &outbox);
         }
         // 4. A batch from the outbox.
-        outbox.take_into(&mut items, 512, 4 << 20, Instant::now());
+        // When it takes nothing, the time its data budget next lets something go.
+        let budget_wake = outbox.take_into(&mut items, 512, 4 << 20, Instant::now());
         let took = items.len();
         for (_, _, msg) in items.drain(..) {
             // Checked on delivery, so a rule change reaches live subscriptions.
@@ -386,7 +387,7 @@ pub async fn write_link<K>(
         let mut wake = outbox
             .is_scheduled()
             .then(|| tokio::time::Instant::now() + PROBE_TICK);
-        if let Some(Some(at)) = gated {
+        for at in [gated.flatten(), budget_wake].into_iter().flatten() {
             let at = tokio::time::Instant::from_std(at);
             wake = Some(wake.map_or(at, |w| w.min(at)));
         }

@@ -248,6 +248,7 @@ async fn bridges_both_ways_and_registers_again_after_a_master_restart() {
         options(&master),
         router.clone(),
         Arc::default(),
+        None,
         shutdown.clone(),
     ));
 
@@ -478,6 +479,7 @@ async fn services_cross_both_ways() {
         opts,
         router.clone(),
         Arc::default(),
+        None,
         shutdown.clone(),
     ));
 

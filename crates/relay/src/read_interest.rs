@@ -1,0 +1,61 @@
+//! Whether a robot's ROS bridges need to read a topic from the graph at all: a topic that
+//! no local subscriber wants and the hub's link holds back (nobody at the hub watches it)
+//! costs the robot's CPU for nothing — the bridge deserializes nothing, but it still
+//! receives every message, and its publisher serializes them for it. The bridges ask
+//! [`ReadInterest::wanted`] and stop reading a topic unwanted for a while (each bridge
+//! decides how long; see docs/qos.md, "Reading only what is wanted").
+
+use std::sync::Arc;
+
+use crate::names::{ClientId, TopicName};
+use crate::outbox::Outbox;
+use crate::router::Router;
+
+/// The agent's answer to "does anyone want this topic read?" (see the module docs).
+pub struct ReadInterest {
+    router: Arc<Router>,
+    /// The agent's uplink: its subscription to everything counts only as far as its
+    /// outbox sends the topic.
+    uplink: ClientId,
+    outbox: Arc<Outbox>,
+}
+
+impl ReadInterest {
+    pub fn new(router: Arc<Router>, uplink: ClientId, outbox: Arc<Outbox>) -> ReadInterest {
+        ReadInterest {
+            router,
+            uplink,
+            outbox,
+        }
+    }
+
+    /// Whether `topic`, which `reader` publishes into the router, is wanted: it is latched
+    /// (its one message must be at hand), a local subscriber other than `reader` and the
+    /// uplink has it, or the uplink sends it (the hub wants it, `always`, no-drop, a pull
+    /// topic, or a hub that does not say what it wants). A topic the router does not know
+    /// yet is wanted (nothing is known against it).
+    pub fn wanted(&self, topic: &TopicName, reader: ClientId) -> bool {
+        let Some(t) = self.router.topic(topic) else {
+            return true;
+        };
+        if t.is_latched() || t.has_subscriber_besides(&[reader, self.uplink]) {
+            return true;
+        }
+        self.outbox.reads(t.id().0)
+    }
+
+    /// The link's demand changed (the hub started or stopped wanting a topic): look
+    /// again. Local subscribers coming and going are not signalled; bridges also look
+    /// now and then.
+    pub async fn changed(&self) {
+        self.outbox.interest_changed().await
+    }
+
+    /// The bridge stopped reading `topic`: its latest message, kept for a viewer to come,
+    /// would be stale by then, so it is let go (the viewer gets the next one read).
+    pub fn stopped_reading(&self, topic: &TopicName) {
+        if let Some(t) = self.router.topic(topic) {
+            self.outbox.forget_latest(t.id().0);
+        }
+    }
+}
