@@ -53,6 +53,8 @@ export interface TopicInfo {
   bytes: number;
   last_message_ms: number | null;
   drops?: Record<string, number>;
+  /** What the robot lost of the topic before its link, by reason (its agent's report). */
+  robot_drops?: Record<string, number>;
   /** A robot's topic nobody wants is held back on the robot: `idle`; `pull`: sent only
    * when asked (POST /api/v1/robots/{robot}/topics/{topic}/pull). */
   state?: "flowing" | "idle" | "pull";

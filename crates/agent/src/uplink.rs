@@ -42,7 +42,9 @@ use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::reliable::ReliableOut;
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::websocket::ClientMessage;
-use fleetlink_relay::{ClientId, ClientKind, Outbox, Router, Topic, TopicId, TopicName};
+use fleetlink_relay::{
+    ClientId, ClientKind, DropReason, Outbox, Router, Topic, TopicId, TopicName,
+};
 use futures_util::{SinkExt, StreamExt};
 use tokio::sync::{mpsc, watch};
 use tokio_tungstenite::tungstenite::Message as WsMessage;
@@ -635,6 +637,8 @@ impl Uplink {
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
         // Local topics carried up that have lost their last publisher (a ROS node gone).
         let mut unpublished: HashSet<TopicId> = HashSet::new();
+        // Each topic's drop counts as last told to the hub on this connection.
+        let mut drops_told: HashMap<TopicId, [u64; DropReason::ALL.len()]> = HashMap::new();
         let mut timer = drive::Timer::default();
         let reason = 'serve: loop {
             while let Some(ev) = session.poll_event() {
@@ -652,7 +656,9 @@ impl Uplink {
                         }
                         self.stats.rtt_ns.store(rtt.as_nanos() as u64, Relaxed);
                     }
-                    Event::ReportDue => self.report(&mut session, &ctrl_tx, &mut unpublished),
+                    Event::ReportDue => {
+                        self.report(&mut session, &ctrl_tx, &mut unpublished, &mut drops_told)
+                    }
                     Event::Hello { .. } | Event::Opened { .. } => {}
                 }
             }
@@ -709,20 +715,34 @@ impl Uplink {
     }
 
     /// Once a second: the hub hears what this robot would send and what its link carries
-    /// (for sharing a site's access link among its robots), and which local topics lost
-    /// their last publisher, so it stops listing them.
+    /// (for sharing a site's access link among its robots), which local topics lost
+    /// their last publisher, so it stops listing them, and what each topic lost here
+    /// (`TOPIC_DROPS`, for the topics whose counts changed).
     fn report(
         &self,
         session: &mut LinkSession,
         writer: &mpsc::Sender<Control>,
         unpublished: &mut HashSet<TopicId>,
+        drops_told: &mut HashMap<TopicId, [u64; DropReason::ALL.len()]>,
     ) {
         let me = self.client;
+        let mut drops = Vec::new();
         for t in self.router.topics() {
             if !t.subscribers.contains(&me) {
                 continue; // not carried up
             }
             let id = t.meta.id;
+            let counts = DropReason::ALL.map(|r| t.stats.drops(r));
+            if counts.iter().any(|n| *n > 0) && drops_told.get(&id) != Some(&counts) {
+                drops_told.insert(id, counts);
+                let by_reason = DropReason::ALL
+                    .iter()
+                    .zip(counts)
+                    .filter(|(_, n)| *n > 0)
+                    .map(|(r, n)| (r.index() as u8, n))
+                    .collect();
+                drops.push((id.0, by_reason));
+            }
             if t.publishers.iter().any(|c| *c != me) {
                 unpublished.remove(&id);
             } else if !unpublished.contains(&id) {
@@ -743,6 +763,9 @@ impl Uplink {
                 rate_bps: f.rate_bps as u64,
                 latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
             });
+        }
+        if !drops.is_empty() {
+            session.send(Frame::TopicDrops { topics: drops });
         }
         if let Some(b) = self.outbox.budget_figures(Instant::now()) {
             session.send(Frame::Budget {

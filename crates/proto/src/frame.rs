@@ -68,6 +68,7 @@ pub enum FrameKind {
     ZMessage = 0x1a,
     ZChunk = 0x1b,
     Budget = 0x1c,
+    TopicDrops = 0x1d,
 }
 
 /// Severity of a `STATUS` frame.
@@ -244,6 +245,12 @@ pub enum Frame {
         used_bytes: u64,
         thinned: Vec<u32>,
     },
+    /// Agent → hub, with the once-a-second report, for topics whose counts changed: the
+    /// messages the robot lost of each topic, by reason (the relay's `DropReason` index:
+    /// 0 rate_limit, 1 policy, 2 backpressure, 3 encode_error, 4 too_old), counted since
+    /// the agent started. `count varint | (alias varint | n varint | (reason u8 |
+    /// dropped varint) × n) × count`
+    TopicDrops { topics: Vec<(u32, Vec<(u8, u64)>)> },
     /// `id u64le | sent_ns u64le`
     Ping { id: u64, sent_ns: u64 },
     /// `id u64le | echo_ns u64le | responder_ns u64le`
@@ -397,6 +404,7 @@ impl Frame {
             Frame::ZMessage { .. } => FrameKind::ZMessage as u8,
             Frame::ZChunk { .. } => FrameKind::ZChunk as u8,
             Frame::Budget { .. } => FrameKind::Budget as u8,
+            Frame::TopicDrops { .. } => FrameKind::TopicDrops as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -451,6 +459,17 @@ impl Frame {
                 b.put_u8(u8::from(*wanted));
             }
             Frame::Pull { alias } => put_varint(b, u64::from(*alias)),
+            Frame::TopicDrops { topics } => {
+                put_varint(b, topics.len() as u64);
+                for (alias, drops) in topics {
+                    put_varint(b, u64::from(*alias));
+                    put_varint(b, drops.len() as u64);
+                    for (reason, n) in drops {
+                        b.put_u8(*reason);
+                        put_varint(b, *n);
+                    }
+                }
+            }
             Frame::Budget {
                 max_bps,
                 day_bytes,
@@ -903,6 +922,37 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                 used_bytes,
                 thinned,
             }
+        }
+        0x1d => {
+            // Every entry takes at least two bytes, every pair two: a count past the
+            // body is a lie.
+            let count = r.varint("TOPIC_DROPS.count")?;
+            if count > r.remaining() as u64 / 2 {
+                return Err(DecodeError::invalid(
+                    "TOPIC_DROPS.count",
+                    format!("{count} topics in {} bytes", r.remaining()),
+                ));
+            }
+            let mut topics = Vec::with_capacity(count as usize);
+            for _ in 0..count {
+                let alias = r.varint_u32("TOPIC_DROPS.alias")?;
+                let n = r.varint("TOPIC_DROPS.n")?;
+                if n > r.remaining() as u64 / 2 {
+                    return Err(DecodeError::invalid(
+                        "TOPIC_DROPS.n",
+                        format!("{n} reasons in {} bytes", r.remaining()),
+                    ));
+                }
+                let mut drops = Vec::with_capacity(n as usize);
+                for _ in 0..n {
+                    drops.push((
+                        r.u8("TOPIC_DROPS.reason")?,
+                        r.varint("TOPIC_DROPS.dropped")?,
+                    ));
+                }
+                topics.push((alias, drops));
+            }
+            Frame::TopicDrops { topics }
         }
         0x1a => Frame::ZMessage {
             alias: r.varint_u32("ZMESSAGE.alias")?,

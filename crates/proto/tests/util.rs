@@ -65,6 +65,17 @@ pub fn budget() -> impl Strategy<Value = Frame> {
         })
 }
 
+pub fn topic_drops() -> impl Strategy<Value = Frame> {
+    prop::collection::vec(
+        (
+            any::<u32>(),
+            prop::collection::vec((any::<u8>(), any::<u64>()), 0..6),
+        ),
+        0..10,
+    )
+    .prop_map(|topics| Frame::TopicDrops { topics })
+}
+
 pub fn interest() -> impl Strategy<Value = Frame> {
     (any::<u32>(), any::<bool>()).prop_map(|(alias, wanted)| Frame::Interest { alias, wanted })
 }
@@ -374,7 +385,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x1du8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x1eu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -407,6 +418,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         zmessage(),
         zchunk(),
         budget(),
+        topic_drops(),
         unknown(),
     ]
 }
@@ -487,6 +499,9 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             day_bytes: 500_000_000,
             used_bytes: 1 << 40,
             thinned: vec![3, 300],
+        },
+        Frame::TopicDrops {
+            topics: vec![(300, vec![(1, 5), (4, 1 << 33)]), (2, vec![])],
         },
         Frame::Ping { id: 1, sent_ns: 2 },
         Frame::Pong {

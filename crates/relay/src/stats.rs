@@ -104,6 +104,9 @@ pub struct TopicStats {
     /// took there ([`TopicStats::link_figures`]).
     link_raw: AtomicU64,
     link_wire: AtomicU64,
+    /// Messages of a robot's topic its agent lost before the link, by reason, as the
+    /// agent last reported them (`TOPIC_DROPS`).
+    robot_drops: [AtomicU64; DropReason::ALL.len()],
 }
 
 impl TopicStats {
@@ -190,6 +193,16 @@ impl TopicStats {
 
     pub fn drops(&self, reason: DropReason) -> u64 {
         self.drops[reason.index()].load(Relaxed)
+    }
+
+    /// What the robot reports it lost of this topic for `reason` (a count since its agent
+    /// started).
+    pub fn set_robot_drops(&self, reason: DropReason, n: u64) {
+        self.robot_drops[reason.index()].store(n, Relaxed);
+    }
+
+    pub fn robot_drops(&self, reason: DropReason) -> u64 {
+        self.robot_drops[reason.index()].load(Relaxed)
     }
 
     /// Messages per second and bytes per second over the last complete seconds.

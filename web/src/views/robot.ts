@@ -362,8 +362,9 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
         ? `${bps(t.bandwidth_bps)} · link ${bps(t.link_bandwidth_bps)} (${num(ratio, 1)}×)`
         : bps(t.bandwidth_bps));
       r.lat.update(Number.isFinite(lat) ? `${num(lat, 0)} ms` : "not subscribed");
-      const d = Object.entries(t.drops ?? {}).filter(([, v]) => v);
-      r.drops.textContent = d.length ? d.map(([k, v]) => `${k} ${v}`).join(", ") : "0";
+      const d = Object.entries(t.drops ?? {}).filter(([, v]) => v).map(([k, v]) => `${k} ${v}`);
+      const rd = Object.entries(t.robot_drops ?? {}).filter(([, v]) => v).map(([k, v]) => `${k} ${v}`);
+      r.drops.textContent = [...d, ...(rd.length ? [`on the robot: ${rd.join(", ")}`] : [])].join("; ") || "0";
     }
   }
   refresh();

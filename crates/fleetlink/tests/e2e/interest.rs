@@ -253,6 +253,19 @@ async fn after_a_blackout_nothing_older_than_its_age_limit_arrives() {
     );
     logs.sort_unstable();
     assert_eq!(logs, (1..=logged).collect::<Vec<_>>(), "no_drop lost lines");
+    // The hub hears what the age limit dropped on the robot (TOPIC_DROPS), and the log
+    // topic lost nothing there either.
+    let too_old = |name: &str| {
+        hub_topic(&hub, name).map_or(0, |t| {
+            t.stats.robot_drops(fleetlink_relay::DropReason::TooOld)
+        })
+    };
+    eventually(
+        "the robot's too_old drops of /robot3/pose at the hub",
+        || too_old("/robot3/pose") > 0,
+    )
+    .await;
+    assert_eq!(too_old("/robot3/log"), 0);
     agent.shutdown().await;
     hub.shutdown().await;
 }

@@ -15,7 +15,7 @@ use fleetlink_relay::link::LinkEvent;
 use fleetlink_relay::link::session::{Event, LinkSession};
 use fleetlink_relay::router::{DemandWatch, SubOptions, SubscriptionId, Target, TopicView};
 use fleetlink_relay::stats::StatsBatch;
-use fleetlink_relay::{ClientId, Router, Topic, TopicId, TopicName};
+use fleetlink_relay::{ClientId, DropReason, Router, Topic, TopicId, TopicName};
 
 use crate::delivery::RobotBook;
 use crate::registry::LiveRobot;
@@ -321,6 +321,18 @@ impl RobotLink {
                 self.live.demand_bps.store(demand_bps, Relaxed);
                 self.live.rate_bps.store(rate_bps, Relaxed);
                 self.live.latency_ns.store(latency_ns, Relaxed);
+            }
+            LinkEvent::Control(Frame::TopicDrops { topics }) => {
+                for (alias, counts) in topics {
+                    let Some(p) = self.topics.get(&alias) else {
+                        continue; // not announced (yet): the next change tells again
+                    };
+                    for (reason, n) in counts {
+                        if let Some(r) = DropReason::ALL.get(reason as usize) {
+                            p.topic.stats.set_robot_drops(*r, n);
+                        }
+                    }
+                }
             }
             LinkEvent::Control(Frame::Budget {
                 max_bps,

@@ -177,6 +177,9 @@ async fn topics(
                 "link_bandwidth_bps": t.stats.link_figures().map(|(wire, raw)| (bw * wire as f64 / raw.max(1) as f64).round()),
                 "last_message_ms": if last == 0 { Value::Null } else { json!(last / 1_000_000) },
                 "drops": drops,
+                // What the robot lost of it before its link (agent queues, `max_age`, the
+                // data budget), by reason, as its agent last reported.
+                "robot_drops": DropReason::ALL.iter().map(|r| (r.as_str().to_owned(), json!(t.stats.robot_drops(*r)))).collect::<serde_json::Map<String, Value>>(),
                 "latency_ms": match t.stats.latency_ns.load(std::sync::atomic::Ordering::Relaxed) {
                     0 => Value::Null,
                     ns => json!(ns as f64 / 1e6),

@@ -104,6 +104,22 @@ impl Collector for HubCollector {
             }
         }
         let mut m = enc.encode_descriptor(
+            "fleetlink_topic_robot_drops",
+            "Messages of a robot's topic its agent lost before the link, by reason (as the \
+             agent last reported)",
+            None,
+            MetricType::Counter,
+        )?;
+        for t in &topics {
+            for r in DropReason::ALL {
+                let n = t.stats.robot_drops(r);
+                if n > 0 {
+                    let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
+                    ConstCounter::new(n).encode(m.encode_family(&labels)?)?;
+                }
+            }
+        }
+        let mut m = enc.encode_descriptor(
             "fleetlink_topic_subscribers",
             "Subscribers of a topic",
             None,
