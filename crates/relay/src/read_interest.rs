@@ -2,14 +2,31 @@
 //! no local subscriber wants and the hub's link holds back (nobody at the hub watches it)
 //! costs the robot's CPU for nothing — the bridge deserializes nothing, but it still
 //! receives every message, and its publisher serializes them for it. The bridges ask
-//! [`ReadInterest::wanted`] and stop reading a topic unwanted for a while (each bridge
-//! decides how long; see docs/qos.md, "Reading only what is wanted").
+//! [`ReadInterest::look`] and stop reading a topic unwanted for [`UNWANTED_BEFORE_PAUSE`]
+//! (docs/qos.md, "Reading only what is wanted").
 
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 use crate::names::{ClientId, TopicName};
 use crate::outbox::Outbox;
 use crate::router::Router;
+
+/// How long a topic goes unwanted before a bridge stops reading it. A topic that a viewer
+/// opens and closes now and then stays read (connecting again costs more than reading a
+/// few seconds more); one nobody looks at stops costing the robot.
+pub const UNWANTED_BEFORE_PAUSE: Duration = Duration::from_secs(10);
+
+/// What a bridge should do about a topic it reads ([`ReadInterest::look`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Look {
+    /// Someone wants it: read it (again, if reading was stopped).
+    Read,
+    /// Nobody wants it, for less than [`UNWANTED_BEFORE_PAUSE`]: leave it as it is.
+    Wait,
+    /// Nobody has wanted it for [`UNWANTED_BEFORE_PAUSE`]: stop reading it.
+    Stop,
+}
 
 /// The agent's answer to "does anyone want this topic read?" (see the module docs).
 pub struct ReadInterest {
@@ -44,11 +61,35 @@ impl ReadInterest {
         self.outbox.reads(t.id().0)
     }
 
-    /// The link's demand changed (the hub started or stopped wanting a topic): look
-    /// again. Local subscribers coming and going are not signalled; bridges also look
-    /// now and then.
-    pub async fn changed(&self) {
-        self.outbox.interest_changed().await
+    /// [`ReadInterest::wanted`], with the wait before stopping: `unwanted_since` is the
+    /// topic's own record of when it was last found unwanted (kept by the bridge).
+    pub fn look(
+        &self,
+        topic: &TopicName,
+        reader: ClientId,
+        unwanted_since: &mut Option<Instant>,
+        now: Instant,
+    ) -> Look {
+        if self.wanted(topic, reader) {
+            *unwanted_since = None;
+            return Look::Read;
+        }
+        let since = *unwanted_since.get_or_insert(now);
+        if now.saturating_duration_since(since) >= UNWANTED_BEFORE_PAUSE {
+            Look::Stop
+        } else {
+            Look::Wait
+        }
+    }
+
+    /// Returns when the link's demand changes (the hub started or stopped wanting a
+    /// topic); never without an uplink (`None`). Local subscribers coming and going are
+    /// not signalled; bridges also look now and then.
+    pub async fn changed(interest: &Option<Arc<ReadInterest>>) {
+        match interest {
+            Some(i) => i.outbox.interest_changed().await,
+            None => std::future::pending().await,
+        }
     }
 
     /// The bridge stopped reading `topic`: its latest message, kept for a viewer to come,

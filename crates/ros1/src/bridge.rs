@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::CallStatus;
 use fleetlink_relay::calls::{CallRequest, ChannelPeer, PeerMsg, ServiceChange};
-use fleetlink_relay::read_interest::ReadInterest;
+use fleetlink_relay::read_interest::{Look, ReadInterest};
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::{ClientKind, Message, Router, TopicName};
 use tokio::net::TcpListener;
@@ -107,7 +107,7 @@ pub async fn run(
         tokio::select! {
             _ = shutdown.cancelled() => break,
             // (A change between two turns of this loop is seen at the next look.)
-            _ = interest_changed(&interest) => {
+            _ = ReadInterest::changed(&interest) => {
                 if let Some(i) = &interest {
                     follow_interest(&node, i, Instant::now());
                 }
@@ -315,22 +315,10 @@ fn reconcile(node: &Arc<Node>, topic: &str, publishers: &[String], prune: bool) 
     }
 }
 
-/// How long a topic goes unwanted before the bridge stops reading it. A topic that a
-/// viewer opens and closes now and then keeps its connections (reconnecting costs more
-/// than reading a few seconds more); one nobody looks at stops costing the robot.
-pub const UNWANTED_BEFORE_PAUSE: Duration = Duration::from_secs(10);
 /// How often the bridge looks at what is wanted, besides when the hub's demand changes.
 const INTEREST_LOOK: Duration = Duration::from_secs(1);
 
-/// Returns when the link's demand changes; never without an uplink to ask.
-async fn interest_changed(interest: &Option<Arc<ReadInterest>>) {
-    match interest {
-        Some(i) => i.changed().await,
-        None => std::future::pending().await,
-    }
-}
-
-/// Pauses reading the topics nobody has wanted for [`UNWANTED_BEFORE_PAUSE`] (their
+/// Pauses reading the topics nobody has wanted for a while ([`ReadInterest::look`]) (their
 /// publisher connections closed; the master registration kept, so publisher lists stay
 /// current) and resumes those wanted again (connected to their publishers at once).
 fn follow_interest(node: &Arc<Node>, interest: &ReadInterest, now: Instant) {
@@ -341,25 +329,23 @@ fn follow_interest(node: &Arc<Node>, interest: &ReadInterest, now: Instant) {
             let Ok(name) = TopicName::parse(topic) else {
                 continue;
             };
-            if interest.wanted(&name, node.client) {
-                sub.unwanted_since = None;
-                if sub.paused {
+            match interest.look(&name, node.client, &mut sub.unwanted_since, now) {
+                Look::Read if sub.paused => {
                     sub.paused = false;
                     tracing::info!("ros1: {topic} is wanted again; reading it");
                     resume.push((topic.clone(), sub.publishers.clone()));
                 }
-                continue;
-            }
-            let since = *sub.unwanted_since.get_or_insert(now);
-            if !sub.paused && now.saturating_duration_since(since) >= UNWANTED_BEFORE_PAUSE {
-                sub.paused = true;
-                for c in sub.conns.values() {
-                    c.abort.abort();
+                Look::Stop if !sub.paused => {
+                    sub.paused = true;
+                    for c in sub.conns.values() {
+                        c.abort.abort();
+                    }
+                    sub.conns.clear();
+                    interest.stopped_reading(&name);
+                    node.stats.paused.fetch_add(1, Relaxed);
+                    tracing::info!("ros1: nobody wants {topic}; no longer reading it");
                 }
-                sub.conns.clear();
-                interest.stopped_reading(&name);
-                node.stats.paused.fetch_add(1, Relaxed);
-                tracing::info!("ros1: nobody wants {topic}; no longer reading it");
+                _ => {}
             }
         }
     }

@@ -15,7 +15,7 @@ use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::ChannelPeer;
 use fleetlink_relay::names::ClientId;
-use fleetlink_relay::read_interest::ReadInterest;
+use fleetlink_relay::read_interest::{Look, ReadInterest};
 use fleetlink_relay::router::{RouteError, SubOptions, Target};
 use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
@@ -172,11 +172,6 @@ struct Reading {
     /// Numbers of the messages put into the router, across readers.
     seq: AtomicU64,
 }
-
-/// How long a topic goes unwanted before the bridge drops its reader. A topic that a
-/// viewer opens and closes now and then keeps its reader (matching a new one costs more
-/// than reading a few seconds more); one nobody looks at stops costing the robot.
-pub const UNWANTED_BEFORE_PAUSE: std::time::Duration = std::time::Duration::from_secs(10);
 
 /// A router topic written into the graph.
 struct Down {
@@ -740,7 +735,7 @@ async fn run_participant(
                 node_info.refresh(&bridge);
             }
             // (A change between two turns of this loop is seen at the next tick.)
-            _ = interest_changed(interest) => follow_interest(&bridge, Instant::now()),
+            _ = ReadInterest::changed(interest) => follow_interest(&bridge, Instant::now()),
             _ = outbox.ready() => loop {
                 let batch = outbox.take(64, 8 << 20, Instant::now());
                 if batch.items.is_empty() {
@@ -828,15 +823,7 @@ fn discover(bridge: &Arc<Bridge>) {
     services::discover(bridge);
 }
 
-/// Returns when the link's demand changes; never without an uplink to ask.
-async fn interest_changed(interest: &Option<Arc<ReadInterest>>) {
-    match interest {
-        Some(i) => i.changed().await,
-        None => std::future::pending().await,
-    }
-}
-
-/// Drops the reader of each topic nobody has wanted for [`UNWANTED_BEFORE_PAUSE`] (the
+/// Drops the reader of each topic nobody has wanted for a while ([`ReadInterest::look`]; the
 /// local writers then stop sending to the agent) and makes one again for each topic
 /// wanted again.
 fn follow_interest(bridge: &Arc<Bridge>, now: Instant) {
@@ -848,22 +835,17 @@ fn follow_interest(bridge: &Arc<Bridge>, now: Instant) {
         let mut st = bridge.lock();
         for (ros, up) in st.up.iter_mut() {
             let name = up.reading.topic.name();
-            if interest.wanted(&name, bridge.client) {
-                up.unwanted_since = None;
-                if up.task.is_none() {
-                    resume.push(ros.clone());
+            match interest.look(&name, bridge.client, &mut up.unwanted_since, now) {
+                Look::Read if up.task.is_none() => resume.push(ros.clone()),
+                Look::Stop => {
+                    if let Some(task) = up.task.take() {
+                        task.abort(); // the reader goes with its task
+                        interest.stopped_reading(&name);
+                        bridge.stats.paused_reading.fetch_add(1, Relaxed);
+                        tracing::info!("ros2: nobody wants {ros}; no longer reading it");
+                    }
                 }
-                continue;
-            }
-            let since = *up.unwanted_since.get_or_insert(now);
-            if let Some(task) = &up.task
-                && now.saturating_duration_since(since) >= UNWANTED_BEFORE_PAUSE
-            {
-                task.abort(); // the reader goes with its task
-                up.task = None;
-                interest.stopped_reading(&name);
-                bridge.stats.paused_reading.fetch_add(1, Relaxed);
-                tracing::info!("ros2: nobody wants {ros}; no longer reading it");
+                _ => {}
             }
         }
     }
