@@ -11,6 +11,7 @@
 //! Checking a credential can mean an argon2 hash (passwords) or a database read (tokens),
 //! so it never runs on a runtime worker: see [`authenticate`].
 
+use std::collections::HashMap;
 use std::net::SocketAddr;
 use std::sync::Arc;
 
@@ -63,7 +64,14 @@ pub struct HubGate {
     /// another, so this saves splitting the name and a registry lookup per message (the
     /// identity and `acting_as` never change for a gate).
     last_input: Option<(String, u64, bool)>,
+    /// Decisions by router topic id, with the rules' generation they were made in: the
+    /// publish and delivery paths ask once per message, and an id is cheaper to look up
+    /// than a name.
+    by_topic: HashMap<(u32, Op), (u64, bool), foldhash::fast::RandomState>,
 }
+
+/// Topic decisions a gate keeps by id before it starts afresh.
+const BY_TOPIC_CAPACITY: usize = 1 << 16;
 
 impl HubGate {
     pub fn new(security: Arc<Security>, registry: Arc<Registry>, identity: Identity) -> HubGate {
@@ -74,6 +82,7 @@ impl HubGate {
             reported: Default::default(),
             acting_as: None,
             last_input: None,
+            by_topic: HashMap::default(),
         }
     }
 
@@ -152,6 +161,21 @@ impl Gate for HubGate {
         d.allowed
     }
 
+    fn allows_topic(&mut self, topic: u32, name: &str, op: Op) -> bool {
+        let generation = self.access.current_generation();
+        if let Some(&(g, ok)) = self.by_topic.get(&(topic, op))
+            && g == generation
+        {
+            return ok;
+        }
+        let ok = self.allows(name, op);
+        if self.by_topic.len() >= BY_TOPIC_CAPACITY {
+            self.by_topic.clear();
+        }
+        self.by_topic.insert((topic, op), (generation, ok));
+        ok
+    }
+
     fn done(&mut self, name: &str, op: Op, size: usize) {
         let audited = match op {
             Op::Publish => self.robot_input(name),
@@ -193,6 +217,7 @@ impl Gate for HubGate {
             reported: Default::default(),
             acting_as: self.acting_as.clone(),
             last_input: None,
+            by_topic: HashMap::default(),
         })
     }
 

@@ -32,6 +32,13 @@ pub trait Gate: Send + Sync + 'static {
     /// May this connection do `op` on `name`? Refusals are recorded by the gate.
     fn allows(&mut self, name: &str, op: Op) -> bool;
 
+    /// [`Gate::allows`] for a router topic, by its id (which never names another topic
+    /// while the router lives): a gate may cache by id, which on the per-message paths
+    /// costs less than looking the name up.
+    fn allows_topic(&mut self, _topic: u32, name: &str, op: Op) -> bool {
+        self.allows(name, op)
+    }
+
     /// `op` on `name` was done (`size` payload bytes); a gate records the operations that
     /// act on robots.
     fn done(&mut self, _name: &str, _op: Op, _size: usize) {}

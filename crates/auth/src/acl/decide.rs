@@ -233,8 +233,12 @@ fn evaluate<'a>(
 }
 
 /// Distinct names cached per connection before the cache is cleared, so a client that
-/// probes millions of names cannot grow it without bound.
-const CACHE_CAPACITY: usize = 4096;
+/// probes millions of names cannot grow it without bound. Large enough for a fleet-wide
+/// subscription: its writer checks every delivered message, and a subscriber to all of
+/// 1,000 robots' ten topics would otherwise clear and refill a smaller cache endlessly
+/// (at 4,096 names that was the hub's costliest function, measured with `bench fleet`).
+/// An entry is about 100 bytes; only connections that see that many names fill it.
+const CACHE_CAPACITY: usize = 1 << 16;
 
 type Slots = [Option<Decision>; Operation::ALL.len()];
 
@@ -255,6 +259,12 @@ pub struct Access {
 impl Access {
     pub fn identity(&self) -> &Identity {
         &self.identity
+    }
+
+    /// The rules' generation now: a decision cached by a caller stays true while this
+    /// does not change.
+    pub fn current_generation(&self) -> u64 {
+        self.authz.generation.load(Ordering::Acquire)
     }
 
     fn refresh(&mut self) {

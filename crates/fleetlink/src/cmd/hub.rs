@@ -176,6 +176,12 @@ impl Args {
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
+    // Every connection is a file: room for the front door's whole admission plus the
+    // store, logs and listeners; a hard limit below that is reported, not fatal.
+    let files = u64::from(args.max_connections) + 256;
+    if let Err(e) = super::raise_open_files(files) {
+        tracing::warn!("{e:#}: the hub can hold fewer connections than --max-connections");
+    }
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     let transcoder = crate::transcoder(&args.msg_path)?;
     rt.block_on(async {

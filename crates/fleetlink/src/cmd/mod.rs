@@ -79,6 +79,29 @@ where
     )
 }
 
+/// Raises this process's soft limit on open files to at least `want` (up to the hard
+/// limit): every connection is a file, and the usual soft limit of 1,024 would cap a hub
+/// or a fleet bench far below what it can carry. Above the hard limit it goes as far as
+/// that and says so.
+pub fn raise_open_files(want: u64) -> anyhow::Result<()> {
+    use rustix::process::{Resource, getrlimit, setrlimit};
+    let lim = getrlimit(Resource::Nofile);
+    if lim.current.is_some_and(|c| c >= want) {
+        return Ok(());
+    }
+    let mut new = lim;
+    new.current = Some(lim.maximum.map_or(want, |m| m.min(want)));
+    setrlimit(Resource::Nofile, new)
+        .map_err(|e| anyhow::anyhow!("raising the open-files limit to {want}: {e}"))?;
+    if let Some(m) = lim.maximum.filter(|m| *m < want) {
+        anyhow::bail!(
+            "this needs {want} open files but the hard limit is {m}; \
+             raise it (ulimit -Hn, LimitNOFILE= in a systemd unit) or ask for fewer connections"
+        );
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use std::sync::{Arc, Mutex};

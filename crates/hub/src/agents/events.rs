@@ -177,7 +177,7 @@ impl RobotLink {
         };
         let gate = session.gate();
         // Asked per message (a cached answer) so a rule change applies at once.
-        if !gate.allows(p.name.as_str(), Op::Publish) {
+        if !gate.allows_topic(p.topic.id().0, p.name.as_str(), Op::Publish) {
             return;
         }
         let size = payload.len();

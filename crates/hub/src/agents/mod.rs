@@ -353,6 +353,12 @@ where
     // Delivery marks being written, and what to confirm when they are.
     let mut recording: Option<BoxFuture<'static, ()>> = None;
     let mut confirming: Vec<(u32, u64)> = Vec::new();
+    // Made once: the hub's shutdown token is shared by every connection, and a fresh
+    // waiter per loop turn took its lock twice per WebSocket message of every robot.
+    let shutdown = ctx.shutdown.cancelled();
+    tokio::pin!(shutdown);
+    let replaced = replaced.cancelled();
+    tokio::pin!(replaced);
     loop {
         while let Some(ev) = session.poll_event() {
             match ev {
@@ -402,10 +408,10 @@ where
             }
             _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
             () = link.demand.changed() => link.on_demand_changed(session),
-            _ = ctx.shutdown.cancelled() => {
+            _ = &mut shutdown => {
                 session.close(CloseReason::Local("the hub is shutting down".into()));
             }
-            _ = replaced.cancelled() => {
+            _ = &mut replaced => {
                 session.close(CloseReason::Local(
                     "replaced by a newer connection of the robot".into(),
                 ));

@@ -278,7 +278,11 @@ pub async fn write_link<K>(
         for (_, _, msg) in items.drain(..) {
             // Checked on delivery, so a rule change reaches live subscriptions.
             if let Some(g) = gate.as_mut()
-                && !g.allows(msg.topic.name.as_str(), crate::gate::Op::Subscribe)
+                && !g.allows_topic(
+                    msg.topic.id.0,
+                    msg.topic.name.as_str(),
+                    crate::gate::Op::Subscribe,
+                )
             {
                 continue;
             }

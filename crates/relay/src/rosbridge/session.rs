@@ -905,7 +905,9 @@ impl Session {
             return Err(frame);
         };
         // Asked for every message: rules can change while a client publishes.
-        if !gate.allows(p.name.as_str(), GateOp::Publish) || p.topic.stats.no_drop_flow.is_full() {
+        if !gate.allows_topic(p.topic.id().0, p.name.as_str(), GateOp::Publish)
+            || p.topic.stats.no_drop_flow.is_full()
+        {
             return Err(frame);
         }
         p.list(&mut self.unflushed);
@@ -1201,7 +1203,11 @@ async fn write_loop<K: PartsSink>(
                     items.retain(|(_, _, m)| match last {
                         Some((id, ok)) if id == m.topic.id => ok,
                         _ => {
-                            let ok = g.allows(m.topic.name.as_str(), GateOp::Subscribe);
+                            let ok = g.allows_topic(
+                                m.topic.id.0,
+                                m.topic.name.as_str(),
+                                GateOp::Subscribe,
+                            );
                             last = Some((m.topic.id, ok));
                             ok
                         }

@@ -29,6 +29,9 @@ const HEARTBEAT_MS: u32 = 1000;
 /// Ping id of the setup barrier; keepalive pings count up from 1.
 pub const BARRIER_PING: u64 = u64::MAX;
 
+/// Bytes a bench client reads at most at a time.
+const READ_BUFFER: usize = 4096;
+
 /// Largest message the bench accepts from the hub (a whole chunk-packed write).
 const MAX_MESSAGE: usize = 64 << 20;
 
@@ -54,25 +57,112 @@ pub fn hub_url(hub: &str) -> String {
 }
 
 pub async fn connect(url: &str, robot: &str, token: &str) -> anyhow::Result<Conn> {
-    tokio::time::timeout(SETUP_TIMEOUT, connect_inner(url, robot, token))
+    connect_from(url, robot, token, None).await
+}
+
+/// The hub refused a connection for now (HTTP 503: its handshake admission is full);
+/// `retry_after` is what it asked for. Agents back off and retry; so do the benches.
+#[derive(Debug)]
+pub struct Busy {
+    pub retry_after: Option<Duration>,
+}
+
+impl std::fmt::Display for Busy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "the hub is busy (HTTP 503)")?;
+        if let Some(d) = self.retry_after {
+            write!(f, ", retry after {} s", d.as_secs())?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for Busy {}
+
+/// As [`connect`], from the local address `source` when given (a plain `ws://` URL only):
+/// a fleet on one machine spreads its connections over loopback addresses as a real fleet
+/// comes from many, so per-address limits and ephemeral ports are not what a bench hits.
+pub async fn connect_from(
+    url: &str,
+    robot: &str,
+    token: &str,
+    source: Option<std::net::IpAddr>,
+) -> anyhow::Result<Conn> {
+    tokio::time::timeout(SETUP_TIMEOUT, connect_inner(url, robot, token, source))
         .await
         .with_context(|| format!("{robot}: connecting to {url} timed out"))?
 }
 
-async fn connect_inner(url: &str, robot: &str, token: &str) -> anyhow::Result<Conn> {
-    let mut req = url
-        .into_client_request()
-        .with_context(|| format!("bad hub URL {url}"))?;
+/// Opens the WebSocket, from `source` if given.
+async fn open_ws(
+    url: &str,
+    source: Option<std::net::IpAddr>,
+    config: WebSocketConfig,
+) -> Result<Ws, tokio_tungstenite::tungstenite::Error> {
+    let mut req = url.into_client_request()?;
     req.headers_mut().insert(
         "Sec-WebSocket-Protocol",
         HeaderValue::from_static(SUBPROTOCOL),
     );
+    let Some(source) = source.filter(|_| url.starts_with("ws://")) else {
+        return Ok(
+            tokio_tungstenite::connect_async_with_config(req, Some(config), true)
+                .await?
+                .0,
+        );
+    };
+    let host = req
+        .uri()
+        .host()
+        .unwrap_or_default()
+        .trim_matches(['[', ']']);
+    let port = req.uri().port_u16().unwrap_or(80);
+    let dest = tokio::net::lookup_host((host, port))
+        .await?
+        .find(|a| a.is_ipv4() == source.is_ipv4())
+        .ok_or_else(|| std::io::Error::other(format!("{host} has no address like {source}")))?;
+    let socket = if source.is_ipv4() {
+        tokio::net::TcpSocket::new_v4()?
+    } else {
+        tokio::net::TcpSocket::new_v6()?
+    };
+    socket.bind(std::net::SocketAddr::new(source, 0))?;
+    let tcp = socket.connect(dest).await?;
+    tcp.set_nodelay(true)?;
+    Ok(
+        tokio_tungstenite::client_async_with_config(req, MaybeTlsStream::Plain(tcp), Some(config))
+            .await?
+            .0,
+    )
+}
+
+async fn connect_inner(
+    url: &str,
+    robot: &str,
+    token: &str,
+    source: Option<std::net::IpAddr>,
+) -> anyhow::Result<Conn> {
+    // tungstenite zeroes the free part of its read buffer before every read: at its
+    // 128 KiB default, a thousand simulated robots reading their acknowledgements spent
+    // half the bench's CPU in memset. A frame's whole length is reserved once its header
+    // is read, so small reads cost nothing on large messages.
     let config = WebSocketConfig::default()
+        .read_buffer_size(READ_BUFFER)
         .max_message_size(Some(MAX_MESSAGE))
         .max_frame_size(Some(MAX_MESSAGE));
-    let (mut ws, _) = tokio_tungstenite::connect_async_with_config(req, Some(config), true)
-        .await
-        .with_context(|| format!("{robot}: cannot connect to {url}"))?;
+    let mut ws = match open_ws(url, source, config).await {
+        Ok(ws) => ws,
+        Err(tokio_tungstenite::tungstenite::Error::Http(resp)) if resp.status() == 503 => {
+            let retry_after = resp
+                .headers()
+                .get("Retry-After")
+                .and_then(|v| v.to_str().ok())
+                .and_then(|v| v.trim().parse::<u64>().ok())
+                .map(Duration::from_secs);
+            return Err(Busy { retry_after }.into());
+        }
+        Err(e) => return Err(e).with_context(|| format!("{robot}: cannot connect to {url}")),
+    };
     let hello = Frame::Hello {
         version: VERSION,
         robot: robot.to_owned(),

@@ -14,6 +14,9 @@
 //!   the floor under a bridge's figure.
 //! - [`ws_floor`]: the `ws-floor` subcommand: a bare WebSocket relay, the floor under the
 //!   hub's figure in `delivery`.
+//! - [`fleet`]: the `fleet` subcommand: N simulated robots with T topics each from one
+//!   process against one or several hubs: throughput, latency, connect time, hub CPU and
+//!   memory per robot.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
@@ -23,6 +26,7 @@ mod calls;
 mod conn;
 mod copy_floor;
 mod delivery;
+mod fleet;
 mod journal;
 mod publisher;
 mod reconnect;
@@ -42,6 +46,10 @@ enum Command {
     /// Publishers and subscribers on fleetlink.v1 links through a running hub: delivered
     /// msg/s, MB/s, latency percentiles and drops.
     Relay(relay::Args),
+    /// N simulated robots (T topics at a rate each) and their subscribers against one hub
+    /// or several federated hubs: connect time, delivered msg/s, latency percentiles, and
+    /// the hubs' CPU and memory per robot, idle and loaded.
+    Fleet(fleet::Args),
     /// A fleet of agents against a hub that is stopped and restarted: how fast and how
     /// spread out the robots come back (backoff, jitter, handshake admission).
     Reconnect(reconnect::Args),
@@ -67,6 +75,7 @@ enum Command {
 pub fn run(args: Args) -> anyhow::Result<()> {
     match args.command {
         Command::Relay(a) => relay::run(a),
+        Command::Fleet(a) => fleet::run(a),
         Command::Reconnect(a) => reconnect::run(a),
         Command::Calls(a) => calls::run(a),
         Command::Delivery(a) => delivery::run(a),

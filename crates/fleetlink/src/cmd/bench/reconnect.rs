@@ -43,29 +43,10 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if args.robots == 0 {
         bail!("--robots must be at least 1");
     }
-    raise_fd_limit(args.robots as u64 * 2 + 256)?;
+    crate::cmd::raise_open_files(args.robots as u64 * 2 + 256)?;
     crate::cmd::init_logging("error");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(bench(args))
-}
-
-fn raise_fd_limit(want: u64) -> anyhow::Result<()> {
-    use rustix::process::{Resource, getrlimit, setrlimit};
-    let lim = getrlimit(Resource::Nofile);
-    if lim.current.is_some_and(|c| c >= want) {
-        return Ok(());
-    }
-    if lim.maximum.is_some_and(|m| m < want) {
-        bail!(
-            "this bench needs {want} open files (two per robot) but the hard limit is {:?}; \
-             raise it (ulimit -Hn) or use fewer --robots",
-            lim.maximum
-        );
-    }
-    let mut new = lim;
-    new.current = Some(want);
-    setrlimit(Resource::Nofile, new).context("raising the open-files limit")?;
-    Ok(())
 }
 
 fn hub_config(listen: SocketAddr, data_dir: PathBuf) -> anyhow::Result<HubConfig> {

@@ -47,7 +47,7 @@ pub struct Latency {
 }
 
 impl Latency {
-    fn of(h: &Histogram<u64>) -> Latency {
+    pub fn of(h: &Histogram<u64>) -> Latency {
         let us = |ns: u64| (ns as f64 / 100.0).round() / 10.0;
         Latency {
             p50: us(h.value_at_quantile(0.50)),
