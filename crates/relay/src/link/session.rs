@@ -78,6 +78,9 @@ pub type CallsFactory = Box<dyn FnOnce(&str) -> LinkCalls + Send>;
 
 /// Most pong answers kept while the writer is backed up (the oldest go first).
 const MAX_PONGS: usize = 8;
+/// While the peer pings every heartbeat itself, the hub pings only every this many
+/// heartbeats (see `LinkSession::skip_ping`).
+pub const HUB_PING_EVERY: u32 = 5;
 /// Most error reports to the peer waiting to be sent; more are counted and not sent.
 const MAX_STATUSES: usize = 64;
 /// The driver feeds call-table news in only while fewer frames than this wait.
@@ -241,6 +244,8 @@ pub struct SessionStats {
     pub statuses_dropped: u64,
     /// Pong answers dropped because the writer was backed up.
     pub pongs_dropped: u64,
+    /// Heartbeat pings sent.
+    pub pings_sent: u64,
 }
 
 /// One end of a `fleetlink.v1` link (see the module docs).
@@ -253,6 +258,11 @@ pub struct LinkSession {
     last_rx: Instant,
     next_ping: Instant,
     ping_id: u64,
+    /// When the peer last sent a `PING` (the hub skips most of its own while the peer
+    /// keeps the link alive itself: see [`HUB_PING_EVERY`]).
+    peer_pinged: Option<Instant>,
+    /// Heartbeat pings skipped in a row.
+    pings_skipped: u32,
     report_every: Option<Duration>,
     next_report: Option<Instant>,
     link: LinkIn,
@@ -275,6 +285,8 @@ impl LinkSession {
             last_rx: now,
             next_ping: now + cfg.heartbeat,
             ping_id: HEARTBEAT_ID_BASE,
+            peer_pinged: None,
+            pings_skipped: 0,
             report_every: cfg.report_every,
             next_report: None,
             link: LinkIn::default(),
@@ -603,12 +615,18 @@ impl LinkSession {
                     return;
                 }
                 if now >= self.next_ping {
-                    self.ping_id += 1;
-                    let ping = Frame::Ping {
-                        id: self.ping_id,
-                        sent_ns: (self.wall)(now),
-                    };
-                    self.push(Control::Frame(ping));
+                    if self.skip_ping(now) {
+                        self.pings_skipped += 1;
+                    } else {
+                        self.pings_skipped = 0;
+                        self.stats.pings_sent += 1;
+                        self.ping_id += 1;
+                        let ping = Frame::Ping {
+                            id: self.ping_id,
+                            sent_ns: (self.wall)(now),
+                        };
+                        self.push(Control::Frame(ping));
+                    }
                     self.next_ping = now + self.heartbeat;
                 }
                 if let (Some(at), Some(every)) = (self.next_report, self.report_every)
@@ -659,6 +677,21 @@ impl LinkSession {
 
     fn push(&mut self, c: Control) {
         self.tx.frames.push_back(c);
+    }
+
+    /// Whether the hub may leave out this heartbeat's `PING`: the peer pinged within the
+    /// last heartbeat, so it hears the hub's `PONG` and the hub hears the peer, each well
+    /// inside two heartbeats, without a second exchange. Every [`HUB_PING_EVERY`]th
+    /// heartbeat still pings, for the round trip and clock offset it measures. Only the
+    /// hub skips: a peer that stops pinging gets the hub's pings again from the next
+    /// heartbeat on. An idle fleet's links carry half the frames, which is most of what
+    /// an idle hub spends per robot.
+    fn skip_ping(&self, now: Instant) -> bool {
+        self.role == Role::Hub
+            && self.pings_skipped + 1 < HUB_PING_EVERY
+            && self
+                .peer_pinged
+                .is_some_and(|at| now.saturating_duration_since(at) < self.heartbeat)
     }
 
     fn open(
@@ -752,6 +785,7 @@ impl LinkSession {
         }
         match f {
             Frame::Ping { id, sent_ns } => {
+                self.peer_pinged = Some(now);
                 if self.tx.pongs.len() == MAX_PONGS {
                     self.tx.pongs.pop_front();
                     self.stats.pongs_dropped += 1;

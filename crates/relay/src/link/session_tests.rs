@@ -661,6 +661,20 @@ fn an_idle_link_stays_up_on_heartbeats_alone() {
     let end = p.now + Duration::from_secs(60);
     p.run_until(end, |_| {});
     assert!(p.hub.closed.is_none() && p.agent.closed.is_none());
+    // The agent pings every heartbeat; the hub, hearing those, only every fifth.
+    let (hub_pings, agent_pings) = (
+        p.hub.session.stats().pings_sent,
+        p.agent.session.stats().pings_sent,
+    );
+    assert!(
+        (59..=61).contains(&agent_pings),
+        "agent pinged {agent_pings} times in 60 s"
+    );
+    let every = u64::from(HUB_PING_EVERY);
+    assert!(
+        (60 / every - 1..=60 / every + 1).contains(&hub_pings),
+        "hub pinged {hub_pings} times in 60 s"
+    );
     // And a cut of an idle link is found the same way.
     p.cut = true;
     let end = p.now + 4 * HB;
