@@ -51,7 +51,7 @@ impl AgentOptions {
             .collect::<Result<_, fleetlink_relay::NameError>>()?;
         Ok(AgentOptions {
             uplink: UplinkConfig {
-                hub_url: cfg.hub.clone(),
+                hub_urls: cfg.hub.clone(),
                 robot: cfg.name.clone(),
                 token: cfg.token.clone(),
                 heartbeat: cfg.heartbeat(),
@@ -171,10 +171,11 @@ pub enum OptionsError {
     Env(String),
 }
 
-/// The TLS client config for a `wss://` hub: the `tls:` files, else the system's roots.
+/// The TLS client config for the `wss://` hubs: the `tls:` files, else the system's roots.
+/// One for all of them (`tls:` applies to every hub); a `ws://` hub does not use it.
 fn tls_client(cfg: &AgentConfig) -> Result<Option<Arc<rustls::ClientConfig>>, OptionsError> {
     use fleetlink_auth::tls::{ClientTlsFiles, HubRoots, client_config};
-    if !cfg.hub.starts_with("wss://") {
+    if !cfg.hub.iter().any(|url| url.starts_with("wss://")) {
         return Ok(None);
     }
     let tls = cfg.tls.clone().unwrap_or_default();
@@ -339,6 +340,7 @@ impl Agent {
                 self.robot.to_string(),
                 parts,
                 self.uplink.stats.clone(),
+                self.uplink.watch(),
                 shutdown.clone(),
             ))
         });

@@ -1,6 +1,7 @@
 //! The agent's status topic, `/fleetlink/diagnostics` (at the hub
 //! `/<robot>/fleetlink/diagnostics`): a `diagnostic_msgs/msg/DiagnosticArray` every
-//! [`PERIOD`], latched, with one `DiagnosticStatus` per ROS adapter and one for the uplink.
+//! [`PERIOD`], latched, with one `DiagnosticStatus` per ROS adapter and one for the uplink
+//! (which hub it is connected to, or trying, and the round trip).
 //! An adapter that found problems a user must act on (type mismatches, unknown types) is
 //! at level WARN, its message says the newest of them and its values list every one, so
 //! the problem shows wherever ROS diagnostics are read (Foxglove's and Lichtblick's
@@ -17,7 +18,7 @@ use fleetlink_relay::{ClientKind, Router, TopicName};
 use serde_json::{Value, json};
 use tokio_util::sync::CancellationToken;
 
-use crate::uplink::UplinkStats;
+use crate::uplink::{LinkState, UplinkStats};
 
 pub const TOPIC: &str = "/fleetlink/diagnostics";
 pub const TYPE: &str = "diagnostic_msgs/msg/DiagnosticArray";
@@ -34,7 +35,13 @@ pub struct Part {
 }
 
 /// The status message of `robot` now (JSON of a `DiagnosticArray`).
-pub fn message(robot: &str, parts: &[Part], uplink: &UplinkStats, stamp_ns: u64) -> Value {
+pub fn message(
+    robot: &str,
+    parts: &[Part],
+    uplink: &UplinkStats,
+    link: &LinkState,
+    stamp_ns: u64,
+) -> Value {
     let kv = |k: &str, v: String| json!({"key": k, "value": v});
     let mut status = Vec::with_capacity(parts.len() + 1);
     for p in parts {
@@ -63,12 +70,24 @@ pub fn message(robot: &str, parts: &[Part], uplink: &UplinkStats, stamp_ns: u64)
         }));
     }
     let rtt_ms = uplink.rtt_ns.load(Relaxed) as f64 / 1e6;
+    let (text, hub) = match link {
+        LinkState::Connected { hub, .. } => (
+            format!("connected to {hub}; round trip {rtt_ms:.1} ms"),
+            hub.as_str(),
+        ),
+        LinkState::Connecting { hub, attempt } => (
+            format!("connecting to {hub} (attempt {attempt})"),
+            hub.as_str(),
+        ),
+        LinkState::Disconnected { reason } => (format!("disconnected: {reason}"), ""),
+    };
     status.push(json!({
         "level": OK,
         "name": "fleetlink agent: uplink",
-        "message": format!("round trip {rtt_ms:.1} ms"),
+        "message": text,
         "hardware_id": robot,
         "values": [
+            kv("hub", hub.to_owned()),
             kv("connects", uplink.connects.load(Relaxed).to_string()),
             kv("rtt_ms", format!("{rtt_ms:.1}")),
             kv("share_bytes_per_s", uplink.share_bps.load(Relaxed).to_string()),
@@ -83,12 +102,14 @@ pub fn message(robot: &str, parts: &[Part], uplink: &UplinkStats, stamp_ns: u64)
     })
 }
 
-/// Publishes the status of `parts` every [`PERIOD`] until `shutdown`.
+/// Publishes the status of `parts` and the uplink (`link`: its state) every [`PERIOD`]
+/// until `shutdown`.
 pub async fn publish(
     router: Arc<Router>,
     robot: String,
     parts: Vec<Part>,
     uplink: Arc<UplinkStats>,
+    link: tokio::sync::watch::Receiver<LinkState>,
     shutdown: CancellationToken,
 ) {
     let (client, _) = router.connect(
@@ -125,7 +146,7 @@ pub async fn publish(
         seq += 1;
         let now = fleetlink_relay::unix_nanos();
         let json = Payload::json(
-            message(&robot, &parts, &uplink, now)
+            message(&robot, &parts, &uplink, &link.borrow(), now)
                 .to_string()
                 .into_bytes(),
         );
@@ -163,7 +184,12 @@ mod tests {
             report: fake.clone(),
         }];
         let uplink = UplinkStats::default();
-        let m = message("robot1", &parts, &uplink, 1_500_000_000);
+        let link = LinkState::Connected {
+            session: "s1".into(),
+            namespace: "/robot1".into(),
+            hub: "wss://b.example:8443".into(),
+        };
+        let m = message("robot1", &parts, &uplink, &link, 1_500_000_000);
         assert_eq!(m["status"][0]["level"], OK);
         assert_eq!(m["status"][0]["message"], "ok");
         assert_eq!(m["header"]["stamp"]["sec"], 1);
@@ -171,7 +197,7 @@ mod tests {
 
         fake.0.note("type mismatch on /cmd_vel: a vs b");
         fake.0.note("type mismatch on /odom: c vs d");
-        let m = message("robot1", &parts, &uplink, 0);
+        let m = message("robot1", &parts, &uplink, &link, 0);
         let s = &m["status"][0];
         assert_eq!(s["level"], WARN);
         assert_eq!(s["name"], "fleetlink agent: ros1");
@@ -195,5 +221,39 @@ mod tests {
             ]
         );
         assert_eq!(m["status"][1]["name"], "fleetlink agent: uplink");
+    }
+
+    /// Issue 38: the uplink's status names the hub it is connected to, or trying.
+    #[test]
+    fn the_uplink_status_names_its_hub() {
+        let uplink = UplinkStats::default();
+        let hub = |m: &Value| m["status"][0]["values"][0].clone();
+        let link = LinkState::Connected {
+            session: "s1".into(),
+            namespace: "/robot1".into(),
+            hub: "wss://b.example:8443".into(),
+        };
+        let m = message("robot1", &[], &uplink, &link, 0);
+        assert_eq!(m["status"][0]["name"], "fleetlink agent: uplink");
+        assert_eq!(
+            hub(&m),
+            json!({"key": "hub", "value": "wss://b.example:8443"})
+        );
+        assert!(
+            m["status"][0]["message"]
+                .as_str()
+                .unwrap()
+                .starts_with("connected to wss://b.example:8443; round trip"),
+            "{m}"
+        );
+        let link = LinkState::Connecting {
+            attempt: 2,
+            hub: "wss://a.example:8443".into(),
+        };
+        let m = message("robot1", &[], &uplink, &link, 0);
+        assert_eq!(
+            m["status"][0]["message"],
+            "connecting to wss://a.example:8443 (attempt 2)"
+        );
     }
 }

@@ -17,9 +17,15 @@
 //! Reconnecting distinguishes whose fault a failure is. When the robot's own link is down
 //! an attempt is cheap — with no route at all it fails in the local kernel (retried every
 //! 50–100 ms), otherwise it costs one SYN (retried every 125–500 ms) — so the agent is back
-//! within a fraction of a second of the link returning. When the hub refuses, fails or is overloaded, attempts back off
-//! exponentially with full jitter (and never sooner than a `Retry-After` the hub sent), so
-//! a fleet does not stampede a restarted hub.
+//! within a fraction of a second of the link returning. When the hub refuses, fails or is
+//! overloaded, attempts back off exponentially with full jitter (and never sooner than a
+//! `Retry-After` the hub sent), so a fleet does not stampede a restarted hub.
+//!
+//! With several hub URLs the agent fails over between them (`failover`): it stays on the
+//! hub it is connected to, moves on to the next at once when an attempt fails, and waits
+//! only after a full round through the list.
+
+mod failover;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
@@ -52,6 +58,8 @@ use tokio_tungstenite::tungstenite::client::IntoClientRequest;
 use tokio_tungstenite::tungstenite::http::HeaderValue;
 use tokio_util::sync::CancellationToken;
 
+use failover::{Backoff, Failover};
+
 /// How often the agent reports its demand and link figures to the hub.
 const LINK_REPORT_INTERVAL: Duration = Duration::from_secs(1);
 
@@ -68,18 +76,9 @@ const CONNECT_TIMEOUT: Duration = Duration::from_secs(3);
 const CONNECT_STAGGER: Duration = Duration::from_millis(250);
 /// Most TCP connects in flight at once for one connection attempt.
 const CONNECT_RACE: usize = 8;
-/// Longest wait between attempts while the robot's own link is down.
-const LINK_RETRY_MAX: Duration = Duration::from_millis(500);
-/// Wait between attempts while the robot has no route at all (interface down): such an
-/// attempt fails in the local kernel without sending anything, so it is free to repeat.
-const NO_ROUTE_RETRY: Duration = Duration::from_millis(100);
 /// Unsent bytes the kernel may hold for the link (`TCP_NOTSENT_LOWAT`): the rest waits in
 /// the scheduler, where a priority message can still overtake it.
 const NOTSENT_LOWAT: u32 = 16 * 1024;
-/// Wait between attempts after a permanent failure (credentials or certificate refused):
-/// nothing changes by itself, but an operator may fix the hub side, so the robot comes
-/// back within this without a restart.
-const PERMANENT_RETRY: Duration = Duration::from_secs(60);
 /// How often the durable outbox gets a chance to sync pending writes.
 const JOURNAL_TICK: Duration = Duration::from_secs(1);
 /// Frames between the session and the link's writer (see the hub's agent driver: the
@@ -125,6 +124,13 @@ impl Failure {
             retry_after: None,
         }
     }
+
+    fn into_reason(self) -> String {
+        match self {
+            Failure::Link(r) | Failure::NoRoute(r) | Failure::Permanent(r) => r,
+            Failure::Hub { reason, .. } => reason,
+        }
+    }
 }
 
 /// Local ↔ hub topic names.
@@ -162,7 +168,9 @@ impl NameMap {
 /// Uplink settings.
 #[derive(Debug, Clone)]
 pub struct UplinkConfig {
-    pub hub_url: String,
+    /// The hubs, in the order to try them (the agent stays on the one it is connected to
+    /// and moves on when it fails; docs/config.md, "Several hubs"); at least one.
+    pub hub_urls: Vec<String>,
     pub robot: fleetlink_auth::RobotName,
     pub token: String,
     pub heartbeat: Duration,
@@ -185,12 +193,22 @@ pub struct UplinkConfig {
     pub budget: Option<fleetlink_qos::BudgetConfig>,
 }
 
-/// The link's state, observable by tests and the CLI.
+/// The link's state, observable by tests, the CLI and the status topic. `hub` is the URL
+/// being tried or connected to (one of [`UplinkConfig::hub_urls`]).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum LinkState {
-    Connecting { attempt: u32 },
-    Connected { session: String, namespace: String },
-    Disconnected { reason: String },
+    Connecting {
+        attempt: u32,
+        hub: String,
+    },
+    Connected {
+        session: String,
+        namespace: String,
+        hub: String,
+    },
+    Disconnected {
+        reason: String,
+    },
 }
 
 /// Counters of the uplink, for status display and tests.
@@ -308,7 +326,11 @@ impl Uplink {
             client,
             Router::compile_pattern(".*").expect("a constant pattern compiles"),
         );
-        let (state, _) = watch::channel(LinkState::Connecting { attempt: 0 });
+        let first = cfg.hub_urls.first().cloned().unwrap_or_default();
+        let (state, _) = watch::channel(LinkState::Connecting {
+            attempt: 0,
+            hub: first,
+        });
         Ok(Uplink {
             cfg,
             router,
@@ -336,35 +358,39 @@ impl Uplink {
                 }
             })
         };
-        let mut backoff = Backoff::new(self.cfg.reconnect_initial, self.cfg.reconnect_max);
+        let hubs = &self.cfg.hub_urls;
+        let mut failover = Failover::new(
+            hubs.len(),
+            Backoff::new(self.cfg.reconnect_initial, self.cfg.reconnect_max),
+        );
         let mut log = FailureLog::default();
         let mut attempt = 0u32;
         loop {
+            let Some(url) = hubs.get(failover.hub()) else {
+                tracing::error!(robot = %self.cfg.robot, "the uplink has no hub URL to connect to");
+                shutdown.cancelled().await;
+                break;
+            };
             attempt += 1;
-            self.state.send_replace(LinkState::Connecting { attempt });
+            tracing::debug!(robot = %self.cfg.robot, "trying hub {url} (attempt {attempt})");
+            self.state.send_replace(LinkState::Connecting {
+                attempt,
+                hub: url.clone(),
+            });
             // Cancellation is handled inside, so a connection's tasks are ended and awaited
             // (and release the outbox) before `run` returns.
-            let outcome = self.connect_and_serve(&shutdown).await;
+            let outcome = self.connect_and_serve(url, &shutdown).await;
             if shutdown.is_cancelled() {
                 break;
             }
             let (reason, wait) = match outcome {
                 Ok(reason) => {
                     attempt = 0;
-                    (reason.clone(), backoff.after_session())
+                    (format!("{reason} (hub {url})"), failover.after_session())
                 }
-                Err(Failure::Link(reason)) => {
-                    let w = backoff.after_link_failure();
-                    (reason, w)
-                }
-                Err(Failure::NoRoute(reason)) => (reason, jitter(NO_ROUTE_RETRY)),
-                Err(Failure::Permanent(reason)) => (reason, jitter(PERMANENT_RETRY)),
-                Err(Failure::Hub {
-                    reason,
-                    retry_after,
-                }) => {
-                    let w = backoff.after_hub_failure(retry_after);
-                    (reason, w)
+                Err(failure) => {
+                    let wait = failover.after_failure(&failure);
+                    (failure.into_reason(), wait)
                 }
             };
             // Attempts repeat every 100 ms while there is no route: say so once, then
@@ -376,9 +402,15 @@ impl Uplink {
                 } else {
                     String::new()
                 };
+                // With several hubs, which one is next (the same after a session ended,
+                // the next at once after a failed attempt).
+                let to = match hubs.len() {
+                    1 => String::new(),
+                    _ => format!(" to {}", hubs[failover.hub()]),
+                };
                 tracing::warn!(
                     robot = %self.cfg.robot,
-                    "hub link down: {reason}; next attempt in {} ms{repeats}",
+                    "hub link down: {reason}; next attempt{to} in {} ms{repeats}",
                     wait.as_millis()
                 );
             } else {
@@ -403,6 +435,7 @@ impl Uplink {
     /// WebSocket (and TLS) handshake.
     async fn open_socket(
         &self,
+        url: &str,
         req: tokio_tungstenite::tungstenite::handshake::client::Request,
     ) -> Result<
         (
@@ -413,7 +446,6 @@ impl Uplink {
         ),
         Failure,
     > {
-        let url = &self.cfg.hub_url;
         let host = req
             .uri()
             .host()
@@ -464,28 +496,28 @@ impl Uplink {
         .map_err(|e| handshake_failure(url, e))
     }
 
-    /// One connection. `Err` if it never came up, `Ok(reason)` when it ended after
-    /// `WELCOME`.
-    async fn connect_and_serve(&self, shutdown: &CancellationToken) -> Result<String, Failure> {
-        let mut req = self
-            .cfg
-            .hub_url
-            .as_str()
+    /// One connection to the hub at `url`. `Err` if it never came up, `Ok(reason)` when it
+    /// ended after `WELCOME`.
+    async fn connect_and_serve(
+        &self,
+        url: &str,
+        shutdown: &CancellationToken,
+    ) -> Result<String, Failure> {
+        let mut req = url
             .into_client_request()
-            .map_err(|e| Failure::hub(format!("bad hub URL {}: {e}", self.cfg.hub_url)))?;
+            .map_err(|e| Failure::hub(format!("bad hub URL {url}: {e}")))?;
         req.headers_mut().insert(
             "Sec-WebSocket-Protocol",
             HeaderValue::from_static(SUBPROTOCOL),
         );
         let (ws, response) = or_shutdown(
             shutdown,
-            tokio::time::timeout(HANDSHAKE_TIMEOUT, self.open_socket(req)),
+            tokio::time::timeout(HANDSHAKE_TIMEOUT, self.open_socket(url, req)),
         )
         .await?
         .map_err(|_| {
             Failure::hub(format!(
-                "the WebSocket handshake with {} took longer than {HANDSHAKE_TIMEOUT:?}",
-                self.cfg.hub_url
+                "the WebSocket handshake with {url} took longer than {HANDSHAKE_TIMEOUT:?}"
             ))
         })??;
         let agreed = response
@@ -494,8 +526,7 @@ impl Uplink {
             .and_then(|v| v.to_str().ok());
         if agreed != Some(SUBPROTOCOL) {
             return Err(Failure::hub(format!(
-                "{} does not speak {SUBPROTOCOL} (is it a fleetlink hub?)",
-                self.cfg.hub_url
+                "{url} does not speak {SUBPROTOCOL} (is it a fleetlink hub?)"
             )));
         }
         let (mut sink, mut stream) = ws.split();
@@ -539,7 +570,7 @@ impl Uplink {
                     features,
                     ..
                 }) => break (session, namespace, features),
-                Some(Event::Closed(r)) => return Err(self.before_welcome(r)),
+                Some(Event::Closed(r)) => return Err(self.before_welcome(url, r)),
                 Some(_) => continue,
                 None => {}
             }
@@ -554,7 +585,7 @@ impl Uplink {
             }
         };
         self.stats.connects.fetch_add(1, Relaxed);
-        tracing::info!(robot = %self.cfg.robot, %namespace, "connected to hub");
+        tracing::info!(robot = %self.cfg.robot, %namespace, "connected to hub {url}");
         // This connection owns the in-flight state from here on.
         self.outbox.on_link_reset();
         // A hub that says which topics it wants gets only those (and `always` ones); an
@@ -616,6 +647,7 @@ impl Uplink {
         self.state.send_replace(LinkState::Connected {
             session: session_id,
             namespace: namespace.clone(),
+            hub: url.to_owned(),
         });
 
         // Calls: what the local table queued while the link was down is stale (its calls
@@ -700,9 +732,11 @@ impl Uplink {
     }
 
     /// Why a connection that never got `WELCOME` failed, and so how soon to retry.
-    fn before_welcome(&self, r: CloseReason) -> Failure {
+    fn before_welcome(&self, url: &str, r: CloseReason) -> Failure {
         match r {
-            CloseReason::Refused(text) => self.refusal(&text),
+            CloseReason::Refused(text) => {
+                refusal(&text, url, self.cfg.robot.as_str(), &self.cfg.token)
+            }
             CloseReason::HandshakeTimeout { .. } => {
                 Failure::hub("no WELCOME from the hub within 10 s".to_owned())
             }
@@ -775,15 +809,6 @@ impl Uplink {
                 thinned: b.thinned,
             });
         }
-    }
-
-    fn refusal(&self, text: &str) -> Failure {
-        refusal(
-            text,
-            &self.cfg.hub_url,
-            self.cfg.robot.as_str(),
-            &self.cfg.token,
-        )
     }
 
     /// A topic event or control frame from the hub.
@@ -1052,50 +1077,6 @@ fn certificate_problem(c: &rustls::CertificateError) -> &'static str {
     }
 }
 
-/// When to try again: fast while the robot's own link is down, exponential with full
-/// jitter while the hub refuses or fails (see the module docs). Sans-IO: tests drive it.
-#[derive(Debug)]
-struct Backoff {
-    initial: Duration,
-    max: Duration,
-    hub: Duration,
-    link: Duration,
-}
-
-impl Backoff {
-    fn new(initial: Duration, max: Duration) -> Backoff {
-        Backoff {
-            initial,
-            max: max.max(initial),
-            hub: initial,
-            link: initial.min(LINK_RETRY_MAX),
-        }
-    }
-
-    /// A session that was up has ended: start over, almost at once.
-    fn after_session(&mut self) -> Duration {
-        self.hub = self.initial;
-        self.link = self.initial.min(LINK_RETRY_MAX);
-        jitter(self.initial.min(LINK_RETRY_MAX))
-    }
-
-    fn after_link_failure(&mut self) -> Duration {
-        let w = jitter(self.link);
-        self.link = (self.link * 2).min(LINK_RETRY_MAX);
-        w
-    }
-
-    fn after_hub_failure(&mut self, retry_after: Option<Duration>) -> Duration {
-        let w = jitter(self.hub);
-        self.hub = (self.hub * 2).min(self.max);
-        match retry_after {
-            // Spread a fleet told the same time over half of it again.
-            Some(at_least) => w.max(at_least + jitter(at_least / 2)),
-            None => w,
-        }
-    }
-}
-
 /// TCP connect to `host:port` with staggered attempts: the name is resolved once, then a
 /// connect starts every [`CONNECT_STAGGER`] (cycling through the addresses) while none has
 /// completed, and the first to complete wins; the others are dropped, which closes them.
@@ -1152,51 +1133,6 @@ async fn connect_staggered(host: &str, port: u16) -> std::io::Result<tokio::net:
             },
             _ = tokio::time::sleep_until(next), if more => {}
         }
-    }
-}
-
-/// Full jitter in `[d/2, d]`, so a fleet does not retry in step.
-fn jitter(d: Duration) -> Duration {
-    d.mul_f64(0.5 + fastrand::f64() * 0.5)
-}
-
-#[cfg(test)]
-mod backoff_tests {
-    use super::*;
-
-    #[test]
-    fn a_dead_robot_link_is_retried_within_half_a_second() {
-        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
-        for _ in 0..50 {
-            assert!(b.after_link_failure() <= LINK_RETRY_MAX);
-        }
-    }
-
-    #[test]
-    fn a_failing_hub_backs_off_to_the_maximum_and_a_session_resets_it() {
-        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
-        let waits: Vec<Duration> = (0..10).map(|_| b.after_hub_failure(None)).collect();
-        assert!(waits[0] <= Duration::from_millis(250));
-        assert!(waits[9] >= Duration::from_secs(5), "{waits:?}");
-        assert!(waits.iter().all(|w| *w <= Duration::from_secs(10)));
-        assert!(b.after_session() <= LINK_RETRY_MAX);
-        assert!(b.after_hub_failure(None) <= Duration::from_millis(250));
-    }
-
-    #[test]
-    fn retry_after_is_a_floor_spread_by_jitter() {
-        let mut b = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
-        let waits: Vec<Duration> = (0..200)
-            .map(|_| {
-                let mut b2 = Backoff::new(Duration::from_millis(250), Duration::from_secs(10));
-                b2.after_hub_failure(Some(Duration::from_secs(4)))
-            })
-            .collect();
-        assert!(waits.iter().all(|w| *w >= Duration::from_secs(4)));
-        assert!(waits.iter().all(|w| *w <= Duration::from_secs(6)));
-        let distinct: std::collections::HashSet<_> = waits.iter().collect();
-        assert!(distinct.len() > 100, "attempts must not be in step");
-        assert!(b.after_hub_failure(None) <= Duration::from_millis(250));
     }
 }
 

@@ -181,7 +181,7 @@ pub struct TestAgent {
 /// An uplink for robot `robot` of `hub`, with a token minted for it.
 pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
     UplinkConfig {
-        hub_url: hub.agent_url(),
+        hub_urls: vec![hub.agent_url()],
         robot: fleetlink_auth::RobotName::new(robot).expect("a valid robot name"),
         token: hub.robot_token(robot),
         heartbeat: Duration::from_millis(200),

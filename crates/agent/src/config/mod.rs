@@ -37,7 +37,7 @@ use fleetlink_auth::RobotName;
 use serde::{Deserialize, Deserializer};
 use serde_saphyr::MessageFormatter;
 
-use locate::LocationTree;
+use locate::{FieldPath, LocationTree, Segment};
 pub use ros1::{Ros1Config, Ros1Publish, Ros1Services};
 pub use ros2::{Ros2Actions, Ros2Config};
 pub use sim::{
@@ -48,8 +48,12 @@ pub use sim::{
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct AgentConfig {
-    /// Hub URL, `ws://` or `wss://`. Default `ws://127.0.0.1:8080`. CLI `--hub` overrides.
-    pub hub: String,
+    /// Hub URLs, `ws://` or `wss://`, in the order to try them: YAML `hub:` takes one URL
+    /// or a list. The agent stays on the hub it is connected to and moves on to the next
+    /// only when that one fails (`uplink::failover`). Default `[ws://127.0.0.1:8080]`.
+    /// CLI `--hub` (repeatable) replaces the list.
+    #[serde(deserialize_with = "one_or_more_urls")]
+    pub hub: Vec<String>,
     /// Robot name (the rule is [`fleetlink_auth::RobotName`]'s; a name breaking it is
     /// refused while parsing, at its line); its topics appear on the hub under `/<name>`.
     /// Default `robot1`. CLI `--name` overrides.
@@ -134,7 +138,7 @@ impl BudgetSettings {
 impl Default for AgentConfig {
     fn default() -> Self {
         Self {
-            hub: "ws://127.0.0.1:8080".to_owned(),
+            hub: vec!["ws://127.0.0.1:8080".to_owned()],
             name: RobotName::new("robot1").expect("robot1 is a valid robot name"),
             token: String::new(),
             tls: None,
@@ -261,7 +265,8 @@ pub struct Subscription {
 /// refused like a bad `hub:` line would be.
 #[derive(Debug, Clone, Default)]
 pub struct Overrides {
-    pub hub: Option<String>,
+    /// `--hub`, given once per hub: replaces the file's whole list.
+    pub hub: Option<Vec<String>>,
     pub name: Option<RobotName>,
 }
 
@@ -275,11 +280,12 @@ impl Overrides {
         }
     }
 
-    /// The command-line flag that set `field`, if one did.
-    fn flag_for(&self, field: &str) -> Option<&'static str> {
-        match field {
-            "hub" if self.hub.is_some() => Some("--hub"),
-            "name" if self.name.is_some() => Some("--name"),
+    /// The command-line flag that set the field at `path` (`hub[1]` was set by `--hub`
+    /// too), if one did.
+    fn flag_for(&self, path: &FieldPath) -> Option<&'static str> {
+        match path.0.first() {
+            Some(Segment::Key(k)) if k == "hub" && self.hub.is_some() => Some("--hub"),
+            Some(Segment::Key(k)) if k == "name" && self.name.is_some() => Some("--name"),
             _ => None,
         }
     }
@@ -318,7 +324,7 @@ impl AgentConfig {
             serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
         overrides.apply(&mut config);
         validate::validate(&config).map_err(|problem| {
-            if overrides.flag_for(&problem.path.to_string()).is_some() {
+            if overrides.flag_for(&problem.path).is_some() {
                 return flag_or_field(problem, overrides);
             }
             let (line, column) = LocationTree::parse(text).map_or((1, 1), |tree| {
@@ -424,14 +430,13 @@ pub enum ConfigError {
 /// A check's problem as an error naming the command-line flag that set the field, or the
 /// field alone.
 fn flag_or_field(problem: validate::Problem, overrides: &Overrides) -> ConfigError {
-    let field = problem.path.to_string();
-    match overrides.flag_for(&field) {
+    match overrides.flag_for(&problem.path) {
         Some(flag) => ConfigError::Flag {
             flag,
             message: problem.message,
         },
         None => ConfigError::Invalid {
-            field,
+            field: problem.path.to_string(),
             message: problem.message,
         },
     }
@@ -553,6 +558,35 @@ fn scalar_at(text: &str, line: u64, column: u64) -> Option<String> {
     } else {
         format!("`{short}`")
     })
+}
+
+/// `hub:` as one URL (`hub: ws://hub.example:8080`) or a list of them. Each URL is checked
+/// later, with the other fields ([`validate`]), so a bad one is named by its index.
+fn one_or_more_urls<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Vec<String>, D::Error> {
+    struct Urls;
+    impl<'de> serde::de::Visitor<'de> for Urls {
+        type Value = Vec<String>;
+
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("a hub URL such as ws://hub.example:8080, or a list of them")
+        }
+
+        fn visit_str<E: serde::de::Error>(self, url: &str) -> Result<Vec<String>, E> {
+            Ok(vec![url.to_owned()])
+        }
+
+        fn visit_seq<A: serde::de::SeqAccess<'de>>(
+            self,
+            mut seq: A,
+        ) -> Result<Vec<String>, A::Error> {
+            let mut urls = Vec::new();
+            while let Some(url) = seq.next_element::<String>()? {
+                urls.push(url);
+            }
+            Ok(urls)
+        }
+    }
+    deserializer.deserialize_any(Urls)
 }
 
 fn socket_addr<'de, D: Deserializer<'de>>(deserializer: D) -> Result<SocketAddr, D::Error> {

@@ -50,7 +50,7 @@ fn empty_file_is_the_default() {
 #[test]
 fn full_example_parses() {
     let cfg = AgentConfig::from_str(FULL, "robot.yaml").expect("valid");
-    assert_eq!(cfg.hub, "wss://hub.example.com:443");
+    assert_eq!(cfg.hub, ["wss://hub.example.com:443"]);
     assert_eq!(cfg.name.as_str(), "robot_7");
     assert_eq!(cfg.token, "s3cret");
     assert_eq!(cfg.heartbeat(), Duration::from_millis(500));
@@ -318,7 +318,7 @@ fn example_files_parse() {
 #[test]
 fn validate_reports_the_field_without_position() {
     let cfg = AgentConfig {
-        hub: "http://x".into(),
+        hub: vec!["http://x".into()],
         ..AgentConfig::default()
     };
     let e = cfg.validate().expect_err("bad hub");
@@ -340,12 +340,12 @@ fn command_line_overrides_are_checked_together_with_the_file() {
     )
     .unwrap();
     let hub = |h: &str| Overrides {
-        hub: Some(h.to_owned()),
+        hub: Some(vec![h.to_owned()]),
         name: None,
     };
     // The README's pattern: the wss:// hub on the command line, tls: in the file.
     let cfg = AgentConfig::load_with(Some(&path), &hub("wss://hub.example:8080")).expect("valid");
-    assert_eq!(cfg.hub, "wss://hub.example:8080");
+    assert_eq!(cfg.hub, ["wss://hub.example:8080"]);
     // Not a WebSocket URL, or no host: refused, naming the flag.
     for bad in ["http://x", "hub.example:8080", "ws://"] {
         let e = AgentConfig::load_with(None, &hub(bad)).expect_err(bad);
@@ -360,7 +360,7 @@ fn command_line_overrides_are_checked_together_with_the_file() {
     let cfg = AgentConfig::load_with(
         Some(&path),
         &Overrides {
-            hub: Some("wss://hub.example:8080".into()),
+            hub: Some(vec!["wss://hub.example:8080".into()]),
             name: Some(RobotName::new("robot8").unwrap()),
         },
     )
@@ -662,4 +662,114 @@ fn a_data_budget_is_a_rate_and_or_a_daily_allowance() {
     assert!(text.contains("max_kbps") && text.contains("> 0"), "{text}");
     let text = err("name: r1\nlink:\n  budget: { mb_a_day: 5 }\n").to_string();
     assert!(text.contains("mb_a_day"), "{text}");
+}
+
+/// Issue 38: `hub:` is one URL or a list of them, tried in order.
+#[test]
+fn issue38_hub_is_one_url_or_a_list() {
+    let one = AgentConfig::from_str("hub: ws://a.example:8080\n", "a.yaml").expect("valid");
+    assert_eq!(one.hub, ["ws://a.example:8080"]);
+    let flow = AgentConfig::from_str(
+        "hub: [wss://a.example:8443, wss://b.example:8443]\n",
+        "a.yaml",
+    )
+    .expect("valid");
+    assert_eq!(flow.hub, ["wss://a.example:8443", "wss://b.example:8443"]);
+    let block = AgentConfig::from_str(
+        "hub:\n  - ws://a.example:8080\n  - ws://b.example:8080\n  - wss://c.example:8443\n",
+        "a.yaml",
+    )
+    .expect("valid");
+    assert_eq!(
+        block.hub,
+        [
+            "ws://a.example:8080",
+            "ws://b.example:8080",
+            "wss://c.example:8443"
+        ]
+    );
+    // `tls:` with a list of wss:// hubs applies to all of them.
+    AgentConfig::from_str(
+        "hub: [wss://a.example:8443, wss://b.example:8443]\ntls: { ca: ca.pem }\n",
+        "a.yaml",
+    )
+    .expect("valid");
+}
+
+/// Issue 38: a bad URL in the list is named by its index, at its line and column; an
+/// empty list says what to write.
+#[test]
+fn issue38_a_bad_hub_in_the_list_is_named_by_its_index() {
+    assert_err(
+        "hub: [ws://a.example:8080, http://b.example]\n",
+        "robot.yaml:1:28: hub[1]: must be a ws:// or wss:// URL such as ws://hub.example:8080, \
+         got \"http://b.example\"",
+    );
+    assert_err(
+        "name: r1\nhub:\n  - ws://a.example:8080\n  - ws://\n",
+        "robot.yaml:4:5: hub[1]: is not a valid URL (empty string): \"ws://\"",
+    );
+    assert_err(
+        "hub: [ws://a.example:8080, ws://a.example:8080]\n",
+        "robot.yaml:1:28: hub[1]: \"ws://a.example:8080\" is already hub[0]; list each hub once",
+    );
+    let e = err("hub: []\n");
+    assert_eq!(e.field(), Some("hub"), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("robot.yaml:1:6: hub: lists no hub: "),
+        "{e}"
+    );
+    assert!(e.to_string().contains("hub: [wss://a.example:8443"), "{e}");
+    // Wrong types: the whole value, or one element.
+    let e = err("hub: 8080\n");
+    assert_eq!(e.field(), Some("hub"), "{e}");
+    assert!(e.to_string().contains("a hub URL"), "{e}");
+    let e = err("hub:\n  - ws://a.example:8080\n  - { url: ws://b }\n");
+    assert_eq!(e.field(), Some("hub[1]"), "{e}");
+    assert_eq!(e.position().map(|p| p.line), Some(3), "{e}");
+    // `tls:` needs every hub to be wss://.
+    assert_err(
+        "hub: [wss://a.example:8443, ws://b.example:8080]\ntls: { ca: ca.pem }\n",
+        "robot.yaml:2:6: tls: applies to every hub, so each must be wss://, but hub[1] is \
+         \"ws://b.example:8080\"",
+    );
+}
+
+/// Issue 38: `--hub`, given once per hub, replaces the file's list and is checked like it.
+#[test]
+fn issue38_hub_flags_replace_the_files_list() {
+    let dir = std::env::temp_dir().join(format!("fleetlink-hub-list-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("robot.yaml");
+    std::fs::write(
+        &path,
+        "hub: [wss://a.example:8443, wss://b.example:8443]\ntls: { ca: ca.pem }\n",
+    )
+    .unwrap();
+    let hubs = |h: &[&str]| Overrides {
+        hub: Some(h.iter().map(|u| u.to_string()).collect()),
+        name: None,
+    };
+    let cfg = AgentConfig::load_with(Some(&path), &hubs(&["wss://c.example:8443"])).expect("one");
+    assert_eq!(cfg.hub, ["wss://c.example:8443"]);
+    let both = ["wss://c.example:8443", "wss://d.example:8443"];
+    let cfg = AgentConfig::load_with(Some(&path), &hubs(&both)).expect("two");
+    assert_eq!(cfg.hub, both);
+    let cfg = AgentConfig::load_with(Some(&path), &Overrides::default()).expect("the file's");
+    assert_eq!(cfg.hub, ["wss://a.example:8443", "wss://b.example:8443"]);
+    // A bad second flag is the flag's fault, and the message quotes it.
+    let e = AgentConfig::load_with(None, &hubs(&["ws://c.example:8080", "http://d"]))
+        .expect_err("http");
+    assert_eq!(e.field(), Some("--hub"), "{e}");
+    assert_eq!(
+        e.to_string(),
+        "--hub: must be a ws:// or wss:// URL such as ws://hub.example:8080, got \"http://d\""
+    );
+    // The file's tls: with a plain hub among the flags is still the file's mistake.
+    let e = AgentConfig::load_with(Some(&path), &hubs(&["wss://c.example:8443", "ws://d:80"]))
+        .expect_err("tls");
+    assert_eq!(e.field(), Some("tls"), "{e}");
+    assert!(e.to_string().contains("hub[1] is \"ws://d:80\""), "{e}");
+    let _ = std::fs::remove_dir_all(dir);
 }

@@ -1,5 +1,5 @@
 //! Semantic checks on a parsed [`AgentConfig`]: what serde's types cannot say (rates > 0,
-//! ROS topic name syntax, unique sim topics, `hub` is a WebSocket URL).
+//! ROS topic name syntax, unique sim topics, every `hub` is a WebSocket URL).
 //!
 //! Checks run on the typed value and report a [`FieldPath`]; the caller turns the path into
 //! a line and column with [`super::locate::LocationTree`]. The first problem in document
@@ -28,37 +28,8 @@ fn problem(path: FieldPath, message: impl Into<String>) -> Problem {
 }
 
 pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
-    if !(cfg.hub.starts_with("ws://") || cfg.hub.starts_with("wss://")) {
-        return Err(problem(
-            "hub".into(),
-            format!(
-                "must be a ws:// or wss:// URL such as ws://hub.example:8080, got {:?}",
-                cfg.hub
-            ),
-        ));
-    }
-    match cfg.hub.parse::<tokio_tungstenite::tungstenite::http::Uri>() {
-        Ok(uri) if uri.host().is_some_and(|h| !h.is_empty()) => {}
-        Ok(_) => {
-            return Err(problem(
-                "hub".into(),
-                format!("names no host: {:?} (expected ws://HOST:PORT)", cfg.hub),
-            ));
-        }
-        Err(e) => {
-            return Err(problem(
-                "hub".into(),
-                format!("is not a valid URL ({e}): {:?}", cfg.hub),
-            ));
-        }
-    }
+    validate_hubs(cfg)?;
     if let Some(tls) = &cfg.tls {
-        if !cfg.hub.starts_with("wss://") {
-            return Err(problem(
-                "tls".into(),
-                format!("is only used with a wss:// hub, but hub is {:?}", cfg.hub),
-            ));
-        }
         for (field, path) in [
             ("tls.ca", &tls.ca),
             ("tls.cert", &tls.cert),
@@ -183,6 +154,61 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
         }
     }
     Ok(())
+}
+
+/// `hub`: at least one URL, each a `ws://` or `wss://` URL with a host, none twice; with
+/// `tls:`, every one `wss://`. A single hub is named `hub`, one of several `hub[i]`.
+fn validate_hubs(cfg: &AgentConfig) -> Result<(), Problem> {
+    let hubs = &cfg.hub;
+    if hubs.is_empty() {
+        return Err(problem(
+            "hub".into(),
+            "lists no hub: give its URL (hub: ws://hub.example:8080) or several to fail over \
+             between (hub: [wss://a.example:8443, wss://b.example:8443])",
+        ));
+    }
+    let at = |i: usize| match hubs.len() {
+        1 => FieldPath::from("hub"),
+        _ => FieldPath::from("hub").index(i),
+    };
+    for (i, url) in hubs.iter().enumerate() {
+        check_hub_url(url).map_err(|m| problem(at(i), m))?;
+        if let Some(first) = hubs[..i].iter().position(|u| u == url) {
+            return Err(problem(
+                at(i),
+                format!("{url:?} is already hub[{first}]; list each hub once"),
+            ));
+        }
+    }
+    // `tls:` applies to every hub: a plain ws:// one in the list would carry the robot's
+    // data unencrypted after a failover, which whoever wrote `tls:` did not mean.
+    if cfg.tls.is_some()
+        && let Some((i, url)) = hubs
+            .iter()
+            .enumerate()
+            .find(|(_, u)| !u.starts_with("wss://"))
+    {
+        let message = match hubs.len() {
+            1 => format!("is only used with a wss:// hub, but hub is {url:?}"),
+            _ => format!("applies to every hub, so each must be wss://, but hub[{i}] is {url:?}"),
+        };
+        return Err(problem("tls".into(), message));
+    }
+    Ok(())
+}
+
+/// A `ws://` or `wss://` URL that names a host.
+fn check_hub_url(url: &str) -> Result<(), String> {
+    if !(url.starts_with("ws://") || url.starts_with("wss://")) {
+        return Err(format!(
+            "must be a ws:// or wss:// URL such as ws://hub.example:8080, got {url:?}"
+        ));
+    }
+    match url.parse::<tokio_tungstenite::tungstenite::http::Uri>() {
+        Ok(uri) if uri.host().is_some_and(|h| !h.is_empty()) => Ok(()),
+        Ok(_) => Err(format!("names no host: {url:?} (expected ws://HOST:PORT)")),
+        Err(e) => Err(format!("is not a valid URL ({e}): {url:?}")),
+    }
 }
 
 fn validate_ros1(r: &super::Ros1Config) -> Result<(), Problem> {

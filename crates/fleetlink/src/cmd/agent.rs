@@ -11,9 +11,10 @@ use tokio_util::sync::CancellationToken;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Hub URL (overrides `hub:` in the config), e.g. ws://hub.example:8080
-    #[arg(long)]
-    pub hub: Option<String>,
+    /// Hub URL, e.g. ws://hub.example:8080; give it once per hub to list several (tried
+    /// in the order given, see docs/config.md). Replaces the config's whole `hub:` list.
+    #[arg(long, value_name = "URL")]
+    pub hub: Vec<String>,
     /// Robot name (overrides `name:`); its topics appear on the hub under /NAME. The rule:
     /// docs/config.md, "Robot names".
     #[arg(long)]
@@ -36,7 +37,7 @@ pub struct Args {
 /// Loads the file (if any) and applies the command-line overrides.
 pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
     let overrides = Overrides {
-        hub: args.hub.clone(),
+        hub: (!args.hub.is_empty()).then(|| args.hub.clone()),
         name: args.name.clone(),
     };
     let mut cfg = AgentConfig::load_with(args.config.as_deref(), &overrides)?;
@@ -67,7 +68,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         .context("starting the async runtime")?;
     rt.block_on(async {
         let agent = Agent::bind(opts, transcoder).await?;
-        println!("fleetlink agent {} → {}", cfg.name, cfg.hub);
+        println!("fleetlink agent {} → {}", cfg.name, cfg.hub.join(", "));
         if let Some(a) = agent.local_addr() {
             println!("  local rosbridge: ws://{a}/");
         }

@@ -183,7 +183,7 @@ async fn after_a_blackout_nothing_older_than_its_age_limit_arrives() {
     let hub = start_hub().await;
     let proxy = Blackhole::start(hub.addr).await;
     let mut cfg = uplink_config(&hub, "robot3");
-    cfg.hub_url = format!("ws://{}", proxy.addr);
+    cfg.hub_urls = vec![format!("ws://{}", proxy.addr)];
     cfg.topic_qos = vec![
         (
             TopicName::parse("/pose").unwrap(),

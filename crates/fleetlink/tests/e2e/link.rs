@@ -144,7 +144,7 @@ async fn dead_link_is_detected_within_two_heartbeats_when_tcp_does_not_notice() 
     let hub = start_hub().await;
     let proxy = Blackhole::start(hub.addr).await;
     let mut cfg = uplink_config(&hub, "robot_dl");
-    cfg.hub_url = format!("ws://{}", proxy.addr);
+    cfg.hub_urls = vec![format!("ws://{}", proxy.addr)];
     let heartbeat = Duration::from_millis(300);
     cfg.heartbeat = heartbeat;
     cfg.reconnect_initial = Duration::from_secs(30); // keep it down once it is down

@@ -19,7 +19,7 @@ const HUB_TOPIC: &str = "/robot1/nd";
 
 fn no_drop_config(hub: &TestHub, proxy: &Blackhole) -> UplinkConfig {
     let mut cfg = uplink_config(hub, "robot1");
-    cfg.hub_url = format!("ws://{}", proxy.addr);
+    cfg.hub_urls = vec![format!("ws://{}", proxy.addr)];
     cfg.heartbeat = Duration::from_millis(200);
     cfg.topic_qos = vec![(
         TopicName::parse(TOPIC).unwrap(),

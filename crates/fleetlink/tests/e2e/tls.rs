@@ -59,7 +59,7 @@ async fn robot_to_browser_over_wss_with_a_client_certificate() {
 
     // The agent: no token; its certificate says it is r1.
     let mut up = uplink_config(&hub, "r1");
-    up.hub_url = format!("wss://localhost:{port}");
+    up.hub_urls = vec![format!("wss://localhost:{port}")];
     up.token = String::new();
     up.tls = Some(
         fleetlink_auth::tls::client_config(&ClientTlsFiles {
@@ -205,7 +205,7 @@ async fn issue14_every_openssl_key_type_connects_an_agent_over_wss() {
         let files = tls_hub_files(crt.clone(), dir.join(format!("{name}.key")));
         let hub = start_hub_with(|cfg| cfg.tls = Some(files)).await;
         let mut up = uplink_config(&hub, "r1");
-        up.hub_url = format!("wss://localhost:{}", hub.addr.port());
+        up.hub_urls = vec![format!("wss://localhost:{}", hub.addr.port())];
         up.tls = Some(
             fleetlink_auth::tls::client_config(&ClientTlsFiles {
                 roots: HubRoots::CaFile(crt),
@@ -268,7 +268,7 @@ async fn issue14_admin_cert_makes_hub_and_robot_certificates_for_mutual_tls() {
     let hub = start_hub_with(|cfg| cfg.tls = Some(files)).await;
     // No token: the robot certificate names the robot.
     let mut up = uplink_config(&hub, "r7");
-    up.hub_url = format!("wss://127.0.0.1:{}", hub.addr.port());
+    up.hub_urls = vec![format!("wss://127.0.0.1:{}", hub.addr.port())];
     up.token = String::new();
     up.tls = Some(
         fleetlink_auth::tls::client_config(&ClientTlsFiles {

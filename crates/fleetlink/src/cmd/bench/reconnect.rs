@@ -90,7 +90,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
     let started = Instant::now();
     for i in 0..args.robots {
         let uplink = UplinkConfig {
-            hub_url: format!("ws://{addr}"),
+            hub_urls: vec![format!("ws://{addr}")],
             robot: fleetlink_auth::RobotName::new(&format!("r{i}"))?,
             token: String::new(),
             heartbeat: Duration::from_secs(1),
