@@ -12,7 +12,8 @@
 # Env: FLEETLINK_BIN (default target/release/fleetlink); TOPICS (10), RATE (10), SIZE (64);
 # LOADED_MAX (default 1000): sizes above it are measured idle only, with a loaded run at
 # LOADED_RATE_BIG Hz (default 1) instead, since N x TOPICS x RATE is more than two cores
-# can generate and relay beyond about 100k msg/s; HEARTBEAT_MS (default: the hub's 1000).
+# can generate and relay beyond about 100k msg/s; HEARTBEAT_MS (default: the hub's 1000);
+# PROBE_MS (default 200, as the agent's link estimator probes; 0: heartbeat pings only).
 # Pose subscribers: one per robot up to 1,000 (the first 1,000 robots' beyond that: two
 # connections per robot would pass the open-files limit of 20,000 at 10,000 robots).
 # Results: one JSON line per run in $OUT (default target/bench-fleet.jsonl) and a table on
@@ -68,6 +69,7 @@ run() { # robots rate subscribers wildcard(0|1)
     [ "$4" = 1 ] && wild=(--wildcard)
     FLEETLINK_SUBSCRIBER_TOKEN="$token" "$bin" bench fleet --hub "$addr" --hub-pid "$hub_pid" \
         --robots "$1" --topics "$topics" --rate "$2" --size "$size" --subscribers "$3" \
+        --probe-ms "${PROBE_MS:-200}" \
         "${wild[@]}" --duration "$seconds" --idle 5 --json 2>"$tmp/bench.err" | tee -a "$out" ||
         { tail -5 "$tmp/bench.err" >&2; return 1; }
 }

@@ -105,6 +105,11 @@ pub struct Args {
     /// answers the rest 503; those retry with backoff).
     #[arg(long, default_value_t = 1024)]
     pub connect_concurrency: usize,
+    /// Milliseconds between a robot's pings: the agent's link estimator sends an echo
+    /// probe every 200 ms besides its heartbeat ping, and so do these robots by default.
+    /// 0: heartbeat pings only.
+    #[arg(long, default_value_t = 200)]
+    pub probe_ms: u64,
     /// Queue length the subscribers ask the hub for (0: the hub's default).
     #[arg(long, default_value_t = 4096)]
     pub queue_length: u32,
@@ -345,6 +350,7 @@ async fn fleet(args: &Args) -> anyhow::Result<Summary> {
     for i in 0..args.robots {
         let url = urls[i % urls.len()].clone();
         let plan = RobotPlan {
+            probe: (args.probe_ms > 0).then(|| Duration::from_millis(args.probe_ms)),
             index: i,
             topics: args.topics,
             source: source_for(&url, i),
@@ -560,6 +566,8 @@ async fn connect_retrying(
 }
 
 struct RobotPlan {
+    /// Ping period when shorter than the heartbeat (the agent's probes).
+    probe: Option<Duration>,
     index: usize,
     topics: usize,
     url: String,
@@ -606,7 +614,7 @@ async fn robot(
             return;
         }
     };
-    let heartbeat = heartbeat_of(&c);
+    let heartbeat = heartbeat_of(&c).min(plan.probe.unwrap_or(Duration::MAX));
     let mut r = Robot {
         ws: c.ws,
         link: c.link,
@@ -1256,6 +1264,7 @@ mod tests {
             connect_timeout: 1.0,
             connect_concurrency: 1,
             queue_length: 0,
+            probe_ms: 200,
             hub_pids: vec![],
             json: false,
             threads: None,
