@@ -943,17 +943,21 @@ async fn or_shutdown<T>(
     }
 }
 
+/// The delay a refusal's `Retry-After` header asks for (whole seconds), if any.
+pub fn retry_after(headers: &tokio_tungstenite::tungstenite::http::HeaderMap) -> Option<Duration> {
+    headers
+        .get("Retry-After")
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .map(Duration::from_secs)
+}
+
 /// Classifies a failed WebSocket/TLS handshake.
 fn handshake_failure(url: &str, e: tokio_tungstenite::tungstenite::Error) -> Failure {
     use tokio_tungstenite::tungstenite::Error as E;
     match e {
         E::Http(resp) => {
-            let retry_after = resp
-                .headers()
-                .get("Retry-After")
-                .and_then(|v| v.to_str().ok())
-                .and_then(|v| v.trim().parse::<u64>().ok())
-                .map(Duration::from_secs);
+            let retry_after = retry_after(resp.headers());
             Failure::Hub {
                 reason: format!("the hub at {url} answered HTTP {}", resp.status()),
                 retry_after,

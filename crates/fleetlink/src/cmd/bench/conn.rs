@@ -153,12 +153,7 @@ async fn connect_inner(
     let mut ws = match open_ws(url, source, config).await {
         Ok(ws) => ws,
         Err(tokio_tungstenite::tungstenite::Error::Http(resp)) if resp.status() == 503 => {
-            let retry_after = resp
-                .headers()
-                .get("Retry-After")
-                .and_then(|v| v.to_str().ok())
-                .and_then(|v| v.trim().parse::<u64>().ok())
-                .map(Duration::from_secs);
+            let retry_after = fleetlink_agent::uplink::retry_after(resp.headers());
             return Err(Busy { retry_after }.into());
         }
         Err(e) => return Err(e).with_context(|| format!("{robot}: cannot connect to {url}")),

@@ -129,22 +129,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     check(&args)?;
     let conns = args.robots + args.subscribers + usize::from(args.wildcard);
     crate::cmd::raise_open_files(conns as u64 + 256)?;
-    let mut rt = tokio::runtime::Builder::new_multi_thread();
-    if let Some(n) = args.threads {
-        rt.worker_threads(n.max(1));
-    }
-    let rt = rt
-        .enable_all()
-        .build()
-        .context("starting the async runtime")?;
-    let summary = rt.block_on(fleet(&args))?;
-    if args.json {
-        println!("{}", serde_json::to_string(&summary)?);
-    } else {
-        print!("{}", summary.text());
-    }
-    rt.shutdown_timeout(Duration::from_millis(200));
-    Ok(())
+    super::run_measurement(args.threads, args.json, fleet(&args))
 }
 
 fn check(args: &Args) -> anyhow::Result<()> {
@@ -1148,8 +1133,8 @@ pub struct HubFigures {
     pub cpu_loaded_pct: Option<f64>,
 }
 
-impl Summary {
-    pub fn text(&self) -> String {
+impl super::Report for Summary {
+    fn text(&self) -> String {
         use std::fmt::Write;
         let mut s = String::new();
         let _ = writeln!(

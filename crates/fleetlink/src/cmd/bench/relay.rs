@@ -112,23 +112,7 @@ impl Window {
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     check(&args)?;
-    let mut rt = tokio::runtime::Builder::new_multi_thread();
-    if let Some(n) = args.threads {
-        rt.worker_threads(n.max(1));
-    }
-    let rt = rt
-        .enable_all()
-        .build()
-        .context("starting the async runtime")?;
-    let summary = rt.block_on(relay(&args))?;
-    if args.json {
-        println!("{}", serde_json::to_string(&summary)?);
-    } else {
-        print!("{}", summary.text());
-    }
-    // Connections are dropped with the runtime; nothing waits for the hub to close them.
-    rt.shutdown_timeout(Duration::from_millis(100));
-    Ok(())
+    super::run_measurement(args.threads, args.json, relay(&args))
 }
 
 fn check(args: &Args) -> anyhow::Result<()> {

@@ -100,8 +100,8 @@ pub fn summarize(
     }
 }
 
-impl Summary {
-    pub fn text(&self) -> String {
+impl super::Report for Summary {
+    fn text(&self) -> String {
         let rate = match &self.rate {
             serde_json::Value::Number(n) => match n.as_f64() {
                 Some(hz) if hz.fract() == 0.0 => format!("{hz:.0} Hz"),
