@@ -56,6 +56,11 @@ impl RobotBook {
         }
     }
 
+    /// The epoch of the robot's outbox these marks belong to.
+    pub fn epoch(&self) -> u64 {
+        self.epoch
+    }
+
     /// The marks to write: (topic, epoch, seq).
     fn take_dirty(&mut self) -> Vec<(String, u64, u64)> {
         let epoch = self.epoch;

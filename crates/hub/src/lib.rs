@@ -26,6 +26,8 @@
 //!   reconnects and hub restarts (delivery marks, `DELIVERED` confirmations).
 //! - [`capacity`]: shares of a site's access link for its robots, sent once a second.
 //! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
+//! - [`federated`]: the seam to other hubs (remote robots and federation status for the
+//!   API), implemented by the `fleetlink-federation` crate.
 //! - [`params`]: the parameter store behind `/rosapi/get_param` ..., kept in SQLite.
 //! - [`rosout`]: `/rosout` as `rcl_interfaces/msg/Log`: the hub's events (robots coming,
 //!   going, refused; links degrading; drops) and the robots' own logs.
@@ -47,12 +49,13 @@
 //! 5. `agents` (→ `security`, `rosout`, `delivery`, `registry`, `store`).
 //! 6. `security`, `rosout` (→ `registry`); `delivery`, `params` (→ `store`).
 //! 7. Leaves, importing nothing from the crate: `registry`, `store`, `limits`,
-//!    `http_guards`, `jwks`.
+//!    `http_guards`, `jwks`, `federated`.
 
 pub mod agents;
 pub mod capacity;
 pub mod connection;
 pub mod delivery;
+pub mod federated;
 pub mod http;
 pub mod http_guards;
 pub mod jwks;

@@ -169,8 +169,30 @@ impl Hub {
             jwks: cfg.jwks.clone(),
             started: std::time::SystemTime::now(),
             limits: Arc::new(crate::limits::Limits::new(cfg.door.clone())),
+            federation: std::sync::OnceLock::new(),
         });
         Ok(Hub { listener, state })
+    }
+
+    /// The hub's router, for a participant that runs beside it (the federation).
+    pub fn router(&self) -> &Arc<Router> {
+        &self.state.router
+    }
+
+    /// The robots online on this hub.
+    pub fn registry(&self) -> &Arc<Registry> {
+        &self.state.registry
+    }
+
+    /// Cancelled when the hub stops.
+    pub fn shutdown_token(&self) -> CancellationToken {
+        self.state.shutdown.clone()
+    }
+
+    /// Joins the hub to a federation: its API lists the other hubs' robots and the
+    /// federation's state. Once; a second call is ignored.
+    pub fn federate(&self, federation: Arc<dyn crate::federated::Federated>) {
+        let _ = self.state.federation.set(federation);
     }
 
     pub fn local_addr(&self) -> SocketAddr {

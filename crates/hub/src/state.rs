@@ -35,6 +35,10 @@ pub struct HubState {
     pub jwks: Option<crate::jwks::JwksSource>,
     pub started: std::time::SystemTime,
     pub limits: Arc<crate::limits::Limits>,
+    /// The other hubs, once this hub joined a federation ([`Hub::federate`]).
+    ///
+    /// [`Hub::federate`]: crate::server::Hub::federate
+    pub federation: std::sync::OnceLock<Arc<dyn crate::federated::Federated>>,
 }
 
 /// Robots behind one access link (a site uplink, a cell) and its capacity.

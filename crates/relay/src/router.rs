@@ -83,6 +83,10 @@ pub struct SubOptions {
     /// Full QoS for the subscription's queue; overrides the two fields above.
     pub qos: Option<fleetlink_qos::TopicQos>,
     pub delivery: Delivery,
+    /// The subscription does not make the topic appear in listings (a federation's
+    /// subscription on behalf of another hub: the topic exists here only once someone
+    /// publishes it).
+    pub unlisted: bool,
 }
 
 #[derive(Clone)]
@@ -113,6 +117,10 @@ pub struct Topic {
     idle: std::sync::atomic::AtomicBool,
     /// Its publisher sends it only when asked ([`Router::request_pull`]).
     pull: std::sync::atomic::AtomicBool,
+    /// A robot publishes it as a no-drop stream: the epoch of that stream plus one (0:
+    /// not reliable). Its messages' `seq` are the stream's numbers, so a far side that
+    /// may see one twice (federated hubs, after a robot moved) can tell.
+    reliable: AtomicU64,
 }
 
 /// Where a publisher hears that the demand for its topics may have changed: the topics
@@ -158,6 +166,39 @@ impl DemandWatch {
 
     /// The topics whose subscribers changed since the last call.
     pub fn take(&self) -> Vec<TopicId> {
+        self.changed
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .drain()
+            .collect()
+    }
+
+    /// Resolves once something was marked since the last `take` (at once if something
+    /// is waiting).
+    pub async fn changed(&self) {
+        self.notify.notified().await;
+    }
+}
+
+/// Where a participant that mirrors the router hears which topics changed: their names
+/// since it last looked, coalesced, and a wake-up ([`Router::watch_topics`]).
+#[derive(Default)]
+pub struct TopicsWatch {
+    changed: Mutex<HashSet<TopicName>>,
+    notify: tokio::sync::Notify,
+}
+
+impl TopicsWatch {
+    fn mark(&self, name: &TopicName) {
+        let mut set = self.changed.lock().unwrap_or_else(|p| p.into_inner());
+        if set.is_empty() {
+            self.notify.notify_one();
+        }
+        set.insert(name.clone());
+    }
+
+    /// The topics that changed since the last call.
+    pub fn take(&self) -> Vec<TopicName> {
         self.changed
             .lock()
             .unwrap_or_else(|p| p.into_inner())
@@ -255,6 +296,16 @@ impl Topic {
             .any(|s| s.client != publisher || s.own)
     }
 
+    /// Whether a client other than `me` wants what is published here by others than
+    /// itself: a subscriber that is not one of `publishers` (which never receive their own
+    /// messages), or a rosbridge client (which does, see `SubscriberRef::own`).
+    pub fn demand_besides(&self, me: ClientId, publishers: &[ClientId]) -> bool {
+        self.subscribers
+            .load()
+            .iter()
+            .any(|s| s.client != me && (s.own || !publishers.contains(&s.client)))
+    }
+
     /// Whether a client other than those in `but` subscribes to the topic.
     pub fn has_subscriber_besides(&self, but: &[ClientId]) -> bool {
         self.subscribers
@@ -281,6 +332,21 @@ impl Topic {
     /// True if its publisher sends it only when asked ([`Router::request_pull`]).
     pub fn is_pull(&self) -> bool {
         self.pull.load(Relaxed)
+    }
+
+    /// Marks the topic as a robot's no-drop stream of `epoch` (its messages' `seq` number
+    /// the stream), or not reliable (`None`).
+    pub fn set_reliable(&self, epoch: Option<u64>) {
+        self.reliable
+            .store(epoch.map_or(0, |e| e.wrapping_add(1).max(1)), Relaxed);
+    }
+
+    /// The epoch of the no-drop stream its robot publishes, if it is one.
+    pub fn reliable_epoch(&self) -> Option<u64> {
+        match self.reliable.load(Relaxed) {
+            0 => None,
+            e => Some(e - 1),
+        }
     }
 
     /// Fans `payload` out to every subscriber (its origin only if that is a rosbridge
@@ -402,11 +468,23 @@ struct State {
     clients: HashMap<ClientId, ClientEntry>,
     /// Publishers that follow the demand for their topics.
     demand: HashMap<ClientId, Arc<DemandWatch>>,
+    /// Participants that follow every topic ([`Router::watch_topics`]).
+    watchers: Vec<Arc<TopicsWatch>>,
 }
 
 impl State {
+    /// Tells those who follow every topic that `name` changed.
+    fn topic_changed(&self, name: &TopicName) {
+        for w in &self.watchers {
+            w.mark(name);
+        }
+    }
+
     /// Tells the publishers of `topic` that watch demand that its subscribers changed.
     fn demand_changed(&self, topic: &Topic) {
+        if !self.watchers.is_empty() {
+            self.topic_changed(&topic.meta.load().name);
+        }
         if self.demand.is_empty() {
             return;
         }
@@ -490,6 +568,26 @@ impl Router {
         }
     }
 
+    /// From now on the returned watch hears of every topic whose publishers, subscribers
+    /// or type change (or that goes away): for a participant that mirrors this router
+    /// elsewhere (federation), which reads each such topic with [`Router::snapshot`].
+    pub fn watch_topics(&self) -> Arc<TopicsWatch> {
+        let w = Arc::new(TopicsWatch::default());
+        let mut st = self.lock();
+        for name in st.topics.keys() {
+            w.mark(name);
+        }
+        st.watchers.push(w.clone());
+        w
+    }
+
+    /// One topic as [`Router::topics`] lists it.
+    pub fn snapshot(&self, name: &TopicName) -> Option<TopicSnapshot> {
+        let st = self.lock();
+        let t = st.topics.get(name)?;
+        Some(snapshot_of(&st, name, t))
+    }
+
     pub fn transcoder(&self) -> &dyn Transcoder {
         &*self.transcoder
     }
@@ -560,6 +658,9 @@ impl Router {
         for name in names {
             gc_topic(&mut st, &name);
         }
+        for name in &entry.advertised {
+            st.topic_changed(name);
+        }
     }
 
     /// Declares `client` a publisher of `name`. A topic's type is fixed by its first
@@ -585,6 +686,7 @@ impl Router {
         if !st.clients.contains_key(&client) {
             return Err(RouteError::UnknownClient(client));
         }
+        let meta_before: Arc<TopicMeta>;
         let others_publish = st
             .publishers
             .get(name)
@@ -592,6 +694,7 @@ impl Router {
         let topic = match st.topics.get(name).cloned() {
             Some(t) => {
                 let meta = t.meta();
+                meta_before = meta.clone();
                 let known = &meta.schema.type_name;
                 if others_publish && !known.is_empty() && !same_type(known, &schema.type_name) {
                     return Err(RouteError::TypeConflict {
@@ -608,7 +711,11 @@ impl Router {
                 }
                 t
             }
-            None => self.create_topic(&mut st, name, schema),
+            None => {
+                let t = self.create_topic(&mut st, name, schema);
+                meta_before = t.meta();
+                t
+            }
         };
         if latch {
             topic.latch.store(true, Relaxed);
@@ -624,24 +731,32 @@ impl Router {
             }
         }
         let pubs = st.publishers.entry(name.clone()).or_default();
-        if !pubs.contains(&client) {
+        let fresh = !pubs.contains(&client);
+        if fresh {
             pubs.push(client);
         }
         if let Some(c) = st.clients.get_mut(&client) {
             c.advertised.insert(name.clone());
+        }
+        if fresh || !Arc::ptr_eq(&meta_before, &topic.meta()) {
+            st.topic_changed(name);
         }
         Ok(topic)
     }
 
     pub fn unadvertise(&self, client: ClientId, name: &TopicName) {
         let mut st = self.lock();
-        if let Some(c) = st.clients.get_mut(&client) {
-            c.advertised.remove(name);
-        }
+        let was = st
+            .clients
+            .get_mut(&client)
+            .is_some_and(|c| c.advertised.remove(name));
         if let Some(p) = st.publishers.get_mut(name) {
             p.retain(|c| *c != client);
         }
         gc_topic(&mut st, name);
+        if was {
+            st.topic_changed(name);
+        }
     }
 
     /// From now on `client` hears (through the returned watch) whenever the subscribers of
@@ -685,8 +800,10 @@ impl Router {
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
             idle: Default::default(),
             pull: Default::default(),
+            reliable: AtomicU64::new(0),
         });
         st.topics.insert(name.clone(), topic.clone());
+        st.topic_changed(name);
         // Pattern subscriptions pick up new topics as they appear.
         let mut matches = Vec::new();
         for (cid, c) in &st.clients {
@@ -872,32 +989,36 @@ impl Router {
     /// Every topic, sorted by name.
     pub fn topics(&self) -> Vec<TopicSnapshot> {
         let st = self.lock();
-        // Topics some client subscribed to by name.
-        let mut named: HashSet<&TopicName> = HashSet::new();
-        for c in st.clients.values() {
-            for (name, (_, holders)) in &c.slots {
-                if holders
-                    .iter()
-                    .any(|h| matches!(c.subs.get(h), Some((Target::Exact(_), _))))
-                {
-                    named.insert(name);
-                }
-            }
-        }
         let mut out: Vec<TopicSnapshot> = st
             .topics
             .iter()
-            .map(|(name, t)| TopicSnapshot {
-                topic: t.clone(),
-                meta: t.meta(),
-                publishers: st.publishers.get(name).cloned().unwrap_or_default(),
-                subscribers: t.subscribers.load().iter().map(|s| s.client).collect(),
-                stats: t.stats.clone(),
-                named_subscription: named.contains(name),
-            })
+            .map(|(name, t)| snapshot_of(&st, name, t))
             .collect();
         out.sort_by(|a, b| a.meta.name.cmp(&b.meta.name));
         out
+    }
+}
+
+/// `name`'s listing entry. Whether someone subscribed by name (not through a pattern, and
+/// not quietly, see [`SubOptions::unlisted`]) is asked of the topic's subscribers only.
+fn snapshot_of(st: &State, name: &TopicName, t: &Arc<Topic>) -> TopicSnapshot {
+    let subscribers: Vec<ClientId> = t.subscribers.load().iter().map(|s| s.client).collect();
+    let named_subscription = subscribers.iter().any(|cid| {
+        st.clients.get(cid).is_some_and(|c| {
+            c.slots.get(name).is_some_and(|(_, holders)| {
+                holders
+                    .iter()
+                    .any(|h| matches!(c.subs.get(h), Some((Target::Exact(_), o)) if !o.unlisted))
+            })
+        })
+    });
+    TopicSnapshot {
+        topic: t.clone(),
+        meta: t.meta(),
+        publishers: st.publishers.get(name).cloned().unwrap_or_default(),
+        subscribers,
+        stats: t.stats.clone(),
+        named_subscription,
     }
 }
 
@@ -928,7 +1049,9 @@ fn gc_topic(st: &mut State, name: &TopicName) {
         .get(name)
         .is_some_and(|t| t.subscriber_count() > 0);
     if !has_pub && !has_sub {
-        st.topics.remove(name);
         st.publishers.remove(name);
+        if st.topics.remove(name).is_some() {
+            st.topic_changed(name);
+        }
     }
 }

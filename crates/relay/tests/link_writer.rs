@@ -427,6 +427,80 @@ fn a_topic_kept_only_by_a_pattern_subscription_is_not_listed() {
     assert_eq!(listed(&router), Some(true));
 }
 
+/// What a federation on this router hears and asks: each topic whose publishers or
+/// subscribers change, once per burst; who besides it wants a topic; and its own quiet
+/// subscription (on another hub's behalf) neither lists the topic nor counts as demand.
+#[test]
+fn a_topics_watch_hears_each_change_and_quiet_subscriptions_stay_unlisted() {
+    let router = Router::default();
+    let watch = router.watch_topics();
+    let (fed, _) = router.connect(
+        ClientKind::Internal {
+            role: "federation".into(),
+        },
+        None,
+    );
+    let (robot, _) = router.connect(ClientKind::Agent { robot: "r".into() }, None);
+    let (viewer, _) = router.connect(ClientKind::Rosbridge, None);
+    let name = TopicName::parse("/r/odom").unwrap();
+    assert!(watch.take().is_empty());
+
+    // A quiet subscription for another hub creates the topic, unlisted.
+    let quiet = router
+        .subscribe(
+            fed,
+            Target::Exact(name.clone()),
+            SubOptions {
+                unlisted: true,
+                ..SubOptions::default()
+            },
+        )
+        .unwrap();
+    assert_eq!(watch.take(), vec![name.clone()]);
+    let snap = router.snapshot(&name).unwrap();
+    assert!(!snap.listed(), "a quiet subscription does not list a topic");
+    assert!(!snap.topic.demand_besides(fed, &snap.publishers));
+
+    // The robot publishes it: listed, and its own link is not demand for it.
+    router
+        .advertise(robot, &name, Schema::named("nav_msgs/Odometry"), false)
+        .unwrap();
+    router
+        .advertise(robot, &name, Schema::named("nav_msgs/Odometry"), false)
+        .unwrap();
+    assert_eq!(watch.take(), vec![name.clone()], "a burst is one change");
+    let snap = router.snapshot(&name).unwrap();
+    assert!(snap.listed());
+    assert!(
+        snap.topic.wanted_by_others(robot),
+        "the quiet subscriber wants it"
+    );
+    let robot_sub = router
+        .subscribe(robot, Target::Exact(name.clone()), SubOptions::default())
+        .unwrap();
+    assert!(
+        !snap.topic.demand_besides(fed, &snap.publishers),
+        "a publisher's own subscription is not demand"
+    );
+    router.unsubscribe(robot, robot_sub);
+
+    // A viewer here is demand.
+    let v = router
+        .subscribe(viewer, Target::Exact(name.clone()), SubOptions::default())
+        .unwrap();
+    let snap = router.snapshot(&name).unwrap();
+    assert!(snap.topic.demand_besides(fed, &snap.publishers));
+    watch.take();
+    router.unsubscribe(viewer, v);
+    router.unsubscribe(fed, quiet);
+    router.unadvertise(robot, &name);
+    assert_eq!(watch.take(), vec![name.clone()]);
+    assert!(
+        router.snapshot(&name).is_none(),
+        "gone with its last endpoint"
+    );
+}
+
 /// A sink that hands over what was fed to it as one batch per flush: what the writer
 /// would put on the socket in one go.
 struct FlushBatches {

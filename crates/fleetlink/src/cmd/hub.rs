@@ -109,6 +109,8 @@ pub struct Args {
     /// once; more are answered "busy" at once.
     #[arg(long, default_value_t = 1024, value_parser = clap::value_parser!(u32).range(1..))]
     pub max_pending_calls_per_provider: u32,
+    #[command(flatten)]
+    pub federation: super::federation::FederationArgs,
 }
 
 impl Args {
@@ -186,6 +188,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     let transcoder = crate::transcoder(&args.msg_path)?;
     rt.block_on(async {
         let hub = Hub::bind(args.config(), transcoder).await?;
+        super::federation::join(&args.federation, &hub).await?;
         let addr = hub.local_addr();
         let (ws, http) = if args.tls_cert.is_some() {
             ("wss", "https")

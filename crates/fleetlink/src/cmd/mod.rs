@@ -4,6 +4,7 @@ pub mod admin;
 pub mod agent;
 pub mod bench;
 pub mod demo;
+pub mod federation;
 pub mod hub;
 mod log_limit;
 pub mod msg;

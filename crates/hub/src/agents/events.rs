@@ -237,6 +237,8 @@ impl RobotLink {
                     Ok(t) => {
                         self.by_topic.insert(t.id(), alias);
                         t.set_pull(topic.pull);
+                        let epoch = self.book.lock().unwrap_or_else(|p| p.into_inner()).epoch();
+                        t.set_reliable(topic.reliable.then_some(epoch));
                         if let Some(old) = self.topics.insert(
                             alias,
                             PubTopic {
@@ -267,6 +269,7 @@ impl RobotLink {
                     p.topic.stats.flush(&mut p.counts);
                     p.topic.set_idle(false);
                     p.topic.set_pull(false);
+                    p.topic.set_reliable(None);
                     self.by_topic.remove(&p.topic.id());
                     self.interest.remove(&alias);
                     if let Ok(name) = TopicName::parse(&topic.name) {

@@ -30,6 +30,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/robots", get(robots))
         .route("/api/v1/topics", get(topics))
         .route("/api/v1/clients", get(clients))
+        .route("/api/v1/federation", get(federation))
         .route("/api/v1/robots/{name}/offload", get(offload))
         // One message of a pull topic (reads data; asks the robot for it).
         .route(
@@ -103,6 +104,33 @@ async fn robots(
                 })),
         }));
     }
+    // Robots on the other hubs of a federation, where the caller may see them.
+    let remote = st
+        .federation
+        .get()
+        .map(|f| f.remote_robots())
+        .unwrap_or_default();
+    for r in &remote {
+        if live.iter().any(|l| l.name == r.name) || !namespace_visible(&mut access, &r.name) {
+            continue;
+        }
+        let ns = format!("/{}/", r.name);
+        let own: Vec<&str> = access.visible(
+            topics
+                .iter()
+                .filter(|t| t.listed())
+                .map(|t| t.meta.name.as_str())
+                .filter(|n| n.starts_with(&ns)),
+            Operation::Subscribe,
+        );
+        out.push(json!({
+            "name": r.name,
+            "online": true,
+            "namespace": format!("/{}", r.name),
+            "hub": r.hub,
+            "topics": own,
+        }));
+    }
     let store = st.store.clone();
     let known = tokio::task::spawn_blocking(move || store.robots())
         .await
@@ -110,7 +138,10 @@ async fn robots(
         .and_then(Result::ok)
         .unwrap_or_default();
     for k in known {
-        if !live.iter().any(|r| r.name == k.name) && namespace_visible(&mut access, &k.name) {
+        if !live.iter().any(|r| r.name == k.name)
+            && !remote.iter().any(|r| r.name == k.name)
+            && namespace_visible(&mut access, &k.name)
+        {
             out.push(json!({
                 "name": k.name,
                 "online": false,
@@ -191,6 +222,18 @@ async fn topics(
 }
 
 /// Every client connection with its queues: for those who may administer `/clients`.
+/// This hub's federation: its id, the other hubs, the topics crossing each way.
+async fn federation(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+) -> Result<Json<Value>, super::admin_api::ApiError> {
+    super::admin_api::require_read(&st, &me, "/clients")?;
+    Ok(Json(match st.federation.get() {
+        Some(f) => f.status(),
+        None => json!({ "federated": false }),
+    }))
+}
+
 async fn clients(
     State(st): State<Arc<HubState>>,
     Extension(Caller(me)): Extension<Caller>,

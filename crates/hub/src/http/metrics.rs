@@ -172,6 +172,9 @@ impl Collector for HubCollector {
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
         encode_budgets(&st.registry.list(), &mut enc)?;
         encode_audit(&st.security.audit, &mut enc)?;
+        if let Some(f) = st.federation.get() {
+            encode_federation(f.as_ref(), &mut enc)?;
+        }
         encode_front_door(&st.limits, &mut enc)
     }
 }
@@ -247,6 +250,18 @@ fn encode_audit(
     )?;
     ConstCounter::new(audit.overflowed()).encode(m.encode_family(&[("reason", "queue_full")])?)?;
     ConstCounter::new(audit.failed()).encode(m.encode_family(&[("reason", "database_error")])?)?;
+    Ok(())
+}
+
+/// What crossed to and from the other hubs of a federation.
+fn encode_federation(
+    federation: &dyn crate::federated::Federated,
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    for (name, help, value) in federation.counters() {
+        let m = enc.encode_descriptor(name, help, None, MetricType::Counter)?;
+        ConstCounter::new(value).encode(m)?;
+    }
     Ok(())
 }
 

@@ -673,6 +673,7 @@ impl Session {
                                 compression,
                                 fragment_size,
                             },
+                            unlisted: false,
                         };
                         self.subscribe(&topic, type_name.as_deref(), regex, opts, id.clone())
                     }

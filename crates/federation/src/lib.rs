@@ -1,0 +1,406 @@
+//! Hubs federated over Zenoh.
+//!
+//! Each hub joins one Zenoh session (peer, router or client mode; no multicast needed)
+//! and takes part in its router as one more participant, the federation client
+//! (`ClientKind::Internal { role: "federation" }`). Two loops do the work:
+//!
+//! - **Topics** ([`topics`]): every topic published here is offered to the fleet as a
+//!   liveliness token (name, type, flags); the others' offers become topics here,
+//!   advertised by the federation, so listings show the whole fleet. While someone here
+//!   subscribes to a topic, this hub holds one Zenoh subscriber for it and a *want*
+//!   token; while another hub wants a topic, this hub subscribes to it on its router —
+//!   which is what a robot's link hears as interest (`INTEREST`): a robot topic nobody on
+//!   any hub wants does not leave the robot — and puts each message into Zenoh once,
+//!   whatever the number of hubs and subscribers, as its payload bytes in the encoding it
+//!   arrived in.
+//! - **Calls** ([`calls`]): services and actions provided on this hub are offered as
+//!   tokens; the others' are advertised here with the federation as their provider, so a
+//!   call (or action goal) goes as a Zenoh query to the hub where the provider is, its
+//!   feedback and answer coming back as replies, a cancel as a message to that hub.
+//!
+//! **No loops, by construction.** A message enters Zenoh only from the hub where it was
+//! published by a local client: the federation's own subscription never receives what
+//! the federation published (the router does not deliver a message to its origin), and
+//! the federation offers only topics that have a local publisher besides itself. So a
+//! message crosses at most one Zenoh hop, from the hub it was published on to each hub
+//! with subscribers, whatever the shape of the mesh (a triangle, a chain through Zenoh
+//! routers). Interest cannot loop either: the federation counts as demand at its hub
+//! only for remote subscribers, and declares a remote subscriber only for subscribers at
+//! its hub other than itself.
+
+pub mod calls;
+pub mod keys;
+pub mod topics;
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering::Relaxed};
+use std::sync::{Arc, Mutex};
+
+use fleetlink_hub::federated::{Federated, RemoteRobot};
+use fleetlink_hub::registry::Registry;
+use fleetlink_relay::router::ClientKind;
+use fleetlink_relay::{ClientId, Router};
+use serde_json::{Value, json};
+use tokio_util::sync::CancellationToken;
+
+/// Why the federation could not start.
+#[derive(Debug, thiserror::Error)]
+pub enum FederationError {
+    #[error("Zenoh configuration: {0}")]
+    Config(String),
+    #[error(
+        "cannot open the Zenoh session: {0} (check --zenoh-connect/--zenoh-listen endpoints, e.g. tcp/10.0.0.2:7447)"
+    )]
+    Open(String),
+    #[error("Zenoh: {0}")]
+    Zenoh(String),
+}
+
+fn zerr(e: impl std::fmt::Display) -> FederationError {
+    FederationError::Zenoh(e.to_string())
+}
+
+/// How a hub joins its fleet's federation.
+#[derive(Debug, Clone)]
+pub struct Settings {
+    /// Hubs federate with the hubs of the same fleet name (the first chunk of every key).
+    pub fleet: String,
+    /// This hub's name as the others list it.
+    pub hub_name: String,
+    pub zenoh: zenoh::Config,
+}
+
+/// A Zenoh configuration from a file (JSON5, Zenoh's own format) and/or flags: `mode`
+/// (`peer`, `router`, `client`), endpoints to connect to and listen on (`tcp/host:port`).
+/// Multicast scouting is off unless the file turns it on: hubs find each other through
+/// the endpoints given, not by whoever answers on the local network.
+pub fn zenoh_config(
+    file: Option<&Path>,
+    mode: Option<&str>,
+    connect: &[String],
+    listen: &[String],
+) -> Result<zenoh::Config, FederationError> {
+    let cfg_err =
+        |what: &str, e: &dyn std::fmt::Display| FederationError::Config(format!("{what}: {e}"));
+    let mut cfg = match file {
+        Some(path) => zenoh::Config::from_file(path)
+            .map_err(|e| cfg_err(&format!("reading {}", path.display()), &e))?,
+        None => {
+            let mut c = zenoh::Config::default();
+            c.insert_json5("scouting/multicast/enabled", "false")
+                .map_err(|e| cfg_err("scouting", &e))?;
+            c
+        }
+    };
+    if let Some(mode) = mode {
+        if !matches!(mode, "peer" | "router" | "client") {
+            return Err(FederationError::Config(format!(
+                "mode {mode:?}: expected peer, router or client"
+            )));
+        }
+        cfg.insert_json5("mode", &format!("{mode:?}"))
+            .map_err(|e| cfg_err("mode", &e))?;
+    }
+    for (key, list) in [("connect/endpoints", connect), ("listen/endpoints", listen)] {
+        if list.is_empty() {
+            continue;
+        }
+        for ep in list {
+            if !ep.contains('/') {
+                return Err(FederationError::Config(format!(
+                    "endpoint {ep:?}: expected PROTOCOL/ADDRESS, e.g. tcp/10.0.0.2:7447"
+                )));
+            }
+        }
+        let value = serde_json::to_string(list).expect("strings serialize");
+        cfg.insert_json5(key, &value)
+            .map_err(|e| cfg_err(&format!("{key} {value}"), &e))?;
+    }
+    Ok(cfg)
+}
+
+/// Counters of what crossed between this hub and the others.
+#[derive(Debug, Default)]
+pub struct Counters {
+    /// Messages this hub put into Zenoh, and their payload bytes.
+    pub sent: AtomicU64,
+    pub sent_bytes: AtomicU64,
+    /// Messages put that Zenoh refused (congestion on a best-effort topic).
+    pub send_failed: AtomicU64,
+    /// Messages heard from other hubs and published here, and their payload bytes.
+    pub received: AtomicU64,
+    pub received_bytes: AtomicU64,
+    /// No-drop messages heard a second time (from a robot's old and new hub): not
+    /// published again.
+    pub duplicates: AtomicU64,
+    /// Messages heard that could not be read (a bad header).
+    pub malformed: AtomicU64,
+    /// Calls and goals sent to other hubs, and received from them.
+    pub calls_out: AtomicU64,
+    pub calls_in: AtomicU64,
+}
+
+/// One exported topic's figures.
+#[derive(Debug, Default)]
+pub struct ExportFigures {
+    /// A subscriber on another hub exists (Zenoh's matching status).
+    pub wanted: AtomicBool,
+    pub sent: AtomicU64,
+}
+
+/// One imported topic's figures.
+#[derive(Debug, Default)]
+pub struct ImportFigures {
+    /// This hub has a Zenoh subscriber for it (someone here subscribes).
+    pub subscribed: AtomicBool,
+    pub received: AtomicU64,
+    /// The hubs offering it (their names).
+    pub from: Mutex<Vec<String>>,
+}
+
+/// A hub of the fleet as this one sees it.
+#[derive(Debug, Default, Clone)]
+pub struct Peer {
+    pub name: String,
+    pub robots: std::collections::BTreeSet<String>,
+}
+
+/// What the loops share with the HTTP surface.
+pub struct Shared {
+    pub fleet: String,
+    /// This hub's Zenoh id (the `<hub>` chunk of its keys).
+    pub me: String,
+    pub hub_name: String,
+    pub client: ClientId,
+    pub counters: Counters,
+    pub exports: Mutex<BTreeMap<String, Arc<ExportFigures>>>,
+    pub imports: Mutex<BTreeMap<String, Arc<ImportFigures>>>,
+    pub peers: Mutex<BTreeMap<String, Peer>>,
+}
+
+impl Shared {
+    /// The name of hub `id`, or its id while its name token has not arrived.
+    pub fn peer_name(&self, id: &str) -> String {
+        self.peers
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .get(id)
+            .map(|p| p.name.clone())
+            .filter(|n| !n.is_empty())
+            .unwrap_or_else(|| id.to_owned())
+    }
+}
+
+/// A running federation; stops with the hub's shutdown token.
+#[derive(Clone)]
+pub struct Federation {
+    shared: Arc<Shared>,
+}
+
+impl Federation {
+    /// Opens the Zenoh session and starts the loops on the current runtime.
+    pub async fn start(
+        settings: Settings,
+        router: Arc<Router>,
+        registry: Arc<Registry>,
+        shutdown: CancellationToken,
+    ) -> Result<Federation, FederationError> {
+        let session = zenoh::open(settings.zenoh)
+            .await
+            .map_err(|e| FederationError::Open(e.to_string()))?;
+        let me = session.zid().to_string();
+        let fleet = keys::chunk(&settings.fleet);
+        let (client, outbox) = router.connect(
+            ClientKind::Internal {
+                role: "federation".into(),
+            },
+            None,
+        );
+        let shared = Arc::new(Shared {
+            fleet,
+            me,
+            hub_name: settings.hub_name,
+            client,
+            counters: Counters::default(),
+            exports: Mutex::new(BTreeMap::new()),
+            imports: Mutex::new(BTreeMap::new()),
+            peers: Mutex::new(BTreeMap::new()),
+        });
+        // This hub's name token first, so the others can name it in their listings.
+        let hub_key = keys::offer_key(
+            &shared.fleet,
+            &shared.me,
+            &keys::Offer::Hub {
+                name: keys::chunk(&shared.hub_name),
+            },
+        )
+        .expect("a chunk is a valid name");
+        let hub_token = session
+            .liveliness()
+            .declare_token(hub_key)
+            .await
+            .map_err(zerr)?;
+        let topics =
+            topics::Topics::start(session.clone(), router.clone(), shared.clone(), outbox).await?;
+        let callers = calls::CallBridge::start(
+            session.clone(),
+            router.clone(),
+            shared.clone(),
+            topics.providers(),
+        )
+        .await?;
+        tracing::info!(
+            "federation: hub {} ({}) joined fleet {:?} over Zenoh",
+            shared.hub_name,
+            shared.me,
+            shared.fleet
+        );
+        let fed_shared = shared.clone();
+        tokio::spawn(async move {
+            let stop = shutdown.clone();
+            tokio::join!(
+                topics.run(registry, stop.clone()),
+                callers.run(stop.clone())
+            );
+            drop(hub_token);
+            router.disconnect(fed_shared.client);
+            if let Err(e) = session.close().await {
+                tracing::debug!("federation: closing the Zenoh session: {e}");
+            }
+        });
+        Ok(Federation { shared })
+    }
+
+    pub fn shared(&self) -> &Arc<Shared> {
+        &self.shared
+    }
+}
+
+impl Federated for Federation {
+    fn remote_robots(&self) -> Vec<RemoteRobot> {
+        let peers = self.shared.peers.lock().unwrap_or_else(|p| p.into_inner());
+        let mut out: Vec<RemoteRobot> = peers
+            .iter()
+            .flat_map(|(id, p)| {
+                let hub = if p.name.is_empty() { id } else { &p.name };
+                p.robots.iter().map(move |r| RemoteRobot {
+                    name: r.clone(),
+                    hub: hub.clone(),
+                })
+            })
+            .collect();
+        out.sort_by(|a, b| a.name.cmp(&b.name));
+        out.dedup_by(|a, b| a.name == b.name);
+        out
+    }
+
+    fn status(&self) -> Value {
+        let s = &self.shared;
+        let c = &s.counters;
+        let peers: Vec<Value> = s
+            .peers
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .iter()
+            .map(|(id, p)| json!({ "id": id, "name": p.name, "robots": p.robots }))
+            .collect();
+        let exported: Vec<Value> = s
+            .exports
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .iter()
+            .map(|(name, f)| {
+                json!({
+                    "topic": name,
+                    "wanted_remotely": f.wanted.load(Relaxed),
+                    "sent": f.sent.load(Relaxed),
+                })
+            })
+            .collect();
+        let imported: Vec<Value> = s
+            .imports
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .iter()
+            .map(|(name, f)| {
+                json!({
+                    "topic": name,
+                    "from": *f.from.lock().unwrap_or_else(|p| p.into_inner()),
+                    "subscribed": f.subscribed.load(Relaxed),
+                    "received": f.received.load(Relaxed),
+                })
+            })
+            .collect();
+        json!({
+            "federated": true,
+            "fleet": s.fleet,
+            "hub": { "id": s.me, "name": s.hub_name },
+            "peers": peers,
+            "exported": exported,
+            "imported": imported,
+            "counters": {
+                "sent": c.sent.load(Relaxed),
+                "sent_bytes": c.sent_bytes.load(Relaxed),
+                "send_failed": c.send_failed.load(Relaxed),
+                "received": c.received.load(Relaxed),
+                "received_bytes": c.received_bytes.load(Relaxed),
+                "duplicates": c.duplicates.load(Relaxed),
+                "malformed": c.malformed.load(Relaxed),
+                "calls_out": c.calls_out.load(Relaxed),
+                "calls_in": c.calls_in.load(Relaxed),
+            },
+        })
+    }
+
+    fn counters(&self) -> Vec<(&'static str, &'static str, u64)> {
+        let c = &self.shared.counters;
+        vec![
+            (
+                "fleetlink_federation_sent_messages",
+                "Messages this hub sent to other hubs (once per message, whatever the number of hubs)",
+                c.sent.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_sent_bytes",
+                "Payload bytes of the messages sent to other hubs",
+                c.sent_bytes.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_send_failed",
+                "Messages Zenoh refused to send (congestion on a best-effort topic)",
+                c.send_failed.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_received_messages",
+                "Messages heard from other hubs and published here",
+                c.received.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_received_bytes",
+                "Payload bytes of the messages heard from other hubs",
+                c.received_bytes.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_duplicates",
+                "No-drop messages heard twice (a robot moved between hubs) and delivered once",
+                c.duplicates.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_malformed",
+                "Messages from other hubs that could not be read",
+                c.malformed.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_calls_out",
+                "Service calls and action goals sent to other hubs",
+                c.calls_out.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_calls_in",
+                "Service calls and action goals received from other hubs",
+                c.calls_in.load(Relaxed),
+            ),
+        ]
+    }
+}

@@ -1,0 +1,760 @@
+//! Topics between hubs: what this hub offers and wants, what the others offer and want,
+//! and the messages that cross because of it.
+//!
+//! One loop follows every topic of this router ([`Router::watch_topics`]) and the fleet's
+//! liveliness tokens (`cat/**`, history included; a hub that dies takes its tokens with
+//! it), and keeps, per topic name, four things true:
+//!
+//! 1. **Offer.** A topic with a publisher here other than the federation has an offer
+//!    token (name, type, latched): the other hubs list it.
+//! 2. **Import.** A topic other hubs offer is advertised here by the federation with
+//!    its type and full definition (asked of an offering hub when this hub does not know
+//!    the type): listings show it, pattern subscribers attach to it.
+//! 3. **Want.** While someone here subscribes to a topic (a client other than the
+//!    federation that is not one of its publishers, [`Topic::demand_besides`]), the
+//!    federation holds one Zenoh subscriber for it — one per hub, however many subscribe
+//!    here — and a want token. Each message heard is published here unchanged.
+//! 4. **Send.** While another hub wants a topic, the federation subscribes to it here
+//!    (quietly: the subscription does not list the topic) and puts each message into
+//!    Zenoh once. It subscribes even before anyone publishes the topic here, so a robot
+//!    that arrives (or moves here from a hub that died) hears the interest with its
+//!    `ADVERTISE` and its first message — a no-drop message resent on arrival included —
+//!    already goes to the hubs that want it.
+//!
+//! The robots online here are offered as tokens too, for the other hubs' listings.
+
+use std::collections::{BTreeSet, HashMap, HashSet};
+use std::sync::atomic::Ordering::Relaxed;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use fleetlink_hub::registry::Registry;
+use fleetlink_proto::{Payload, Schema};
+use fleetlink_relay::outbox::Taken;
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicsWatch};
+use fleetlink_relay::{Outbox, Router, Topic, TopicId, TopicName};
+use tokio::sync::mpsc;
+use tokio_util::sync::CancellationToken;
+use zenoh::Session;
+use zenoh::liveliness::LivelinessToken;
+use zenoh::pubsub::{Publisher, Subscriber};
+use zenoh::qos::CongestionControl;
+use zenoh::sample::{Locality, SampleKind};
+
+use crate::keys::{self, MessageHeader, Offer, StreamMark};
+use crate::{ExportFigures, FederationError, ImportFigures, Shared, zerr};
+
+/// How often the robots online are compared with what was offered.
+const ROBOTS_EVERY: Duration = Duration::from_millis(250);
+
+/// Which hub provides each remote service or action this hub routes calls to.
+pub type Providers = Arc<Mutex<HashMap<TopicName, String>>>;
+
+enum News {
+    Token {
+        hub: String,
+        offer: Offer,
+        put: bool,
+    },
+    Schema {
+        name: TopicName,
+        schema: Schema,
+    },
+}
+
+/// What the pump needs of a topic this hub sends.
+struct Outlet {
+    /// A no-drop topic's messages wait for room in Zenoh's queues; the rest drop under
+    /// congestion rather than stall every topic behind one slow hub. Both publishers are
+    /// made at once: whether a robot publishes the topic no-drop is known only when it
+    /// advertises, which may come after another hub wanted it.
+    best_effort: Publisher<'static>,
+    reliable: Publisher<'static>,
+    topic: Arc<Topic>,
+    figures: Arc<ExportFigures>,
+}
+
+/// Everything the federation does about one topic name.
+#[derive(Default)]
+struct Entry {
+    /// Offered here: the token's key (type and flags in it) and the token.
+    offer: Option<(String, LivelinessToken)>,
+    /// Offered by other hubs: their announced type and latch, by hub id.
+    offered_by: HashMap<String, (String, bool)>,
+    /// Advertised here by the federation (imported), and whether a definition was asked.
+    imported: bool,
+    asked_schema: bool,
+    /// Wanted here: the Zenoh subscriber and the want token.
+    listening: Option<(Subscriber<()>, LivelinessToken)>,
+    /// Wanted by other hubs (their ids).
+    wanted_by: HashSet<String>,
+    /// Sent from here: the federation's subscription and the outlet's topic id.
+    sending: Option<(SubscriptionId, TopicId)>,
+    export_figures: Option<Arc<ExportFigures>>,
+    import_figures: Option<Arc<ImportFigures>>,
+}
+
+impl Entry {
+    fn is_empty(&self) -> bool {
+        self.offer.is_none()
+            && self.offered_by.is_empty()
+            && !self.imported
+            && self.listening.is_none()
+            && self.wanted_by.is_empty()
+            && self.sending.is_none()
+    }
+}
+
+/// A remote service or action: the hubs offering it, with type and kind.
+#[derive(Default)]
+struct RemoteService {
+    from: HashMap<String, (String, bool)>,
+}
+
+pub struct Topics {
+    session: Session,
+    router: Arc<Router>,
+    shared: Arc<Shared>,
+    watch: Arc<TopicsWatch>,
+    outbox: Arc<Outbox>,
+    outlets: Arc<Mutex<HashMap<TopicId, Arc<Outlet>>>>,
+    entries: HashMap<TopicName, Entry>,
+    /// Names that cannot be key expressions, logged once.
+    refused: BTreeSet<String>,
+    news_tx: mpsc::UnboundedSender<News>,
+    news_rx: mpsc::UnboundedReceiver<News>,
+    _catalog: Subscriber<()>,
+    robots: HashMap<String, LivelinessToken>,
+    services: HashMap<TopicName, RemoteService>,
+    providers: Providers,
+}
+
+impl Topics {
+    pub async fn start(
+        session: Session,
+        router: Arc<Router>,
+        shared: Arc<Shared>,
+        outbox: Arc<Outbox>,
+    ) -> Result<Topics, FederationError> {
+        let (news_tx, news_rx) = mpsc::unbounded_channel();
+        let tx = news_tx.clone();
+        let fleet = shared.fleet.clone();
+        let me = shared.me.clone();
+        let catalog = session
+            .liveliness()
+            .declare_subscriber(format!("{}/cat/**", keys::root(&shared.fleet)))
+            .history(true)
+            .callback(move |sample| {
+                let Some((hub, offer)) = keys::parse_offer(&fleet, sample.key_expr().as_str())
+                else {
+                    return;
+                };
+                if hub != me {
+                    let put = sample.kind() == SampleKind::Put;
+                    let _ = tx.send(News::Token { hub, offer, put });
+                }
+            })
+            .await
+            .map_err(zerr)?;
+        Ok(Topics {
+            watch: router.watch_topics(),
+            session,
+            router,
+            shared,
+            outbox,
+            outlets: Arc::default(),
+            entries: HashMap::new(),
+            refused: BTreeSet::new(),
+            news_tx,
+            news_rx,
+            _catalog: catalog,
+            robots: HashMap::new(),
+            services: HashMap::new(),
+            providers: Arc::default(),
+        })
+    }
+
+    pub fn providers(&self) -> Providers {
+        self.providers.clone()
+    }
+
+    pub async fn run(mut self, registry: Arc<Registry>, stop: CancellationToken) {
+        let pump = pump(
+            self.outbox.clone(),
+            self.outlets.clone(),
+            self.shared.clone(),
+            stop.clone(),
+        );
+        let work = async {
+            let mut robots_gen = u64::MAX;
+            let mut tick = tokio::time::interval(ROBOTS_EVERY);
+            tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+            loop {
+                tokio::select! {
+                    _ = stop.cancelled() => break,
+                    _ = self.watch.changed() => {
+                        for name in self.watch.take() {
+                            self.evaluate(&name).await;
+                        }
+                    }
+                    Some(news) = self.news_rx.recv() => {
+                        let mut touched = HashSet::new();
+                        self.on_news(news, &mut touched);
+                        // A hub joining offers a burst: apply it whole, then act once per topic.
+                        while let Ok(more) = self.news_rx.try_recv() {
+                            self.on_news(more, &mut touched);
+                        }
+                        for name in touched {
+                            self.evaluate(&name).await;
+                        }
+                    }
+                    _ = tick.tick() => {
+                        let generation = registry.generation();
+                        if generation != robots_gen {
+                            robots_gen = generation;
+                            self.sync_robots(&registry).await;
+                        }
+                    }
+                }
+            }
+            for (_, e) in self.entries.drain() {
+                if let Some((sid, _)) = e.sending {
+                    self.router.unsubscribe(self.shared.client, sid);
+                }
+            }
+        };
+        tokio::join!(pump, work);
+    }
+
+    fn on_news(&mut self, news: News, touched: &mut HashSet<TopicName>) {
+        match news {
+            News::Token { hub, offer, put } => match offer {
+                Offer::Topic {
+                    name,
+                    type_name,
+                    latched,
+                } => {
+                    let Ok(name) = TopicName::parse(&name) else {
+                        return;
+                    };
+                    let e = self.entries.entry(name.clone()).or_default();
+                    if put {
+                        e.offered_by.insert(hub, (type_name, latched));
+                    } else if e.offered_by.get(&hub).is_some_and(|(t, _)| *t == type_name) {
+                        // (A hub that changed a topic's type withdraws the old offer after
+                        // making the new one: only an offer of that type goes.)
+                        e.offered_by.remove(&hub);
+                    }
+                    touched.insert(name);
+                }
+                Offer::Want { name } => {
+                    let Ok(name) = TopicName::parse(&name) else {
+                        return;
+                    };
+                    let e = self.entries.entry(name.clone()).or_default();
+                    if put {
+                        e.wanted_by.insert(hub);
+                    } else {
+                        e.wanted_by.remove(&hub);
+                    }
+                    touched.insert(name);
+                }
+                Offer::Service { name, type_name } => {
+                    self.service(hub, name, type_name, false, put)
+                }
+                Offer::Action { name, type_name } => self.service(hub, name, type_name, true, put),
+                Offer::Robot { name } => {
+                    let mut peers = self.shared.peers.lock().unwrap_or_else(|p| p.into_inner());
+                    let peer = peers.entry(hub).or_default();
+                    if put {
+                        peer.robots.insert(name);
+                    } else {
+                        peer.robots.remove(&name);
+                    }
+                }
+                Offer::Hub { name } => {
+                    let mut peers = self.shared.peers.lock().unwrap_or_else(|p| p.into_inner());
+                    if put {
+                        tracing::info!("federation: hub {name} ({hub}) joined");
+                        peers.entry(hub).or_default().name = name;
+                    } else if let Some(p) = peers.remove(&hub) {
+                        tracing::info!("federation: hub {} ({hub}) left", p.name);
+                    }
+                }
+            },
+            News::Schema { name, schema } => {
+                if self.entries.get(&name).is_some_and(|e| e.imported) {
+                    let latched = self.router.topic(&name).is_some_and(|t| t.is_latched());
+                    if let Err(e) =
+                        self.router
+                            .advertise(self.shared.client, &name, schema, latched)
+                    {
+                        tracing::debug!("federation: definition of {name}: {e}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Brings what the federation does about `name` in line with the router and the
+    /// fleet's tokens. Idempotent: what it changes on the router comes back as a change
+    /// of the topic and finds nothing more to do.
+    async fn evaluate(&mut self, name: &TopicName) {
+        let me = self.shared.client;
+        let snap = self.router.snapshot(name);
+        let mut e = self.entries.remove(name).unwrap_or_default();
+
+        // 1. Offer what is published here.
+        let offer_key = snap.as_ref().and_then(|s| {
+            if !s.publishers.iter().any(|c| *c != me) {
+                return None;
+            }
+            let offer = Offer::Topic {
+                name: name.as_str().to_owned(),
+                type_name: s.meta.schema.type_name.clone(),
+                latched: s.meta.latched,
+            };
+            let key = keys::offer_key(&self.shared.fleet, &self.shared.me, &offer);
+            if key.is_none() && self.refused.insert(name.as_str().to_owned()) {
+                tracing::warn!(
+                    "federation: topic {name} (type {:?}) cannot be named in Zenoh; it stays on this hub",
+                    s.meta.schema.type_name
+                );
+            }
+            key
+        });
+        if e.offer.as_ref().map(|(k, _)| k) != offer_key.as_ref() {
+            e.offer = None;
+            if let Some(key) = offer_key {
+                match self.session.liveliness().declare_token(key.clone()).await {
+                    Ok(t) => e.offer = Some((key, t)),
+                    Err(err) => tracing::warn!("federation: cannot offer {name}: {err}"),
+                }
+            }
+        }
+
+        // 2. Import what others offer.
+        if !e.offered_by.is_empty() && !e.imported {
+            let (hub, (type_name, latched)) = e
+                .offered_by
+                .iter()
+                .next()
+                .map(|(h, t)| (h.clone(), t.clone()))
+                .expect("not empty");
+            let known = self.router.transcoder().schema_for(&type_name);
+            let schema = known
+                .clone()
+                .unwrap_or_else(|| Schema::named(type_name.clone()));
+            match self.router.advertise(me, name, schema, latched) {
+                Ok(_) => {
+                    e.imported = true;
+                    if known.is_none() && !e.asked_schema && !type_name.is_empty() {
+                        e.asked_schema = true;
+                        self.ask_schema(hub, name.clone());
+                    }
+                }
+                Err(err) => tracing::warn!(
+                    "federation: {name} offered by hub {}: {err}",
+                    self.shared.peer_name(&hub)
+                ),
+            }
+        } else if e.offered_by.is_empty() && e.imported {
+            e.imported = false;
+            e.asked_schema = false;
+            self.router.unadvertise(me, name);
+        }
+        if !e.offered_by.is_empty() || e.listening.is_some() {
+            let f = e.import_figures.get_or_insert_with(Arc::default).clone();
+            let mut from: Vec<String> = e
+                .offered_by
+                .keys()
+                .map(|h| self.shared.peer_name(h))
+                .collect();
+            from.sort();
+            *f.from.lock().unwrap_or_else(|p| p.into_inner()) = from;
+        }
+
+        // 3. Listen while someone here wants it.
+        let topic = self.router.topic(name);
+        let demand = match (&snap, &topic) {
+            (Some(s), Some(t)) => t.demand_besides(me, &s.publishers),
+            _ => false,
+        };
+        if demand && e.listening.is_none() {
+            if let Some(t) = &topic {
+                let figures = e.import_figures.get_or_insert_with(Arc::default).clone();
+                match self.listen(name, t.clone(), figures.clone()).await {
+                    Ok(l) => {
+                        figures.subscribed.store(true, Relaxed);
+                        e.listening = Some(l);
+                    }
+                    Err(err) => tracing::warn!("federation: cannot subscribe to {name}: {err}"),
+                }
+            }
+        } else if !demand && e.listening.is_some() {
+            e.listening = None;
+            if let Some(f) = &e.import_figures {
+                f.subscribed.store(false, Relaxed);
+            }
+        }
+
+        // 4. Send while another hub wants it.
+        let wanted = !e.wanted_by.is_empty();
+        if wanted && e.sending.is_none() {
+            match self.send(name).await {
+                Ok((sid, id, figures)) => {
+                    e.sending = Some((sid, id));
+                    e.export_figures = Some(figures);
+                }
+                Err(err) => tracing::warn!("federation: cannot send {name}: {err}"),
+            }
+        } else if !wanted && let Some((sid, id)) = e.sending.take() {
+            self.router.unsubscribe(me, sid);
+            self.outlets
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .remove(&id);
+        }
+        if e.offer.is_some() || e.sending.is_some() {
+            let f = e.export_figures.get_or_insert_with(Arc::default);
+            f.wanted.store(wanted, Relaxed);
+        } else {
+            e.export_figures = None;
+        }
+        if e.offered_by.is_empty() && e.listening.is_none() {
+            e.import_figures = None;
+        }
+
+        self.publish_figures(name, &e);
+        if !e.is_empty() {
+            self.entries.insert(name.clone(), e);
+        }
+    }
+
+    fn publish_figures(&self, name: &TopicName, e: &Entry) {
+        let key = name.as_str().to_owned();
+        let mut ex = self
+            .shared
+            .exports
+            .lock()
+            .unwrap_or_else(|p| p.into_inner());
+        match &e.export_figures {
+            Some(f) => {
+                ex.insert(key.clone(), f.clone());
+            }
+            None => {
+                ex.remove(&key);
+            }
+        }
+        drop(ex);
+        let mut im = self
+            .shared
+            .imports
+            .lock()
+            .unwrap_or_else(|p| p.into_inner());
+        match &e.import_figures {
+            Some(f) => {
+                im.insert(key, f.clone());
+            }
+            None => {
+                im.remove(&key);
+            }
+        }
+    }
+
+    /// A Zenoh subscriber publishing what it hears into `topic`, and the want token that
+    /// tells the hubs with publishers to send it.
+    async fn listen(
+        &self,
+        name: &TopicName,
+        topic: Arc<Topic>,
+        figures: Arc<ImportFigures>,
+    ) -> Result<(Subscriber<()>, LivelinessToken), FederationError> {
+        let key = keys::topic_key(&self.shared.fleet, name.as_str())
+            .ok_or_else(|| FederationError::Zenoh(format!("{name} cannot be a Zenoh key")))?;
+        let want = keys::offer_key(
+            &self.shared.fleet,
+            &self.shared.me,
+            &Offer::Want {
+                name: name.as_str().to_owned(),
+            },
+        )
+        .expect("a name with a topic key has a want key");
+        let shared = self.shared.clone();
+        let mark = Mutex::new(StreamMark::default());
+        let sub = self
+            .session
+            .declare_subscriber(key)
+            .allowed_origin(Locality::Remote)
+            .callback(move |sample| {
+                let counters = &shared.counters;
+                let header = match sample
+                    .attachment()
+                    .map(|a| MessageHeader::decode(&a.to_bytes()))
+                {
+                    Some(Ok(h)) => h,
+                    Some(Err(e)) => {
+                        counters.malformed.fetch_add(1, Relaxed);
+                        tracing::debug!("federation: message on {}: {e}", sample.key_expr());
+                        return;
+                    }
+                    None => {
+                        counters.malformed.fetch_add(1, Relaxed);
+                        return;
+                    }
+                };
+                if let Some(epoch) = header.reliable {
+                    let fresh = mark
+                        .lock()
+                        .unwrap_or_else(|p| p.into_inner())
+                        .admit(epoch, header.seq);
+                    if !fresh {
+                        counters.duplicates.fetch_add(1, Relaxed);
+                        return;
+                    }
+                }
+                let bytes = bytes::Bytes::from(sample.payload().to_bytes().into_owned());
+                counters.received.fetch_add(1, Relaxed);
+                counters
+                    .received_bytes
+                    .fetch_add(bytes.len() as u64, Relaxed);
+                figures.received.fetch_add(1, Relaxed);
+                topic.publish(
+                    shared.client,
+                    header.seq,
+                    header.stamp_ns,
+                    Payload::new(header.encoding, bytes),
+                );
+            })
+            .await
+            .map_err(zerr)?;
+        let token = self
+            .session
+            .liveliness()
+            .declare_token(want)
+            .await
+            .map_err(zerr)?;
+        Ok((sub, token))
+    }
+
+    /// Subscribes here on behalf of the hubs that want `name`, with a Zenoh publisher for
+    /// what arrives.
+    async fn send(
+        &self,
+        name: &TopicName,
+    ) -> Result<(SubscriptionId, TopicId, Arc<ExportFigures>), FederationError> {
+        let key = keys::topic_key(&self.shared.fleet, name.as_str())
+            .ok_or_else(|| FederationError::Zenoh(format!("{name} cannot be a Zenoh key")))?;
+        let sid = self
+            .router
+            .subscribe(
+                self.shared.client,
+                Target::Exact(name.clone()),
+                SubOptions {
+                    unlisted: true,
+                    ..SubOptions::default()
+                },
+            )
+            .map_err(|e| FederationError::Zenoh(e.to_string()))?;
+        let topic = self
+            .router
+            .topic(name)
+            .expect("a subscription keeps its topic");
+        let declare = |congestion| {
+            self.session
+                .declare_publisher(key.clone())
+                .congestion_control(congestion)
+                .allowed_destination(Locality::Remote)
+        };
+        let (best_effort, reliable) = match (
+            declare(CongestionControl::Drop).await,
+            declare(CongestionControl::Block).await,
+        ) {
+            (Ok(b), Ok(r)) => (b, r),
+            (Err(e), _) | (_, Err(e)) => {
+                self.router.unsubscribe(self.shared.client, sid);
+                return Err(zerr(e));
+            }
+        };
+        let figures = Arc::new(ExportFigures::default());
+        let id = topic.id();
+        self.outlets
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .insert(
+                id,
+                Arc::new(Outlet {
+                    best_effort,
+                    reliable,
+                    topic,
+                    figures: figures.clone(),
+                }),
+            );
+        Ok((sid, id, figures))
+    }
+
+    /// Asks `hub` for the full definition of `name`'s type; the answer comes back as news.
+    fn ask_schema(&self, hub: String, name: TopicName) {
+        let Some(chunks) = keys::name_chunks(name.as_str()) else {
+            return;
+        };
+        let key = format!("{}/schema/{hub}/{chunks}", keys::root(&self.shared.fleet));
+        let session = self.session.clone();
+        let tx = self.news_tx.clone();
+        tokio::spawn(async move {
+            let replies = match session.get(key).timeout(Duration::from_secs(5)).await {
+                Ok(r) => r,
+                Err(e) => {
+                    tracing::debug!("federation: asking the definition of {name}: {e}");
+                    return;
+                }
+            };
+            while let Ok(reply) = replies.recv_async().await {
+                let Ok(sample) = reply.result() else { continue };
+                let Ok(v) =
+                    serde_json::from_slice::<serde_json::Value>(&sample.payload().to_bytes())
+                else {
+                    continue;
+                };
+                let field = |k: &str| v.get(k).and_then(|s| s.as_str()).unwrap_or("").to_owned();
+                let schema = Schema {
+                    type_name: field("type"),
+                    encoding: field("encoding"),
+                    text: field("text"),
+                };
+                if !schema.text.is_empty() {
+                    let _ = tx.send(News::Schema { name, schema });
+                    return;
+                }
+            }
+        });
+    }
+
+    /// A remote hub offers (or withdrew) a service or action: this hub provides it through
+    /// the federation while no client here provides it itself.
+    fn service(&mut self, hub: String, name: String, type_name: String, action: bool, put: bool) {
+        let Ok(name) = TopicName::parse(&name) else {
+            return;
+        };
+        let me = self.shared.client;
+        let calls = &self.router.calls;
+        let entry = self.services.entry(name.clone()).or_default();
+        if put {
+            entry.from.insert(hub, (type_name, action));
+        } else if entry
+            .from
+            .get(&hub)
+            .is_some_and(|(t, a)| *t == type_name && *a == action)
+        {
+            entry.from.remove(&hub);
+        } else {
+            return;
+        }
+        let mut providers = self.providers.lock().unwrap_or_else(|p| p.into_inner());
+        // Keep the current provider hub while it offers; otherwise take any other.
+        let next = match providers.get(&name) {
+            Some(h) if entry.from.contains_key(h) => Some(h.clone()),
+            _ => entry.from.keys().next().cloned(),
+        };
+        match next {
+            Some(h) => {
+                if calls.service(&name).is_some_and(|s| s.provider != me) {
+                    return; // a client here provides it: calls stay on this hub
+                }
+                let (type_name, action) = entry.from[&h].clone();
+                providers.insert(name.clone(), h);
+                drop(providers);
+                calls.advertise(me, name, Schema::named(type_name), action);
+            }
+            None => {
+                providers.remove(&name);
+                drop(providers);
+                self.services.remove(&name);
+                calls.unadvertise(me, &name);
+            }
+        }
+    }
+
+    /// Offers the robots online here, withdraws those that left.
+    async fn sync_robots(&mut self, registry: &Registry) {
+        let online: BTreeSet<String> = registry.list().iter().map(|r| r.name.clone()).collect();
+        self.robots.retain(|name, _| online.contains(name));
+        for name in online {
+            if self.robots.contains_key(&name) {
+                continue;
+            }
+            let offer = Offer::Robot { name: name.clone() };
+            let Some(key) = keys::offer_key(&self.shared.fleet, &self.shared.me, &offer) else {
+                continue;
+            };
+            match self.session.liveliness().declare_token(key).await {
+                Ok(token) => {
+                    self.robots.insert(name, token);
+                }
+                Err(e) => tracing::warn!("federation: cannot offer robot {name}: {e}"),
+            }
+        }
+    }
+}
+
+/// Puts what the federation's subscriptions receive into Zenoh: each message once, its
+/// payload as it is (a reference to the received bytes, no copy), the header beside it.
+async fn pump(
+    outbox: Arc<Outbox>,
+    outlets: Arc<Mutex<HashMap<TopicId, Arc<Outlet>>>>,
+    shared: Arc<Shared>,
+    stop: CancellationToken,
+) {
+    let mut items: Vec<Taken> = Vec::new();
+    let mut batch: Vec<(Arc<Outlet>, Arc<fleetlink_relay::Message>)> = Vec::new();
+    loop {
+        outbox.take_into(&mut items, 256, 1 << 20, Instant::now());
+        if items.is_empty() {
+            if outbox.is_closed() {
+                return;
+            }
+            tokio::select! {
+                _ = stop.cancelled() => return,
+                _ = outbox.ready() => continue,
+            }
+        }
+        {
+            let outlets = outlets.lock().unwrap_or_else(|p| p.into_inner());
+            for (_, _, msg) in items.drain(..) {
+                if let Some(o) = outlets.get(&msg.topic.id) {
+                    batch.push((o.clone(), msg));
+                }
+            }
+        }
+        for (o, msg) in batch.drain(..) {
+            let epoch = o.topic.reliable_epoch();
+            let header = MessageHeader {
+                encoding: msg.payload.encoding,
+                seq: msg.seq,
+                stamp_ns: msg.stamp_ns,
+                reliable: epoch,
+            };
+            let len = msg.payload.len() as u64;
+            let publisher = if epoch.is_some() {
+                &o.reliable
+            } else {
+                &o.best_effort
+            };
+            let put = publisher
+                .put(zenoh::bytes::ZBytes::from(msg.payload.bytes.clone()))
+                .attachment(header.encode())
+                .await;
+            match put {
+                Ok(()) => {
+                    o.figures.sent.fetch_add(1, Relaxed);
+                    shared.counters.sent.fetch_add(1, Relaxed);
+                    shared.counters.sent_bytes.fetch_add(len, Relaxed);
+                }
+                Err(e) => {
+                    shared.counters.send_failed.fetch_add(1, Relaxed);
+                    tracing::debug!("federation: put on {} failed: {e}", msg.topic.name);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,89 @@
+//! `fleetlink hub --federate zenoh`: the hub's options for joining other hubs, and the
+//! glue that starts the federation beside the hub (crates/federation).
+
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct FederationArgs {
+    /// Join the other hubs of the fleet through this engine (only `zenoh`): topics cross
+    /// to hubs where someone subscribes, calls go to the robot's hub, listings show the
+    /// whole fleet (docs/scaling.md).
+    #[arg(long, value_name = "ENGINE", value_parser = ["zenoh"])]
+    pub federate: Option<String>,
+    /// A Zenoh configuration file (JSON5) for everything the flags below do not cover.
+    #[arg(long, value_name = "FILE", requires = "federate")]
+    pub zenoh_config: Option<PathBuf>,
+    /// Zenoh mode: peer (default: hubs connect to each other), router, or client (through
+    /// a zenohd router).
+    #[arg(long, value_name = "MODE", requires = "federate")]
+    pub zenoh_mode: Option<String>,
+    /// A Zenoh endpoint to connect to, e.g. tcp/10.0.0.2:7447; repeatable.
+    #[arg(long = "zenoh-connect", value_name = "ENDPOINT", requires = "federate")]
+    pub zenoh_connect: Vec<String>,
+    /// A Zenoh endpoint to listen on, e.g. tcp/0.0.0.0:7447; repeatable.
+    #[arg(long = "zenoh-listen", value_name = "ENDPOINT", requires = "federate")]
+    pub zenoh_listen: Vec<String>,
+    /// Hubs federate with the hubs of the same fleet name.
+    #[arg(long, default_value = "fleet", requires = "federate")]
+    pub fleet: String,
+    /// This hub's name in the other hubs' listings (default: the host name).
+    #[arg(long, value_name = "NAME", requires = "federate")]
+    pub hub_name: Option<String>,
+}
+
+/// Starts the federation when asked for, and tells the hub about it.
+pub async fn join(args: &FederationArgs, hub: &fleetlink_hub::Hub) -> anyhow::Result<()> {
+    let Some(engine) = &args.federate else {
+        return Ok(());
+    };
+    start(engine, args, hub).await
+}
+
+#[cfg(feature = "federation")]
+async fn start(
+    _engine: &str,
+    args: &FederationArgs,
+    hub: &fleetlink_hub::Hub,
+) -> anyhow::Result<()> {
+    use anyhow::Context;
+    let zenoh = fleetlink_federation::zenoh_config(
+        args.zenoh_config.as_deref(),
+        args.zenoh_mode.as_deref(),
+        &args.zenoh_connect,
+        &args.zenoh_listen,
+    )?;
+    let hub_name = match &args.hub_name {
+        Some(n) => n.clone(),
+        None => rustix::system::uname()
+            .nodename()
+            .to_string_lossy()
+            .into_owned(),
+    };
+    let settings = fleetlink_federation::Settings {
+        fleet: args.fleet.clone(),
+        hub_name,
+        zenoh,
+    };
+    let fed = fleetlink_federation::Federation::start(
+        settings,
+        hub.router().clone(),
+        hub.registry().clone(),
+        hub.shutdown_token(),
+    )
+    .await
+    .context("joining the federation")?;
+    hub.federate(std::sync::Arc::new(fed));
+    Ok(())
+}
+
+#[cfg(not(feature = "federation"))]
+async fn start(
+    engine: &str,
+    _args: &FederationArgs,
+    _hub: &fleetlink_hub::Hub,
+) -> anyhow::Result<()> {
+    anyhow::bail!(
+        "--federate {engine}: this fleetlink was built without federation; \
+         build it with `cargo build --release --features federation` (the default)"
+    )
+}
