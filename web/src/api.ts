@@ -39,6 +39,8 @@ export interface RobotInfo {
   demand_bps?: number;
   clock_offset_ms?: number | null;
   topics: string[];
+  /** The hub it is connected to, when that is another hub of a federation. */
+  hub?: string;
   /** The robot's data budget as its agent last reported it (absent: none). Bytes per
    * second and per day on the wire; `thinned`: topics it holds back now. */
   budget?: { max_bps: number | null; day_bytes: number | null; used_bytes: number; use_bps: number; thinned: string[] } | null;

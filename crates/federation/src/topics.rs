@@ -63,13 +63,20 @@ enum News {
 }
 
 /// What the pump needs of a topic this hub sends.
+///
+/// Design choice: a declared `Publisher` only for a topic that is both wanted elsewhere
+/// and published here; the quiet subscriptions a hub holds for topics nobody publishes
+/// there (yet) send through `Session::put` if a message comes before the publisher.
+/// Zenoh 1.10 matches every new declaration against all it knows
+/// (`Resource::get_matches`), so a publisher declared for each of 10,000 topics wanted
+/// elsewhere kept an idle hub busy for many seconds; a declared publisher is cheaper per
+/// message than a put. A no-drop topic's messages always go by put with congestion
+/// control `Block` (they wait for room in Zenoh's queues); the rest drop under
+/// congestion rather than stall every topic behind one slow hub. Whether a topic is
+/// no-drop is known only when its robot advertises, possibly after another hub wanted it.
 struct Outlet {
-    /// A no-drop topic's messages wait for room in Zenoh's queues; the rest drop under
-    /// congestion rather than stall every topic behind one slow hub. Both publishers are
-    /// made at once: whether a robot publishes the topic no-drop is known only when it
-    /// advertises, which may come after another hub wanted it.
-    best_effort: Publisher<'static>,
-    reliable: Publisher<'static>,
+    key: zenoh::key_expr::KeyExpr<'static>,
+    publisher: Option<Publisher<'static>>,
     topic: Arc<Topic>,
     figures: Arc<ExportFigures>,
 }
@@ -180,6 +187,7 @@ impl Topics {
 
     pub async fn run(mut self, registry: Arc<Registry>, stop: CancellationToken) {
         let pump = pump(
+            self.session.clone(),
             self.outbox.clone(),
             self.outlets.clone(),
             self.shared.clone(),
@@ -415,6 +423,9 @@ impl Topics {
                 .unwrap_or_else(|p| p.into_inner())
                 .remove(&id);
         }
+        if let (Some((_, id)), Some(_)) = (e.sending, &e.offer) {
+            self.declare_publisher(id).await;
+        }
         if e.offer.is_some() || e.sending.is_some() {
             let f = e.export_figures.get_or_insert_with(Arc::default);
             f.wanted.store(wanted, Relaxed);
@@ -560,18 +571,9 @@ impl Topics {
             .router
             .topic(name)
             .expect("a subscription keeps its topic");
-        let declare = |congestion| {
-            self.session
-                .declare_publisher(key.clone())
-                .congestion_control(congestion)
-                .allowed_destination(Locality::Remote)
-        };
-        let (best_effort, reliable) = match (
-            declare(CongestionControl::Drop).await,
-            declare(CongestionControl::Block).await,
-        ) {
-            (Ok(b), Ok(r)) => (b, r),
-            (Err(e), _) | (_, Err(e)) => {
+        let key = match zenoh::key_expr::KeyExpr::try_from(key) {
+            Ok(k) => k,
+            Err(e) => {
                 self.router.unsubscribe(self.shared.client, sid);
                 return Err(zerr(e));
             }
@@ -584,13 +586,49 @@ impl Topics {
             .insert(
                 id,
                 Arc::new(Outlet {
-                    best_effort,
-                    reliable,
+                    key,
+                    publisher: None,
                     topic,
                     figures: figures.clone(),
                 }),
             );
         Ok((sid, id, figures))
+    }
+
+    /// Gives the outlet of topic `id` a declared publisher, once.
+    async fn declare_publisher(&self, id: TopicId) {
+        let Some(o) = self
+            .outlets
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .get(&id)
+            .filter(|o| o.publisher.is_none())
+            .cloned()
+        else {
+            return;
+        };
+        let declared = self
+            .session
+            .declare_publisher(o.key.clone())
+            .congestion_control(CongestionControl::Drop)
+            .allowed_destination(Locality::Remote)
+            .await;
+        match declared {
+            Ok(p) => {
+                let with = Arc::new(Outlet {
+                    key: o.key.clone(),
+                    publisher: Some(p),
+                    topic: o.topic.clone(),
+                    figures: o.figures.clone(),
+                });
+                let mut outlets = self.outlets.lock().unwrap_or_else(|p| p.into_inner());
+                // Still the same outlet (not withdrawn meanwhile).
+                if outlets.get(&id).is_some_and(|cur| Arc::ptr_eq(cur, &o)) {
+                    outlets.insert(id, with);
+                }
+            }
+            Err(e) => tracing::debug!("federation: publisher for {}: {e}", o.key),
+        }
     }
 
     /// Asks `hub` for the full definition of `name`'s type; the answer comes back as news.
@@ -700,6 +738,7 @@ impl Topics {
 /// Puts what the federation's subscriptions receive into Zenoh: each message once, its
 /// payload as it is (a reference to the received bytes, no copy), the header beside it.
 async fn pump(
+    session: Session,
     outbox: Arc<Outbox>,
     outlets: Arc<Mutex<HashMap<TopicId, Arc<Outlet>>>>,
     shared: Arc<Shared>,
@@ -735,15 +774,23 @@ async fn pump(
                 reliable: epoch,
             };
             let len = msg.payload.len() as u64;
-            let publisher = if epoch.is_some() {
-                &o.reliable
-            } else {
-                &o.best_effort
+            let payload = zenoh::bytes::ZBytes::from(msg.payload.bytes.clone());
+            let put = match (&o.publisher, epoch) {
+                (Some(p), None) => p.put(payload).attachment(header.encode()).await,
+                (_, reliable) => {
+                    let congestion = if reliable.is_some() {
+                        CongestionControl::Block
+                    } else {
+                        CongestionControl::Drop
+                    };
+                    session
+                        .put(&o.key, payload)
+                        .attachment(header.encode())
+                        .congestion_control(congestion)
+                        .allowed_destination(Locality::Remote)
+                        .await
+                }
             };
-            let put = publisher
-                .put(zenoh::bytes::ZBytes::from(msg.payload.bytes.clone()))
-                .attachment(header.encode())
-                .await;
             match put {
                 Ok(()) => {
                     o.figures.sent.fetch_add(1, Relaxed);

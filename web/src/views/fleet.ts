@@ -118,8 +118,9 @@ export function fleetView(root: HTMLElement, rb: Rosbridge, open: (robot: string
         if (title) dd.title = title;
         kv.append(dt, dd);
       };
-      row("last seen", ago(r.last_seen_ms));
-      if (r.online) {
+      if (r.hub) row("hub", r.hub, "connected to this other hub of the federation");
+      else row("last seen", ago(r.last_seen_ms));
+      if (r.online && !r.hub) {
         row("RTT", r.rtt_ms != null ? `${num(r.rtt_ms)} ms` : "–");
         row("goodput", bps(r.link_rate_bps), "what the robot's link delivered (its link report)");
         row("msg/s", num(t.rate), `${bps(t.bw)} over ${r.topics.length} topics`);

@@ -63,11 +63,12 @@ where
     use tracing_subscriber::layer::{Layer, SubscriberExt};
     // rustdds narrates every socket and match at info, and warns about every datagram
     // over its MTU guess and every long fragment NACK (normal for 1 MB samples): only
-    // its other warnings are worth showing.
+    // its other warnings are worth showing. Zenoh (a federated hub) narrates its
+    // session's endpoints and links at info: its warnings say what matters.
     let filter = rust_log
         .and_then(|v| tracing_subscriber::EnvFilter::try_new(v).ok())
         .unwrap_or_else(|| tracing_subscriber::EnvFilter::new(format!(
-            "{default},rustdds=warn,rustdds::structure::sequence_number=off,rustdds::network::udp_sender=error"
+            "{default},zenoh=warn,rustdds=warn,rustdds::structure::sequence_number=off,rustdds::network::udp_sender=error"
         )));
     let repeats = rust_log
         .is_none_or(|v| !v.contains("rustdds"))
