@@ -21,15 +21,23 @@ impl Database {
         let applied = self.transaction(async |tx| {
             tx.execute("SELECT pg_advisory_xact_lock($1)", &[&MIGRATION_LOCK])
                 .await?;
-            tx.batch_execute(
-                "CREATE TABLE IF NOT EXISTS fleetlink_schema (
-                     component TEXT NOT NULL,
-                     version INTEGER NOT NULL,
-                     applied_at TIMESTAMPTZ NOT NULL DEFAULT now(),
-                     PRIMARY KEY (component, version)
-                 )",
-            )
-            .await?;
+            // Checked first rather than `IF NOT EXISTS`, whose "already exists" notice
+            // would be logged at every start.
+            let exists: bool = tx
+                .query_one("SELECT to_regclass('fleetlink_schema') IS NOT NULL", &[])
+                .await?
+                .try_get(0)?;
+            if !exists {
+                tx.batch_execute(
+                    "CREATE TABLE fleetlink_schema (
+                         component TEXT NOT NULL,
+                         version INTEGER NOT NULL,
+                         applied_at TIMESTAMPTZ NOT NULL DEFAULT now(),
+                         PRIMARY KEY (component, version)
+                     )",
+                )
+                .await?;
+            }
             let found: i32 = tx
                 .query_one(
                     "SELECT COALESCE(MAX(version), 0) FROM fleetlink_schema WHERE component = $1",
