@@ -2,7 +2,8 @@
 //! survive a restart.
 //!
 //! Memory is the truth; the database follows it. A change marks its names dirty, and one
-//! writer thread brings each dirty name's row in line with memory (set, or deleted), so a
+//! writer thread brings the dirty names' rows in line with memory (set, or deleted; one
+//! transaction for all the names dirty at once), so a
 //! `set_param` never waits for the disk on the session's task. What waits is bounded by
 //! the parameters themselves: a name changed again before it was written is written once,
 //! with its newest value (counted in [`DurableParams::coalesced`]); nothing is lost, since
@@ -160,14 +161,15 @@ fn write_loop(store: &Store, mem: &MemoryParams, shared: &Shared) {
                 std::mem::take(&mut d.reload),
             )
         };
-        for name in &names {
-            let r = match mem.get(name) {
-                Some(v) => store.set_param(name, &v),
-                None => store.delete_param(name),
-            };
-            if let Err(e) = r {
-                tracing::error!("parameters: cannot write {name} to the database: {e}");
-            }
+        // One transaction per round: one commit (and, shared, one notification) however
+        // many names changed.
+        let changes: Vec<(String, Option<String>)> =
+            names.iter().map(|n| (n.clone(), mem.get(n))).collect();
+        if let Err(e) = store.write_params(&changes) {
+            tracing::error!(
+                "parameters: cannot write {} changes to the database: {e}",
+                changes.len()
+            );
         }
         if !names.is_empty() {
             let mut d = shared.lock();

@@ -292,40 +292,60 @@ impl Store {
         }
     }
 
-    pub fn set_param(&self, name: &str, value: &str) -> Result<(), StoreError> {
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                c.execute(
-                    "INSERT INTO params (name, value) VALUES (?1, ?2)
-                     ON CONFLICT(name) DO UPDATE SET value = excluded.value",
-                    params![name, value],
-                )
-                .map(|_| ())
-            }),
-            Backend::Postgres(db) => Ok(db.transaction(async |tx| {
-                tx.execute(
-                    "INSERT INTO params (name, value) VALUES ($1, $2)
-                     ON CONFLICT (name) DO UPDATE SET value = excluded.value",
-                    &[&name, &value],
-                )
-                .await?;
-                notify(tx, Change::Params).await
-            })?),
+    /// Brings the named parameters in line in one transaction: each set to its value, or
+    /// deleted when it has none. On PostgreSQL the other hubs are notified once.
+    pub fn write_params(&self, changes: &[(String, Option<String>)]) -> Result<(), StoreError> {
+        if changes.is_empty() {
+            return Ok(());
         }
-    }
-
-    /// Deletes the parameter `name` alone.
-    pub fn delete_param(&self, name: &str) -> Result<(), StoreError> {
         match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                c.execute("DELETE FROM params WHERE name = ?1", params![name])
-                    .map(|_| ())
-            }),
-            Backend::Postgres(db) => Ok(db.transaction(async |tx| {
-                tx.execute("DELETE FROM params WHERE name = $1", &[&name])
-                    .await?;
-                notify(tx, Change::Params).await
-            })?),
+            Backend::Sqlite(c) => {
+                let mut conn = c.lock().unwrap_or_else(|p| p.into_inner());
+                let tx = conn.transaction()?;
+                {
+                    let mut set = tx.prepare_cached(
+                        "INSERT INTO params (name, value) VALUES (?1, ?2)
+                         ON CONFLICT(name) DO UPDATE SET value = excluded.value",
+                    )?;
+                    let mut delete = tx.prepare_cached("DELETE FROM params WHERE name = ?1")?;
+                    for (name, value) in changes {
+                        match value {
+                            Some(v) => set.execute(params![name, v])?,
+                            None => delete.execute(params![name])?,
+                        };
+                    }
+                }
+                tx.commit()?;
+                Ok(())
+            }
+            Backend::Postgres(db) => {
+                let (mut names, mut values, mut gone) = (Vec::new(), Vec::new(), Vec::new());
+                for (name, value) in changes {
+                    match value {
+                        Some(v) => {
+                            names.push(name.as_str());
+                            values.push(v.as_str());
+                        }
+                        None => gone.push(name.as_str()),
+                    }
+                }
+                Ok(db.transaction(async |tx| {
+                    if !names.is_empty() {
+                        tx.execute(
+                            "INSERT INTO params (name, value)
+                             SELECT * FROM UNNEST($1::TEXT[], $2::TEXT[])
+                             ON CONFLICT (name) DO UPDATE SET value = excluded.value",
+                            &[&names, &values],
+                        )
+                        .await?;
+                    }
+                    if !gone.is_empty() {
+                        tx.execute("DELETE FROM params WHERE name = ANY($1)", &[&gone])
+                            .await?;
+                    }
+                    notify(tx, Change::Params).await
+                })?)
+            }
         }
     }
 
@@ -502,19 +522,36 @@ mod tests {
     fn params_set_delete_and_delete_a_subtree(backend: Backend) {
         let place = Place::new(backend, "params");
         let s = place.open();
-        for (n, v) in [("/a", "1"), ("/a/b", "2"), ("/a/c/d", "3"), ("/ab", "4")] {
-            s.set_param(n, v).unwrap();
-        }
-        s.set_param("/a", "10").unwrap();
+        let change = |n: &str, v: Option<&str>| (n.to_owned(), v.map(str::to_owned));
+        let set = |n: &str, v: &str| change(n, Some(v));
+        s.write_params(&[
+            set("/a", "1"),
+            set("/a/b", "2"),
+            set("/a/c/d", "3"),
+            set("/ab", "4"),
+        ])
+        .unwrap();
+        s.write_params(&[set("/a", "10")]).unwrap();
         assert_eq!(
             s.params().unwrap().get("/a").map(String::as_str),
             Some("10")
         );
-        s.delete_param("/ab").unwrap();
+        s.write_params(&[change("/ab", None)]).unwrap();
         s.delete_params("/a/c").unwrap();
         let left: Vec<_> = place.open().params().unwrap().into_keys().collect();
         assert_eq!(left, ["/a", "/a/b"]);
         s.delete_params("/a").unwrap();
         assert!(s.params().unwrap().is_empty());
+
+        s.write_params(&[change("/x", Some("1")), change("/y", Some("2"))])
+            .unwrap();
+        s.write_params(&[
+            change("/x", None),
+            change("/y", Some("3")),
+            change("/z", None),
+        ])
+        .unwrap();
+        let left: Vec<_> = place.open().params().unwrap().into_iter().collect();
+        assert_eq!(left, [("/y".to_owned(), "3".to_owned())]);
     }
 }

@@ -45,10 +45,11 @@ if [ "${PG_SUITE_SKIP_RUST:-}" = 1 ]; then
     echo "SKIP: Rust PostgreSQL variants (PG_SUITE_SKIP_RUST=1)"
 else
     echo "== Rust tests on PostgreSQL"
-    # The same profile as scripts/test.sh's build and test run: nothing compiles again.
+    # The same profile and package set (--workspace, so the same features) as
+    # scripts/test.sh's test run: nothing compiles again; the filter picks the crates.
     if ! (cd "$root" && FLEETLINK_TEST_POSTGRES="$PG_URL" timeout 900 \
-        cargo nextest run --locked --cargo-profile ci --no-fail-fast \
-        -p fleetlink-auth -p fleetlink-hub -p fleetlink-postgres --run-ignored only); then
+        cargo nextest run --locked --workspace --cargo-profile ci --no-fail-fast --run-ignored only \
+        -E 'package(fleetlink-auth) | package(fleetlink-hub) | package(fleetlink-postgres)'); then
         failed+=("rust")
     fi
 fi
