@@ -12,7 +12,7 @@
 #   pg_cluster_remove       stops it (fast) and deletes its directory
 #
 # PG_FSYNC=on keeps fsync (for measurements); the default turns it off, as the tests
-# check behaviour, not durability.
+# check behaviour, not durability. PG_TMPDIR: where the cluster's directory goes (/tmp).
 
 pg_bin_dir() {
     local d
@@ -21,14 +21,15 @@ pg_bin_dir() {
     echo "$d"
 }
 
-# Runs a server binary as the cluster's owner, for at most $1 seconds.
+# Runs a server binary as the cluster's owner, for at most $1 seconds, from / (the
+# caller's directory may be closed to that user).
 pg_as_owner() {
     local secs=$1
     shift
     if [ "$(id -u)" -eq 0 ]; then
-        timeout "$secs" runuser -u postgres -- "$@"
+        (cd / && timeout "$secs" runuser -u postgres -- "$@")
     else
-        timeout "$secs" "$@"
+        (cd / && timeout "$secs" "$@")
     fi
 }
 
@@ -40,7 +41,8 @@ pg_cluster_start() {
     local bin
     bin="$(pg_bin_dir)" || return 1
     PG_BIN="$bin"
-    PG_DIR="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-pg.XXXXXX")"
+    # Under /tmp rather than $TMPDIR: the server's user must reach it.
+    PG_DIR="$(mktemp -d "${PG_TMPDIR:-/tmp}/fleetlink-pg.XXXXXX")"
     chmod 755 "$PG_DIR"
     [ "$(id -u)" -eq 0 ] && chown postgres: "$PG_DIR"
     if ! pg_as_owner 60 "$bin/initdb" -D "$PG_DIR/data" -U fleetlink --auth=trust \
