@@ -11,8 +11,8 @@
 //! - [`token`]: `flk_<kind>_<secret>` tokens and their SHA-256 hashes.
 //! - [`acl`]: rules, YAML import, the shared [`Authorizer`] and per-connection [`Access`]
 //!   decision cache.
-//! - [`store`]: the SQLite tables (rules, robot/operator tokens, users, sessions,
-//!   audit) and the operations the REST API and CLI need.
+//! - [`store`]: the tables (rules, robot/operator tokens, users, sessions, audit), in
+//!   SQLite or a shared PostgreSQL, and the operations the REST API and CLI need.
 //! - [`authn`]: [`Authenticator`]: every [`Credential`] kind to an [`Identity`], login,
 //!   logout, anonymous policy.
 //! - [`ratelimit`]: sans-IO login throttling per user name and per client address.

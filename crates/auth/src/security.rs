@@ -5,9 +5,19 @@
 //! the rules, write the audit record" cannot be half done by a REST handler or CLI that
 //! forgets a step. The parts stay public for the hot path (`authz` for [`Access`],
 //! `audit` for operation records).
+//!
+//! With the store in PostgreSQL, changes made through another hub arrive as notifications
+//! ([`fleetlink_postgres::changes`]); a thread of the security core (`fleetlink-auth-sync`)
+//! reloads what they name, so a rule changed anywhere applies here within a second. What
+//! the authorizer caches (each connection's [`Access`], the hub's per-topic decisions) is
+//! keyed by the rules' generation, which a reload moves on, so no stale decision survives
+//! it. Tokens and users are not cached: every authentication reads them.
 
-use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::mpsc::{Receiver, TrySendError, sync_channel};
+use std::sync::{Arc, Mutex, Weak};
+
+use fleetlink_postgres::Change;
 
 use crate::UnixTime;
 use crate::acl::{Access, AclDefaults, Authorizer, Rule, RuleId, import_yaml};
@@ -22,6 +32,8 @@ use crate::token::Token;
 pub enum SecurityError {
     #[error("cannot start the audit writer thread: {0}")]
     AuditWriter(std::io::Error),
+    #[error("cannot start the thread applying changes from other hubs: {0}")]
+    SyncThread(std::io::Error),
     #[error(transparent)]
     Store(#[from] StoreError),
     #[error(transparent)]
@@ -34,8 +46,87 @@ pub struct Security {
     pub authn: Arc<Authenticator>,
     pub authz: Arc<Authorizer>,
     pub audit: AuditLog,
+    rules: Arc<RuleLoader>,
+}
+
+/// Loads the authorizer's rules from the store, one load at a time.
+struct RuleLoader {
+    store: Store,
+    authz: Arc<Authorizer>,
     /// The store's rule revision the authorizer was last loaded from.
     loaded_revision: AtomicU64,
+    /// Counted per change kind received from other processes: rules, tokens, users,
+    /// everything (after the listener reconnected).
+    received: [AtomicU64; 4],
+    // std Mutex: serialises loads (admin edits, the notification thread, the hub's
+    // periodic check) so an older read never replaces a newer one; held across two short
+    // blocking store reads on a blocking thread, never across an await.
+    loading: Mutex<()>,
+}
+
+impl RuleLoader {
+    /// Recompiles the rules from the store and remembers the revision.
+    fn reload(&self) -> Result<(), StoreError> {
+        let _one = self.loading.lock().unwrap_or_else(|p| p.into_inner());
+        let revision = self.store.rules_revision()?;
+        self.authz.replace_rules(self.store.list_rules()?);
+        self.loaded_revision.store(revision, Ordering::Release);
+        Ok(())
+    }
+
+    fn reload_if_changed(&self) -> Result<bool, StoreError> {
+        if self.store.rules_revision()? == self.loaded_revision.load(Ordering::Acquire) {
+            return Ok(false);
+        }
+        self.reload()?;
+        Ok(true)
+    }
+}
+
+/// Notifications waiting for the sync thread at most; more are dropped, since one reload
+/// covers any number of them.
+const CHANGES_QUEUED: usize = 64;
+
+/// Subscribes to the shared database's changes and starts the thread that applies them.
+fn follow_changes(
+    db: &fleetlink_postgres::Database,
+    rules: &Arc<RuleLoader>,
+) -> std::io::Result<()> {
+    let (tx, rx) = sync_channel::<Change>(CHANGES_QUEUED);
+    let weak = Arc::downgrade(rules);
+    std::thread::Builder::new()
+        .name("fleetlink-auth-sync".to_owned())
+        .spawn(move || apply_changes(rx, weak))?;
+    db.on_change(move |change| match tx.try_send(change) {
+        Ok(()) | Err(TrySendError::Full(_)) => true,
+        // The security core is gone: unsubscribe.
+        Err(TrySendError::Disconnected(_)) => false,
+    });
+    Ok(())
+}
+
+fn apply_changes(rx: Receiver<Change>, rules: Weak<RuleLoader>) {
+    while let Ok(change) = rx.recv() {
+        let Some(rules) = rules.upgrade() else { return };
+        let slot = match change {
+            Change::Rules => 0,
+            Change::Tokens => 1,
+            Change::Users => 2,
+            Change::Everything => 3,
+            Change::Params => continue,
+        };
+        rules.received[slot].fetch_add(1, Ordering::Relaxed);
+        let result = match change {
+            // Notifications may have been missed: load whatever the revision says.
+            Change::Everything => rules.reload(),
+            Change::Rules => rules.reload_if_changed().map(|_| ()),
+            // Read at every authentication, nothing to reload.
+            _ => Ok(()),
+        };
+        if let Err(e) = result {
+            tracing::warn!("cannot reload access rules after a change elsewhere: {e}");
+        }
+    }
 }
 
 /// Audit channel size: a few seconds of commands at fleet scale.
@@ -52,13 +143,35 @@ impl Security {
         let authz = Arc::new(Authorizer::new(store.list_rules()?, defaults));
         let audit =
             AuditLog::start(store.clone(), AUDIT_CAPACITY).map_err(SecurityError::AuditWriter)?;
+        let rules = Arc::new(RuleLoader {
+            store: store.clone(),
+            authz: authz.clone(),
+            loaded_revision: AtomicU64::new(revision),
+            received: Default::default(),
+            loading: Mutex::new(()),
+        });
+        if let Some(db) = store.database() {
+            follow_changes(db, &rules).map_err(SecurityError::SyncThread)?;
+        }
         Ok(Security {
             authn: Arc::new(Authenticator::new(store.clone(), policy)),
             store,
             authz,
             audit,
-            loaded_revision: AtomicU64::new(revision),
+            rules,
         })
+    }
+
+    /// Change notifications received from the shared database, by kind: `rules`,
+    /// `tokens`, `users`, `everything` (the listener reconnected). All zero with SQLite.
+    pub fn changes_received(&self) -> [(&'static str, u64); 4] {
+        let n = |i: usize| self.rules.received[i].load(Ordering::Relaxed);
+        [
+            ("rules", n(0)),
+            ("tokens", n(1)),
+            ("users", n(2)),
+            ("everything", n(3)),
+        ]
     }
 
     /// Authenticates and, on failure, records an `auth_failure` audit entry.
@@ -150,22 +263,15 @@ impl Security {
         );
     }
 
-    /// Recompiles the rules from the store and remembers the revision.
     fn reload(&self) -> Result<(), StoreError> {
-        let revision = self.store.rules_revision()?;
-        self.authz.replace_rules(self.store.list_rules()?);
-        self.loaded_revision.store(revision, Ordering::Release);
-        Ok(())
+        self.rules.reload()
     }
 
-    /// Picks up rule edits made by another process on the same database (the CLI).
-    /// Cheap: one indexed read when nothing changed; call it every second or so.
+    /// Picks up rule edits made by another process on the same database (the CLI, or
+    /// another hub when notifications are lost). Cheap: one indexed read when nothing
+    /// changed; call it every second or so.
     pub fn reload_rules_if_changed(&self) -> Result<bool, StoreError> {
-        if self.store.rules_revision()? == self.loaded_revision.load(Ordering::Acquire) {
-            return Ok(false);
-        }
-        self.reload()?;
-        Ok(true)
+        self.rules.reload_if_changed()
     }
 
     pub fn add_rule(

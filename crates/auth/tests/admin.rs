@@ -6,9 +6,16 @@ use fleetlink_auth::{AuthPolicy, Credential, IdentityKind, TokenKind};
 
 use crate::util::*;
 
-#[test]
-fn demo_operator_token_has_full_rights() {
-    let sec = security(AuthPolicy::demo(), AclDefaults::demo());
+on_both_backends!(
+    demo_operator_token_has_full_rights,
+    rules_add_list_remove_replace_and_yaml_round_trip,
+    tokens_are_stored_hashed_and_listed_without_secrets,
+    users_add_list_remove_and_group_changes_reach_sessions,
+    robot_authenticates_by_client_certificate_name_without_token,
+);
+
+fn demo_operator_token_has_full_rights(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::demo(), AclDefaults::demo());
     let token = sec
         .store
         .mint_operator_token(&user("operator"), &[group("admin")], None, T0)
@@ -27,9 +34,8 @@ fn demo_operator_token_has_full_rights() {
     assert!(access.allows("/rules", Operation::Admin));
 }
 
-#[test]
-fn rules_add_list_remove_replace_and_yaml_round_trip() {
-    let sec = security(AuthPolicy::default(), AclDefaults::default());
+fn rules_add_list_remove_replace_and_yaml_round_trip(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::default(), AclDefaults::default());
     let yaml = "rules:
   - subject: {group: ops}
     names: /.*
@@ -84,9 +90,8 @@ fn invalid_yaml_names_the_problem() {
     assert!(err.contains("unknown operation"), "{err}");
 }
 
-#[test]
-fn tokens_are_stored_hashed_and_listed_without_secrets() {
-    let sec = security(AuthPolicy::default(), AclDefaults::default());
+fn tokens_are_stored_hashed_and_listed_without_secrets(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::default(), AclDefaults::default());
     let t = sec
         .add_robot_token(&admin(), &robot("r7"), None, T0)
         .unwrap();
@@ -108,9 +113,8 @@ fn tokens_are_stored_hashed_and_listed_without_secrets() {
     assert_eq!(sec.store.revoke_robot_tokens(&robot("r7"), T0).unwrap(), 1);
 }
 
-#[test]
-fn users_add_list_remove_and_group_changes_reach_sessions() {
-    let sec = security(AuthPolicy::default(), AclDefaults::default());
+fn users_add_list_remove_and_group_changes_reach_sessions(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::default(), AclDefaults::default());
     sec.add_user(&admin(), &user("alice"), "pw-alice-1", &[group("ops")], T0)
         .unwrap();
     assert!(
@@ -145,9 +149,8 @@ fn users_add_list_remove_and_group_changes_reach_sessions() {
     assert!(replay.is_err(), "removing a user ends their sessions");
 }
 
-#[test]
-fn robot_authenticates_by_client_certificate_name_without_token() {
-    let sec = security(AuthPolicy::default(), AclDefaults::default());
+fn robot_authenticates_by_client_certificate_name_without_token(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::default(), AclDefaults::default());
     let conn = peer("192.0.2.1").with_tls_client_name(robot("r1"));
     let cred = |name: &str| Credential::Agent {
         robot: robot(name),

@@ -2,9 +2,16 @@
 
 use fleetlink_auth::acl::{AclDefaults, NamePattern};
 use fleetlink_auth::audit::{AuditAction, AuditLog, AuditQuery, AuditRecord};
-use fleetlink_auth::{AuthPolicy, Credential, Store};
+use fleetlink_auth::{AuthPolicy, Credential};
 
 use crate::util::*;
+
+on_both_backends!(
+    audit_query_filters_by_principal_action_name_allowed_and_time,
+    audit_paging_with_cursor_visits_every_record_once,
+    authentication_failures_are_audited_with_client_address,
+    prune_audit_drops_only_older_records,
+);
 
 fn fill(log: &AuditLog) {
     let alice = user_id("alice", &["ops"], "203.0.113.5");
@@ -27,9 +34,8 @@ fn fill(log: &AuditLog) {
     log.flush();
 }
 
-#[test]
-fn audit_query_filters_by_principal_action_name_allowed_and_time() {
-    let store = Store::open_in_memory().unwrap();
+fn audit_query_filters_by_principal_action_name_allowed_and_time(backend: Backend) {
+    let store = store_on(backend);
     let log = AuditLog::start(store.clone(), 1024).unwrap();
     fill(&log);
     assert_eq!(log.written(), 30);
@@ -77,9 +83,8 @@ fn audit_query_filters_by_principal_action_name_allowed_and_time() {
     assert!(window.windows(2).all(|w| w[0].id > w[1].id), "newest first");
 }
 
-#[test]
-fn audit_paging_with_cursor_visits_every_record_once() {
-    let store = Store::open_in_memory().unwrap();
+fn audit_paging_with_cursor_visits_every_record_once(backend: Backend) {
+    let store = store_on(backend);
     let log = AuditLog::start(store.clone(), 1024).unwrap();
     fill(&log);
     let mut seen = Vec::new();
@@ -105,9 +110,8 @@ fn audit_paging_with_cursor_visits_every_record_once() {
     assert_eq!(seen.len(), 30);
 }
 
-#[test]
-fn authentication_failures_are_audited_with_client_address() {
-    let sec = security(AuthPolicy::default(), AclDefaults::default());
+fn authentication_failures_are_audited_with_client_address(backend: Backend) {
+    let sec = security_on(backend, AuthPolicy::default(), AclDefaults::default());
     let _ = sec.authenticate(
         Credential::Agent {
             robot: robot("r9"),
@@ -144,9 +148,8 @@ fn authentication_failures_are_audited_with_client_address() {
     );
 }
 
-#[test]
-fn prune_audit_drops_only_older_records() {
-    let store = Store::open_in_memory().unwrap();
+fn prune_audit_drops_only_older_records(backend: Backend) {
+    let store = store_on(backend);
     let log = AuditLog::start(store.clone(), 1024).unwrap();
     fill(&log);
     assert_eq!(store.prune_audit(T0.plus_secs(10)).unwrap(), 10);

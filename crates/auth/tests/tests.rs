@@ -5,6 +5,7 @@ mod admin;
 mod attacks;
 mod audit;
 mod jwt;
+mod shared;
 mod tls;
 mod tls_openssl;
 mod util;

@@ -65,6 +65,49 @@ pub fn security(policy: AuthPolicy, defaults: AclDefaults) -> Security {
     Security::new(Store::open_in_memory().unwrap(), policy, defaults).unwrap()
 }
 
+/// Where a test's store lives: the tests written for both run once on each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Backend {
+    /// A private in-memory SQLite database.
+    Sqlite,
+    /// A new database of its own on the server named by `FLEETLINK_TEST_POSTGRES`.
+    Postgres,
+}
+
+pub fn store_on(backend: Backend) -> Store {
+    match backend {
+        Backend::Sqlite => Store::open_in_memory().unwrap(),
+        Backend::Postgres => Store::postgres(fleetlink_postgres::scratch_database()).unwrap(),
+    }
+}
+
+pub fn security_on(backend: Backend, policy: AuthPolicy, defaults: AclDefaults) -> Security {
+    Security::new(store_on(backend), policy, defaults).unwrap()
+}
+
+/// Runs each named test body (a `fn(Backend)` of the calling module) on both backends:
+/// `<module>::sqlite::<name>` always, `<module>::postgres::<name>` when ignored tests are
+/// run with a server (tests/interop/postgres/run.sh does), so a plain test run reports
+/// the PostgreSQL variants as skipped instead of passing them without a database.
+macro_rules! on_both_backends {
+    ($($name:ident),* $(,)?) => {
+        mod sqlite {
+            $(#[test]
+            fn $name() {
+                super::$name($crate::util::Backend::Sqlite)
+            })*
+        }
+        mod postgres {
+            $(#[test]
+            #[ignore = "needs PostgreSQL: tests/interop/postgres/run.sh runs it with a server"]
+            fn $name() {
+                super::$name($crate::util::Backend::Postgres)
+            })*
+        }
+    };
+}
+pub(crate) use on_both_backends;
+
 /// A CA, a hub certificate for `localhost`, a client certificate for robot `r1`, and a
 /// client certificate for `r1` from an unrelated CA, as PEM files in a temp dir.
 pub struct Pki {

@@ -28,13 +28,14 @@
 //! - [`jwks`]: the OIDC signing keys, from a file or the provider's URL.
 //! - [`federated`]: the seam to other hubs (remote robots and federation status for the
 //!   API), implemented by the `fleetlink-federation` crate.
-//! - [`params`]: the parameter store behind `/rosapi/get_param` ..., kept in SQLite.
+//! - [`params`]: the parameter store behind `/rosapi/get_param` ..., kept in the store
+//!   (and reloaded when another hub sharing the database changes it).
 //! - [`rosout`]: `/rosout` as `rcl_interfaces/msg/Log`: the hub's events (robots coming,
 //!   going, refused; links degrading; drops) and the robots' own logs.
 //! - [`security`]: credentials from each transport, and the `fleetlink-auth` core behind
 //!   the relay's `Gate` (checks at request time and on every delivery, audit log).
-//! - [`store`]: the SQLite database in the data directory (robots seen so far, delivery
-//!   marks).
+//! - [`store`]: the SQLite database in the data directory, or the PostgreSQL database
+//!   several hubs share (robots seen so far, delivery marks, parameters).
 //!
 //! Imports run one way, from the top of this list of layers to the bottom; no module
 //! imports one above it (check with `grep -rn "crate::" crates/hub/src`, which also finds

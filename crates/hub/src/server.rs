@@ -43,6 +43,10 @@ pub const SHUTDOWN_GRACE: Duration = Duration::from_secs(5);
 pub struct HubConfig {
     pub listen: SocketAddr,
     pub data_dir: PathBuf,
+    /// Keep the durable state (credentials, rules, audit log, robots, delivery marks,
+    /// parameters) in this PostgreSQL database, shared with other hubs, instead of
+    /// SQLite in `data_dir`.
+    pub database: Option<String>,
     /// Heartbeat for agents that do not ask for one.
     pub heartbeat: Duration,
     /// Largest WebSocket message accepted from any client.
@@ -72,6 +76,7 @@ impl Default for HubConfig {
         HubConfig {
             listen: SocketAddr::from(([127, 0, 0, 1], 8080)),
             data_dir: PathBuf::from("fleetlink-data"),
+            database: None,
             heartbeat: Duration::from_secs(1),
             max_message_size: 16 << 20,
             default_queue: 1000,
@@ -121,12 +126,7 @@ impl Hub {
                 addr: cfg.listen,
                 source,
             })?;
-        let store = Store::open(&cfg.data_dir)?;
-        let security = Arc::new(fleetlink_auth::Security::new(
-            fleetlink_auth::Store::open(&cfg.data_dir.join("hub.sqlite3"))?,
-            cfg.auth.clone(),
-            cfg.acl.clone(),
-        )?);
+        let (store, security, params) = open_state(&cfg).await?;
         let tls = match &cfg.tls {
             Some(files) => Some(Arc::new(fleetlink_auth::tls::ReloadingServerConfig::load(
                 files.clone(),
@@ -136,7 +136,7 @@ impl Hub {
         let mut router = Router::with_call_limits(transcoder, cfg.calls.clone());
         router.default_queue = cfg.default_queue;
         router.default_queue_bytes = cfg.default_queue_bytes;
-        router.params = Arc::new(crate::params::DurableParams::open(store.clone())?);
+        router.params = Arc::new(params);
         let router = Arc::new(router);
         let registry = Arc::new(Registry::default());
         let shutdown = CancellationToken::new();
@@ -284,6 +284,44 @@ impl Hub {
         .await;
         Ok(())
     }
+}
+
+/// Opens the durable state: SQLite in the data directory, or the PostgreSQL database
+/// shared with other hubs. On a blocking thread, since opening reads (and may migrate)
+/// the database.
+async fn open_state(
+    cfg: &HubConfig,
+) -> Result<
+    (
+        Store,
+        Arc<fleetlink_auth::Security>,
+        crate::params::DurableParams,
+    ),
+    HubError,
+> {
+    let (dir, url) = (cfg.data_dir.clone(), cfg.database.clone());
+    let (auth, acl) = (cfg.auth.clone(), cfg.acl.clone());
+    tokio::task::spawn_blocking(move || {
+        let (store, auth_store) = match url {
+            None => (
+                Store::open(&dir)?,
+                fleetlink_auth::Store::open(&dir.join("hub.sqlite3"))?,
+            ),
+            Some(url) => {
+                let db = fleetlink_postgres::Database::connect(&url).map_err(StoreError::from)?;
+                tracing::info!("shared state in PostgreSQL at {}", db.url());
+                (
+                    Store::postgres(db.clone())?,
+                    fleetlink_auth::Store::postgres(db)?,
+                )
+            }
+        };
+        let security = Arc::new(fleetlink_auth::Security::new(auth_store, auth, acl)?);
+        let params = crate::params::DurableParams::open(store.clone())?;
+        Ok((store, security, params))
+    })
+    .await
+    .map_err(|e| HubError::Serve(std::io::Error::other(e)))?
 }
 
 /// Periodic work: pick up rule edits made by `fleetlink admin` on the same database,

@@ -5,7 +5,9 @@
 //! on a bounded channel to one writer thread that inserts in batches (one transaction per
 //! batch, up to [`BATCH_MAX`] records). When the channel is full the record is dropped and
 //! counted ([`AuditLog::overflowed`]) — the relay must not slow down because the disk
-//! did; the counter is exported as a metric so a gap in the log is visible.
+//! did; the counter is exported as a metric so a gap in the log is visible. While a shared
+//! database is unreachable, up to [`HOLD_MAX`] records wait in the writer and are written
+//! when it answers again; beyond that they are counted as failed ([`AuditLog::failed`]).
 
 mod query;
 
@@ -226,11 +228,37 @@ impl AuditLog {
     }
 }
 
+/// Records kept for another try while the database is unreachable, at most; beyond
+/// that they are counted as failed.
+pub const HOLD_MAX: usize = 8 * BATCH_MAX;
+/// How often held records are tried again when nothing new arrives.
+const RETRY_EVERY: std::time::Duration = std::time::Duration::from_secs(1);
+
 fn writer(store: Store, rx: Receiver<Msg>, counters: Arc<Counters>) {
+    use std::sync::mpsc::RecvTimeoutError;
+    // Records a write failed for because the database was unreachable (a shared
+    // PostgreSQL restarting): written with the next batch once it answers again.
+    let mut held: Vec<AuditRecord> = Vec::new();
     let mut batch = Vec::with_capacity(BATCH_MAX);
     let mut flushes = Vec::new();
-    while let Ok(first) = rx.recv() {
-        let mut next = Some(first);
+    loop {
+        let first = if held.is_empty() {
+            match rx.recv() {
+                Ok(m) => Some(m),
+                // Every sender is gone and nothing is held: done.
+                Err(_) => return,
+            }
+        } else {
+            match rx.recv_timeout(RETRY_EVERY) {
+                Ok(m) => Some(m),
+                Err(RecvTimeoutError::Timeout) => None,
+                Err(RecvTimeoutError::Disconnected) => {
+                    write(&store, &mut held, &mut Vec::new(), &counters, false);
+                    return;
+                }
+            }
+        };
+        let mut next = first;
         while let Some(msg) = next {
             match msg {
                 Msg::Record(r) => batch.push(r),
@@ -242,19 +270,55 @@ fn writer(store: Store, rx: Receiver<Msg>, counters: Arc<Counters>) {
                 None
             };
         }
-        if !batch.is_empty() {
-            let n = batch.len() as u64;
-            match store.insert_audit_batch(&batch) {
-                Ok(()) => counters.written.fetch_add(n, Ordering::Relaxed),
-                Err(e) => {
-                    tracing::error!("audit log: cannot write {n} records: {e}");
-                    counters.failed.fetch_add(n, Ordering::Relaxed)
-                }
-            };
-            batch.clear();
-        }
+        write(&store, &mut held, &mut batch, &counters, true);
         for done in flushes.drain(..) {
             let _ = done.send(());
+        }
+    }
+}
+
+/// Writes `held` then `batch` in one go. When the database is unreachable and `may_hold`,
+/// keeps up to [`HOLD_MAX`] of them in `held` for the next try; what does not fit, or
+/// fails for another reason, is counted as failed.
+fn write(
+    store: &Store,
+    held: &mut Vec<AuditRecord>,
+    batch: &mut Vec<AuditRecord>,
+    counters: &Counters,
+    may_hold: bool,
+) {
+    if held.is_empty() && batch.is_empty() {
+        return;
+    }
+    let retrying = held.len();
+    held.append(batch);
+    let n = held.len() as u64;
+    match store.insert_audit_batch(held) {
+        Ok(()) => {
+            if retrying > 0 {
+                tracing::info!(
+                    "audit log: wrote {retrying} records held while the database was away"
+                );
+            }
+            counters.written.fetch_add(n, Ordering::Relaxed);
+            held.clear();
+        }
+        Err(e) if may_hold && e.is_unavailable() => {
+            if held.len() > HOLD_MAX {
+                let lost = held.len() - HOLD_MAX;
+                held.drain(..lost);
+                counters.failed.fetch_add(lost as u64, Ordering::Relaxed);
+            }
+            if retrying == 0 {
+                tracing::error!(
+                    "audit log: {e}; holding up to {HOLD_MAX} records until it answers"
+                );
+            }
+        }
+        Err(e) => {
+            tracing::error!("audit log: cannot write {n} records: {e}");
+            counters.failed.fetch_add(n, Ordering::Relaxed);
+            held.clear();
         }
     }
 }

@@ -179,6 +179,10 @@ impl AuthError {
             AuthError::Missing | AuthError::AnonymousNotAllowed { .. } => {
                 "authentication required".to_owned()
             }
+            AuthError::Store(e) if e.is_unavailable() => {
+                "authentication unavailable: the hub cannot reach its database; retry later"
+                    .to_owned()
+            }
             AuthError::Store(_) => "authentication unavailable".to_owned(),
             _ => "authentication failed".to_owned(),
         }

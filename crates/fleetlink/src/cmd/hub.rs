@@ -20,6 +20,16 @@ pub struct Args {
     /// Where the hub keeps its SQLite database and files.
     #[arg(long, default_value = "./fleetlink-data")]
     pub data_dir: PathBuf,
+    /// Keep credentials, rules, the audit log, robots, delivery marks and parameters in
+    /// this PostgreSQL database (postgres://USER[:PASSWORD]@HOST[:PORT]/DB), shared with
+    /// the other hubs using it, instead of SQLite in --data-dir (docs/scaling.md).
+    #[arg(
+        long,
+        env = "FLEETLINK_DATABASE",
+        value_name = "URL",
+        hide_env_values = true
+    )]
+    pub database: Option<String>,
     /// Heartbeat interval for agents that do not ask for one (milliseconds).
     #[arg(long, default_value_t = 1000)]
     pub heartbeat_ms: u64,
@@ -118,6 +128,7 @@ impl Args {
         HubConfig {
             listen: self.listen,
             data_dir: self.data_dir.clone(),
+            database: self.database.clone(),
             heartbeat: Duration::from_millis(self.heartbeat_ms.max(10)),
             max_message_size: self.max_message_size,
             default_queue: self.queue_length.max(1),
@@ -200,10 +211,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         println!(
             "  rosbridge:  {ws}://{addr}/   agents: {ws}://{addr}/ (subprotocol fleetlink.v1)"
         );
-        println!(
-            "  credentials: fleetlink admin --data-dir {} --help",
-            args.data_dir.display()
-        );
+        match &args.database {
+            Some(url) => println!(
+                "  credentials: fleetlink admin --database {} --help",
+                fleetlink_postgres::redact(url)
+            ),
+            None => println!(
+                "  credentials: fleetlink admin --data-dir {} --help",
+                args.data_dir.display()
+            ),
+        }
         hub.run(super::shutdown_signal()).await?;
         println!("fleetlink hub stopped");
         Ok::<_, anyhow::Error>(())

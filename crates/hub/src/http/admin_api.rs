@@ -100,6 +100,7 @@ impl ApiError {
             },
             ApiError::Security(SecurityError::Import(_)) => StatusCode::BAD_REQUEST,
             ApiError::Security(SecurityError::Store(s)) => match s {
+                s if s.is_unavailable() => StatusCode::SERVICE_UNAVAILABLE,
                 StoreError::UserExists(_) => StatusCode::CONFLICT,
                 StoreError::NoSuchUser(_) => StatusCode::NOT_FOUND,
                 StoreError::PasswordHash(_) => StatusCode::BAD_REQUEST,

@@ -175,6 +175,7 @@ impl Collector for HubCollector {
         if let Some(f) = st.federation.get() {
             encode_federation(f.as_ref(), &mut enc)?;
         }
+        encode_shared_changes(&st.security, &mut enc)?;
         encode_front_door(&st.limits, &mut enc)
     }
 }
@@ -261,6 +262,24 @@ fn encode_federation(
     for (name, help, value) in federation.counters() {
         let m = enc.encode_descriptor(name, help, None, MetricType::Counter)?;
         ConstCounter::new(value).encode(m)?;
+    }
+    Ok(())
+}
+
+/// Change notifications from hubs sharing the database (all zero with SQLite): a rise of
+/// `everything` means the listener lost its connection and reloaded on its return.
+fn encode_shared_changes(
+    security: &fleetlink_auth::Security,
+    enc: &mut DescriptorEncoder,
+) -> Result<(), std::fmt::Error> {
+    let mut m = enc.encode_descriptor(
+        "fleetlink_database_changes",
+        "Change notifications received from the shared database, by kind",
+        None,
+        MetricType::Counter,
+    )?;
+    for (kind, n) in security.changes_received() {
+        ConstCounter::new(n).encode(m.encode_family(&[("kind", kind)])?)?;
     }
     Ok(())
 }

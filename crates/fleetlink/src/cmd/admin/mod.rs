@@ -1,7 +1,8 @@
 //! `fleetlink admin`: credentials, access rules and the audit log, edited directly in a
-//! hub's database (`--data-dir`). Whoever can write the hub's data directory administers
-//! it; a running hub picks up rule changes within a second and checks tokens against the
-//! database, so nothing needs a restart. (The same operations are in the REST API for
+//! hub's database (`--data-dir`, or `--database` for hubs sharing PostgreSQL). Whoever can
+//! write the hub's data directory (or the shared database) administers it; a running hub
+//! picks up rule changes within a second and checks tokens against the database, so
+//! nothing needs a restart. (The same operations are in the REST API for
 //! remote administration.) `admin cert` makes TLS certificates and needs no database.
 //!
 //! A missing database is created only by commands that add something (a token, a user,
@@ -25,6 +26,15 @@ pub struct Args {
     /// The hub's data directory (its database is DIR/hub.sqlite3).
     #[arg(long, default_value = "./fleetlink-data")]
     pub data_dir: PathBuf,
+    /// The PostgreSQL database the hubs share (their --database); replaces --data-dir.
+    #[arg(
+        long,
+        env = "FLEETLINK_DATABASE",
+        value_name = "URL",
+        hide_env_values = true,
+        conflicts_with = "data_dir"
+    )]
+    pub database: Option<String>,
     #[command(subcommand)]
     pub what: What,
 }
@@ -161,21 +171,36 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         What::Cert(cert) => return cert::run(cert),
         what => what,
     };
-    let db = args.data_dir.join("hub.sqlite3");
+    let store = match &args.database {
+        Some(url) => {
+            let db = fleetlink_postgres::Database::connect(url)?;
+            Store::postgres(db)
+                .with_context(|| format!("opening {}", fleetlink_postgres::redact(url)))?
+        }
+        None => open_file(&args.data_dir, &what)?,
+    };
+    let security = Security::new(store, AuthPolicy::default(), AclDefaults::default())?;
+    run_on(security, what)
+}
+
+/// The hub's SQLite file in `dir`, created only for a command that adds something.
+fn open_file(dir: &std::path::Path, what: &What) -> anyhow::Result<Store> {
+    let db = dir.join("hub.sqlite3");
     if !db.exists() {
         anyhow::ensure!(
-            creates(&what),
+            creates(what),
             "no hub database at {}: check --data-dir (it is the hub's --data-dir; a hub \
              creates its database when it first starts, and so do `admin token` and \
              `admin users add`)",
             db.display()
         );
-        std::fs::create_dir_all(&args.data_dir)
-            .with_context(|| format!("creating {}", args.data_dir.display()))?;
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
         eprintln!("created a new hub database at {}", db.display());
     }
-    let store = Store::open(&db).with_context(|| format!("opening {}", db.display()))?;
-    let security = Security::new(store, AuthPolicy::default(), AclDefaults::default())?;
+    Store::open(&db).with_context(|| format!("opening {}", db.display()))
+}
+
+fn run_on(security: Security, what: What) -> anyhow::Result<()> {
     let me = local_admin()?;
     let now = UnixTime::now();
     match what {
