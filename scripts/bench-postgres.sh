@@ -19,7 +19,7 @@ n="${N:-200}"
 . "$root/tests/interop/lib.sh"
 . "$root/tests/interop/postgres/cluster.sh"
 interop_begin bench-postgres
-trap 'rc=$?; pg_cluster_remove; (exit $rc); interop_cleanup' EXIT
+trap 'rc=$?; set +e; pg_cluster_remove; (exit $rc); interop_cleanup' EXIT
 PG_FSYNC=on pg_cluster_start
 
 declare -A addr

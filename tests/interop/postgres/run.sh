@@ -33,8 +33,9 @@ started=$SECONDS
 # shellcheck source=cluster.sh
 . "$here/cluster.sh"
 interop_begin postgres
-# The cluster goes too, whatever happens (lib.sh's cleanup keeps the exit status).
-trap 'rc=$?; pg_cluster_remove; (exit $rc); interop_cleanup' EXIT
+# The cluster goes too, whatever happens (lib.sh's cleanup keeps the exit status;
+# `set +e` so that replaying a failed status does not end the trap before it).
+trap 'rc=$?; set +e; pg_cluster_remove; (exit $rc); interop_cleanup' EXIT
 
 pg_cluster_start
 echo "PostgreSQL: $PG_URL (data in $PG_DIR)"
