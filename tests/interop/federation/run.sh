@@ -163,7 +163,8 @@ c = json.load(urllib.request.urlopen(req, timeout=5))["counters"]
 print(f"    hub C's federation: {c['received']} messages received, {c['duplicates']} no-drop duplicates dropped")
 PY
 
-XX
+if [ ${#failed[@]} -ne 0 ]; then
+    echo "FAIL: federation: ${failed[*]}"
     exit 1
 fi
 echo "PASS: federation suite"

@@ -50,6 +50,23 @@ fn namespace_visible(access: &mut Access, name: &str) -> bool {
         || access.allows(&format!("/{name}/"), Operation::Subscribe)
 }
 
+/// The listed topics in robot `name`'s namespace that the caller may subscribe to.
+fn robot_topics<'t>(
+    access: &mut Access,
+    topics: &'t [fleetlink_relay::router::TopicSnapshot],
+    name: &str,
+) -> Vec<&'t str> {
+    let ns = format!("/{name}/");
+    access.visible(
+        topics
+            .iter()
+            .filter(|t| t.listed())
+            .map(|t| t.meta.name.as_str())
+            .filter(|n| n.starts_with(&ns)),
+        Operation::Subscribe,
+    )
+}
+
 /// Robots online now and robots seen before, online first; only those the caller may
 /// see, with addresses only for those who may administer `/robots`.
 async fn robots(
@@ -66,15 +83,7 @@ async fn robots(
     let topics = st.router.topics();
     let mut out: Vec<Value> = Vec::new();
     for r in &live {
-        let ns = format!("/{}/", r.name);
-        let own: Vec<&str> = access.visible(
-            topics
-                .iter()
-                .filter(|t| t.listed())
-                .map(|t| t.meta.name.as_str())
-                .filter(|n| n.starts_with(&ns)),
-            Operation::Subscribe,
-        );
+        let own = robot_topics(&mut access, &topics, &r.name);
         if own.is_empty() && !namespace_visible(&mut access, &r.name) {
             continue;
         }
@@ -114,15 +123,7 @@ async fn robots(
         if live.iter().any(|l| l.name == r.name) || !namespace_visible(&mut access, &r.name) {
             continue;
         }
-        let ns = format!("/{}/", r.name);
-        let own: Vec<&str> = access.visible(
-            topics
-                .iter()
-                .filter(|t| t.listed())
-                .map(|t| t.meta.name.as_str())
-                .filter(|n| n.starts_with(&ns)),
-            Operation::Subscribe,
-        );
+        let own = robot_topics(&mut access, &topics, &r.name);
         out.push(json!({
             "name": r.name,
             "online": true,
