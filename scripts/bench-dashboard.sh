@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Dashboard performance (docs/benchmarks.md, "Dashboard"): `fleetlink demo` plus a fourth
-# simulated robot publishing a 100k-point PointCloud2 at 10 Hz, its robot view open in
-# headless Chromium. Prints frames/s, clouds shown/s, the age of the cloud on screen
-# (p50/p99 over BENCH_SECONDS, default 60) and the JS heap after 1 and BENCH_MINUTES
-# (default 10) minutes. Needs the release binary, web/node_modules and chromium
-# (scripts/setup.d/55-web-packages.sh, 60-browser.sh).
+# Dashboard performance (docs/benchmarks/log.md, "Dashboard in headless Chromium"):
+# `fleetlink demo` plus a fourth simulated robot publishing a 100k-point PointCloud2 at
+# 10 Hz, its robot view open in headless Chromium. Prints frames/s, clouds shown/s, the
+# age of the cloud on screen (p50/p99 over BENCH_SECONDS, default 60) and the JS heap
+# after 1 and BENCH_MINUTES (default 10) minutes. Needs the release binary,
+# web/node_modules and chromium (scripts/setup.d/55-web-packages.sh, 60-browser.sh).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"

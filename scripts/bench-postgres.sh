@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Login latency with the hub's state in SQLite and in PostgreSQL (docs/benchmarks.md,
+# Login latency with the hub's state in SQLite and in PostgreSQL (docs/benchmarks/log.md,
 # "Shared state in PostgreSQL"): one hub on each, side by side, measured by the same
 # client. PostgreSQL runs as tests/interop/postgres/cluster.sh starts it, with fsync on
 # (PG_FSYNC=on) so a commit costs what it costs on a real server.

@@ -1,6 +1,6 @@
 //! The in-process fan-out path, without sockets: what the hub does between decoding a
 //! publisher's frame and handing bytes to a subscriber's socket writer. Results are
-//! recorded in `docs/benchmarks.md`.
+//! recorded in `docs/benchmarks/log.md` ("Criterion: the fan-out path without sockets").
 //!
 //! - `fanout/S`: one `Topic::publish` of a 64-byte JSON message to S subscribers, then
 //!   every subscriber's outbox drained with `Outbox::take`, as its link writer would.

@@ -18,8 +18,9 @@ pub const DEPTH: i32 = 10;
 /// then for small ones). The bridge takes each sample as it arrives, so for bulk sensor
 /// data, whose samples are large, those slots are megabytes held for nothing: ten 1 MB
 /// point clouds put the agent at 42.7 MB where two leave it at 35 MB
-/// (docs/benchmarks.md). Small samples keep ROS 2's default depth of 10, room for a
-/// burst while the bridge is busy.
+/// (docs/benchmarks/log.md, "The bridge's readers of bulk sensor data keep two samples").
+/// Small samples keep ROS 2's default depth of 10, room for a burst while the bridge is
+/// busy.
 pub fn reader_depth(ros_type: &str) -> i32 {
     let bulk = matches!(
         ros_type.replace("/msg/", "/").as_str(),

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Docs suite: every shell block of README.md and docs/*.md marked runnable is run, so a
-# recipe that stops working fails the tests instead of the next reader.
+# Docs suite: every shell block of README.md and docs/**/*.md (subdirectories included,
+# e.g. docs/benchmarks/log.md) marked runnable is run, so a recipe that stops working
+# fails the tests instead of the next reader.
 #
 # Marking a block: put the line
 #
@@ -11,8 +12,9 @@
 # for minutes is kept short here; the recipe reads `${DURATION:-5}`).
 #
 # How blocks run: the marked blocks of one file run in order in one bash process
-# (`set -euo pipefail`) in a fresh directory, so a later block sees the files and
-# variables of an earlier one, as a reader following the page would. Before the first:
+# (`set -euo pipefail`) in a fresh directory (not the file's own, so a page in a
+# subdirectory runs the same), and a later block sees the files and variables of an
+# earlier one, as a reader following the page would. Before the first:
 #
 #   - a fresh hub runs on 127.0.0.1:<free port> with `--data-dir ./fleetlink-data`, so
 #     `fleetlink admin --data-dir ./fleetlink-data ...` acts on it;
@@ -93,22 +95,26 @@ extract() {
 
 total=0
 cd "$root"
-for md in README.md docs/*.md; do
+shopt -s globstar
+for md in README.md docs/**/*.md; do
     body="$(extract "$md")" || exit 1
     n="$(grep -c '^block=' <<<"$body" || true)"
     [ "$n" -gt 0 ] || continue
     total=$((total + n))
 
-    work="$tmp/work-$(basename "$md" .md)"
+    # Named after the path: docs/msg.md and docs/benchmarks/msg.md must not share one.
+    name="${md%.md}"
+    name="${name//\//-}"
+    work="$tmp/work-$name"
     mkdir -p "$work"
-    hub_log="$tmp/hub-$(basename "$md" .md).log"
+    hub_log="$tmp/hub-$name.log"
     (cd "$work" && exec "$bin" hub --listen 127.0.0.1:0 --data-dir ./fleetlink-data) >"$hub_log" 2>&1 &
     hub_pid=$!
     pids+=("$hub_pid")
     addr="$(wait_for_line "$hub_log" '^fleetlink hub listening on ([0-9.:]+)$' "hub for $md" "$hub_pid")"
     token="$("$bin" admin --data-dir "$work/fleetlink-data" token operator docs --group admin)"
 
-    script="$tmp/$(basename "$md" .md).sh"
+    script="$tmp/$name.sh"
     {
         echo 'set -euo pipefail'
         echo 'block=start'
@@ -139,5 +145,5 @@ for md in README.md docs/*.md; do
     fi
 done
 
-[ "$total" -gt 0 ] || { echo "FAIL: no runnable blocks found in README.md or docs/*.md" >&2; exit 1; }
+[ "$total" -gt 0 ] || { echo "FAIL: no runnable blocks found in README.md or docs/**/*.md" >&2; exit 1; }
 echo "PASS: docs: $total runnable blocks in $((SECONDS - started)) s"

@@ -3,7 +3,7 @@
 (made by run.sh) through blackouts, a falling bandwidth, process kills, a slowloris
 attack and a dead link with service calls in flight both ways, measures what the link
 carries (interest, compression, a data budget), and asserts the outcomes in
-docs/benchmarks.md ("Bad links").
+docs/benchmarks/log.md ("Bad links").
 
 Runs inside the hub namespace (so the hub is reachable on 127.0.0.1); starts processes in
 either namespace with `ip netns exec`. Each scenario is a function returning rows
@@ -11,7 +11,7 @@ either namespace with `ip netns exec`. Each scenario is a function returning row
 results.md/results.json in --out, and exits 1 if any row is not ok (or a scenario could
 not be run: ERROR). Scenarios: LINKS_SCENARIOS="1 2 3 4 5 6 7 8 9" (default all).
 
-Thresholds (chosen here, documented in docs/benchmarks.md):
+Thresholds (chosen here, documented in docs/benchmarks/log.md):
   nominal latency  idle, unshaped link, no point cloud: p50 of /probe/fast over 3 s;
                    "back at nominal" = latency <= max(2 x p50, p50 + 50 ms).
   ramp latency     per step, p99 of /probe/fast <= 2 x max(idle p99 at the same rate,

@@ -8,7 +8,7 @@
 #
 # This script owns the namespace plumbing; links_check.py drives the scenarios
 # (links_scenarios.py) and asserts their outcomes (see its docstring and
-# docs/benchmarks.md, "Bad links"); peers.py are the roslibpy/WebSocket peers;
+# docs/benchmarks/log.md, "Bad links"); peers.py are the roslibpy/WebSocket peers;
 # selftest.py checks the measurement helpers first. Needs root and `ip netns`;
 # otherwise it prints SKIP and exits 0.
 #

@@ -240,7 +240,7 @@ if wait_for_line "$tmp/agent.log" '.*(nobody wants /idle_points); no longer read
     timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-resume --hub-url "$hub_url" --robot "$robot"         || fail "check-resume (/idle_points wanted again)"
     c="$(connected)"
     [ "$c" = yes ] && echo "ok: rospy's bus info shows the agent connected again on /idle_points"         || fail "no connection from the agent on /idle_points after a viewer came ($c)"
-    echo "figures: CPU with /idle_points unwatched and not read: agent ${paused_agent} %, publisher ${paused_pub} % (see docs/benchmarks.md for the comparison with reading it)"
+    echo "figures: CPU with /idle_points unwatched and not read: agent ${paused_agent} %, publisher ${paused_pub} % (see docs/benchmarks/log.md, \"Reading only what is wanted\", for the comparison with reading it)"
 else
     fail "the agent did not stop reading /idle_points: $(grep -m3 idle_points "$tmp/agent.log" || true)"
 fi

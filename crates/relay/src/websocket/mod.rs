@@ -8,8 +8,8 @@
 //! and re-registers the task's waker, and each frame is read by its own poll of the
 //! socket layer. A bare relay of 64-byte rosbridge publishes measured 0.32–0.38 µs of
 //! CPU per delivery on tokio-tungstenite, 0.30 on fastwebsockets, and 0.16 with frames
-//! taken straight out of the read buffer as below (docs/benchmarks.md, "The hub's own
-//! WebSocket layer, envelope shapes"). tungstenite still does the handshake (the hub
+//! taken straight out of the read buffer as below (docs/benchmarks/log.md, "The hub's
+//! own WebSocket layer, envelope shapes"). tungstenite still does the handshake (the hub
 //! through hyper, the agent's listener with `accept_async`) and gives the message, close
 //! and error types.
 //!

@@ -1,6 +1,7 @@
 //! `fleetlink bench`: whole-system load generators against a running hub. Component
 //! benchmarks are criterion benches beside their crates (`cargo bench`); results and the
-//! commands that produced them are in `docs/benchmarks.md`.
+//! commands that produced them are in `docs/benchmarks.md` (the latest figure per target)
+//! and `docs/benchmarks/log.md` (every dated run).
 //!
 //! - [`relay`]: the `relay` subcommand: options, the run's order of events and what is
 //!   counted.
