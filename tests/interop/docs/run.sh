@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Docs suite: every shell block of README.md and docs/**/*.md (subdirectories included,
 # e.g. docs/benchmarks/log.md) marked runnable is run, so a recipe that stops working
-# fails the tests instead of the next reader.
+# fails the tests instead of the next reader. First, check_benchmarks.py checks the
+# results table of docs/benchmarks.md (every figure has a command that exists, a commit
+# that resolves and a met / not met / blocked status), the links into the benchmark
+# pages, and that README.md states Cargo.toml's rust-version.
 #
 # Marking a block: put the line
 #
@@ -40,6 +43,8 @@ started=$SECONDS
 for tool in python3 curl openssl; do
     command -v "$tool" >/dev/null || { echo "FAIL: the docs recipes need $tool" >&2; exit 1; }
 done
+
+python3 "$here/check_benchmarks.py" --bin "$bin"
 
 # shellcheck source=../lib.sh
 . "$here/../lib.sh"
