@@ -516,12 +516,40 @@ fn parse_error(err: &serde_saphyr::Error, text: &str, file: &str) -> ConfigError
         }
         _ => yaml_message(err),
     };
-    let path = tree.path_at((at.line, at.column));
+    let path = tree.path_at((at.line, at.column)).to_string();
+    let message = match shape_example(&path) {
+        // At the section itself (not a field inside it), an error is about its shape.
+        Some(example) if !message.contains("unknown field") && !message.contains(example) => {
+            format!("{message}; write it as, for example, `{example}`")
+        }
+        _ => message,
+    };
     ConfigError::Field {
         at,
-        field: path.to_string(),
+        field: path,
         message,
     }
+}
+
+/// The right spelling of a section, for an error about its shape (a list where a mapping
+/// goes, a number where a list goes, ...).
+fn shape_example(path: &str) -> Option<&'static str> {
+    Some(match path {
+        "ros1" => "ros1: { publish: [/chatter], subscribe: [/cmd_vel] }",
+        "ros2" => "ros2: { domain_id: 0, publish: [/scan], subscribe: [/cmd_vel] }",
+        "ros1.subscribe" | "ros2.subscribe" => "subscribe: [/cmd_vel]",
+        "sim" => "sim: { laser_scan: { rate_hz: 10 } }",
+        "remap" => "remap: { /map: /fleet/map }",
+        "subscribe" => "subscribe: [{ hub: /fleet/announcements, local: /announcements }]",
+        "topics" => "topics: { /scan: { priority: 5 } }",
+        "reconnect" => "reconnect: { initial_ms: 500, max_ms: 30000 }",
+        "local_rosbridge" => "local_rosbridge: { listen: 127.0.0.1:9090 }",
+        "tls" => "tls: { ca: /etc/fleetlink/ca.pem }",
+        "outbox" => "outbox: { dir: /var/lib/fleetlink/outbox, max_mb: 64 }",
+        "link" => "link: { budget: { max_kbps: 500 } }",
+        "link.budget" => "budget: { max_kbps: 500, mb_per_day: 200 }",
+        _ => return None,
+    })
 }
 
 /// The scalar that starts at 1-based `line`:`column` of `text`, as written (quoted if it

@@ -5,6 +5,7 @@ use std::time::Duration;
 
 use serde::Deserialize;
 
+use super::ros1::{Shorthand, list_or_mapping};
 use super::{Ros1Publish, Ros1Services};
 
 /// The agent as a DDS participant of the robot's ROS 2 graph.
@@ -14,12 +15,15 @@ pub struct Ros2Config {
     /// The DDS domain. Default: `ROS_DOMAIN_ID`, else 0.
     pub domain_id: Option<u16>,
     /// Local topics sent up to the hub (same shape as `ros1.publish`).
+    #[serde(deserialize_with = "list_or_mapping")]
     pub publish: Ros1Publish,
     /// Topics of the agent's router written into the graph.
     pub subscribe: Vec<String>,
     /// Services both ways (same shape as `ros1.services`).
+    #[serde(deserialize_with = "list_or_mapping")]
     pub services: Ros1Services,
-    /// Actions.
+    /// Actions. A list is short for its `expose`.
+    #[serde(deserialize_with = "list_or_mapping")]
     pub actions: Ros2Actions,
     /// How often discovered endpoints are looked at. Default 250.
     pub discovery_ms: u64,
@@ -63,6 +67,17 @@ pub struct Ros2Actions {
     pub exclude: Vec<String>,
     /// Fleet actions (as the agent names them) served to local ROS 2 action clients.
     pub offer: Vec<String>,
+}
+
+impl Shorthand for Ros2Actions {
+    const EXPECTING: &'static str = "a list of local action servers to expose (`actions: \
+        [/navigate]`) or a mapping (`actions: { expose: [/navigate], offer: [/cloud/dock] }`)";
+    fn from_list(expose: Vec<String>) -> Self {
+        Self {
+            expose,
+            ..Self::default()
+        }
+    }
 }
 
 impl Ros2Config {

@@ -773,3 +773,79 @@ fn issue38_hub_flags_replace_the_files_list() {
     assert!(e.to_string().contains("hub[1] is \"ws://d:80\""), "{e}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+#[test]
+fn lists_are_short_for_the_main_key_of_a_section() {
+    let list = AgentConfig::from_str(
+        "ros1:\n  publish: [/chatter, '/tf.*']\n  services: [/add_two_ints]\n\
+         ros2:\n  publish: [/scan]\n  services: [/set_mode]\n  actions: [/navigate]\n",
+        "robot.yaml",
+    )
+    .unwrap();
+    let long = AgentConfig::from_str(
+        "ros1:\n  publish: { include: [/chatter, '/tf.*'] }\n  services: { expose: [/add_two_ints] }\n\
+         ros2:\n  publish: { include: [/scan] }\n  services: { expose: [/set_mode] }\n\
+         \x20 actions: { expose: [/navigate] }\n",
+        "robot.yaml",
+    )
+    .unwrap();
+    assert_eq!(list.ros1, long.ros1);
+    assert_eq!(list.ros2, long.ros2);
+    let opts = crate::AgentOptions::from_config(&list).expect("options");
+    let ros1 = opts.ros1.expect("ros1 options");
+    assert!(ros1.publish.matches("/chatter") && ros1.publish.matches("/tf_static"));
+    assert!(!ros1.publish.matches("/camera/raw"));
+    assert!(ros1.expose.matches("/add_two_ints"));
+    // One name is a list of one; an empty key is the default.
+    let one = AgentConfig::from_str("ros2:\n  publish: /scan\n  actions:\n", "robot.yaml").unwrap();
+    let ros2 = one.ros2.unwrap();
+    assert_eq!(ros2.publish.include, vec!["/scan"]);
+    assert_eq!(ros2.actions, Ros2Actions::default());
+}
+
+#[test]
+fn shape_errors_show_the_right_spelling() {
+    for (text, field, example) in [
+        (
+            "ros1:\n  publish: 5\n",
+            "ros1.publish",
+            "`publish: [/chatter, /tf]`",
+        ),
+        (
+            "ros2:\n  services: true\n",
+            "ros2.services",
+            "`services: [/set_mode]`",
+        ),
+        (
+            "ros2:\n  actions: 3\n",
+            "ros2.actions",
+            "`actions: [/navigate]`",
+        ),
+        (
+            "ros1: [/chatter]\n",
+            "ros1",
+            "`ros1: { publish: [/chatter], subscribe: [/cmd_vel] }`",
+        ),
+        ("sim: on\n", "sim", "`sim: { laser_scan: { rate_hz: 10 } }`"),
+        ("remap: [/a]\n", "remap", "`remap: { /map: /fleet/map }`"),
+        (
+            "subscribe: /a\n",
+            "subscribe",
+            "`subscribe: [{ hub: /fleet/announcements, local: /announcements }]`",
+        ),
+        (
+            "topics: [/scan]\n",
+            "topics",
+            "`topics: { /scan: { priority: 5 } }`",
+        ),
+        (
+            "reconnect: 5\n",
+            "reconnect",
+            "`reconnect: { initial_ms: 500, max_ms: 30000 }`",
+        ),
+    ] {
+        let e = err(text);
+        assert_eq!(e.field(), Some(field), "{text:?}: {e}");
+        assert!(e.to_string().contains(example), "{text:?}: {e}");
+    }
+}
