@@ -55,6 +55,15 @@ impl Loose for Node<'_> {
             _ => None,
         }
     }
+    fn unknown_key(&self, known: &dyn Fn(&str) -> bool) -> Option<String> {
+        let Node::Object(fields) = self else {
+            return None;
+        };
+        fields
+            .iter()
+            .find(|(k, _)| !known(k))
+            .map(|(k, _)| k.to_string())
+    }
 }
 
 /// Parses one JSON document (surrounding whitespace allowed).

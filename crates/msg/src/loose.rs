@@ -39,6 +39,9 @@ pub(crate) trait Loose: Sized {
     fn view(&self) -> View<'_, Self>;
     /// Field of a map node (`None` for a missing field or a non-map node).
     fn field(&self, name: &str) -> Option<&Self>;
+    /// The first key of a map node that `known` does not accept (a key that is not
+    /// text is described as such).
+    fn unknown_key(&self, known: &dyn Fn(&str) -> bool) -> Option<String>;
 }
 
 impl Loose for serde_json::Value {
@@ -63,6 +66,10 @@ impl Loose for serde_json::Value {
     }
     fn field(&self, name: &str) -> Option<&Self> {
         self.get(name)
+    }
+    fn unknown_key(&self, known: &dyn Fn(&str) -> bool) -> Option<String> {
+        let map = self.as_object()?;
+        map.keys().find(|k| !known(k)).cloned()
     }
 }
 
@@ -93,6 +100,16 @@ impl Loose for ciborium::Value {
                 .map(|(_, v)| v),
             _ => None,
         }
+    }
+    fn unknown_key(&self, known: &dyn Fn(&str) -> bool) -> Option<String> {
+        let ciborium::Value::Map(entries) = self else {
+            return None;
+        };
+        entries.iter().find_map(|(k, _)| match k {
+            ciborium::Value::Text(t) if known(t) => None,
+            ciborium::Value::Text(t) => Some(t.clone()),
+            _ => Some("(a key that is not text)".to_owned()),
+        })
     }
 }
 
@@ -145,7 +162,32 @@ pub(crate) fn to_struct<T: Loose>(layout: &MsgLayout, node: &T) -> Result<Struct
         };
         fields.push((f.name.clone(), v));
     }
+    // A key the type does not have is refused, as rosbridge refuses it (a misspelt field
+    // would otherwise vanish without a word). Accepted besides the type's own fields:
+    // ROS 1's spellings of time, and ROS 1's `seq` in a ROS 2 header, so a client written
+    // for one ROS talks to robots of the other.
+    let is_header = layout.name.package() == "std_msgs" && layout.name.name() == "Header";
+    let known = |k: &str| {
+        layout.fields.iter().any(|f| *f.name == *k)
+            || (is_time && matches!(k, "secs" | "nsecs"))
+            || (is_header && k == "seq")
+    };
+    if let Some(key) = node.unknown_key(&known) {
+        return Err(mismatch(format!(
+            "{} has no field '{key}' (its fields: {}); remove it or check its spelling",
+            layout.name,
+            field_list(layout)
+        )));
+    }
     Ok(Struct { fields })
+}
+
+fn field_list(layout: &MsgLayout) -> String {
+    if layout.fields.is_empty() {
+        return "none".to_owned();
+    }
+    let names: Vec<&str> = layout.fields.iter().map(|f| &*f.name).collect();
+    names.join(", ")
 }
 
 fn ros1_alias(name: &str) -> &str {

@@ -63,7 +63,6 @@ fn normalizing_gives_what_full_conversion_gives() {
         ("std_msgs/msg/Float64", json!({"data": 1.5})),
         ("std_msgs/msg/Int32", json!({"data": 7.0})),
         ("std_msgs/msg/Int32", json!({})),
-        ("std_msgs/msg/Int32", json!({"data": 7, "extra": 1})),
         (
             "geometry_msgs/msg/Twist",
             json!({"linear": {"x": 1.0, "y": 0.0, "z": 0.0}}),
@@ -176,9 +175,12 @@ fn cbor_not_in_normal_form_is_converted_as_the_full_path_does() {
         // An integer in a float field, a float in an integer field.
         ("std_msgs/msg/Float64", json!({"data": 1})),
         ("std_msgs/msg/Int32", json!({"data": 7.0})),
-        // A missing field, an extra field, fields out of order.
+        // A missing field, fields out of order, ROS 1's `seq` in a ROS 2 header.
         ("std_msgs/msg/Int32", json!({})),
-        ("std_msgs/msg/Int32", json!({"data": 7, "extra": 1})),
+        (
+            "std_msgs/msg/Header",
+            json!({"seq": 4, "stamp": {"sec": 1, "nanosec": 2}, "frame_id": "m"}),
+        ),
         (
             "geometry_msgs/msg/Vector3",
             json!({"z": 3.0, "y": 2.0, "x": 1.0}),
@@ -228,4 +230,72 @@ fn wrong_cbor_is_refused_on_either_path() {
             "{msg}"
         );
     }
+}
+
+/// A field the type does not have is refused, as rosbridge refuses it, naming the field
+/// and where it is; from JSON text, a JSON value and CBOR alike.
+#[test]
+fn unknown_fields_are_refused_naming_them() {
+    let reg = registry();
+    for (ty, msg, path, key) in [
+        (
+            "geometry_msgs/msg/Twist",
+            json!({"linear": {"x": 1}, "bogus": 3}),
+            "",
+            "bogus",
+        ),
+        (
+            "geometry_msgs/msg/Twist",
+            json!({"linear": {"x": 1, "w": 2}}),
+            "linear",
+            "w",
+        ),
+        (
+            "visualization_msgs/msg/MarkerArray",
+            json!({"markers": [{"ns": "a"}, {"ns": "b", "colour": {}}]}),
+            "markers[1]",
+            "colour",
+        ),
+    ] {
+        let text = msg.to_string();
+        let json_text = normalize_json_bytes(&reg, ty, Dialect::Ros2, text.as_bytes());
+        let json_value = fleetlink_msg::from_json(&reg, ty, Dialect::Ros2, &msg).map(|_| ());
+        let mut cbor = Vec::new();
+        ciborium::into_writer(&msg, &mut cbor).unwrap();
+        let cbor = fleetlink_msg::from_cbor(&reg, ty, Dialect::Ros2, &cbor).map(|_| ());
+        for (how, err) in [
+            ("JSON text", json_text.map(|_| ()).unwrap_err().to_string()),
+            ("JSON value", json_value.unwrap_err().to_string()),
+            ("CBOR", cbor.unwrap_err().to_string()),
+        ] {
+            assert!(
+                err.contains(&format!("no field '{key}'")),
+                "{how} {ty}: {err}"
+            );
+            assert!(err.contains(path), "{how} {ty}: {err} should name {path}");
+        }
+    }
+}
+
+/// A partial message of a bundled ROS 1 style type gets its defaults, nested ones too.
+#[test]
+fn partial_messages_get_their_defaults() {
+    let reg = registry();
+    let (out, kept) = normalized(&reg, "actionlib_msgs/GoalID", r#"{"id": "g1"}"#);
+    assert!(!kept);
+    assert_eq!(out, json!({"stamp": {"sec": 0, "nanosec": 0}, "id": "g1"}));
+    let (out, _) = normalized(
+        &reg,
+        "trajectory_msgs/msg/JointTrajectory",
+        r#"{"joint_names": ["a"], "points": [{"positions": [1]}]}"#,
+    );
+    assert_eq!(out["header"]["frame_id"], "");
+    assert_eq!(
+        out["points"][0],
+        json!({"positions": [1.0], "velocities": [], "accelerations": [], "effort": [],
+               "time_from_start": {"sec": 0, "nanosec": 0}})
+    );
+    let (out, _) = normalized(&reg, "geometry_msgs/msg/PoseWithCovariance", "{}");
+    assert_eq!(out["covariance"].as_array().map(Vec::len), Some(36));
+    assert_eq!(out["pose"]["orientation"]["w"], 1.0);
 }

@@ -24,8 +24,14 @@ static TYPES: LazyLock<Vec<String>> = LazyLock::new(|| {
 });
 
 /// Random rosbridge JSON for `type_name`, built from its parsed definition.
-fn random_json(reg: &Registry, type_name: &str, rng: &mut TestRng, depth: usize) -> J {
-    let spec = reg.message(type_name, Dialect::Ros2).expect("registered");
+fn random_json(
+    reg: &Registry,
+    type_name: &str,
+    dialect: Dialect,
+    rng: &mut TestRng,
+    depth: usize,
+) -> J {
+    let spec = reg.message(type_name, dialect).expect("registered");
     if spec.name.package() == "builtin_interfaces" {
         // Times valid in both generations (ROS 1 time is unsigned, ROS 2's signed).
         return random_scalar(Primitive::Time, None, rng);
@@ -53,7 +59,7 @@ fn random_json(reg: &Registry, type_name: &str, rng: &mut TestRng, depth: usize)
                     } else {
                         format!("{pkg}/{name}")
                     };
-                    random_json(reg, &full, rng, depth + 1)
+                    random_json(reg, &full, dialect, rng, depth + 1)
                 }
             }
         };
@@ -106,12 +112,13 @@ fn random_scalar(p: Primitive, bound: Option<u32>, rng: &mut TestRng) -> J {
     }
 }
 
-fn sample(seed: u64, idx: usize) -> (String, J) {
+/// A random message of a random type, in the JSON shape of `dialect`'s definition.
+fn sample(seed: u64, idx: usize, dialect: Dialect) -> (String, J) {
     let ty = TYPES[idx % TYPES.len()].clone();
     let mut bytes = [0u8; 32];
     bytes[..8].copy_from_slice(&seed.to_le_bytes());
     let mut rng = TestRng::from_seed(RngAlgorithm::ChaCha, &bytes);
-    let j = random_json(&REG, &ty, &mut rng, 0);
+    let j = random_json(&REG, &ty, dialect, &mut rng, 0);
     (ty, j)
 }
 
@@ -120,7 +127,7 @@ proptest! {
 
     #[test]
     fn value_to_cdr_to_value(seed in any::<u64>(), idx in any::<usize>()) {
-        let (ty, j) = sample(seed, idx);
+        let (ty, j) = sample(seed, idx, Dialect::Ros2);
         let v = from_json(&REG, &ty, Dialect::Ros2, &j).expect("random JSON fits");
         let cdr = encode(&REG, &ty, Wire::Cdr, &v).expect("encodes");
         let back = decode(&REG, &ty, Wire::Cdr, &cdr).expect("decodes");
@@ -129,7 +136,7 @@ proptest! {
 
     #[test]
     fn value_to_ros1_to_value(seed in any::<u64>(), idx in any::<usize>()) {
-        let (ty, j) = sample(seed, idx);
+        let (ty, j) = sample(seed, idx, Dialect::Ros1);
         let v = from_json(&REG, &ty, Dialect::Ros1, &j).expect("random JSON fits");
         let bytes = encode(&REG, &ty, Wire::Ros1, &v).expect("encodes");
         let back = decode(&REG, &ty, Wire::Ros1, &bytes).expect("decodes");
@@ -138,7 +145,7 @@ proptest! {
 
     #[test]
     fn value_to_json_to_value(seed in any::<u64>(), idx in any::<usize>()) {
-        let (ty, j) = sample(seed, idx);
+        let (ty, j) = sample(seed, idx, Dialect::Ros2);
         let v = from_json(&REG, &ty, Dialect::Ros2, &j).expect("random JSON fits");
         let text = to_json_bytes(&v);
         let back = from_json_bytes(&REG, &ty, Dialect::Ros2, &text).expect("our JSON parses");
@@ -149,7 +156,7 @@ proptest! {
 
     #[test]
     fn json_to_cdr_to_json(seed in any::<u64>(), idx in any::<usize>()) {
-        let (ty, j) = sample(seed, idx);
+        let (ty, j) = sample(seed, idx, Dialect::Ros2);
         let v = from_json(&REG, &ty, Dialect::Ros2, &j).expect("random JSON fits");
         let first = to_json(&v);
         let cdr = encode(&REG, &ty, Wire::Cdr, &v).expect("encodes");
@@ -162,7 +169,7 @@ proptest! {
 
     #[test]
     fn value_to_cbor_to_value(seed in any::<u64>(), idx in any::<usize>()) {
-        let (ty, j) = sample(seed, idx);
+        let (ty, j) = sample(seed, idx, Dialect::Ros2);
         let v = from_json(&REG, &ty, Dialect::Ros2, &j).expect("random JSON fits");
         let cbor = to_cbor_bytes(&v);
         let back = from_cbor(&REG, &ty, Dialect::Ros2, &cbor).expect("our CBOR parses");

@@ -177,7 +177,8 @@ def serve(args):
     n = 0
     while True:
         n += 1
-        cmd.publish(roslibpy.Message({"linear": {"x": 0.5, "y": 0.0, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 0.25}}))
+        # Partial, as clients write it: the hub fills the zeros in before the robot gets it.
+        cmd.publish(roslibpy.Message({"linear": {"x": 0.5}, "angular": {"z": 0.25}}))
         chatter.publish(roslibpy.Message({"data": f"hub-{n}"}))
         with lock:
             text = json.dumps(counts)

@@ -59,7 +59,10 @@ def robot_description():
 
 
 # What the hub publishes on /<robot>/cmd_vel: every field a different value.
-TWIST = {"linear": {"x": 0.5, "y": -0.25, "z": 0.125}, "angular": {"x": 1.5, "y": -2.0, "z": 0.25}}
+TWIST = {"linear": {"x": 0.5, "y": -0.25, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 0.25}}
+# What the hub's roslibpy publisher sends: TWIST with its zero fields left out, which the
+# hub completes with their defaults before the robot gets it (as rosbridge would).
+TWIST_PARTIAL = {"linear": {"x": 0.5, "y": -0.25}, "angular": {"z": 0.25}}
 
 ANNOUNCE = "hello fleet"  # the hub's latched /<robot>/announce
 GREETING = "hello from the fleet"  # the answer of the hub's /cloud/greet

@@ -494,7 +494,7 @@ def serve(args):
     n = sent = 0
     while True:
         n += 1
-        cmd.publish(roslibpy.Message(E.TWIST))
+        cmd.publish(roslibpy.Message(E.TWIST_PARTIAL))
         if not os.path.exists(args.chatter_stop):
             sent = n
             chatter.publish(roslibpy.Message({"data": f"hub-{n}"}))

@@ -324,6 +324,107 @@ async function checkPublishLocal(ros) {
   hub.close();
 }
 
+const ZERO_TIME = { sec: 0, nanosec: 0 };
+
+/** A message with its typed arrays (CBOR's numeric arrays) as plain arrays. */
+function plain(v) {
+  if (ArrayBuffer.isView(v) && !(v instanceof DataView)) return Array.from(v);
+  if (Array.isArray(v)) return v.map(plain);
+  if (v && typeof v === "object") return Object.fromEntries(Object.entries(v).map(([k, x]) => [k, plain(x)]));
+  return v;
+}
+
+// Partial messages reach JSON and CBOR subscribers with the type's defaults filled.
+async function checkPartialMessages(ros) {
+  const nonce = `partial-${Math.floor(Math.random() * 2 ** 30)}`;
+  const cases = [
+    {
+      name: "/interop_js/goal_id",
+      type: "actionlib_msgs/GoalID",
+      msg: { id: nonce },
+      pred: (m) => isDeepStrictEqual(m, { stamp: ZERO_TIME, id: nonce }),
+      what: "GoalID with only its id: zero stamp",
+    },
+    {
+      name: "/interop_js/trajectory",
+      type: "trajectory_msgs/msg/JointTrajectory",
+      msg: { joint_names: [nonce], points: [{ positions: [0.5] }, {}] },
+      pred: (m) =>
+        m.joint_names?.[0] === nonce &&
+        isDeepStrictEqual(m.header, { stamp: ZERO_TIME, frame_id: "" }) &&
+        isDeepStrictEqual(m.points, [
+          { positions: [0.5], velocities: [], accelerations: [], effort: [], time_from_start: ZERO_TIME },
+          { positions: [], velocities: [], accelerations: [], effort: [], time_from_start: ZERO_TIME },
+        ]),
+      what: "JointTrajectory with partial points: every point complete",
+    },
+    {
+      name: "/interop_js/camera_info",
+      type: "sensor_msgs/msg/CameraInfo",
+      msg: { width: 640, height: 480, header: { frame_id: nonce } },
+      pred: (m) =>
+        m.header?.frame_id === nonce &&
+        m.k?.length === 9 && m.r?.length === 9 && m.p?.length === 12 &&
+        [...m.k, ...m.r, ...m.p].every((x) => x === 0) &&
+        isDeepStrictEqual(m.d, []) && m.roi?.do_rectify === false,
+      what: "CameraInfo with size and frame: fixed arrays of zeros",
+    },
+  ];
+  for (const c of cases) {
+    for (const compression of ["none", "cbor"]) {
+      const sub = new Topic({ ros, name: c.name, messageType: c.type, compression });
+      const pub = new Topic({ ros, name: c.name, messageType: c.type });
+      const pred = (m) => c.pred(plain(m));
+      const got = await publishUntilReceived(pub, c.msg, sub, `${c.what} (${compression})`, pred);
+      check(pred(got), `${c.what} (${compression}): got ${JSON.stringify(plain(got))}`);
+    }
+    ok(`${c.what}, on JSON and CBOR subscribers of ${c.name}`);
+  }
+}
+
+// A provider's answer as roslib sends it: roslib 2 sends `values` only when the callback
+// returns something truthy, and `result: false` without values otherwise, which
+// rosbridge refuses (its caller then waits forever); through fleetlink the caller gets
+// the values, or a failure at once.
+async function checkProviderAnswers(ros) {
+  for (const ret of [true, false, undefined]) {
+    const name = `/interop_js/answers_${String(ret)}_${args.mode}`;
+    const message = `answered by a callback returning ${String(ret)}`;
+    const server = new Service({ ros, name, serviceType: "std_srvs/srv/Trigger" });
+    server.advertise((request, response) => {
+      response.success = true;
+      response.message = message;
+      return ret;
+    });
+    try {
+      let got;
+      let failure;
+      for (let i = 0; i < PUBLISH_ATTEMPTS && got === undefined && failure === undefined; i++) {
+        try {
+          got = await call(ros, name, {}, "std_srvs/srv/Trigger");
+        } catch (e) {
+          if (String(e.message).includes("not advertised")) {
+            await new Promise((r) => setTimeout(r, PUBLISH_INTERVAL_MS));
+          } else if (e instanceof CheckFailed && /answered (result: false|without a response)/.test(String(e.message))) {
+            failure = e.message;
+          } else {
+            throw e;
+          }
+        }
+      }
+      if (ret) {
+        check(isDeepStrictEqual(got, { success: true, message }), `provider returning ${String(ret)}: the caller got ${JSON.stringify(got)}`);
+        ok(`a provider whose callback returns ${String(ret)} answers its caller: ${JSON.stringify(got)}`);
+      } else {
+        check(failure !== undefined, `provider returning ${String(ret)}: the caller got ${JSON.stringify(got)}, want a failure`);
+        ok(`a provider whose callback returns ${String(ret)} (roslib sends no values) fails its caller at once: ${failure}`);
+      }
+    } finally {
+      server.unadvertise();
+    }
+  }
+}
+
 async function main() {
   const version = JSON.parse(readFileSync(new URL("./node_modules/roslib/package.json", import.meta.url))).version;
   console.log(`roslib ${version} (node ${process.version}) -> ${args.url} (${args.mode} mode)`);
@@ -340,6 +441,8 @@ async function main() {
   await checkOwnMessages(ros);
   await checkBurst(ros);
   await checkInvalidOp(ros);
+  await checkPartialMessages(ros);
+  await checkProviderAnswers(ros);
   if (args.mode === "hub") await checkPublishHub(ros);
   else await checkPublishLocal(ros);
 }

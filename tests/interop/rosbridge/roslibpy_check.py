@@ -23,6 +23,7 @@ import base64
 import json
 import math
 import random
+import struct
 import sys
 import threading
 import time
@@ -379,6 +380,126 @@ def check_publish_local(ros, hub_url, robot):
         hub.close()
 
 
+ZERO_TIME = {"sec": 0, "nanosec": 0}
+
+# RFC 8746 typed arrays rosbridge's CBOR uses for numeric arrays: tag -> struct format.
+TYPED_ARRAYS = {69: "H", 70: "I", 71: "Q", 72: "b", 77: "h", 78: "i", 79: "q", 85: "f", 86: "d"}
+
+
+def plain(v):
+    """A CBOR message with its typed arrays as lists of numbers."""
+    if isinstance(v, cbor2.CBORTag) and v.tag in TYPED_ARRAYS:
+        fmt = TYPED_ARRAYS[v.tag]
+        return list(struct.unpack(f"<{len(v.value) // struct.calcsize(fmt)}{fmt}", v.value))
+    if isinstance(v, dict):
+        return {k: plain(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [plain(x) for x in v]
+    return v
+
+
+def partial_cases(prefix, nonce):
+    """(topic, type, partial message, predicate on what a subscriber gets, what) per case."""
+    return [
+        (f"{prefix}/goal_id", "actionlib_msgs/GoalID", {"id": nonce},
+         lambda m: m == {"stamp": ZERO_TIME, "id": nonce},
+         "GoalID with only its id: zero stamp"),
+        (f"{prefix}/markers", "visualization_msgs/msg/MarkerArray",
+         {"markers": [{"ns": nonce, "id": 3, "pose": {"position": {"x": 1.5}}}]},
+         lambda m: len(m["markers"]) == 1 and m["markers"][0]["ns"] == nonce
+         and m["markers"][0]["header"] == {"stamp": ZERO_TIME, "frame_id": ""}
+         and m["markers"][0]["pose"]["position"] == {"x": 1.5, "y": 0.0, "z": 0.0}
+         and m["markers"][0]["points"] == [] and m["markers"][0]["text"] == ""
+         and m["markers"][0]["lifetime"] == ZERO_TIME,
+         "MarkerArray whose marker has 3 of its fields: the rest defaults"),
+        (f"{prefix}/pose_cov", "geometry_msgs/msg/PoseWithCovarianceStamped",
+         {"header": {"frame_id": nonce}},
+         lambda m: m["header"] == {"stamp": ZERO_TIME, "frame_id": nonce}
+         and m["pose"]["covariance"] == [0.0] * 36
+         and m["pose"]["pose"]["orientation"]["w"] == 1.0,
+         "PoseWithCovarianceStamped with only a frame: 36 zeros of covariance"),
+    ]
+
+
+def check_partial_messages(ros, url):
+    """Partial messages reach JSON and CBOR subscribers with the type's defaults filled."""
+    nonce = f"partial-{random.randint(0, 1 << 30)}"
+    for topic, typ, msg, pred, what in partial_cases("/interop_py", nonce):
+        inbox = Inbox()
+        sub = roslibpy.Topic(ros, topic, typ)
+        sub.subscribe(inbox.put)
+        with ws_connect(url, open_timeout=TIMEOUT, close_timeout=2) as ws:
+            ws.send(json.dumps({"op": "subscribe", "topic": topic, "type": typ,
+                                "compression": "cbor"}))
+            pub = roslibpy.Topic(ros, topic, typ)
+            pub.advertise()
+            got = publish_until_received(pub, msg, inbox, f"{what} (JSON)",
+                                         lambda m: pred(dict(m)))
+            check(pred(dict(got)), f"{what} (JSON): got {dict(got)}")
+            frame = None
+            deadline = time.monotonic() + TIMEOUT
+            while time.monotonic() < deadline:
+                f = ws.recv(timeout=max(0.01, deadline - time.monotonic()))
+                if isinstance(f, bytes):
+                    frame = cbor2.loads(f)
+                    break
+            check(frame is not None and frame.get("op") == "publish",
+                  f"{what} (CBOR): no binary publish within {TIMEOUT}s")
+            check(pred(plain(frame["msg"])), f"{what} (CBOR): got {frame['msg']}")
+            pub.unadvertise()
+        sub.unsubscribe()
+        ok(f"{what}, on JSON and CBOR subscribers of {topic}")
+
+
+def check_unknown_field(url):
+    """A field the type does not have is refused, as rosbridge refuses it, naming it."""
+    topic = "/interop_py/unknown_field"
+    with ws_connect(url, open_timeout=TIMEOUT, close_timeout=2) as ws:
+        ws.send(json.dumps({"op": "advertise", "topic": topic, "type": "geometry_msgs/msg/Twist"}))
+        ws.send(json.dumps({"op": "publish", "id": "p1", "topic": topic,
+                            "msg": {"linear": {"x": 1.0}, "bogus": 3}}))
+        deadline = time.monotonic() + TIMEOUT
+        while time.monotonic() < deadline:
+            f = ws.recv(timeout=max(0.01, deadline - time.monotonic()))
+            m = json.loads(f) if isinstance(f, str) else {}
+            if m.get("op") == "status" and m.get("level") == "error":
+                check("no field 'bogus'" in m.get("msg", ""),
+                      f"unknown field: status does not name it: {m}")
+                ok(f"a publish with a field its type lacks is refused: {m['msg']}")
+                return
+    raise CheckFailed(f"unknown field: no error status within {TIMEOUT}s")
+
+
+def check_provider_answers(ros):
+    """A provider whose callback returns False or nothing answers its callers, as with rosbridge."""
+    for ret in (False, None):
+        name = f"/interop_py/answers_{str(ret).lower()}"
+        message = f"answered by a callback returning {ret}"
+        server = roslibpy.Service(ros, name, "std_srvs/srv/Trigger")
+
+        def handler(request, response, ret=ret, message=message):
+            response["success"] = True
+            response["message"] = message
+            return ret
+
+        server.advertise(handler)
+        try:
+            got = None
+            for _ in range(PUBLISH_ATTEMPTS):  # until the advertisement is in place
+                try:
+                    got = call(ros, name, {}, "std_srvs/srv/Trigger")
+                    break
+                except CheckFailed as e:
+                    if "not advertised" not in str(e):
+                        raise
+                    time.sleep(PUBLISH_INTERVAL)
+            check(got == {"success": True, "message": message},
+                  f"provider returning {ret}: the caller got {got}")
+            ok(f"a provider whose callback returns {ret} answers its caller: {got}")
+        finally:
+            server.unadvertise()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--url", required=True, help="rosbridge URL to test, ws://HOST:PORT/")
@@ -404,6 +525,9 @@ def main():
         check_points_cbor(a.url, ns, a.points)
         check_params(ros, a.mode)
         check_invalid_op(ros)
+        check_partial_messages(ros, a.url)
+        check_unknown_field(a.url)
+        check_provider_answers(ros)
         if a.mode == "hub":
             check_pull(ros, a.url, a.robot)
             check_publish_hub(ros, a.peer_url, a.robot)

@@ -648,3 +648,95 @@ async fn a_robots_parameters_are_read_and_changed_on_the_robot_under_the_acl() {
     let r = op.call("/r1/rosapi/get_param", args, "direct").await;
     assert_eq!(r["values"]["value"], "1.5", "{r}");
 }
+
+/// A provider's `service_response` means what rosbridge makes it mean: `values` that are
+/// an object are the answer whatever `result` says (roslibjs leaves `result` out and
+/// roslibpy sends `null` when the callback returns nothing); only an answer without them
+/// fails the call with `result: false`.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_provider_answer_is_read_as_rosbridge_reads_it() {
+    let hub = start_hub().await;
+    let mut provider = Rosbridge::connect(&hub.ws_url()).await;
+    advertise(&mut provider, "/answers", "std_srvs/srv/Trigger").await;
+    let name = fleetlink_relay::TopicName::parse("/answers").unwrap();
+    eventually("/answers advertised at the hub", || {
+        hub.state.router.calls.service(&name).is_some()
+    })
+    .await;
+    let mut op = Rosbridge::connect(&hub.ws_url()).await;
+    let values = json!({"success": true, "message": "done"});
+    // (the answer's fields besides op and id, the caller's result, its values)
+    let cases = [
+        (
+            json!({"values": values, "result": true}),
+            true,
+            values.clone(),
+        ),
+        (
+            json!({"values": values, "result": false}),
+            true,
+            values.clone(),
+        ),
+        (json!({"values": values}), true, values.clone()),
+        (
+            json!({"values": values, "result": null}),
+            true,
+            values.clone(),
+        ),
+        (
+            json!({"result": true}),
+            true,
+            json!({"success": false, "message": ""}),
+        ),
+        (
+            json!({}),
+            false,
+            json!(
+                "service /answers failed: the provider of /answers answered without a response (no 'values', no 'result')"
+            ),
+        ),
+        (
+            json!({"result": false}),
+            false,
+            json!("service /answers failed: the provider of /answers answered result: false"),
+        ),
+        (
+            json!({"values": "disk full", "result": false}),
+            false,
+            json!("service /answers failed: disk full"),
+        ),
+    ];
+    for (i, (answer, ok, want)) in cases.into_iter().enumerate() {
+        let id = format!("c{i}");
+        op.send(json!({"op": "call_service", "service": "/answers", "id": id}))
+            .await;
+        let req = provider.recv_op("call_service").await;
+        let mut reply = answer.clone();
+        reply["op"] = json!("service_response");
+        reply["id"] = req["id"].clone();
+        provider.send(reply).await;
+        let r = op.recv_op("service_response").await;
+        assert_eq!(r["id"], json!(id));
+        assert_eq!(r["result"], json!(ok), "answer {answer}: {r}");
+        assert_eq!(r["values"], want, "answer {answer}: {r}");
+    }
+    // Values that are neither a response nor a failure's text: the caller hears an error,
+    // the provider a status naming the field.
+    op.send(json!({"op": "call_service", "service": "/answers", "id": "bad"}))
+        .await;
+    let req = provider.recv_op("call_service").await;
+    provider
+        .send(json!({"op": "service_response", "id": req["id"], "values": [1, 2], "result": true}))
+        .await;
+    let r = op.recv_op("service_response").await;
+    assert_eq!(r["result"], false, "{r}");
+    let s = provider.recv_op("status").await;
+    assert!(
+        s["msg"]
+            .as_str()
+            .unwrap()
+            .contains("'values' must be an object"),
+        "{s}"
+    );
+    assert_eq!(hub.state.router.calls.bookkeeping(), 0);
+}

@@ -82,7 +82,7 @@ async fn cbor_compression_delivers_binary_frames() {
     // Wait for a binary frame specifically.
     let got = within("a CBOR frame", async {
         for i in 0..4000u32 {
-            p.publish_json(&json!({"data": "hello", "n": i}));
+            p.publish_json(&json!({"data": format!("hello {i}")}));
             if let Ok(Some(Ok(m))) = tokio::time::timeout(
                 Duration::from_millis(25),
                 futures_util::StreamExt::next(op.raw()),

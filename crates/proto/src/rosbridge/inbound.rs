@@ -104,7 +104,9 @@ pub enum Op {
         service: Option<String>,
         /// The response object, or on failure usually a text saying why.
         values: Option<Payload>,
-        result: bool,
+        /// `None` when the field is missing or `null` (roslibjs leaves it out, roslibpy
+        /// sends `null`, when the provider's callback returns nothing).
+        result: Option<bool>,
     },
     AdvertiseAction {
         action: String,
@@ -610,7 +612,7 @@ fn parse_envelope(
             "service_response" => Op::ServiceResponse {
                 service: fields.opt_str("service")?,
                 values: body.clone(),
-                result: fields.opt_bool("result")?.unwrap_or(true),
+                result: fields.opt_bool("result")?,
             },
             "advertise_action" => Op::AdvertiseAction {
                 action: fields.topic("action")?,

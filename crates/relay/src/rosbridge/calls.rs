@@ -131,6 +131,29 @@ fn part(type_name: &str, suffix: &str) -> String {
 }
 
 impl Session {
+    /// A rosbridge body (JSON or CBOR) checked against the part of `name`'s type it is
+    /// and completed, as a publish is: missing fields take their defaults, a field the
+    /// type does not have is refused naming it. Unchanged when the service or its type is
+    /// not known here.
+    fn completed(&self, name: &TopicName, suffix: &str, body: Payload) -> Result<Payload, String> {
+        let Some(info) = self.router.calls.service(name) else {
+            return Ok(body);
+        };
+        if info.schema.type_name.is_empty() {
+            return Ok(body);
+        }
+        let tc = self.router.transcoder();
+        let type_name = part(&info.schema.type_name, suffix);
+        let schema = tc
+            .schema_for(&type_name)
+            .unwrap_or_else(|| Schema::named(&type_name));
+        match tc.normalize(&schema, &body) {
+            Ok(Some(done)) => Ok(done),
+            Ok(None) => Ok(body),
+            Err(e) => Err(e.cause_text()),
+        }
+    }
+
     /// A payload as the bytes of a JSON (or CBOR) value for this client.
     fn body_for(&self, p: &Payload, type_name: &str, cbor: bool) -> Result<Bytes, String> {
         let to = if cbor { Encoding::Cbor } else { Encoding::Json };
@@ -233,6 +256,13 @@ impl Session {
             let text = format!("call_service {name}: field 'args' must be an object");
             return self.service_failed(service, id, text, how.cbor).await;
         }
+        let args = match self.completed(&name, "_Request", args) {
+            Ok(a) => a,
+            Err(e) => {
+                let text = format!("call_service {name}: field 'args': {e}");
+                return self.service_failed(service, id, text, how.cbor).await;
+            }
+        };
         let size = args.len();
         let opts = CallOptions {
             timeout: timeout_of(timeout),
@@ -381,11 +411,18 @@ impl Session {
         Ok((s.call, s.name, s.goal))
     }
 
+    /// A provider's answer, read as rosbridge reads it: `values` that are an object are
+    /// the response, whatever `result` says (rosbridge checks only that `result` is a
+    /// boolean and hands the values to the caller; roslibpy sends the callback's return
+    /// value there, which is often nothing). Without such values, `result: true` answers
+    /// with the type's defaults and anything else fails the call (roslib 2 sends no
+    /// values when its callback returns something falsy). See docs/calls.md, "A
+    /// provider's answer".
     pub(super) fn service_response(
         &mut self,
         id: Option<&Value>,
         values: Option<Payload>,
-        result: bool,
+        result: Option<bool>,
     ) -> Result<(), String> {
         let (call, name, goal) = self.serving("service_response", id, true)?;
         if goal {
@@ -393,14 +430,44 @@ impl Session {
                 "service_response: {name} is an action; answer goals with action_result"
             ));
         }
-        let (status, payload, text) = if result {
-            (CallStatus::Ok, values, String::new())
-        } else {
-            (
+        let (status, payload, text) = match values {
+            Some(v) if is_map(&v) => match self.completed(&name, "_Response", v) {
+                Ok(v) => (CallStatus::Ok, Some(v), String::new()),
+                Err(e) => {
+                    let text = format!("the provider of {name} answered a wrong response: {e}");
+                    self.router
+                        .calls
+                        .respond(self.client, call, CallStatus::Failed, None, text);
+                    return Err(format!(
+                        "service_response {name}: field 'values': {e}; the caller got an error"
+                    ));
+                }
+            },
+            None if result == Some(true) => {
+                let empty = Payload::json(&b"{}"[..]);
+                let defaults = self.completed(&name, "_Response", empty.clone());
+                (
+                    CallStatus::Ok,
+                    Some(defaults.unwrap_or(empty)),
+                    String::new(),
+                )
+            }
+            v if result != Some(true) && v.as_ref().is_none_or(is_text) => (
                 CallStatus::Failed,
                 None,
-                failure_text(values.as_ref(), &name),
-            )
+                failure_text(v.as_ref(), &name, result),
+            ),
+            _ => {
+                let text =
+                    format!("the provider of {name} answered with 'values' that are not an object");
+                self.router
+                    .calls
+                    .respond(self.client, call, CallStatus::Failed, None, text);
+                return Err(format!(
+                    "service_response {name}: field 'values' must be an object (the \
+                     response's fields), or a text with result: false; the caller got an error"
+                ));
+            }
         };
         self.router
             .calls
@@ -437,6 +504,15 @@ impl Session {
                 .goal_failed(action, id, CallStatus::Failed, text, how.cbor)
                 .await;
         }
+        let args = match self.completed(&name, "_Goal", args) {
+            Ok(a) => a,
+            Err(e) => {
+                let text = format!("send_action_goal {name}: field 'args': {e}");
+                return self
+                    .goal_failed(action, id, CallStatus::Failed, text, how.cbor)
+                    .await;
+            }
+        };
         let key = id.map(id_key);
         if let Some(k) = &key
             && self.calls.goals.contains_key(k)
@@ -1033,9 +1109,18 @@ fn is_map(p: &Payload) -> bool {
     }
 }
 
-/// What a provider's `result: false` says: its `values` when they are a text, else a
-/// generic line naming the service.
-fn failure_text(values: Option<&Payload>, name: &TopicName) -> String {
+/// Whether a body is a text (a failure's reason).
+fn is_text(p: &Payload) -> bool {
+    match p.encoding {
+        Encoding::Json => p.bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'"'),
+        Encoding::Cbor => p.bytes.first().is_some_and(|b| b >> 5 == 3),
+        _ => false,
+    }
+}
+
+/// What a failed answer (no response object) says: its `values` when they are a text,
+/// else a line naming the service and what the provider sent.
+fn failure_text(values: Option<&Payload>, name: &TopicName, result: Option<bool>) -> String {
     let parsed: Option<Value> = values.and_then(|v| match v.encoding {
         Encoding::Json => serde_json::from_slice(&v.bytes).ok(),
         Encoding::Cbor => ciborium::from_reader(&v.bytes[..]).ok(),
@@ -1043,7 +1128,9 @@ fn failure_text(values: Option<&Payload>, name: &TopicName) -> String {
     });
     match parsed {
         Some(Value::String(s)) if !s.is_empty() => s,
-        Some(v @ Value::Object(_)) => format!("the provider of {name} failed: {v}"),
+        _ if result.is_none() => {
+            format!("the provider of {name} answered without a response (no 'values', no 'result')")
+        }
         _ => format!("the provider of {name} answered result: false"),
     }
 }
