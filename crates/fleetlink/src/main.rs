@@ -7,7 +7,7 @@ mod cmd;
 
 use std::sync::Arc;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 #[derive(Parser)]
 #[command(
@@ -43,7 +43,10 @@ enum Command {
 fn main() -> std::process::ExitCode {
     // A user's error is one line saying what is wrong and what to do: never a backtrace
     // (even with RUST_BACKTRACE set), never the `Debug` form of the error chain.
-    match run(Cli::parse()) {
+    // Parsed through `ArgMatches` so `--check` can tell given values from defaults.
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
+    match run(cli, &matches) {
         Ok(()) => std::process::ExitCode::SUCCESS,
         // Output piped into `head` and closed early: the reader has what it wanted.
         Err(e) if is_broken_pipe(&e) => std::process::ExitCode::SUCCESS,
@@ -78,9 +81,23 @@ fn error_text(e: &anyhow::Error) -> String {
     text
 }
 
-fn run(cli: Cli) -> anyhow::Result<()> {
+fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
+    // The subcommand's own definition and values, for `--check`'s listing.
+    let sub = |name: &str| {
+        let command = Cli::command().find_subcommand(name).cloned();
+        let m = matches.subcommand_matches(name).cloned();
+        command.zip(m).expect("the subcommand that was parsed")
+    };
     match cli.command {
+        Command::Hub(args) if args.check => {
+            let (command, m) = sub("hub");
+            cmd::hub::check(&args, &command, &m)
+        }
         Command::Hub(args) => cmd::hub::run(args),
+        Command::Agent(args) if args.check => {
+            let (command, m) = sub("agent");
+            cmd::agent::check(&args, &command, &m)
+        }
         Command::Agent(args) => cmd::agent::run(args),
         Command::Demo(args) => cmd::demo::run(args),
         Command::Bench(args) => cmd::bench::run(args),

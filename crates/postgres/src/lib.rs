@@ -121,16 +121,7 @@ impl Database {
     /// failing every login later. Blocks; call it from a blocking thread.
     pub fn connect(url: &str) -> Result<Database, DbError> {
         let shown = redact(url);
-        if !(url.starts_with("postgres://") || url.starts_with("postgresql://")) {
-            return Err(DbError::BadUrl {
-                url: shown,
-                reason: "it does not start with postgres:// or postgresql://".to_owned(),
-            });
-        }
-        let mut config: tokio_postgres::Config = url.parse().map_err(|e| DbError::BadUrl {
-            url: shown.clone(),
-            reason: format!("{e}"),
-        })?;
+        let mut config = parse_url(url)?;
         config
             .connect_timeout(CONNECT_TIMEOUT)
             // A database host that vanishes without closing the socket is noticed in
@@ -284,6 +275,22 @@ fn pool_cause(e: deadpool_postgres::PoolError) -> String {
         }
         other => other.to_string(),
     }
+}
+
+/// Reads a database URL without connecting: `postgres://` or `postgresql://`, in the form
+/// libpq accepts.
+pub fn parse_url(url: &str) -> Result<tokio_postgres::Config, DbError> {
+    let shown = redact(url);
+    if !(url.starts_with("postgres://") || url.starts_with("postgresql://")) {
+        return Err(DbError::BadUrl {
+            url: shown,
+            reason: "it does not start with postgres:// or postgresql://".to_owned(),
+        });
+    }
+    url.parse().map_err(|e| DbError::BadUrl {
+        url: shown,
+        reason: format!("{e}"),
+    })
 }
 
 /// `url` without the password (in the user part or a `password=` parameter).

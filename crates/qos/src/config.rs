@@ -10,7 +10,7 @@ use serde::Deserialize;
 use crate::error::QosError;
 
 /// How a topic goes up the link (see `docs/qos.md`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum Mode {
     /// Every message while someone wants the topic (or always, with `always: true`).
@@ -23,7 +23,7 @@ pub enum Mode {
 
 /// How a topic's messages are compressed on the robot's link (see `docs/qos.md`). The
 /// agent decides per message; the hub decompresses once, before fan-out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum Compression {
     /// Sent as published.
@@ -54,7 +54,7 @@ impl Compression {
 }
 
 /// What a bounded per-topic queue does when it is full (see `docs/qos.md`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Deserialize, serde::Serialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum Policy {
     /// No drop: when full, the item is handed back to the source (backpressure).
@@ -87,7 +87,7 @@ impl Policy {
 }
 
 /// Complete, validated QoS settings of one topic.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct TopicQos {
     /// Scheduling weight, > 0; larger is served sooner.
@@ -310,7 +310,7 @@ fn normalize_type(ros_type: &str) -> String {
 
 /// Topic QoS as written by an operator: every field optional, missing ones taken from the
 /// defaults of the topic's type ([`TopicQosSpec::resolve`]).
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct TopicQosSpec {
     pub priority: Option<f32>,
@@ -320,15 +320,26 @@ pub struct TopicQosSpec {
     pub no_drop: Option<bool>,
     pub always: Option<bool>,
     /// `500ms`, `2s`, `1m` (or a number of milliseconds).
-    #[serde(default, deserialize_with = "age")]
+    #[serde(default, deserialize_with = "age", serialize_with = "age_text")]
     pub max_age: Option<std::time::Duration>,
     pub mode: Option<Mode>,
     pub compression: Option<Compression>,
 }
 
+/// An age limit written back as it is read: `500ms`, `2s`.
+fn age_text<S: serde::Serializer>(
+    age: &Option<std::time::Duration>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    match age {
+        Some(d) => s.serialize_str(&humantime::format_duration(*d).to_string()),
+        None => s.serialize_none(),
+    }
+}
+
 /// An age limit as written: a duration with its unit (`500ms`, `2s`), or milliseconds.
 fn age<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<std::time::Duration>, D::Error> {
-    #[derive(Deserialize)]
+    #[derive(Deserialize, serde::Serialize)]
     #[serde(untagged)]
     enum Written {
         Millis(u64),

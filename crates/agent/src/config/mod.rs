@@ -45,7 +45,7 @@ pub use sim::{
 };
 
 /// The agent's configuration. See `docs/config.md` for every field.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct AgentConfig {
     /// Hub URLs, `ws://` or `wss://`, in the order to try them: YAML `hub:` takes one URL
@@ -95,7 +95,7 @@ pub struct AgentConfig {
 }
 
 /// `link:` — what the robot's link may carry.
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct LinkSettings {
     /// A data budget; `None` (the default): none.
@@ -105,7 +105,7 @@ pub struct LinkSettings {
 /// `link.budget:` — at most `max_kbps` and/or `mb_per_day` on the link; as the budget is
 /// spent, topics below `protect_priority` are thinned, lowest priority first
 /// (docs/qos.md, "A data budget").
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct BudgetSettings {
     /// Kilobits per second (1 kbit = 1,000 bits), bytes on the wire.
@@ -159,7 +159,7 @@ impl Default for AgentConfig {
 }
 
 /// Exponential reconnect backoff with jitter, from `initial_ms` doubling up to `max_ms`.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ReconnectConfig {
     /// First retry delay. Default 250.
@@ -188,7 +188,7 @@ impl ReconnectConfig {
 }
 
 /// `outbox:` — where `no_drop` messages wait on disk until the hub confirms them.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct OutboxConfig {
     /// Directory of the outbox file (created if missing). One agent per directory.
@@ -217,7 +217,7 @@ impl OutboxConfig {
 }
 
 /// The rosbridge v2 server local programs connect to.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct LocalRosbridgeConfig {
     /// `false` disables the listener (same as `local_rosbridge: null`). Default `true`.
@@ -238,7 +238,7 @@ impl Default for LocalRosbridgeConfig {
 
 /// Files for the TLS link to the hub (PEM). Relative paths are relative to the agent's
 /// working directory.
-#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct TlsConfig {
     /// CA certificate(s) the hub's certificate must chain to; `None` = system roots.
@@ -250,7 +250,7 @@ pub struct TlsConfig {
 }
 
 /// A hub topic delivered to local subscribers under a local name.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Subscription {
     /// Topic name on the hub.
@@ -292,6 +292,24 @@ impl Overrides {
 }
 
 impl AgentConfig {
+    /// The configuration as it runs, defaults filled in, as YAML (what `fleetlink agent
+    /// --check` prints). The token is not shown, only whether there is one.
+    pub fn effective_yaml(&self) -> String {
+        let mut value = match serde_json::to_value(self) {
+            Ok(v) => v,
+            Err(e) => return format!("# cannot show the configuration: {e}\n"),
+        };
+        if let Some(t) = value.get_mut("token") {
+            *t = serde_json::Value::String(if self.token.is_empty() {
+                "(none)".to_owned()
+            } else {
+                format!("(set, {} characters)", self.token.chars().count())
+            });
+        }
+        serde_saphyr::to_string(&value)
+            .unwrap_or_else(|e| format!("# cannot show the configuration: {e}\n"))
+    }
+
     /// Reads and checks a config file. Errors name the file, line, column and field.
     pub fn load(path: &Path) -> Result<Self, ConfigError> {
         Self::load_with(Some(path), &Overrides::default())

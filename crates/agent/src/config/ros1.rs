@@ -6,7 +6,7 @@ use std::time::Duration;
 use serde::{Deserialize, Deserializer};
 
 /// The agent as a node of the robot's ROS 1 graph.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Ros1Config {
     /// `http://host:port` of the master. Default: `ROS_MASTER_URI`, else
@@ -54,7 +54,7 @@ impl Default for Ros1Config {
 }
 
 /// Whole-name regular expressions; a plain topic name matches itself.
-#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Ros1Publish {
     /// Topics (names or patterns) bridged when a local node publishes them.
@@ -63,7 +63,7 @@ pub struct Ros1Publish {
     pub exclude: Vec<String>,
 }
 
-#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Ros1Services {
     /// Local ROS services (names or patterns) offered to the fleet, under the robot's

@@ -9,7 +9,7 @@ use super::ros1::{Shorthand, list_or_mapping};
 use super::{Ros1Publish, Ros1Services};
 
 /// The agent as a DDS participant of the robot's ROS 2 graph.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Ros2Config {
     /// The DDS domain. Default: `ROS_DOMAIN_ID`, else 0.
@@ -57,7 +57,7 @@ impl Default for Ros2Config {
     }
 }
 
-#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Ros2Actions {
     /// Local action servers (names or patterns) offered to the fleet, under the robot's

@@ -11,7 +11,7 @@ use std::time::Duration;
 use serde::Deserialize;
 
 /// Simulated robot: a seed, up to five sensors and the optional markers. See `docs/config.md`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(from = "SimConfigYaml")]
 pub struct SimConfig {
     /// Seeds the sensor noise and the robot's start position on its path. Default 1.
@@ -84,7 +84,7 @@ pub fn period_of(rate_hz: f64) -> Duration {
 macro_rules! sensor {
     ($(#[$doc:meta])* $name:ident { topic: $topic:literal, rate_hz: $rate:literal $(, $(#[$fdoc:meta])* $field:ident: $ty:ty = $default:literal)* }) => {
         $(#[$doc])*
-        #[derive(Debug, Clone, PartialEq, Deserialize)]
+        #[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
         #[serde(default, deny_unknown_fields)]
         pub struct $name {
             #[doc = concat!("Local topic name. Default `", $topic, "`.")]

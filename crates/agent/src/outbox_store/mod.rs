@@ -60,7 +60,7 @@ pub const BATCH_SYNC: Duration = Duration::from_millis(50);
 pub const JOURNAL_QUEUE: usize = 65_536;
 
 /// When written records are forced to the disk (`outbox.fsync`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Fsync {
     /// After every message the journal thread writes: a power cut loses at most what the

@@ -32,6 +32,11 @@ pub struct Args {
     /// whose types the agent should know besides the bundled ones; repeatable.
     #[arg(long = "msg-path", value_name = "DIR")]
     pub msg_path: Vec<PathBuf>,
+    /// Check the configuration and what it names (message definitions, TLS files, the
+    /// outbox directory), print the effective configuration with its defaults, and exit 0
+    /// if all is well, 1 if not — without connecting to the hub or the robot's ROS graph.
+    #[arg(long)]
+    pub check: bool,
 }
 
 /// Loads the file (if any) and applies the command-line overrides.
@@ -50,6 +55,87 @@ pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
         cfg.local_rosbridge = None;
     }
     Ok(cfg)
+}
+
+/// `fleetlink agent --check`: see [`Args::check`].
+pub fn check(
+    args: &Args,
+    command: &clap::Command,
+    matches: &clap::ArgMatches,
+) -> anyhow::Result<()> {
+    let mut r = super::check::Report::default();
+    let what = match &args.config {
+        Some(p) => format!("configuration file {}", p.display()),
+        None => "configuration: the defaults (no --config)".to_owned(),
+    };
+    let Some(cfg) = r.step(what, load(args)) else {
+        return r.finish("fleetlink agent", "");
+    };
+    r.step(
+        "options the agent runs with",
+        AgentOptions::from_config(&cfg),
+    );
+    let defs = if args.msg_path.is_empty() {
+        "message definitions: the bundled ones".to_owned()
+    } else {
+        format!(
+            "message definitions: the bundled ones and --msg-path {}",
+            args.msg_path
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    };
+    r.step(defs, crate::transcoder(&args.msg_path));
+    if let Some(tls) = &cfg.tls {
+        if let Some(ca) = &tls.ca {
+            r.step(
+                format!("TLS CA {}", ca.display()),
+                fleetlink_auth::tls::load_certs(ca),
+            );
+        }
+        if let Some(cert) = &tls.cert {
+            r.step(
+                format!("TLS client certificate {}", cert.display()),
+                fleetlink_auth::tls::load_certs(cert),
+            );
+        }
+        if let Some(key) = &tls.key {
+            r.step(
+                format!("TLS client key {}", key.display()),
+                fleetlink_auth::tls::load_key(key),
+            );
+        }
+    }
+    if let Some(outbox) = &cfg.outbox {
+        let dir = &outbox.dir;
+        match std::fs::metadata(dir) {
+            Ok(m) if m.is_dir() && !m.permissions().readonly() => {
+                r.ok(format!("outbox directory {}", dir.display()))
+            }
+            Ok(_) => r.problem(format!(
+                "outbox.dir {}: not a writable directory",
+                dir.display()
+            )),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => r.ok(format!(
+                "outbox directory {} (made at start)",
+                dir.display()
+            )),
+            Err(e) => r.problem(format!("outbox.dir {}: {e}", dir.display())),
+        }
+    }
+    if cfg.hub.is_empty() {
+        r.note("no hub: the agent serves its local rosbridge only");
+    }
+    let mut effective = super::check::options(command, matches);
+    effective.push_str("  # the configuration:\n");
+    for line in cfg.effective_yaml().lines() {
+        effective.push_str("  ");
+        effective.push_str(line);
+        effective.push('\n');
+    }
+    r.finish("fleetlink agent", &effective)
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {

@@ -31,6 +31,27 @@ pub struct FederationArgs {
     pub hub_name: Option<String>,
 }
 
+/// Checks the federation options as `start` would read them, without joining.
+pub fn check(args: &FederationArgs) -> anyhow::Result<()> {
+    check_engine(args)
+}
+
+#[cfg(feature = "federation")]
+fn check_engine(args: &FederationArgs) -> anyhow::Result<()> {
+    fleetlink_federation::zenoh_config(
+        args.zenoh_config.as_deref(),
+        args.zenoh_mode.as_deref(),
+        &args.zenoh_connect,
+        &args.zenoh_listen,
+    )?;
+    Ok(())
+}
+
+#[cfg(not(feature = "federation"))]
+fn check_engine(_args: &FederationArgs) -> anyhow::Result<()> {
+    anyhow::bail!("this fleetlink was built without the federation feature")
+}
+
 /// Starts the federation when asked for, and tells the hub about it.
 pub async fn join(args: &FederationArgs, hub: &fleetlink_hub::Hub) -> anyhow::Result<()> {
     let Some(engine) = &args.federate else {

@@ -121,6 +121,12 @@ pub struct Args {
     pub max_pending_calls_per_provider: u32,
     #[command(flatten)]
     pub federation: super::federation::FederationArgs,
+    /// Check the options and the files they name (TLS certificate and key, message
+    /// definitions, JWKS file, data directory or database URL, Zenoh configuration), print
+    /// the effective options with their defaults, and exit 0 if all is well, 1 if not —
+    /// without binding a port or connecting anywhere.
+    #[arg(long)]
+    pub check: bool,
 }
 
 impl Args {
@@ -184,6 +190,127 @@ impl Args {
                     }
                 }),
         }
+    }
+}
+
+/// `fleetlink hub --check`: see [`Args::check`].
+pub fn check(
+    args: &Args,
+    command: &clap::Command,
+    matches: &clap::ArgMatches,
+) -> anyhow::Result<()> {
+    let mut r = super::check::Report::default();
+    let _config = args.config();
+    let defs = if args.msg_path.is_empty() {
+        "message definitions: the bundled ones".to_owned()
+    } else {
+        format!(
+            "message definitions: the bundled ones and {} --msg-path director{}",
+            args.msg_path.len(),
+            if args.msg_path.len() == 1 { "y" } else { "ies" }
+        )
+    };
+    r.step(defs, crate::transcoder(&args.msg_path));
+    if let Some(files) = args.config().tls {
+        let what = format!(
+            "TLS certificate {} and key {}",
+            files.cert.display(),
+            files.key.display()
+        );
+        r.step(what, fleetlink_auth::tls::server_config(&files));
+    }
+    match &args.database {
+        Some(url) => {
+            let shown = fleetlink_postgres::redact(url);
+            r.step(
+                format!("database URL {shown} reads (not connected to)"),
+                fleetlink_postgres::parse_url(url),
+            );
+        }
+        None => check_data_dir(&mut r, &args.data_dir),
+    }
+    match &args.jwks {
+        Some(fleetlink_hub::jwks::JwksSource::File(path)) => {
+            let keys = fleetlink_auth::jwt::read_jwks_file(path)
+                .map_err(|e| e.to_string())
+                .and_then(|doc| {
+                    fleetlink_auth::jwt::JwksCache::new()
+                        .install(&doc, fleetlink_auth::UnixTime::now())
+                        .map_err(|e| e.to_string())
+                });
+            match keys {
+                Ok(0) => r.problem(format!(
+                    "JWKS file {}: no usable signing key in it (keys need a kid and an \
+                     asymmetric algorithm)",
+                    path.display()
+                )),
+                Ok(n) => r.ok(format!("JWKS file {}: {n} signing key(s)", path.display())),
+                Err(e) => r.problem(format!("JWKS file {}: {e}", path.display())),
+            }
+        }
+        Some(fleetlink_hub::jwks::JwksSource::Url(url)) => {
+            r.note(format!(
+                "JWKS {url} is fetched when the hub starts (not now)"
+            ));
+        }
+        None => {}
+    }
+    if args.federation.federate.is_some() {
+        r.step(
+            "federation: Zenoh configuration",
+            super::federation::check(&args.federation),
+        );
+    }
+    let files = u64::from(args.max_connections) + 256;
+    match super::open_files_limit() {
+        Some(hard) if hard < files => r.note(format!(
+            "--max-connections {} needs {files} open files but the hard limit is {hard}: \
+             the hub will hold fewer connections (raise it with ulimit -Hn or LimitNOFILE=)",
+            args.max_connections
+        )),
+        _ => {}
+    }
+    r.finish("fleetlink hub", &super::check::options(command, matches))
+}
+
+/// The data directory exists and can be written, or can be created.
+fn check_data_dir(r: &mut super::check::Report, dir: &std::path::Path) {
+    match std::fs::metadata(dir) {
+        Ok(m) if !m.is_dir() => r.problem(format!(
+            "--data-dir {}: not a directory; give a directory (it holds hub.sqlite3)",
+            dir.display()
+        )),
+        Ok(m) if m.permissions().readonly() => {
+            r.problem(format!("--data-dir {}: not writable", dir.display()))
+        }
+        Ok(_) => {
+            let db = dir.join("hub.sqlite3");
+            if db.exists() {
+                r.ok(format!(
+                    "data directory {} (its database exists)",
+                    dir.display()
+                ));
+            } else {
+                r.ok(format!(
+                    "data directory {} (a new database is made at start)",
+                    dir.display()
+                ));
+            }
+        }
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
+            match parent.map(std::fs::metadata) {
+                Some(Ok(p)) if p.is_dir() => {
+                    r.ok(format!("data directory {} (made at start)", dir.display()))
+                }
+                None => r.ok(format!("data directory {} (made at start)", dir.display())),
+                Some(_) => r.problem(format!(
+                    "--data-dir {}: neither it nor its parent directory exists",
+                    dir.display()
+                )),
+            }
+        }
+        Err(e) => r.problem(format!("--data-dir {}: {e}", dir.display())),
     }
 }
 

@@ -3,6 +3,7 @@
 pub mod admin;
 pub mod agent;
 pub mod bench;
+pub mod check;
 pub mod demo;
 pub mod federation;
 pub mod hub;
@@ -85,6 +86,11 @@ where
 /// limit): every connection is a file, and the usual soft limit of 1,024 would cap a hub
 /// or a fleet bench far below what it can carry. Above the hard limit it goes as far as
 /// that and says so.
+/// The hard limit on open files, if there is one.
+pub fn open_files_limit() -> Option<u64> {
+    rustix::process::getrlimit(rustix::process::Resource::Nofile).maximum
+}
+
 pub fn raise_open_files(want: u64) -> anyhow::Result<()> {
     use rustix::process::{Resource, getrlimit, setrlimit};
     let lim = getrlimit(Resource::Nofile);

@@ -373,3 +373,103 @@ fn issue36_cli_refuses_a_robot_name_breaking_the_rule() {
     assert!(!data.exists(), "a database was created for a refused name");
     assert!(!certs.exists(), "a certificate directory was created");
 }
+
+/// `fleetlink agent --check` validates without connecting (the hub in the file does not
+/// exist), prints the effective configuration with defaults filled in and the token
+/// hidden, and exits 0; a bad file exits 1 naming the problem and its right spelling.
+#[test]
+fn agent_check_validates_and_prints_the_effective_configuration() {
+    let dir = temp_dir("agentcheck");
+    let good = dir.join("robot.yaml");
+    std::fs::write(
+        &good,
+        "hub: ws://127.0.0.1:1/\nname: robot1\ntoken: s3cret-token\n\
+         ros1:\n  publish: [/chatter]\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--check", "--config"])
+        .arg(&good)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("the configuration is valid"), "{text}");
+    // Defaults filled in, the shorthand expanded, the token not shown.
+    assert!(text.contains("heartbeat_ms: 1000"), "{text}");
+    assert!(
+        text.contains("include:\n") && text.contains("- /chatter"),
+        "{text}"
+    );
+    assert!(text.contains("discovery_ms: 1000"), "{text}");
+    assert!(!text.contains("s3cret-token"), "{text}");
+    assert!(text.contains("--config: "), "{text}");
+
+    let bad = dir.join("bad.yaml");
+    std::fs::write(&bad, "name: robot1\nros2:\n  actions: 3\n").unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--check", "--config"])
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("bad.yaml:3:"), "{text}");
+    assert!(text.contains("`actions: [/navigate]`"), "{text}");
+    assert!(!text.contains("the configuration is valid"), "{text}");
+}
+
+/// `fleetlink hub --check` reads what the hub would read (here a missing TLS key and a
+/// bad database URL) without binding its port, and lists every option with its value.
+#[test]
+fn hub_check_finds_bad_files_without_starting() {
+    let dir = temp_dir("hubcheck");
+    // Something already listens on the port: a check must not need it.
+    let busy = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = busy.local_addr().unwrap().to_string();
+    let out = Command::new(BIN)
+        .args(["hub", "--check", "--listen", &port, "--data-dir"])
+        .arg(dir.join("data"))
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        text.contains(&format!("--listen: {port}  # given")),
+        "{text}"
+    );
+    assert!(text.contains("--heartbeat-ms: 1000  # default"), "{text}");
+    assert!(!dir.join("data").exists(), "a check creates nothing");
+
+    let out = Command::new(BIN)
+        .args([
+            "hub",
+            "--check",
+            "--database",
+            "mysql://u:pw@db/x",
+            "--tls-cert",
+        ])
+        .arg(dir.join("none.pem"))
+        .arg("--tls-key")
+        .arg(dir.join("none.key"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("none.pem"), "{text}");
+    assert!(text.contains("postgres://"), "{text}");
+    assert!(
+        !text.contains(":pw@"),
+        "the password is not printed: {text}"
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("2 problems"), "{err}");
+}
