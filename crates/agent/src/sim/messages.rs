@@ -183,7 +183,7 @@ pub(crate) struct Scratch {
     /// Cloud points, or the camera's JPEG.
     binary: Vec<u8>,
     /// The camera's picture before encoding.
-    rgb: Vec<u8>,
+    canvas: camera::Canvas,
     base64: String,
 }
 
@@ -376,8 +376,8 @@ pub(crate) fn compressed_image(
     spec: CameraSpec,
     header: Header<'_>,
 ) -> Vec<u8> {
-    camera::render(&mut scratch.rgb, spec, state);
-    camera::encode(&scratch.rgb, spec, &mut scratch.binary);
+    camera::render(&mut scratch.canvas, spec, state);
+    camera::encode(&scratch.canvas.rgb, spec, &mut scratch.binary);
     scratch.base64.clear();
     BASE64.encode_string(&scratch.binary, &mut scratch.base64);
     let msg = CompressedImage {
