@@ -1,8 +1,8 @@
 // The dashboard in real headless Chromium (Debian's package, driven by puppeteer-core)
-// against `fleetlink demo`: fleet view, robot panels, the marker layer (the simulator's
-// pillars, walls and goal as visualization_msgs markers), navigation goal + cancel, a
-// service form call, and a viewer without publish rights. Screenshots of each view go
-// to --shots. Exits non-zero when any check failed.
+// against `fleetlink demo`: fleet view, robot panels (the camera's picture decoded), the
+// marker layer (the simulator's pillars, walls and goal as visualization_msgs markers),
+// navigation goal + cancel, a service form call, and a viewer without publish rights.
+// Screenshots of each view go to --shots. Exits non-zero when any check failed.
 //
 //   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --user U --password P --viewer-token V --shots DIR
 import { mkdirSync } from "node:fs";
@@ -131,6 +131,14 @@ try {
   check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
   const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
   check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
+  // The camera panel shows the simulator's picture of its room: a JPEG the browser
+  // decoded, at the demo's size, not the grey-level view of undecodable bytes.
+  const cam = await until(page, () => {
+    const img = document.querySelector("img.camera");
+    const note = img?.parentElement?.querySelector("p.muted")?.textContent ?? "";
+    return img && img.style.display !== "none" && img.complete && img.naturalWidth > 0 && { w: img.naturalWidth, h: img.naturalHeight, note };
+  }, null, 5000, "camera panel: a decoded picture");
+  if (cam) check(cam.w === 320 && cam.h === 240 && !/not a decodable/.test(cam.note), `camera panel: a decoded ${cam.w}x${cam.h} picture${cam.note ? ` (note: ${cam.note})` : ""}`);
   // Signing in replaced the connection: the status shows the new one, not the old one's close.
   const connText = await until(page, () => document.querySelector("#conn")?.textContent === "connected" && "connected", null, 3000, "status bar: connected after sign-in");
   if (connText) ok("status bar: connected after sign-in");

@@ -212,8 +212,8 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
           note.textContent = "";
           camP.info.textContent = `${camT.name} · ${msg.format} · ${(data.length / 1024).toFixed(0)} KiB`;
         } catch {
-          // Not a decodable image (the simulator sends JPEG-sized noise with a JPEG
-          // header): show the bytes as grey levels so the stream is still visible.
+          // Not a decodable image (a format the browser cannot read, a corrupt or
+          // truncated frame): show the bytes as grey levels so the stream is still visible.
           img.style.display = "none";
           cv.style.display = "";
           const side = Math.max(1, Math.floor(Math.sqrt(data.length)));

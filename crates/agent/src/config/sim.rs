@@ -129,12 +129,51 @@ sensor!(
         /// Points per cloud. Default 10000.
         points: u32 = 10_000 }
 );
-sensor!(
-    /// `sensor_msgs/msg/CompressedImage` with `format: jpeg` and synthetic bytes.
-    ImageSim { topic: "/camera/image/compressed", rate_hz: 10,
-        /// Size of `data` before base64. Default 50000.
-        bytes: u32 = 50_000 }
-);
+/// `sensor_msgs/msg/CompressedImage` with `format: jpeg`: a picture of the room from the
+/// robot's pose (see `sim::camera`).
+///
+/// Written out rather than made by `sensor!`: it keeps the removed `bytes` key only so that
+/// a config still setting it is refused with a pointer to `width` and `height`, instead of
+/// the generic "unknown field" error.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ImageSim {
+    /// Local topic name. Default `/camera/image/compressed`.
+    pub topic: String,
+    /// Publish rate in Hz (> 0, fractions allowed). Default 10.
+    pub rate_hz: f64,
+    /// Picture width in pixels (16–4096). Default 320.
+    pub width: u32,
+    /// Picture height in pixels (16–4096). Default 240.
+    pub height: u32,
+    /// JPEG quality, 1–100 (below 90 the colour is stored at half resolution, as most
+    /// cameras do). Default 75.
+    pub quality: u32,
+    /// The old size in bytes of the noise the camera sent before it rendered pictures.
+    /// Never used: validation refuses a config that sets it, naming the keys to use.
+    #[serde(rename = "bytes")]
+    pub removed_bytes: Option<serde::de::IgnoredAny>,
+}
+
+impl Default for ImageSim {
+    fn default() -> Self {
+        Self {
+            topic: "/camera/image/compressed".to_owned(),
+            rate_hz: 10.0,
+            width: 320,
+            height: 240,
+            quality: 75,
+            removed_bytes: None,
+        }
+    }
+}
+
+impl ImageSim {
+    /// Time between two messages.
+    pub fn period(&self) -> Duration {
+        period_of(self.rate_hz)
+    }
+}
 sensor!(
     /// `visualization_msgs/msg/MarkerArray` in the pose's frame: the pillars (`CYLINDER`),
     /// the walls (`LINE_STRIP`) and the navigation goal, if any (`SPHERE`, else `DELETE`).

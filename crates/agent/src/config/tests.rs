@@ -191,9 +191,36 @@ fn semantic_errors() {
         "robot.yaml:3:10: subscribe[1].hub: must be '/'-separated non-empty names, got \"/c/\"",
     );
     assert_err(
-        "sim: { image: { bytes: 3 } }\n",
-        "robot.yaml:1:24: sim.image.bytes: must be in 16..=50000000, got 3",
+        "sim: { image: { width: 8 } }\n",
+        "robot.yaml:1:24: sim.image.width: must be in 16..=4096, got 8",
     );
+    assert_err(
+        "sim: { image: { quality: 0 } }\n",
+        "robot.yaml:1:26: sim.image.quality: must be in 1..=100, got 0",
+    );
+}
+
+/// The camera's old `bytes` (the size of the noise it sent) is refused with the keys
+/// that replaced it, not silently ignored or refused as merely unknown.
+#[test]
+fn camera_bytes_is_refused_with_the_keys_that_replace_it() {
+    let e = err("name: r1\nsim:\n  image: { rate_hz: 5, bytes: 30000 }\n");
+    assert_eq!(e.field(), Some("sim.image.bytes"), "{e}");
+    let text = e.to_string();
+    assert!(
+        text.starts_with("robot.yaml:3:24: sim.image.bytes: is no longer read"),
+        "{text}"
+    );
+    for key in ["`width`", "`height`", "`quality`", "remove `bytes`"] {
+        assert!(text.contains(key), "{key} in {text}");
+    }
+    let cfg = AgentConfig::from_str(
+        "sim:\n  image: { width: 640, height: 480, quality: 90 }\n",
+        "robot.yaml",
+    )
+    .expect("the new keys");
+    let image = cfg.sim.and_then(|s| s.image).expect("image");
+    assert_eq!((image.width, image.height, image.quality), (640, 480, 90));
 }
 
 #[test]

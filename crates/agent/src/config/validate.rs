@@ -385,8 +385,26 @@ fn validate_sim(sim: &SimConfig) -> Result<(), Problem> {
             .map(|s| ("point_cloud", "points", s.points, 1, 5_000_000)),
         sim.image
             .as_ref()
-            .map(|s| ("image", "bytes", s.bytes, 16, 50_000_000)),
+            .map(|s| ("image", "width", s.width, 16, 4096)),
+        sim.image
+            .as_ref()
+            .map(|s| ("image", "height", s.height, 16, 4096)),
+        sim.image
+            .as_ref()
+            .map(|s| ("image", "quality", s.quality, 1, 100)),
     ];
+    if let Some(image) = &sim.image
+        && image.removed_bytes.is_some()
+    {
+        return Err(Problem {
+            path: "sim.image.bytes".into(),
+            at_key: true,
+            message: "is no longer read: the camera now renders a JPEG picture of the room; \
+                      set its size with `width` and `height` (pixels, default 320 and 240) \
+                      and `quality` (1-100, default 75) instead, and remove `bytes`"
+                .into(),
+        });
+    }
     for (sensor, field, value, min, max) in counts.into_iter().flatten() {
         if !(min..=max).contains(&value) {
             return Err(problem(

@@ -2,14 +2,16 @@
 //!
 //! Design: typed `Serialize` structs mirror the ROS 2 definitions field by field, so a
 //! wrong field name is a compile-time diff against the `.msg`, not a typo in a string.
-//! Large arrays (cloud points, image bytes, scan ranges) are written into buffers owned by
-//! [`Scratch`] and reused between messages; the only per-message allocation of size is the
-//! JSON output, which is handed out as `Bytes`.
+//! Large arrays (cloud points, camera pictures, scan ranges) are written into buffers
+//! owned by [`Scratch`] and reused between messages; the only per-message allocation of
+//! size is the JSON output, which is handed out as `Bytes` (and the JPEG encoder's working
+//! strip of 16 rows, which it allocates itself).
 
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD as BASE64;
 use serde::Serialize;
 
+use super::camera::{self, CameraSpec};
 use super::world::{self, Noise, RobotState, Surface};
 
 #[derive(Serialize)]
@@ -178,7 +180,10 @@ struct CompressedImage<'a> {
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
     ranges: Vec<f32>,
+    /// Cloud points, or the camera's JPEG.
     binary: Vec<u8>,
+    /// The camera's picture before encoding.
+    canvas: camera::Canvas,
     base64: String,
 }
 
@@ -364,30 +369,15 @@ pub(crate) fn point_cloud(
     to_json(&msg, scratch.base64.len() + 512)
 }
 
-/// JPEG start-of-image + JFIF APP0 marker; the rest is noise ending in end-of-image.
-const JPEG_HEAD: [u8; 20] = [
-    0xFF, 0xD8, 0xFF, 0xE0, 0x00, 0x10, b'J', b'F', b'I', b'F', 0x00, 0x01, 0x01, 0x00, 0x00, 0x01,
-    0x00, 0x01, 0x00, 0x00,
-];
-
+/// A picture of the room from the robot's pose ([`camera`]), JPEG-encoded.
 pub(crate) fn compressed_image(
     scratch: &mut Scratch,
-    bytes: u32,
-    noise: &mut Noise,
+    state: &RobotState,
+    spec: CameraSpec,
     header: Header<'_>,
 ) -> Vec<u8> {
-    let len = bytes as usize;
-    let bin = &mut scratch.binary;
-    bin.clear();
-    bin.extend_from_slice(&JPEG_HEAD[..JPEG_HEAD.len().min(len)]);
-    while bin.len() + 8 <= len {
-        bin.extend_from_slice(&noise.next_u64().to_le_bytes());
-    }
-    let tail = noise.next_u64().to_le_bytes();
-    bin.extend_from_slice(&tail[..len - bin.len()]);
-    if len >= JPEG_HEAD.len() + 2 {
-        bin[len - 2..].copy_from_slice(&[0xFF, 0xD9]);
-    }
+    camera::render(&mut scratch.canvas, spec, state);
+    camera::encode(&scratch.canvas.rgb, spec, &mut scratch.binary);
     scratch.base64.clear();
     BASE64.encode_string(&scratch.binary, &mut scratch.base64);
     let msg = CompressedImage {

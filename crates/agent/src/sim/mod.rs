@@ -2,8 +2,9 @@
 //!
 //! The robot drives a figure-eight through a 20 m room with five round pillars
 //! ([`world`]); it publishes a 360° laser scan and a 3D point cloud ray-cast against that
-//! room, odometry, a pose, and JPEG-sized compressed images ([`messages`]); optionally the
-//! room itself (pillars, walls, the navigation goal) as `visualization_msgs` markers.
+//! room, odometry, a pose, and JPEG pictures of the room from the robot's camera
+//! ([`camera`]), all as rosbridge JSON ([`messages`]); optionally the room itself (pillars,
+//! walls, the navigation goal) as `visualization_msgs` markers.
 //!
 //! Design: sans-IO, in the quinn style. The driver owns the clock: it calls
 //! [`Sim::poll`] with the time since start and sleeps until [`Sim::next_due`]. Each topic
@@ -12,6 +13,7 @@
 //! falls behind gets the newest slot per topic, not a burst of stale ones; the skipped
 //! slots are counted ([`Sim::skipped`]).
 
+mod camera;
 mod driver;
 mod messages;
 pub mod services;
@@ -24,6 +26,7 @@ use std::time::Duration;
 use bytes::Bytes;
 
 use crate::config::SimConfig;
+use camera::CameraSpec;
 use messages::{Header, Scratch};
 use world::Noise;
 
@@ -55,7 +58,7 @@ enum Sensor {
     Odometry,
     Pose,
     PointCloud { points: u32 },
-    Image { bytes: u32 },
+    Image(CameraSpec),
     Markers,
 }
 
@@ -66,7 +69,7 @@ impl Sensor {
             Self::Odometry => "nav_msgs/msg/Odometry",
             Self::Pose => "geometry_msgs/msg/PoseStamped",
             Self::PointCloud { .. } => "sensor_msgs/msg/PointCloud2",
-            Self::Image { .. } => "sensor_msgs/msg/CompressedImage",
+            Self::Image(_) => "sensor_msgs/msg/CompressedImage",
             Self::Markers => "visualization_msgs/msg/MarkerArray",
         }
     }
@@ -177,7 +180,11 @@ impl Sim {
             );
         }
         if let Some(s) = &cfg.image {
-            add(&s.topic, s.rate_hz, Sensor::Image { bytes: s.bytes });
+            add(
+                &s.topic,
+                s.rate_hz,
+                Sensor::Image(CameraSpec::new(s.width, s.height, s.quality)),
+            );
         }
         if let Some(s) = &cfg.markers {
             add(&s.topic, s.rate_hz, Sensor::Markers);
@@ -374,10 +381,10 @@ impl Sim {
                 &mut noise,
                 Header::new(stamp_ns, &frames.lidar),
             ),
-            Sensor::Image { bytes } => messages::compressed_image(
+            Sensor::Image(spec) => messages::compressed_image(
                 scratch,
-                bytes,
-                &mut noise,
+                &state,
+                spec,
                 Header::new(stamp_ns, &frames.camera),
             ),
             // Same frame as the pose, so the markers line up with the robot on a map.

@@ -352,16 +352,35 @@ fn point_cloud_shape_and_data() {
     }
 }
 
-#[test]
-fn compressed_image_shape() {
+/// The JPEG in a `CompressedImage` message, decoded: `(width, height, rgb)`.
+fn decode_jpeg(msg: &SimMessage) -> (usize, usize, Vec<u8>) {
+    use zune_jpeg::zune_core::bytestream::ZCursor;
+    let v = parse(msg);
+    let data = BASE64
+        .decode(v["data"].as_str().expect("string"))
+        .expect("base64");
+    let mut decoder = zune_jpeg::JpegDecoder::new(ZCursor::new(&data));
+    let rgb = decoder.decode().expect("a decodable JPEG");
+    let (w, h) = decoder.dimensions().expect("dimensions after decoding");
+    assert_eq!(rgb.len(), w * h * 3, "RGB output");
+    (w, h, rgb)
+}
+
+fn camera_only(image: ImageSim) -> Sim {
     let cfg = SimConfig {
-        image: Some(ImageSim {
-            bytes: 1234,
-            ..ImageSim::default()
-        }),
+        image: Some(image),
         ..no_sensors()
     };
-    let mut sim = Sim::new(&cfg, "r1", EPOCH_NS);
+    Sim::new(&cfg, "r1", EPOCH_NS)
+}
+
+#[test]
+fn compressed_image_shape() {
+    let mut sim = camera_only(ImageSim {
+        width: 200,
+        height: 100,
+        ..ImageSim::default()
+    });
     let msgs = run(&mut sim, Duration::from_millis(300));
     assert_eq!(msgs.len(), 3);
     let mut frames = Vec::new();
@@ -370,16 +389,108 @@ fn compressed_image_shape() {
         assert_eq!(keys(&v), set(&["header", "format", "data"]));
         check_header(&v["header"], m.stamp_ns, "camera");
         assert_eq!(v["format"], "jpeg");
-        let data = BASE64
-            .decode(v["data"].as_str().expect("string"))
-            .expect("base64");
-        assert_eq!(data.len(), 1234);
-        assert_eq!(&data[..3], [0xFF, 0xD8, 0xFF]);
-        assert_eq!(&data[1232..], [0xFF, 0xD9]);
-        frames.push(data);
+        // A real JPEG of the configured size, not bytes behind a JPEG header.
+        let (w, h, rgb) = decode_jpeg(m);
+        assert_eq!((w, h), (200, 100));
+        frames.push(rgb);
     }
+    // The robot patrols: its view changes from frame to frame.
     assert_ne!(frames[0], frames[1]);
     assert_ne!(frames[1], frames[2]);
+    // The default size.
+    let mut sim = camera_only(ImageSim::default());
+    let (w, h, _) = decode_jpeg(&sim.generate(0, Duration::ZERO));
+    assert_eq!((w, h), (320, 240));
+}
+
+/// The picture the robot's camera sends when it stands at `(x, y)` looking along `yaw`.
+fn view_from(x: f64, y: f64, yaw: f64) -> (usize, usize, Vec<u8>) {
+    let mut sim = camera_only(ImageSim::default());
+    sim.motion = Motion::Hold { x, y, yaw };
+    decode_jpeg(&sim.generate(0, Duration::ZERO))
+}
+
+fn pixel(rgb: &[u8], width: usize, col: usize, row: usize) -> [i32; 3] {
+    let at = (row * width + col) * 3;
+    [rgb[at], rgb[at + 1], rgb[at + 2]].map(i32::from)
+}
+
+fn distance(a: [i32; 3], b: [i32; 3]) -> i32 {
+    (0..3).map(|i| (a[i] - b[i]).abs()).sum()
+}
+
+/// Mean difference between horizontally adjacent pixels, per channel: a few levels for a
+/// picture of surfaces, about 85 for noise.
+fn roughness(rgb: &[u8], width: usize) -> f64 {
+    let (mut sum, mut n) = (0u64, 0u64);
+    for row in rgb.chunks_exact(width * 3) {
+        for (a, b) in row.iter().zip(&row[3..]) {
+            sum += u64::from(a.abs_diff(*b));
+            n += 1;
+        }
+    }
+    sum as f64 / n as f64
+}
+
+#[test]
+fn camera_sees_the_room_from_the_robot_pose() {
+    // From the room's centre looking along +x, the pillar at (4.2, 0) is straight ahead:
+    // orange in the middle of the picture, ceiling above, floor below.
+    let (w, h, rgb) = view_from(0.0, 0.0, 0.0);
+    assert!(
+        roughness(&rgb, w) < 12.0,
+        "roughness {}",
+        roughness(&rgb, w)
+    );
+    let [r, g, b] = pixel(&rgb, w, w / 2, h / 2);
+    assert!(
+        r > 140 && r > g + 40 && g > b + 20,
+        "pillar ahead: rgb {r},{g},{b}"
+    );
+    let top = pixel(&rgb, w, w / 2, 2);
+    assert!(
+        top.iter().all(|&c| c > 180) && top.iter().max().unwrap() - top.iter().min().unwrap() < 25,
+        "ceiling overhead: rgb {top:?}"
+    );
+    let bottom = pixel(&rgb, w, w / 2, h - 3);
+    assert!(
+        bottom.iter().all(|&c| c < 170) && distance(bottom, top) > 100,
+        "floor below: rgb {bottom:?}"
+    );
+    // Turned to look between the pillars (60°, at the north wall 11.5 m away): no orange
+    // in the middle any more, the green of the north wall.
+    let (w, h, rgb) = view_from(0.0, 0.0, std::f64::consts::FRAC_PI_3);
+    let [r, g, b] = pixel(&rgb, w, w / 2, h / 2);
+    assert!(g > r && g > b, "north wall ahead: rgb {r},{g},{b}");
+}
+
+#[test]
+fn a_wall_fills_more_of_the_picture_as_the_robot_nears_it() {
+    // Looking south at the wall y = -10, from 5 m and from 2 m away. In the middle column
+    // the wall's colour spans the rows between the ceiling's edge (3 m up) and the top of
+    // its skirting board (0.15 m up): (3 - 0.15) m / distance × focal length rows, clipped
+    // to the picture.
+    let south = -std::f64::consts::FRAC_PI_2;
+    let wall_rows = |distance_m: f64| {
+        let (w, h, rgb) = view_from(0.5, -10.0 + distance_m, south);
+        let middle = pixel(&rgb, w, w / 2, h / 2);
+        let rows = (0..h)
+            .filter(|&row| distance(pixel(&rgb, w, w / 2, row), middle) < 30)
+            .count();
+        (rows, h)
+    };
+    let focal = camera::CameraSpec::new(320, 240, 75).focal();
+    let (far, h) = wall_rows(5.0);
+    let expected = (3.0 - 0.15) / 5.0 * focal;
+    assert!(
+        (far as f64 - expected).abs() < 0.08 * expected,
+        "wall 5 m away covers {far} rows, expected about {expected:.0}"
+    );
+    let (near, _) = wall_rows(2.0);
+    assert!(
+        near > far + 60 && near as f64 > 0.9 * h as f64,
+        "wall 2 m away covers {near} rows (from 5 m: {far})"
+    );
 }
 
 /// Checks `v` against the registry's definition of `type_name`, recursively: exactly the

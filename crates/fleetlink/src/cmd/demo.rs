@@ -36,7 +36,7 @@ pub fn robot_config(hub_url: &str, i: u32) -> anyhow::Result<AgentConfig> {
     let yaml = format!(
         "hub: {hub_url}\nname: robot{i}\nheartbeat_ms: 500\nlocal_rosbridge: null\n\
          sim:\n  seed: {i}\n  laser_scan: {{ rate_hz: 10 }}\n  odometry: {{ rate_hz: 20 }}\n  pose: {{ rate_hz: 10 }}\n  \
-         point_cloud: {{ rate_hz: 5, points: 5000 }}\n  image: {{ rate_hz: 5, bytes: 30000 }}\n  \
+         point_cloud: {{ rate_hz: 5, points: 5000 }}\n  image: {{ rate_hz: 5 }}\n  \
          markers: {{ rate_hz: 1 }}\n"
     );
     Ok(AgentConfig::from_str(&yaml, "<demo>")?)
