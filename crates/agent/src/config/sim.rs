@@ -135,7 +135,7 @@ sensor!(
 /// Written out rather than made by `sensor!`: it keeps the removed `bytes` key only so that
 /// a config still setting it is refused with a pointer to `width` and `height`, instead of
 /// the generic "unknown field" error.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ImageSim {
     /// Local topic name. Default `/camera/image/compressed`.
@@ -151,7 +151,7 @@ pub struct ImageSim {
     pub quality: u32,
     /// The old size in bytes of the noise the camera sent before it rendered pictures.
     /// Never used: validation refuses a config that sets it, naming the keys to use.
-    #[serde(rename = "bytes")]
+    #[serde(rename = "bytes", skip_serializing)]
     pub removed_bytes: Option<serde::de::IgnoredAny>,
 }
 
