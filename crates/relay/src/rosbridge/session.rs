@@ -1319,6 +1319,19 @@ async fn write_loop<K: PartsSink>(
             continue;
         }
         if outbox.is_closed() {
+            // The session has ended. Its last word — a close frame with its code, queued
+            // before the router let go of the outbox — may still wait in `replies`: sent
+            // as it is, not replaced by a close without a code.
+            while let Ok(r) = replies.try_recv() {
+                match r {
+                    Reply::Frame(m) => {
+                        if sink.feed(m).await.is_err() {
+                            return;
+                        }
+                    }
+                    Reply::Close(c) => return close_with(&mut sink, c).await,
+                }
+            }
             let _ = sink.close().await;
             return;
         }
