@@ -16,6 +16,9 @@
 # PROBE_MS (default 200, as the agent's link estimator probes; 0: heartbeat pings only).
 # Pose subscribers: one per robot up to 1,000 (the first 1,000 robots' beyond that: two
 # connections per robot would pass the open-files limit of 20,000 at 10,000 robots).
+# SERVER=floor runs each size against `fleetlink bench fleet-floor` instead of a hub: the
+# least a relay does for this traffic, the floor under the hub's figure (same machine,
+# same generator; run both back to back and compare).
 # Results: one JSON line per run in $OUT (default target/bench-fleet.jsonl) and a table on
 # stdout. The hub trusts robots from 127.0.0.0/8 (--robot-network); subscribers use an
 # admin operator token minted in its data directory.
@@ -41,6 +44,20 @@ trap cleanup EXIT
 
 start_hub() {
     rm -rf "$tmp/hub-data"
+    if [ "${SERVER:-hub}" = floor ]; then
+        token=floor
+        : >"$tmp/hub.log"
+        "$bin" bench fleet-floor --listen 127.0.0.1:0 >"$tmp/hub.log" 2>&1 &
+        hub_pid=$!
+        for _ in $(seq 100); do
+            addr="$(sed -nE 's/^listening on ([0-9.:]+)$/\1/p' "$tmp/hub.log")"
+            [ -n "$addr" ] && return 0
+            sleep 0.1
+        done
+        echo "the floor did not start:" >&2
+        cat "$tmp/hub.log" >&2
+        exit 1
+    fi
     token="$("$bin" admin --data-dir "$tmp/hub-data" token operator bench --group admin)"
     local hb=()
     [ -n "${HEARTBEAT_MS:-}" ] && hb=(--heartbeat-ms "$HEARTBEAT_MS")

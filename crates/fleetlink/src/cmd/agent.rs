@@ -75,19 +75,7 @@ pub fn check(
         "options the agent runs with",
         AgentOptions::from_config(&cfg),
     );
-    let defs = if args.msg_path.is_empty() {
-        "message definitions: the bundled ones".to_owned()
-    } else {
-        format!(
-            "message definitions: the bundled ones and --msg-path {}",
-            args.msg_path
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        )
-    };
-    r.step(defs, crate::transcoder(&args.msg_path));
+    r.definitions(&args.msg_path);
     if let Some(tls) = &cfg.tls {
         if let Some(ca) = &tls.ca {
             r.step(

@@ -49,6 +49,16 @@ impl Report {
         }
     }
 
+    /// The message definitions a start would load: the bundled ones and `--msg-path`.
+    pub fn definitions(&mut self, msg_path: &[std::path::PathBuf]) {
+        let mut what = "message definitions: the bundled ones".to_owned();
+        if !msg_path.is_empty() {
+            let dirs: Vec<String> = msg_path.iter().map(|p| p.display().to_string()).collect();
+            let _ = write!(what, " and --msg-path {}", dirs.join(", "));
+        }
+        self.step(what, crate::transcoder(msg_path));
+    }
+
     /// Prints the steps, then `effective` (the configuration as it would run), then the
     /// verdict; an error when anything was wrong, so the process exits 1.
     pub fn finish(self, program: &str, effective: &str) -> anyhow::Result<()> {

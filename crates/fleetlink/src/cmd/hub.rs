@@ -200,17 +200,7 @@ pub fn check(
     matches: &clap::ArgMatches,
 ) -> anyhow::Result<()> {
     let mut r = super::check::Report::default();
-    let _config = args.config();
-    let defs = if args.msg_path.is_empty() {
-        "message definitions: the bundled ones".to_owned()
-    } else {
-        format!(
-            "message definitions: the bundled ones and {} --msg-path director{}",
-            args.msg_path.len(),
-            if args.msg_path.len() == 1 { "y" } else { "ies" }
-        )
-    };
-    r.step(defs, crate::transcoder(&args.msg_path));
+    r.definitions(&args.msg_path);
     if let Some(files) = args.config().tls {
         let what = format!(
             "TLS certificate {} and key {}",

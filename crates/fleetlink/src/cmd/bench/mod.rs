@@ -18,6 +18,8 @@
 //! - [`fleet`]: the `fleet` subcommand: N simulated robots with T topics each from one
 //!   process against one or several hubs: throughput, latency, connect time, hub CPU and
 //!   memory per robot.
+//! - [`fleet_floor`]: the `fleet-floor` subcommand: the least a hub does for the fleet
+//!   bench's traffic, the floor under the hub's figure in `fleet`.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
@@ -28,6 +30,7 @@ mod conn;
 mod copy_floor;
 mod delivery;
 mod fleet;
+mod fleet_floor;
 mod journal;
 mod publisher;
 mod reconnect;
@@ -68,6 +71,10 @@ enum Command {
     /// parsing, checks or routing) serving until killed: measured with `delivery
     /// --protocol rosbridge-json`, the floor under the hub's figure.
     WsFloor(ws_floor::Args),
+    /// The least a hub does to carry `bench fleet`'s traffic (`fleetlink.v1` handshake,
+    /// pongs, interest, messages passed to the matching subscribers; no auth, QoS, acks
+    /// or statistics): the floor under the hub's figure in the fleet bench.
+    FleetFloor(fleet_floor::Args),
     /// The agent thread's heartbeat lateness and an adapter's latency while the durable
     /// outbox compacts a large journal on a simulated slow disk (test builds only).
     Journal(journal::Args),
@@ -82,6 +89,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Delivery(a) => delivery::run(a),
         Command::CopyFloor(a) => copy_floor::run(a),
         Command::WsFloor(a) => ws_floor::run(a),
+        Command::FleetFloor(a) => fleet_floor::run(a),
         Command::Journal(a) => journal::run(a),
     }
 }
