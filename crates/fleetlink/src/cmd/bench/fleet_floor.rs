@@ -21,7 +21,7 @@ use bytes::BytesMut;
 use fleetlink_proto::SUBPROTOCOL;
 use fleetlink_proto::frame::{Frame, SUBSCRIBE_REGEX};
 use fleetlink_relay::websocket::ClientMessage;
-use futures_util::{SinkExt, StreamExt};
+use futures_util::StreamExt;
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::Message;
 use tokio_tungstenite::tungstenite::handshake::server::{ErrorResponse, Request, Response};
@@ -94,23 +94,8 @@ async fn serve(tcp: tokio::net::TcpStream, shared: Arc<Shared>) {
     else {
         return;
     };
-    let (mut sink, mut stream) = fleetlink_relay::websocket::server(ws.into_inner(), MAX_MESSAGE);
-    let (tx, mut rx) = mpsc::unbounded_channel::<Message>();
-    tokio::spawn(async move {
-        while let Some(m) = rx.recv().await {
-            if sink.feed(m).await.is_err() {
-                return;
-            }
-            while let Ok(m) = rx.try_recv() {
-                if sink.feed(m).await.is_err() {
-                    return;
-                }
-            }
-            if sink.flush().await.is_err() {
-                return;
-            }
-        }
-    });
+    let (sink, mut stream) = fleetlink_relay::websocket::server(ws.into_inner(), MAX_MESSAGE);
+    let tx = super::ws_floor::spawn_writer(sink);
     let me = Arc::new(SubLink {
         out: tx,
         next_alias: Mutex::new(0),
@@ -135,12 +120,9 @@ async fn serve(tcp: tokio::net::TcpStream, shared: Arc<Shared>) {
                     features: 0,
                 }
                 .encode(&mut reply),
-                Frame::Ping { id, sent_ns } => Frame::Pong {
-                    id,
-                    echo_ns: sent_ns,
-                    responder_ns: fleetlink_relay::unix_nanos(),
+                Frame::Ping { id, sent_ns } => {
+                    reply.extend_from_slice(&super::conn::pong(id, sent_ns))
                 }
-                .encode(&mut reply),
                 Frame::Subscribe { pattern, flags, .. } => {
                     let matches: Box<dyn Fn(&str) -> bool + Send + Sync> =
                         if flags & SUBSCRIBE_REGEX != 0 {

@@ -110,11 +110,11 @@ impl Received for ClientMessage {
     }
 }
 
-async fn relay<K, S, M>(mut sink: K, mut stream: S, subscribers: Subscribers)
+/// A connection's writer task, as the hub has one: writes what is queued, flushing when
+/// nothing more is; the returned sender queues for it. Shared by the floors.
+pub(super) fn spawn_writer<K>(mut sink: K) -> mpsc::UnboundedSender<Message>
 where
     K: Sink<Message, Error = WsError> + Unpin + Send + 'static,
-    S: Stream<Item = Result<M, WsError>> + Unpin,
-    M: Received,
 {
     let (tx, mut rx) = mpsc::unbounded_channel::<Message>();
     tokio::spawn(async move {
@@ -132,6 +132,16 @@ where
             }
         }
     });
+    tx
+}
+
+async fn relay<K, S, M>(sink: K, mut stream: S, subscribers: Subscribers)
+where
+    K: Sink<Message, Error = WsError> + Unpin + Send + 'static,
+    S: Stream<Item = Result<M, WsError>> + Unpin,
+    M: Received,
+{
+    let tx = spawn_writer(sink);
     // The subscribers as of this connection's last publish; taken again after a new
     // subscription anywhere would need a shared generation, which a floor can do without:
     // the bench subscribes before it publishes.
