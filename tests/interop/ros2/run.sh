@@ -428,8 +428,27 @@ ns_run 40 "$python" "$here/hub_peer.py" check-late --hub-url "$hub_url" --robot 
 # robot's service cross again.
 kill -0 "$agent_pid" 2>/dev/null && echo "ok: the agent is still running" || fail "the agent died"
 ns_kill "agent --config $tmp/agent.yaml"
-# Restarted as on a Humble robot: ros_discovery_info in Humble's layout (24-byte GIDs).
-ns_bg env ROS_DISTRO=humble "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent2.log" 2>&1 &
+# Restarted as on a Humble robot: ros_discovery_info in Humble's layout (24-byte GIDs),
+# and from a ROS Gateway (rosgw) JSON file naming the same exchanges (docs/rosgw.md; the
+# fleet's services by name, as rosgw has no patterns), the token from a file.
+names_json() { local t sep=""; for t in "$@"; do printf '%s{"name": "%s"}' "$sep" "$t"; sep=", "; done; }
+cat >"$tmp/agent-rosgw.json" <<EOF
+[
+  {
+    "title": "$robot",
+    "address": "ws://$hub_addr/",
+    "publish": [$(names_json /scan /points /battery /robot_description /chatter /late_topic /fdds_up /idle_points)],
+    "subscribe": [$(names_json /cmd_vel /announce /chatter /fdds_down /oneshot)],
+    "expose-service": [{"service": "/add_two_ints"}, {"service": "fdds_add_two_ints", "serviceType": "example_interfaces/srv/AddTwoInts"}],
+    "reserve-service": [{"service": "/cloud/greet"}],
+    "expose-action": [{"action": "/fibonacci", "actionType": "example_interfaces/action/Fibonacci"}, {"action": "/fdds_fibonacci"}],
+    "reserve-action": [{"action": "/cloud/fib"}]
+  }
+]
+EOF
+printf '%s\n' "$robot_token" >"$tmp/robot.token"
+ns_bg env ROS_DISTRO=humble "$bin" agent --config "$tmp/agent-rosgw.json" --token-file "$tmp/robot.token" --no-local \
+    --msg-path "$tmp/msgs" >"$tmp/agent2.log" 2>&1 &
 pids+=($!)
 agent_pid=${pids[-1]}
 ns_run 60 "$python" "$here/hub_peer.py" check-up --hub-url "$hub_url" --robot "$robot" || fail "check-up after the agent restarted"
@@ -441,7 +460,7 @@ ns_bg "$python" "$here/ros2_peer.py" announce-node --node /humble_node --gid 24 
 pids+=($!)
 wait_for_line "$tmp/humble.log" '^(announce-node) ready' "the Humble node's announcement" "${pids[-1]}" >/dev/null \
     || fail "announce-node"
-ns_kill "agent --config $tmp/agent.yaml"
+ns_kill "agent --config $tmp/agent-rosgw.json"
 ns_bg "$bin" agent --config "$tmp/agent.yaml" --msg-path "$tmp/msgs" >"$tmp/agent3.log" 2>&1 &
 pids+=($!)
 agent_pid=${pids[-1]}

@@ -24,6 +24,7 @@
 mod locate;
 mod ros1;
 mod ros2;
+mod rosgw;
 mod sim;
 mod validate;
 
@@ -338,6 +339,15 @@ impl AgentConfig {
     }
 
     fn parse_with(text: &str, file_name: &str, overrides: &Overrides) -> Result<Self, ConfigError> {
+        // A ROS Gateway JSON file describes the same agent in rosgw's terms.
+        if let Some(converted) = rosgw::parse(text) {
+            let mut config = converted.map_err(|p| field_error(p, text, file_name))?;
+            overrides.apply(&mut config);
+            // What the conversion produced is checked like a YAML file's fields; a problem
+            // left (say with `--hub`) names the agent's field, as there is no line for it.
+            validate::validate(&config).map_err(|p| flag_or_field(p, overrides))?;
+            return Ok(config);
+        }
         let mut config: Self =
             serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
         overrides.apply(&mut config);
@@ -345,18 +355,7 @@ impl AgentConfig {
             if overrides.flag_for(&problem.path).is_some() {
                 return flag_or_field(problem, overrides);
             }
-            let (line, column) = LocationTree::parse(text).map_or((1, 1), |tree| {
-                tree.position_of(&problem.path, problem.at_key)
-            });
-            ConfigError::Field {
-                at: SourcePos {
-                    file: file_name.to_owned(),
-                    line,
-                    column,
-                },
-                field: problem.path.to_string(),
-                message: problem.message,
-            }
+            field_error(problem, text, file_name)
         })?;
         Ok(config)
     }
@@ -443,6 +442,22 @@ pub enum ConfigError {
     /// A value given on the command line (`flag`, e.g. `--hub`) fails a check.
     #[error("{flag}: {message}")]
     Flag { flag: &'static str, message: String },
+}
+
+/// A check's problem as an error at the field's line and column in `text`.
+fn field_error(problem: validate::Problem, text: &str, file_name: &str) -> ConfigError {
+    let (line, column) = LocationTree::parse(text).map_or((1, 1), |tree| {
+        tree.position_of(&problem.path, problem.at_key)
+    });
+    ConfigError::Field {
+        at: SourcePos {
+            file: file_name.to_owned(),
+            line,
+            column,
+        },
+        field: problem.path.to_string(),
+        message: problem.message,
+    }
 }
 
 /// A check's problem as an error naming the command-line flag that set the field, or the

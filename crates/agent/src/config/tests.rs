@@ -876,3 +876,141 @@ fn shape_errors_show_the_right_spelling() {
         assert!(e.to_string().contains(example), "{text:?}: {e}");
     }
 }
+
+// --- ROS Gateway (rosgw) JSON files
+
+fn rosgw_err(json: &str) -> String {
+    match AgentConfig::from_str(json, "rosgw.json") {
+        Ok(cfg) => panic!("expected an error for {json:?}, got {cfg:?}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn rosgw_example_from_its_repository_loads() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let cfg = AgentConfig::load(&root.join("examples/rosgw/example_cfg.json"))
+        .expect("rosgw's example_cfg.json");
+    assert_eq!(cfg.hub, vec!["ws://172.28.165.227:9001".to_owned()]);
+    assert_eq!(cfg.name.to_string(), "jackal1");
+    let ros2 = cfg.ros2.expect("a rosgw file configures the ROS 2 bridge");
+    assert_eq!(
+        ros2.publish.include,
+        vec!["/kitti/camera_color_left/image_raw"]
+    );
+    assert_eq!(ros2.subscribe, vec!["/cmd_vel"]);
+    // cbor-raw: the link carries the raw serialization anyway, nothing to set.
+    assert!(cfg.topics.is_empty(), "{:?}", cfg.topics);
+    assert!(ros1_is_unset(&cfg.ros1));
+}
+
+fn ros1_is_unset(ros1: &Option<Ros1Config>) -> bool {
+    ros1.is_none()
+}
+
+#[test]
+fn rosgw_file_and_its_yaml_twin_are_the_same_agent() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let json = AgentConfig::load(&root.join("examples/rosgw/robot.json")).expect("robot.json");
+    let yaml = AgentConfig::load(&root.join("examples/rosgw/robot.yaml")).expect("robot.yaml");
+    assert_eq!(json, yaml);
+    // The inactive entry (another address, /debug) is skipped, as rosgw skips it.
+    let ros2 = json.ros2.as_ref().unwrap();
+    assert!(!ros2.publish.include.iter().any(|p| p.contains("debug")));
+}
+
+#[test]
+fn rosgw_single_entry_object_and_overrides() {
+    let json = r#"{"address": "ws://gw:9001", "publish": [{"name": "/a", "messageType": "std_msgs/msg/String"}]}"#;
+    let overrides = Overrides {
+        hub: Some(vec!["wss://hub.example:8443".into()]),
+        name: None,
+    };
+    let cfg = AgentConfig::parse_with(json, "rosgw.json", &overrides).unwrap();
+    assert_eq!(cfg.hub, vec!["wss://hub.example:8443".to_owned()]);
+    assert_eq!(cfg.name.to_string(), "robot1", "no title: the default name");
+    assert_eq!(cfg.ros2.unwrap().publish.include, vec!["/a"]);
+}
+
+#[test]
+fn rosgw_errors_name_the_field_and_why() {
+    let at = |json: &str| rosgw_err(json);
+    // Unknown key in an entry, with the known ones.
+    let e = at(r#"[{"address": "ws://gw:9001", "publsh": []}]"#);
+    assert!(e.starts_with("rosgw.json:1:30: [0].publsh:"), "{e}");
+    assert!(e.contains("trans-publish"), "{e}");
+    // Unknown key in an item, at its line.
+    let e =
+        at("[{\"address\": \"ws://gw:9001\",\n  \"publish\": [{\"name\": \"/a\", \"qos\": 1}]}]");
+    assert!(e.starts_with("rosgw.json:2:30: [0].publish[0].qos:"), "{e}");
+    assert!(
+        e.contains("name, messageType, type, israw, compression"),
+        "{e}"
+    );
+    // A missing name.
+    let e = at(r#"[{"address": "ws://gw:9001", "subscribe": [{"type": "std_msgs/msg/String"}]}]"#);
+    assert!(
+        e.contains("[0].subscribe[0].name: `name` is missing"),
+        "{e}"
+    );
+    // A bad ROS name.
+    let e = at(r#"[{"address": "ws://gw:9001", "publish": [{"name": "/bad name"}]}]"#);
+    assert!(e.contains("[0].publish[0].name:"), "{e}");
+    // Two gateways: one link to one hub.
+    let e = at(r#"[{"address": "ws://a:9001"}, {"address": "ws://b:9001"}]"#);
+    assert!(
+        e.contains("[1].address: [0].address is \"ws://a:9001\""),
+        "{e}"
+    );
+    assert!(e.contains("one agent per hub"), "{e}");
+    // Not a WebSocket URL.
+    let e = at(r#"[{"address": "http://gw:9001"}]"#);
+    assert!(e.contains("[0].address:"), "{e}");
+    // ROS-to-REST bindings have no counterpart.
+    let e = at(
+        r#"[{"service_name": "detect", "service_uri": "http://x/detect/", "service_method": "POST", "request_rule": {}, "response_rule": {}}]"#,
+    );
+    assert!(e.contains("ROS-to-REST binding"), "{e}");
+    // An unknown compression.
+    let e =
+        at(r#"[{"address": "ws://gw:9001", "publish": [{"name": "/a", "compression": "png"}]}]"#);
+    assert!(
+        e.contains("[0].publish[0].compression: compression \"png\""),
+        "{e}"
+    );
+    // Nothing active.
+    let e = at(r#"[{"address": "ws://gw:9001", "active": false}]"#);
+    assert!(e.contains("no active rosgw entry"), "{e}");
+    // A title that cannot be a robot name.
+    let e = at(r#"[{"address": "ws://gw:9001", "title": "my robot"}]"#);
+    assert!(
+        e.contains("[0].title: the agent takes the title as the robot's name"),
+        "{e}"
+    );
+}
+
+#[test]
+fn rosgw_compression_and_trans_publish() {
+    let json = r#"[{"address": "ws://gw:9001", "compression": "rawzip",
+        "trans-publish": [{"name": "/odom", "messageType": "nav_msgs/msg/Odometry", "remote_name": "odom_remote"}],
+        "publish": [{"name": "/scan", "compression": "cbor"}]}]"#;
+    let cfg = AgentConfig::from_str(json, "rosgw.json").unwrap();
+    assert_eq!(
+        cfg.remap.get("/odom").map(String::as_str),
+        Some("/odom_remote")
+    );
+    // The entry's compression is every item's unless the item says otherwise.
+    assert_eq!(
+        cfg.topics.get("/odom").and_then(|q| q.compression),
+        Some(fleetlink_qos::Compression::Zstd)
+    );
+    assert!(!cfg.topics.contains_key("/scan"), "cbor: nothing to set");
+}
+
+#[test]
+fn yaml_is_not_mistaken_for_rosgw() {
+    // JSON that is an agent config (a mapping of the agent's keys) is read as one.
+    let cfg = AgentConfig::from_str(r#"{"name": "r2", "hub": "ws://h:1"}"#, "a.json").unwrap();
+    assert_eq!(cfg.name.to_string(), "r2");
+    assert!(cfg.ros2.is_none());
+}

@@ -198,7 +198,7 @@ fn validate_hubs(cfg: &AgentConfig) -> Result<(), Problem> {
 }
 
 /// A `ws://` or `wss://` URL that names a host.
-fn check_hub_url(url: &str) -> Result<(), String> {
+pub(crate) fn check_hub_url(url: &str) -> Result<(), String> {
     if !(url.starts_with("ws://") || url.starts_with("wss://")) {
         return Err(format!(
             "must be a ws:// or wss:// URL such as ws://hub.example:8080, got {url:?}"

@@ -19,9 +19,15 @@ pub struct Args {
     /// docs/config.md, "Robot names".
     #[arg(long)]
     pub name: Option<RobotName>,
-    /// YAML configuration file (see docs/config.md). Without it, defaults apply.
+    /// Configuration file: the agent's YAML (docs/config.md) or a ROS Gateway JSON file
+    /// (docs/rosgw.md). Without it, defaults apply.
     #[arg(long)]
     pub config: Option<PathBuf>,
+    /// A file holding the credential presented to the hub (overrides `token:`), so the
+    /// secret stays out of the configuration and the command line; surrounding whitespace
+    /// is ignored. A ROS Gateway file has no place for one: give it here.
+    #[arg(long, value_name = "FILE")]
+    pub token_file: Option<PathBuf>,
     /// Address of the local rosbridge listener (overrides `local_rosbridge.listen`).
     #[arg(long)]
     pub local_listen: Option<SocketAddr>,
@@ -46,6 +52,19 @@ pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
         name: args.name.clone(),
     };
     let mut cfg = AgentConfig::load_with(args.config.as_deref(), &overrides)?;
+    if let Some(path) = &args.token_file {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| anyhow::anyhow!("--token-file {}: cannot read it: {e}", path.display()))?;
+        let token = text.trim();
+        if token.is_empty() {
+            anyhow::bail!(
+                "--token-file {}: the file is empty; put the robot's token in it (`fleetlink \
+                 admin … token robot NAME` prints one)",
+                path.display()
+            );
+        }
+        cfg.token = token.to_owned();
+    }
     if let Some(addr) = args.local_listen {
         let l = cfg.local_rosbridge.get_or_insert_with(Default::default);
         l.enabled = true;

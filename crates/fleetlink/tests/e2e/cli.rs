@@ -423,6 +423,68 @@ fn agent_check_validates_and_prints_the_effective_configuration() {
     assert!(!text.contains("the configuration is valid"), "{text}");
 }
 
+/// A ROS Gateway JSON file is checked like a YAML file: `--check` prints the agent it
+/// describes (the token from `--token-file`, hidden), and a bad entry is named by its
+/// field and line; an empty token file is refused with what to put in it.
+#[test]
+fn agent_check_takes_a_rosgw_file_and_a_token_file() {
+    let dir = temp_dir("rosgwcheck");
+    let file = dir.join("rosgw.json");
+    std::fs::write(
+        &file,
+        r#"[{"title": "jackal1", "address": "ws://127.0.0.1:1/",
+  "publish": [{"name": "/scan", "messageType": "sensor_msgs/msg/LaserScan"}],
+  "expose-service": [{"service": "add_two_ints"}]}]"#,
+    )
+    .unwrap();
+    let token = dir.join("robot.token");
+    std::fs::write(&token, "  s3cret-token\n").unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--check", "--config"])
+        .arg(&file)
+        .arg("--token-file")
+        .arg(&token)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("name: jackal1"), "{text}");
+    assert!(text.contains("- /scan") && text.contains("- /add_two_ints"), "{text}");
+    assert!(text.contains("token: (set, 12 characters)"), "{text}");
+    assert!(!text.contains("s3cret-token"), "{text}");
+
+    std::fs::write(&token, "\n").unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--check", "--config"])
+        .arg(&file)
+        .arg("--token-file")
+        .arg(&token)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("the file is empty"), "{text}");
+
+    std::fs::write(
+        &file,
+        "[{\"address\": \"ws://127.0.0.1:1/\",\n  \"publish\": [{\"name\": \"/scan\", \"rate\": 5}]}]",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args(["agent", "--check", "--config"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("rosgw.json:2:"), "{text}");
+    assert!(text.contains("[0].publish[0].rate"), "{text}");
+}
+
 /// `fleetlink hub --check` reads what the hub would read (here a missing TLS key and a
 /// bad database URL) without binding its port, and lists every option with its value.
 #[test]
