@@ -48,6 +48,8 @@ pub enum RouteError {
 pub enum ClientKind {
     /// A rosbridge v2 client (browser, roslibpy, viewer).
     Rosbridge,
+    /// A Foxglove WebSocket client (Foxglove, Lichtblick).
+    Foxglove,
     /// A robot's agent on a `fleetlink.v1` link.
     Agent { robot: String },
     /// Something inside this process (simulator, hub link of an agent).
@@ -476,6 +478,10 @@ impl State {
     /// Tells those who follow every topic that `name` changed.
     fn topic_changed(&self, name: &TopicName) {
         for w in &self.watchers {
+            // A watch only the router holds belongs to a participant that left.
+            if Arc::strong_count(w) == 1 {
+                continue;
+            }
             w.mark(name);
         }
     }
@@ -577,6 +583,9 @@ impl Router {
         for name in st.topics.keys() {
             w.mark(name);
         }
+        // Watches of participants that left (only the router holds them) go now, so a
+        // hub whose viewers come and go keeps no list that grows with them.
+        st.watchers.retain(|w| Arc::strong_count(w) > 1);
         st.watchers.push(w.clone());
         w
     }
