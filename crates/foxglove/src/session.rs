@@ -400,6 +400,14 @@ impl Session {
                 s.channel_id
             ));
         };
+        // The protocol allows one subscription per channel: a second would deliver every
+        // message twice.
+        if let Some((id, _)) = self.subs.iter().find(|(_, x)| x.channel == s.channel_id) {
+            return Err(format!(
+                "subscribe: channel {} ({name}) is already subscribed as {id}",
+                s.channel_id
+            ));
+        }
         self.check("subscribe", name.as_str(), GateOp::Subscribe)?;
         let ch = &self.channels[&name];
         let (topic, encoding) = (ch.topic, ch.form.encoding);

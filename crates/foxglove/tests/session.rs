@@ -117,6 +117,21 @@ async fn two_subscribers_get_the_same_cdr_payload_under_their_own_subscription_i
     })
     .await
     .expect("both subscribed");
+    // One subscription per channel: a second is refused by name.
+    let c = &mut clients[0];
+    send(
+        c,
+        json!({"op": "subscribe", "subscriptions": [{"id": 2, "channelId": 1}]}),
+    )
+    .await;
+    let st = next_op(c, "status").await;
+    assert!(
+        st["message"]
+            .as_str()
+            .unwrap()
+            .contains("already subscribed as 1"),
+        "{st}"
+    );
     topic.publish(robot, 1, 5, Payload::json(r#"{"data":"hello"}"#));
     let want = router
         .transcoder()

@@ -1064,3 +1064,26 @@ fn gc_topic(st: &mut State, name: &TopicName) {
         }
     }
 }
+
+#[cfg(test)]
+mod watch_tests {
+    use super::*;
+
+    #[test]
+    fn a_topics_watch_nobody_holds_is_let_go() {
+        // Viewers that come and go (each Foxglove session holds one watch) leave nothing
+        // behind in the router.
+        let router = Router::default();
+        for _ in 0..10 {
+            drop(router.watch_topics());
+        }
+        let kept = router.watch_topics();
+        assert_eq!(router.lock().watchers.len(), 1);
+        let (c, _) = router.connect(ClientKind::Foxglove, None);
+        let name = TopicName::parse("/a").unwrap();
+        router
+            .advertise(c, &name, Schema::named("std_msgs/msg/Empty"), false)
+            .unwrap();
+        assert_eq!(kept.take(), vec![name]);
+    }
+}
