@@ -2,6 +2,11 @@
 //! clients: calls go through the router's call table to whoever provides the service (a
 //! robot, over its link), parameters are read as `/rosapi/get_param` reads them.
 //!
+//! A parameter in a robot's namespace (`/robot1/max_speed`) is read from that robot when
+//! its agent provides parameters (`/robot1/rosapi/get_param` is in the call table, as a
+//! ROS 1 or ROS 2 robot's does): the same forwarding a rosbridge client's
+//! `/rosapi/get_param` gets, answered once every robot asked has answered.
+//!
 //! The client hears of every service it may call (the gate's `call_service` right) as
 //! the call table's watch reports them; actions are not offered (the protocol has no
 //! goals). A call's request may come as `json`, `cdr` or `ros1`; it goes to the provider
@@ -32,6 +37,20 @@ pub(crate) struct SessionServices {
     by_id: HashMap<u32, Arc<ServiceInfo>>,
     next_id: u32,
     calls: HashMap<CallId, Made>,
+    /// `getParameters` waiting for robots, by a key of this session's.
+    gatherings: HashMap<u64, Gathering>,
+    next_gathering: u64,
+    /// Robot parameter reads in flight: their gathering and the parameter's full name.
+    param_calls: HashMap<CallId, (u64, String)>,
+}
+
+/// A `getParameters` answered once the robots asked have answered.
+struct Gathering {
+    id: Option<String>,
+    values: Vec<(String, Value)>,
+    /// Reads that failed, for the `status` that goes with the answer.
+    failed: Vec<String>,
+    waiting: usize,
 }
 
 /// A call this client made.
@@ -221,6 +240,14 @@ impl Session {
         else {
             return;
         };
+        if let Some((key, name)) = self.services.param_calls.remove(&id) {
+            let read = match (status, payload) {
+                (CallStatus::Ok, Some(p)) => robot_param_value(&p)
+                    .ok_or_else(|| format!("{name}: the robot's answer has no value")),
+                (status, _) => Err(format!("{name}: {}", outcome_text(status, &text))),
+            };
+            return self.param_read(key, name, read).await;
+        }
         let Some(m) = self.services.calls.remove(&id) else {
             return;
         };
@@ -267,28 +294,18 @@ impl Session {
         }
     }
 
-    /// `getParameters`: each name read as `/rosapi/get_param` reads it (the hub's
-    /// parameter store, the gate's read right per name); no names: every parameter the
-    /// client may read. Names the client may not read, or that are not set, are left out,
-    /// as the protocol has no per-parameter error; a `status` names the refused ones.
+    /// `getParameters`: each name read as `/rosapi/get_param` reads it — from the robot
+    /// whose namespace it is in when that robot provides parameters, otherwise from the
+    /// hub's parameter store — under the gate's read right per name; no names: every hub
+    /// parameter the client may read. Names the client may not read, or that are not set,
+    /// are left out, as the protocol has no per-parameter error; a `status` names the
+    /// refused and failed ones.
     pub(crate) async fn get_parameters(&mut self, names: Vec<String>, id: Option<String>) {
-        let Some(gate) = self.gate.as_mut() else {
+        if self.gate.is_none() {
             return self.error("getParameters: not authenticated").await;
-        };
-        let mut ask = |service: &str, args: Value| {
-            let mut visible = |n: &str, op| gate.allows(n, op);
-            let mut changed = |_: &str, _: &str, _: usize| {};
-            rosapi::answer(
-                &self.router,
-                "/fleetlink",
-                service,
-                &args,
-                &mut visible,
-                &mut changed,
-            )
-        };
+        }
         let names = if names.is_empty() {
-            match ask("/rosapi/get_param_names", json!({})) {
+            match self.rosapi("/rosapi/get_param_names", json!({})) {
                 Answer::Values(v) => v["names"]
                     .as_array()
                     .map(|a| {
@@ -302,29 +319,126 @@ impl Session {
         } else {
             names
         };
-        let mut values = Vec::new();
-        let mut refused = Vec::new();
+        let mut g = Gathering {
+            id,
+            values: Vec::new(),
+            failed: Vec::new(),
+            waiting: 0,
+        };
+        let mut at_robots = Vec::new();
         for name in names {
-            match ask("/rosapi/has_param", json!({ "name": name })) {
+            if let Some((provider, rest)) = self.robot_param(&name) {
+                at_robots.push((name, provider, rest));
+                continue;
+            }
+            match self.rosapi("/rosapi/has_param", json!({ "name": name })) {
                 Answer::Values(v) if v["exists"] == json!(true) => {}
                 Answer::Failed(e) => {
-                    refused.push(e);
+                    g.failed.push(e);
                     continue;
                 }
                 _ => continue,
             }
-            if let Answer::Values(v) = ask("/rosapi/get_param", json!({ "name": name })) {
-                // rosapi gives the value as JSON text.
-                let text = v["value"].as_str().unwrap_or("null");
-                let value = serde_json::from_str(text).unwrap_or_else(|_| json!(text));
-                values.push((name, value));
+            if let Answer::Values(v) = self.rosapi("/rosapi/get_param", json!({ "name": name }))
+                && let Some(value) = param_value(&v)
+            {
+                g.values.push((name, value));
             }
         }
-        if !refused.is_empty() {
-            self.error(&format!("getParameters: {}", refused.join("; ")))
+        let key = self.services.next_gathering;
+        self.services.next_gathering += 1;
+        for (name, provider, rest) in at_robots {
+            let gate = self.gate.as_mut().expect("checked above");
+            if !gate.allows(&name, GateOp::Subscribe) {
+                g.failed
+                    .push(format!("not allowed to read parameter {name}"));
+                continue;
+            }
+            let body = json!({ "name": rest }).to_string();
+            match self.router.calls.call(
+                self.client,
+                &provider,
+                Payload::json(body),
+                CallOptions::default(),
+            ) {
+                Ok(call) => {
+                    self.services.param_calls.insert(call, (key, name));
+                    g.waiting += 1;
+                }
+                Err(e) => g.failed.push(format!("{name}: {}", e.text)),
+            }
+        }
+        if g.waiting == 0 {
+            return self.answer_parameters(g).await;
+        }
+        self.services.gatherings.insert(key, g);
+    }
+
+    /// One of the hub's own `/rosapi` services, under this client's gate (reads only:
+    /// nothing is changed, so nothing is audited).
+    fn rosapi(&mut self, service: &str, args: Value) -> Answer {
+        let Some(gate) = self.gate.as_mut() else {
+            return Answer::Failed("not authenticated".into());
+        };
+        let mut visible = |n: &str, op| gate.allows(n, op);
+        let mut changed = |_: &str, _: &str, _: usize| {};
+        rosapi::answer(
+            &self.router,
+            "/fleetlink",
+            service,
+            &args,
+            &mut visible,
+            &mut changed,
+        )
+    }
+
+    /// The robot that answers for parameter `name` (its `rosapi/get_param` service and
+    /// the name as the robot sees it), when there is one.
+    fn robot_param(&self, name: &str) -> Option<(TopicName, String)> {
+        let name = fleetlink_relay::params::param_name(name).ok()?;
+        let (robot, rest) = match name[1..].find('/') {
+            Some(i) => (&name[1..=i], &name[i + 1..]),
+            None => return None,
+        };
+        let provider = TopicName::parse(&format!("/{robot}/rosapi/get_param")).ok()?;
+        self.router.calls.service(&provider)?;
+        Some((provider, rest.to_owned()))
+    }
+
+    /// One robot's answer to a parameter read of gathering `key`.
+    async fn param_read(&mut self, key: u64, name: String, read: Result<Value, String>) {
+        let Some(g) = self.services.gatherings.get_mut(&key) else {
+            return;
+        };
+        match read {
+            Ok(v) => g.values.push((name, v)),
+            Err(e) => g.failed.push(e),
+        }
+        g.waiting -= 1;
+        if g.waiting == 0 {
+            let g = self.services.gatherings.remove(&key).expect("present");
+            self.answer_parameters(g).await;
+        }
+    }
+
+    async fn answer_parameters(&mut self, g: Gathering) {
+        if !g.failed.is_empty() {
+            self.error(&format!("getParameters: {}", g.failed.join("; ")))
                 .await;
         }
-        self.send_text(protocol::parameter_values(&values, id.as_deref()))
+        self.send_text(protocol::parameter_values(&g.values, g.id.as_deref()))
             .await;
     }
+}
+
+/// A rosapi `get_param` answer's value: JSON text, as rosapi gives it.
+fn param_value(answer: &Value) -> Option<Value> {
+    let text = answer["value"].as_str()?;
+    Some(serde_json::from_str(text).unwrap_or_else(|_| json!(text)))
+}
+
+/// The value in a robot's answer to `rosapi/get_param` (JSON or CBOR).
+fn robot_param_value(p: &Payload) -> Option<Value> {
+    let v = fleetlink_relay::params::call_args(p)?;
+    param_value(&v)
 }

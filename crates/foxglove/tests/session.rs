@@ -252,3 +252,57 @@ async fn a_client_publishes_json_checked_against_its_type() {
     );
     shutdown.cancel();
 }
+
+#[tokio::test]
+async fn a_robot_s_parameter_is_read_from_the_robot_and_a_hub_parameter_from_the_hub() {
+    use fleetlink_relay::calls::{CallStatus, ChannelPeer, PeerMsg};
+    let router = router();
+    let shutdown = CancellationToken::new();
+    // A robot whose agent answers parameter reads (as a ROS 1 or ROS 2 robot's does).
+    let (robot, _) = router.connect(ClientKind::Agent { robot: "r1".into() }, None);
+    let (peer, calls) = ChannelPeer::new();
+    router.calls.attach(robot, peer);
+    router.calls.advertise(
+        robot,
+        TopicName::parse("/r1/rosapi/get_param").unwrap(),
+        Schema::named("rosapi/srv/GetParam"),
+        false,
+    );
+    let table = router.calls.clone();
+    tokio::spawn(async move {
+        while let Some(m) = calls.recv().await {
+            if let PeerMsg::Call(c) = m {
+                let args: Value = serde_json::from_slice(&c.payload.bytes).unwrap();
+                // The name as the robot sees it, relative to its namespace.
+                assert_eq!(args["name"], "/max_speed");
+                let answer = Payload::json(json!({"value": "2.5"}).to_string());
+                table.respond(robot, c.id, CallStatus::Ok, Some(answer), String::new());
+            }
+        }
+    });
+    router.params.set("/hub_mode", json!("night").to_string());
+    let mut c = connect(&router, &shutdown).await;
+    next_op(&mut c, "serverInfo").await;
+    send(
+        &mut c,
+        json!({"op": "getParameters", "parameterNames": ["/r1/max_speed", "/hub_mode", "/unset"], "id": "q1"}),
+    )
+    .await;
+    let pv = next_op(&mut c, "parameterValues").await;
+    assert_eq!(pv["id"], "q1");
+    let mut got: Vec<(String, Value)> = pv["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p["name"].as_str().unwrap().to_owned(), p["value"].clone()))
+        .collect();
+    got.sort_by(|a, b| a.0.cmp(&b.0));
+    assert_eq!(
+        got,
+        vec![
+            ("/hub_mode".to_owned(), json!("night")),
+            ("/r1/max_speed".to_owned(), json!(2.5)),
+        ]
+    );
+    shutdown.cancel();
+}
