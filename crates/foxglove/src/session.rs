@@ -14,7 +14,7 @@
 //! queue (drops counted on the topic) and counts as interest toward the robot that
 //! publishes it, like any subscriber.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::net::SocketAddr;
 use std::sync::Arc;
 
@@ -22,7 +22,7 @@ use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::{ChannelPeer, PeerMsg};
 use fleetlink_relay::gate::{Gate, Op as GateOp, SessionAuth};
-use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicsWatch};
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::transcode::NormalizeCache;
 use fleetlink_relay::websocket::{ClientMessage, PartsSink};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicId, TopicName};
@@ -59,6 +59,11 @@ impl Default for SessionConfig {
         }
     }
 }
+
+/// How often a session looks at every topic again, so that a change of the access rules
+/// shows in its channels (a topic newly allowed appears, one no longer allowed goes);
+/// deliveries follow a rule change at once anyway, as the writer asks for every message.
+const RULES_RECHECK: std::time::Duration = std::time::Duration::from_secs(5);
 
 /// Replies the reader hands to the writer. Bounded: a client that floods bad requests
 /// without reading the answers is slowed down (its reader waits), nobody else is.
@@ -102,6 +107,7 @@ pub async fn serve<K, S>(
         gate: auth.gate,
         replies: reply_tx,
         deliveries,
+        listed: HashSet::new(),
         channels: HashMap::new(),
         channel_topics: HashMap::new(),
         next_channel: 1,
@@ -114,6 +120,9 @@ pub async fn serve<K, S>(
     let cancelled = shutdown.cancelled();
     tokio::pin!(cancelled);
     let mut calls_open = true;
+    let mut recheck = tokio::time::interval(RULES_RECHECK);
+    recheck.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    recheck.reset();
     loop {
         tokio::select! {
             biased;
@@ -122,7 +131,11 @@ pub async fn serve<K, S>(
                 Some(m) => s.on_peer(m).await,
                 None => calls_open = false,
             },
-            _ = watch.changed() => s.sync_channels(&watch).await,
+            _ = watch.changed() => {
+                let changed = watch.take();
+                s.sync_channels(changed).await;
+            }
+            _ = recheck.tick() => s.recheck_rules().await,
             f = stream.next() => {
                 let Some(f) = f else { break };
                 if !s.on_frame(f).await {
@@ -175,6 +188,9 @@ pub(crate) struct Session {
     /// The writer's view of the subscriptions (std Mutex: taken by the reader when a
     /// subscription changes and by the writer once per batch, never across an await).
     deliveries: Deliveries,
+    /// Every listed topic, whether the client may see it or not (kept from the topics
+    /// watch, so that a rule change can be looked for without asking the router).
+    listed: HashSet<TopicName>,
     /// Channels by topic, and the topic of each channel id.
     channels: HashMap<TopicName, Advertised>,
     channel_topics: HashMap<u32, TopicName>,
@@ -324,18 +340,22 @@ impl Session {
         }
     }
 
-    /// Brings the channels up to date with the topics that changed: a topic the client
+    /// Brings the channels up to date with the topics `names` (those that changed, or all
+    /// of them when the rules are looked at again): a topic the client
     /// may see and that is listed gets a channel, one that went (or that it may no
     /// longer see) loses it along with its subscriptions, and one whose form changed (a
     /// schema arrived) is advertised anew under a new id.
-    async fn sync_channels(&mut self, watch: &TopicsWatch) {
+    async fn sync_channels(&mut self, names: Vec<TopicName>) {
         let mut added = Vec::new();
         let mut removed = Vec::new();
-        for name in watch.take() {
-            let now = self
-                .router
-                .snapshot(&name)
-                .filter(|s| s.listed())
+        for name in names {
+            let listed = self.router.snapshot(&name).filter(|s| s.listed());
+            if listed.is_some() {
+                self.listed.insert(name.clone());
+            } else {
+                self.listed.remove(&name);
+            }
+            let now = listed
                 .filter(|_| {
                     self.gate
                         .as_mut()
@@ -372,6 +392,25 @@ impl Session {
         }
         if !added.is_empty() {
             self.send_text(protocol::advertise(&added)).await;
+        }
+    }
+
+    /// The listed topics whose visibility under the gate no longer matches the channels
+    /// (a rule changed), brought up to date. Each question is the gate's cached decision.
+    async fn recheck_rules(&mut self) {
+        let Some(gate) = self.gate.as_mut() else {
+            return;
+        };
+        let stale: Vec<TopicName> = self
+            .listed
+            .iter()
+            .filter(|n| {
+                gate.allows(n.as_str(), GateOp::Subscribe) != self.channels.contains_key(*n)
+            })
+            .cloned()
+            .collect();
+        if !stale.is_empty() {
+            self.sync_channels(stale).await;
         }
     }
 

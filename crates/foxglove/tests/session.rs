@@ -37,8 +37,10 @@ async fn connect(router: &Arc<Router>, shutdown: &CancellationToken) -> Client {
     WebSocketStream::from_raw_socket(c, Role::Client, None).await
 }
 
+/// The next message; the bound is past the session's 5 s look at the rules, which the
+/// tests on paused time wait for.
 async fn next(c: &mut Client) -> WsMessage {
-    tokio::time::timeout(Duration::from_secs(5), c.next())
+    tokio::time::timeout(Duration::from_secs(20), c.next())
         .await
         .expect("no timeout")
         .expect("not ended")
@@ -304,5 +306,70 @@ async fn a_robot_s_parameter_is_read_from_the_robot_and_a_hub_parameter_from_the
             ("/r1/max_speed".to_owned(), json!(2.5)),
         ]
     );
+    shutdown.cancel();
+}
+
+/// A gate whose one rule (may the client see `/r1/secret`?) a test flips.
+struct Switch(Arc<std::sync::atomic::AtomicBool>);
+
+impl fleetlink_relay::gate::Gate for Switch {
+    fn allows(&mut self, name: &str, _op: fleetlink_relay::gate::Op) -> bool {
+        name != "/r1/secret" || self.0.load(std::sync::atomic::Ordering::Relaxed)
+    }
+    fn fork(&self) -> Box<dyn fleetlink_relay::gate::Gate> {
+        Box::new(Switch(self.0.clone()))
+    }
+    fn principal(&self) -> String {
+        "user:test".into()
+    }
+}
+
+#[tokio::test(start_paused = true)]
+async fn a_rule_change_shows_in_the_channels() {
+    let router = router();
+    let shutdown = CancellationToken::new();
+    let (robot, _) = router.connect(ClientKind::Internal { role: "sim".into() }, None);
+    for t in ["/r1/open", "/r1/secret"] {
+        let name = TopicName::parse(t).unwrap();
+        router
+            .advertise(robot, &name, Schema::named("std_msgs/msg/String"), false)
+            .unwrap();
+    }
+    let allowed = Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let (cs, ss) = tokio::io::duplex(1 << 20);
+    let (sink, stream) = websocket::server(ss, 1 << 20);
+    let auth = SessionAuth {
+        gate: Some(Box::new(Switch(allowed.clone()))),
+        guard: None,
+    };
+    tokio::spawn(serve(
+        sink,
+        stream,
+        router.clone(),
+        None,
+        Arc::new(SessionConfig::default()),
+        shutdown.clone(),
+        auth,
+    ));
+    let mut c = WebSocketStream::from_raw_socket(cs, Role::Client, None).await;
+    let topics = |v: &Value| -> Vec<String> {
+        v["channels"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["topic"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    let first = next_op(&mut c, "advertise").await;
+    assert_eq!(topics(&first), vec!["/r1/open"]);
+    // Allowed now: the channel appears at the next look at the rules.
+    allowed.store(true, std::sync::atomic::Ordering::Relaxed);
+    let more = next_op(&mut c, "advertise").await;
+    assert_eq!(topics(&more), vec!["/r1/secret"]);
+    let id = more["channels"][0]["id"].clone();
+    // Refused again: it goes.
+    allowed.store(false, std::sync::atomic::Ordering::Relaxed);
+    let gone = next_op(&mut c, "unadvertise").await;
+    assert_eq!(gone["channelIds"], json!([id]));
     shutdown.cancel();
 }
