@@ -447,6 +447,45 @@ mod tests {
         assert_eq!(p(&[0x7f]), Err(BinaryError::UnknownOpcode(0x7f)));
     }
 
+    mod any_input {
+        use super::*;
+        use proptest::prelude::*;
+
+        proptest! {
+            /// Whatever a client sends, reading it gives an operation or an error, never a
+            /// panic.
+            #[test]
+            fn any_bytes_read_or_fail_cleanly(b in proptest::collection::vec(any::<u8>(), 0..64)) {
+                let _ = parse_client_binary(&Bytes::from(b.clone()));
+                let _ = parse_client_text(&b);
+            }
+
+            /// A service call request as a client lays it out reads back field for field.
+            #[test]
+            fn a_service_call_request_reads_back(
+                service in any::<u32>(),
+                call in any::<u32>(),
+                encoding in "[a-z0-9]{0,12}",
+                payload in proptest::collection::vec(any::<u8>(), 0..256),
+            ) {
+                let mut b = BytesMut::new();
+                b.put_u8(SERVICE_CALL_REQUEST);
+                b.put_u32_le(service);
+                b.put_u32_le(call);
+                b.put_u32_le(encoding.len() as u32);
+                b.put_slice(encoding.as_bytes());
+                b.put_slice(&payload);
+                let got = parse_client_binary(&b.freeze());
+                prop_assert_eq!(got, Ok(ClientBinary::ServiceCallRequest(ServiceCall {
+                    service,
+                    call,
+                    encoding,
+                    payload: Bytes::from(payload),
+                })));
+            }
+        }
+    }
+
     #[test]
     fn client_text_operations_are_read_and_errors_say_what_is_wrong() {
         assert_eq!(
