@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
-# Node packages of the rosbridge interop suite (roslib from npm), installed from the
-# committed package-lock.json. Idempotent: skips `npm ci` when node_modules already
-# matches the lock file.
+# Node packages of the interop suites, each installed from its committed
+# package-lock.json: the rosbridge suite (roslib, the Foxglove parsers) and the Foxglove
+# suite (@foxglove/ws-protocol's FoxgloveClient, the Foxglove parsers, ws). Idempotent:
+# skips `npm ci` where node_modules already matches the lock file.
 set -euo pipefail
-cd "$(dirname "$0")/../../tests/interop/rosbridge"
-stamp=node_modules/.fleetlink-lock
-if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp" && [ -f node_modules/roslib/package.json ]; then
-    echo "node packages up to date"
-    exit 0
-fi
-npm ci --no-audit --no-fund --loglevel=error
-cp package-lock.json "$stamp"
-echo "node packages ready: roslib $(node -p 'require("./node_modules/roslib/package.json").version')"
+interop="$(cd "$(dirname "$0")/../../tests/interop" && pwd)"
+# suite directory and the package whose presence says it is installed
+for pair in "rosbridge roslib" "foxglove @foxglove/ws-protocol"; do
+    read -r suite probe <<<"$pair"
+    cd "$interop/$suite"
+    stamp=node_modules/.fleetlink-lock
+    if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp" && [ -f "node_modules/$probe/package.json" ]; then
+        echo "node packages of $suite up to date"
+        continue
+    fi
+    npm ci --no-audit --no-fund --loglevel=error
+    cp package-lock.json "$stamp"
+    echo "node packages of $suite ready: $probe $(node -p "require('./node_modules/$probe/package.json').version")"
+done

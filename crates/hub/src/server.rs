@@ -1,8 +1,10 @@
 //! The hub's listener: one port for WebSocket agents, rosbridge clients and HTTP.
 //!
 //! A request that asks for a WebSocket upgrade becomes an agent session when it offers
-//! the `fleetlink.v1` subprotocol and a rosbridge session otherwise (rosbridge clients
-//! send no subprotocol); everything else is plain HTTP routed by axum ([`crate::http`]).
+//! the `fleetlink.v1` subprotocol, a Foxglove session when it offers `foxglove.sdk.v1`
+//! or `foxglove.websocket.v1` ([`fleetlink_foxglove`]), and a rosbridge session otherwise
+//! (rosbridge clients send no subprotocol); everything else is plain HTTP routed by axum
+//! ([`crate::http`]).
 //! Each connection is its own task; shutdown cancels a token every session watches.
 //!
 //! The top of the crate's layering: [`Hub::bind`] builds the shared
@@ -161,6 +163,10 @@ impl Hub {
             store,
             agents,
             rosbridge,
+            foxglove: Arc::new(fleetlink_foxglove::SessionConfig {
+                name: "fleetlink hub".into(),
+                ..fleetlink_foxglove::SessionConfig::default()
+            }),
             shutdown,
             tasks: tokio_util::task::TaskTracker::new(),
             security,
@@ -408,12 +414,26 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         Err(r) => return busy(&st, r),
     };
     let open = req.extensions().get::<ConnMeta>().map(|m| m.open.clone());
-    let agent = req
-        .headers()
-        .get_all(header::SEC_WEBSOCKET_PROTOCOL)
-        .iter()
-        .filter_map(|v| v.to_str().ok())
-        .any(|v| v.split(',').any(|p| p.trim() == SUBPROTOCOL));
+    // The offered subprotocols, read before any await: a borrow of the request (whose
+    // body is not `Sync`) must not live across one.
+    let (agent, foxglove) = {
+        let offered = || {
+            req.headers()
+                .get_all(header::SEC_WEBSOCKET_PROTOCOL)
+                .iter()
+                .filter_map(|v| v.to_str().ok())
+                .flat_map(|v| v.split(','))
+                .map(str::trim)
+        };
+        let agent = offered().any(|p| p == SUBPROTOCOL);
+        // The client's first Foxglove subprotocol, echoed in the answer.
+        let foxglove = if agent {
+            None
+        } else {
+            fleetlink_foxglove::choose_subprotocol(offered())
+        };
+        (agent, foxglove)
+    };
     // Authenticate before switching protocols: a bad credential gets a plain 401 the
     // client can show; no credential means the client authenticates in-band (agents in
     // HELLO, rosbridge clients with an `auth` operation) or reads anonymously where that
@@ -478,6 +498,19 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 guard: Some(Arc::new(guard)),
             };
             let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
+            if foxglove.is_some() {
+                // The same gate as a rosbridge client's: rules and audit apply alike.
+                return fleetlink_foxglove::serve(
+                    sink,
+                    stream,
+                    st.router.clone(),
+                    Some(addr),
+                    st.foxglove.clone(),
+                    st.shutdown.clone(),
+                    auth,
+                )
+                .await;
+            }
             rosbridge::serve(
                 sink,
                 stream,
@@ -503,6 +536,8 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
             header::SEC_WEBSOCKET_PROTOCOL,
             HeaderValue::from_static(SUBPROTOCOL),
         );
+    } else if let Some(p) = foxglove {
+        h.insert(header::SEC_WEBSOCKET_PROTOCOL, HeaderValue::from_static(p));
     }
     res
 }

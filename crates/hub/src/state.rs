@@ -25,6 +25,8 @@ pub struct HubState {
     pub store: Store,
     pub agents: Arc<AgentContext>,
     pub rosbridge: Arc<SessionConfig>,
+    /// Settings of Foxglove WebSocket sessions (the server's name and this run's id).
+    pub foxglove: Arc<fleetlink_foxglove::SessionConfig>,
     pub shutdown: CancellationToken,
     /// Every connection's task (HTTP, rosbridge and agent sessions): a stopping hub waits
     /// for them, within [`crate::server::SHUTDOWN_GRACE`].

@@ -94,6 +94,9 @@ struct Frames {
     cbor_raw: OnceLock<Result<WsMessage, TranscodeError>>,
     png: OnceLock<Result<WsMessage, TranscodeError>>,
     link: OnceLock<Arc<[Bytes]>>,
+    /// The message object in another encoding, by `Encoding as usize` (a Foxglove
+    /// channel's encoding, when the message arrived in a different one).
+    converted: [OnceLock<Result<Bytes, TranscodeError>>; 4],
 }
 
 impl Frames {
@@ -309,6 +312,19 @@ impl Message {
             .clone()
     }
 
+    /// The message object in encoding `to`: the bytes as they arrived when that is their
+    /// encoding (shared, not copied), otherwise converted once for every subscriber that
+    /// wants `to` (a Foxglove channel carries one encoding per topic; its `MessageData`
+    /// is this payload behind a per-subscriber header).
+    pub fn payload_in(&self, to: Encoding, tc: &dyn Transcoder) -> Result<Bytes, TranscodeError> {
+        if self.payload.encoding == to {
+            return Ok(self.payload.bytes.clone());
+        }
+        self.frames().converted[to as usize]
+            .get_or_init(|| tc.convert(&self.topic.schema, &self.payload, to))
+            .clone()
+    }
+
     /// The `fleetlink.v1` frames of this message with the topic's router-wide id as alias:
     /// one `MESSAGE`, or `CHUNK`s when the payload is larger than the chunk size. Built
     /// once; the same bytes go to every downstream link.
@@ -410,6 +426,24 @@ mod tests {
             true,
         );
         assert!(cbor.json_parts().is_none());
+    }
+
+    #[test]
+    fn a_payload_in_another_encoding_is_converted_once_and_shared() {
+        let tc = crate::transcode::RegistryTranscoder::bundled();
+        let m = message(false);
+        // In its own encoding: the bytes as they arrived.
+        let same = m.payload_in(Encoding::Json, &tc).expect("as is");
+        assert_eq!(same.as_ptr(), m.payload.bytes.as_ptr());
+        // Converted once: every later caller gets the same bytes.
+        let a = m.payload_in(Encoding::Cdr, &tc).expect("converts");
+        let b = m.payload_in(Encoding::Cdr, &tc).expect("cached");
+        assert_eq!(a.as_ptr(), b.as_ptr());
+        assert_eq!(
+            a,
+            tc.convert(&m.topic.schema, &m.payload, Encoding::Cdr)
+                .expect("converts")
+        );
     }
 
     #[test]

@@ -48,6 +48,8 @@ pub enum RouteError {
 pub enum ClientKind {
     /// A rosbridge v2 client (browser, roslibpy, viewer).
     Rosbridge,
+    /// A Foxglove WebSocket client (Foxglove, Lichtblick).
+    Foxglove,
     /// A robot's agent on a `fleetlink.v1` link.
     Agent { robot: String },
     /// Something inside this process (simulator, hub link of an agent).
@@ -476,6 +478,10 @@ impl State {
     /// Tells those who follow every topic that `name` changed.
     fn topic_changed(&self, name: &TopicName) {
         for w in &self.watchers {
+            // A watch only the router holds belongs to a participant that left.
+            if Arc::strong_count(w) == 1 {
+                continue;
+            }
             w.mark(name);
         }
     }
@@ -577,6 +583,9 @@ impl Router {
         for name in st.topics.keys() {
             w.mark(name);
         }
+        // Watches of participants that left (only the router holds them) go now, so a
+        // hub whose viewers come and go keeps no list that grows with them.
+        st.watchers.retain(|w| Arc::strong_count(w) > 1);
         st.watchers.push(w.clone());
         w
     }
@@ -1053,5 +1062,28 @@ fn gc_topic(st: &mut State, name: &TopicName) {
         if st.topics.remove(name).is_some() {
             st.topic_changed(name);
         }
+    }
+}
+
+#[cfg(test)]
+mod watch_tests {
+    use super::*;
+
+    #[test]
+    fn a_topics_watch_nobody_holds_is_let_go() {
+        // Viewers that come and go (each Foxglove session holds one watch) leave nothing
+        // behind in the router.
+        let router = Router::default();
+        for _ in 0..10 {
+            drop(router.watch_topics());
+        }
+        let kept = router.watch_topics();
+        assert_eq!(router.lock().watchers.len(), 1);
+        let (c, _) = router.connect(ClientKind::Foxglove, None);
+        let name = TopicName::parse("/a").unwrap();
+        router
+            .advertise(c, &name, Schema::named("std_msgs/msg/Empty"), false)
+            .unwrap();
+        assert_eq!(kept.take(), vec![name]);
     }
 }

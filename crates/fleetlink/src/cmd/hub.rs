@@ -328,6 +328,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         println!(
             "  rosbridge:  {ws}://{addr}/   agents: {ws}://{addr}/ (subprotocol fleetlink.v1)"
         );
+        println!("  foxglove:   {ws}://{addr}/?token=TOKEN (Foxglove, Lichtblick)");
         match &args.database {
             Some(url) => println!(
                 "  credentials: fleetlink admin --database {} --help",

@@ -248,6 +248,7 @@ async fn clients(
         .map(|(info, outbox, subs)| {
             let kind = match &info.kind {
                 ClientKind::Rosbridge => "rosbridge".to_owned(),
+                ClientKind::Foxglove => "foxglove".to_owned(),
                 ClientKind::Agent { .. } => "agent".to_owned(),
                 ClientKind::Internal { role } => format!("internal:{role}"),
             };

@@ -357,6 +357,7 @@ pub fn client_node_name(router: &Router, id: crate::ClientId) -> String {
         Some(ClientKind::Agent { robot }) => format!("/{robot}"),
         Some(ClientKind::Internal { role }) => format!("/fleetlink/{role}"),
         Some(ClientKind::Rosbridge) => format!("/rosbridge_client_{}", id.0),
+        Some(ClientKind::Foxglove) => format!("/foxglove_client_{}", id.0),
         None => format!("/gone_{}", id.0),
     }
 }

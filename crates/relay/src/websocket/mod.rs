@@ -335,6 +335,17 @@ pub trait PartsSink: Sink<WsMessage, Error = WsError> + Unpin {
             .map_err(|e| WsError::Utf8(format!("a text message is not UTF-8: {e}")))?;
         Pin::new(self).start_send(WsMessage::text(text))
     }
+
+    /// Queues one binary message: `head` (a few bytes made for this receiver) followed by
+    /// `body` (bytes shared by many receivers); like `start_send`, only after
+    /// `poll_ready` said so. A Foxglove `MessageData` is a per-subscription header in
+    /// front of a payload every subscriber shares. This default puts the two together.
+    fn start_send_binary_parts(&mut self, head: &[u8], body: &Bytes) -> Result<(), WsError> {
+        let mut whole = BytesMut::with_capacity(head.len() + body.len());
+        whole.extend_from_slice(head);
+        whole.extend_from_slice(body);
+        Pin::new(self).start_send(WsMessage::Binary(whole.freeze()))
+    }
 }
 
 impl<W: AsyncWrite + Unpin> PartsSink for Writer<W> {
@@ -352,6 +363,24 @@ impl<W: AsyncWrite + Unpin> PartsSink for Writer<W> {
         self.pending += self.tail.len() - before;
         Ok(())
     }
+
+    fn start_send_binary_parts(&mut self, head: &[u8], body: &Bytes) -> Result<(), WsError> {
+        if self.close_sent {
+            return Err(WsError::Protocol(ProtocolError::SendAfterClosing));
+        }
+        let before = self.tail.len();
+        frames::encode_header(&mut self.tail, 0x2, head.len() + body.len());
+        self.tail.extend_from_slice(head);
+        self.pending += self.tail.len() - before + body.len();
+        // As `push`: a large body is written from where it lies, not copied.
+        if body.len() > COPY_UP_TO {
+            self.queue.push_back(self.tail.split().freeze());
+            self.queue.push_back(body.clone());
+        } else {
+            self.tail.extend_from_slice(body);
+        }
+        Ok(())
+    }
 }
 
 /// Sinks over channels and tungstenite (tests, benches) take the pieces put together.
@@ -365,6 +394,17 @@ impl<S> PartsSink for futures_util::stream::SplitSink<S, WsMessage> where
 pub async fn feed_parts<K: PartsSink>(sink: &mut K, parts: &[&[u8]]) -> Result<(), WsError> {
     std::future::poll_fn(|cx| Pin::new(&mut *sink).poll_ready(cx)).await?;
     sink.start_send_parts(parts)
+}
+
+/// Waits until `sink` takes a message, then queues the binary message `head` + `body`
+/// (see [`PartsSink::start_send_binary_parts`]).
+pub async fn feed_binary_parts<K: PartsSink>(
+    sink: &mut K,
+    head: &[u8],
+    body: &Bytes,
+) -> Result<(), WsError> {
+    std::future::poll_fn(|cx| Pin::new(&mut *sink).poll_ready(cx)).await?;
+    sink.start_send_binary_parts(head, body)
 }
 
 #[cfg(test)]

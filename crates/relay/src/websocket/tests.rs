@@ -211,3 +211,28 @@ async fn a_connection_cut_mid_frame_is_an_error_and_a_clean_end_is_not() {
     drop(c);
     assert!(reader.next().await.is_none());
 }
+
+#[tokio::test]
+async fn a_binary_message_in_two_parts_arrives_as_one_whether_its_body_is_copied_or_not() {
+    let (mut client, (mut writer, _r)) = pair(4 << 20).await;
+    let small = Bytes::from_static(b"payload");
+    let large = Bytes::from(
+        (0..(COPY_UP_TO as u32 + 100))
+            .map(|i| i as u8)
+            .collect::<Vec<_>>(),
+    );
+    for body in [&small, &large] {
+        feed_binary_parts(&mut writer, &[1, 2, 3], body)
+            .await
+            .unwrap();
+    }
+    writer.flush().await.unwrap();
+    for body in [small, large] {
+        let mut want = vec![1, 2, 3];
+        want.extend_from_slice(&body);
+        assert_eq!(
+            next(&mut client).await.unwrap(),
+            WsMessage::Binary(want.into())
+        );
+    }
+}

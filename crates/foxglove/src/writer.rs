@@ -1,0 +1,184 @@
+//! The writer of a Foxglove session: the client's outbox as `MessageData`, and the
+//! reader's replies.
+//!
+//! Encode once: a message's payload in its channel's encoding is the bytes it arrived in,
+//! or a conversion made once per message and shared by every subscriber
+//! ([`Message::payload_in`]). What differs per subscription is 13 bytes (opcode,
+//! subscription id, receive time), written in front of the shared payload as one
+//! WebSocket message ([`feed_binary_parts`]): a large payload is written from where it
+//! lies, never copied per subscriber.
+
+use std::collections::{HashMap, HashSet};
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use fleetlink_proto::Encoding;
+use fleetlink_relay::gate::{Gate, Op as GateOp};
+use fleetlink_relay::outbox::Taken;
+use fleetlink_relay::websocket::{PartsSink, feed_binary_parts};
+use fleetlink_relay::{DropReason, Outbox, Router, TopicId};
+use futures_util::{Sink, SinkExt};
+use tokio::sync::mpsc;
+use tokio_tungstenite::tungstenite::protocol::CloseFrame;
+use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+
+use crate::protocol::{self, Level};
+
+/// What the writer sends for one topic: the channel's encoding and the client's
+/// subscription ids on it (shared, so a batch reads them without copying).
+#[derive(Debug, Clone)]
+pub(crate) struct Delivering {
+    pub encoding: Encoding,
+    pub subs: Arc<[u32]>,
+}
+
+/// The subscriptions as the reader last set them. std Mutex: the reader takes it when a
+/// subscription changes, the writer once per batch; neither holds it across an await.
+pub(crate) type Deliveries = Arc<Mutex<HashMap<TopicId, Delivering>>>;
+
+pub(crate) enum Reply {
+    Frame(WsMessage),
+    /// Sent last: the writer then closes the connection.
+    Close(Option<CloseFrame>),
+}
+
+/// Bytes of messages one batch takes at most.
+const BATCH_BYTES: usize = 8 << 20;
+
+pub(crate) async fn write_loop<K: PartsSink>(
+    mut sink: K,
+    outbox: Arc<Outbox>,
+    mut replies: mpsc::Receiver<Reply>,
+    router: Arc<Router>,
+    batch: usize,
+    mut gate: Option<Box<dyn Gate>>,
+    deliveries: Deliveries,
+) {
+    let mut items: Vec<Taken> = Vec::new();
+    let mut sends: Vec<(Taken, Delivering)> = Vec::new();
+    // Topics whose messages could not be given in their channel's encoding: the client
+    // hears it once per topic, each message is counted as dropped.
+    let mut warned: HashSet<TopicId> = HashSet::new();
+    loop {
+        let mut wrote = false;
+        while let Ok(r) = replies.try_recv() {
+            match r {
+                Reply::Frame(m) => {
+                    if sink.feed(m).await.is_err() {
+                        return;
+                    }
+                    wrote = true;
+                }
+                Reply::Close(c) => return close_with(&mut sink, c).await,
+            }
+        }
+        let wake_at = outbox.take_into(&mut items, batch, BATCH_BYTES, Instant::now());
+        let took = items.len();
+        // Checked on delivery, so a rule change reaches live subscriptions.
+        match gate.as_mut() {
+            Some(g) => {
+                let mut last = None;
+                items.retain(|(_, _, m)| match last {
+                    Some((id, ok)) if id == m.topic.id => ok,
+                    _ => {
+                        let ok =
+                            g.allows_topic(m.topic.id.0, m.topic.name.as_str(), GateOp::Subscribe);
+                        last = Some((m.topic.id, ok));
+                        ok
+                    }
+                })
+            }
+            None => items.clear(),
+        }
+        {
+            let d = deliveries.lock().unwrap_or_else(|p| p.into_inner());
+            sends.extend(
+                items
+                    .drain(..)
+                    .filter_map(|t| d.get(&t.2.topic.id).cloned().map(|to| (t, to))),
+            );
+        }
+        for ((slot, _, msg), to) in sends.drain(..) {
+            let payload = match msg.payload_in(to.encoding, router.transcoder()) {
+                Ok(p) => p,
+                Err(e) => {
+                    outbox.record_drop(slot, DropReason::Encode);
+                    if warned.insert(msg.topic.id) {
+                        let text = format!(
+                            "{}: a message cannot be sent as {}: {e}",
+                            msg.topic.name,
+                            crate::channels::wire_name(to.encoding)
+                        );
+                        if sink
+                            .feed(WsMessage::text(protocol::status(Level::Warning, &text)))
+                            .await
+                            .is_err()
+                        {
+                            return;
+                        }
+                    }
+                    continue;
+                }
+            };
+            for sub in to.subs.iter() {
+                let head = protocol::message_data_header(*sub, msg.received_unix_ns());
+                if feed_binary_parts(&mut sink, &head, &payload).await.is_err() {
+                    return;
+                }
+            }
+            wrote = true;
+        }
+        if wrote && sink.flush().await.is_err() {
+            return;
+        }
+        if took > 0 {
+            continue;
+        }
+        if outbox.is_closed() {
+            // The session has ended; its last word may wait in `replies`.
+            while let Ok(r) = replies.try_recv() {
+                match r {
+                    Reply::Frame(m) => {
+                        if sink.feed(m).await.is_err() {
+                            return;
+                        }
+                    }
+                    Reply::Close(c) => return close_with(&mut sink, c).await,
+                }
+            }
+            let _ = sink.close().await;
+            return;
+        }
+        let wake = wake_at.map(tokio::time::Instant::from_std);
+        tokio::select! {
+            r = replies.recv() => match r {
+                Some(Reply::Frame(m)) => {
+                    if sink.send(m).await.is_err() {
+                        return;
+                    }
+                }
+                Some(Reply::Close(c)) => return close_with(&mut sink, c).await,
+                None => {
+                    let _ = sink.close().await;
+                    return;
+                }
+            },
+            _ = outbox.ready() => {}
+            _ = async {
+                match wake {
+                    Some(w) => tokio::time::sleep_until(w).await,
+                    None => std::future::pending().await,
+                }
+            } => {}
+        }
+    }
+}
+
+/// Sends `c` as the last frame and closes the connection.
+async fn close_with<K>(sink: &mut K, c: Option<CloseFrame>)
+where
+    K: Sink<WsMessage, Error = WsError> + Unpin,
+{
+    let _ = sink.send(WsMessage::Close(c)).await;
+    let _ = sink.close().await;
+}
