@@ -453,7 +453,10 @@ fn agent_check_takes_a_rosgw_file_and_a_token_file() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(text.contains("name: jackal1"), "{text}");
-    assert!(text.contains("- /scan") && text.contains("- /add_two_ints"), "{text}");
+    assert!(
+        text.contains("- /scan") && text.contains("- /add_two_ints"),
+        "{text}"
+    );
     assert!(text.contains("token: (set, 12 characters)"), "{text}");
     assert!(!text.contains("s3cret-token"), "{text}");
 
