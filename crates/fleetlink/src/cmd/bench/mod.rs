@@ -22,6 +22,8 @@
 //!   bench's traffic, the floor under the hub's figure in `fleet`.
 //! - [`reconnect`]: the `reconnect` subcommand: a fleet of in-process agents against a
 //!   hub that restarts, measuring how the fleet comes back.
+//! - [`viewer`]: the `viewer` subcommand: a large point cloud watched over Foxglove
+//!   WebSocket or rosbridge CBOR, side by side.
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
 //!   while the durable outbox compacts on a slow disk (test builds).
 
@@ -37,6 +39,7 @@ mod reconnect;
 mod relay;
 mod report;
 mod subscriber;
+mod viewer;
 mod ws_floor;
 
 #[derive(clap::Args)]
@@ -75,6 +78,9 @@ enum Command {
     /// pongs, interest, messages passed to the matching subscribers; no auth, QoS, acks
     /// or statistics): the floor under the hub's figure in the fleet bench.
     FleetFloor(fleet_floor::Args),
+    /// A robot's large point cloud watched by viewers over the Foxglove WebSocket protocol
+    /// or rosbridge CBOR: delivery ratio, latency from the cloud's stamp, the hub's CPU.
+    Viewer(viewer::Args),
     /// The agent thread's heartbeat lateness and an adapter's latency while the durable
     /// outbox compacts a large journal on a simulated slow disk (test builds only).
     Journal(journal::Args),
@@ -90,6 +96,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::CopyFloor(a) => copy_floor::run(a),
         Command::WsFloor(a) => ws_floor::run(a),
         Command::FleetFloor(a) => fleet_floor::run(a),
+        Command::Viewer(a) => viewer::run(a),
         Command::Journal(a) => journal::run(a),
     }
 }
