@@ -201,3 +201,46 @@ async fn bench_ws_floor_relays_the_delivery_bench_and_its_cpu_is_measured() {
         assert!(us >= 0.0, "{layer}: no CPU figure for the floor relay: {s}");
     }
 }
+
+/// `fleetlink bench viewer`: a robot's point cloud reaches every viewer over both
+/// protocols, counted by its header stamp, with latency filled in.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bench_viewer_counts_every_cloud_over_foxglove_and_rosbridge_cbor() {
+    let hub = start_hub().await;
+    let url = hub.agent_url();
+    let robot_token = hub.robot_token("bench_cloud");
+    for protocol in ["foxglove", "rosbridge-cbor"] {
+        let s = bench_json(&[
+            "viewer",
+            "--protocol",
+            protocol,
+            "--hub",
+            &url,
+            "--token",
+            &hub.operator_token,
+            "--robot-token",
+            &robot_token,
+            "--size",
+            "65536",
+            "--rate",
+            "20",
+            "--viewers",
+            "2",
+            "--duration",
+            "1",
+            "--warmup",
+            "0.3",
+        ])
+        .await;
+        let sent = s["sent"].as_u64().unwrap();
+        assert!(sent >= 5, "{protocol}: {s}");
+        assert_eq!(s["delivered"].as_u64(), Some(sent * 2), "{protocol}: {s}");
+        assert_eq!(s["delivery_ratio"].as_f64(), Some(1.0), "{protocol}: {s}");
+        assert!(
+            s["latency_ms"]["p50"].as_f64().unwrap() > 0.0,
+            "{protocol}: {s}"
+        );
+        assert!(s["hub_cpu_percent"].is_null(), "no --hub-pid: {s}");
+    }
+    hub.shutdown().await;
+}
