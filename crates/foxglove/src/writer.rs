@@ -15,12 +15,12 @@ use std::time::Instant;
 use fleetlink_proto::Encoding;
 use fleetlink_relay::gate::{Gate, Op as GateOp};
 use fleetlink_relay::outbox::Taken;
+use fleetlink_relay::websocket::replies::{close_with, wait_for_work};
 use fleetlink_relay::websocket::{PartsSink, feed_binary_parts};
 use fleetlink_relay::{DropReason, Outbox, Router, TopicId};
-use futures_util::{Sink, SinkExt};
+use futures_util::SinkExt;
 use tokio::sync::mpsc;
-use tokio_tungstenite::tungstenite::protocol::CloseFrame;
-use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
+use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use crate::protocol::{self, Level};
 
@@ -36,11 +36,7 @@ pub(crate) struct Delivering {
 /// subscription changes, the writer once per batch; neither holds it across an await.
 pub(crate) type Deliveries = Arc<Mutex<HashMap<TopicId, Delivering>>>;
 
-pub(crate) enum Reply {
-    Frame(WsMessage),
-    /// Sent last: the writer then closes the connection.
-    Close(Option<CloseFrame>),
-}
+pub(crate) use fleetlink_relay::websocket::replies::Reply;
 
 /// Bytes of messages one batch takes at most.
 const BATCH_BYTES: usize = 8 << 20;
@@ -134,51 +130,8 @@ pub(crate) async fn write_loop<K: PartsSink>(
         if took > 0 {
             continue;
         }
-        if outbox.is_closed() {
-            // The session has ended; its last word may wait in `replies`.
-            while let Ok(r) = replies.try_recv() {
-                match r {
-                    Reply::Frame(m) => {
-                        if sink.feed(m).await.is_err() {
-                            return;
-                        }
-                    }
-                    Reply::Close(c) => return close_with(&mut sink, c).await,
-                }
-            }
-            let _ = sink.close().await;
+        if !wait_for_work(&mut sink, &mut replies, &outbox, wake_at).await {
             return;
         }
-        let wake = wake_at.map(tokio::time::Instant::from_std);
-        tokio::select! {
-            r = replies.recv() => match r {
-                Some(Reply::Frame(m)) => {
-                    if sink.send(m).await.is_err() {
-                        return;
-                    }
-                }
-                Some(Reply::Close(c)) => return close_with(&mut sink, c).await,
-                None => {
-                    let _ = sink.close().await;
-                    return;
-                }
-            },
-            _ = outbox.ready() => {}
-            _ = async {
-                match wake {
-                    Some(w) => tokio::time::sleep_until(w).await,
-                    None => std::future::pending().await,
-                }
-            } => {}
-        }
     }
-}
-
-/// Sends `c` as the last frame and closes the connection.
-async fn close_with<K>(sink: &mut K, c: Option<CloseFrame>)
-where
-    K: Sink<WsMessage, Error = WsError> + Unpin,
-{
-    let _ = sink.send(WsMessage::Close(c)).await;
-    let _ = sink.close().await;
 }

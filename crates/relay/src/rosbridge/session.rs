@@ -17,7 +17,7 @@ use fleetlink_proto::rosbridge::{
     Compression, Op, ParseError, Publish, PublishId, Request, outbound,
 };
 use fleetlink_proto::{Encoding, Payload, Schema};
-use futures_util::{FutureExt, Sink, SinkExt, Stream, StreamExt};
+use futures_util::{FutureExt, SinkExt, Stream, StreamExt};
 use serde_json::Value;
 use std::sync::Mutex;
 
@@ -39,6 +39,7 @@ use crate::router::{
 };
 use crate::stats::StatsBatch;
 use crate::transcode::NormalizeCache;
+use crate::websocket::replies::{Reply, close_with, wait_for_work};
 use crate::websocket::{ClientMessage, PartsSink};
 
 /// Settings shared by all rosbridge sessions of one server.
@@ -329,12 +330,6 @@ enum Known {
     Done(Result<Option<(Payload, Arc<Topic>)>, String>),
     /// It is not (under that spelling): the message, untouched.
     Not(Payload),
-}
-
-enum Reply {
-    Frame(WsMessage),
-    /// Sent last: the writer then closes the connection.
-    Close(Option<CloseFrame>),
 }
 
 struct Published {
@@ -1318,54 +1313,8 @@ async fn write_loop<K: PartsSink>(
         if took > 0 {
             continue;
         }
-        if outbox.is_closed() {
-            // The session has ended. Its last word — a close frame with its code, queued
-            // before the router let go of the outbox — may still wait in `replies`: sent
-            // as it is, not replaced by a close without a code.
-            while let Ok(r) = replies.try_recv() {
-                match r {
-                    Reply::Frame(m) => {
-                        if sink.feed(m).await.is_err() {
-                            return;
-                        }
-                    }
-                    Reply::Close(c) => return close_with(&mut sink, c).await,
-                }
-            }
-            let _ = sink.close().await;
+        if !wait_for_work(&mut sink, &mut replies, &outbox, wake_at).await {
             return;
         }
-        let wake = wake_at.map(tokio::time::Instant::from_std);
-        tokio::select! {
-            r = replies.recv() => match r {
-                Some(Reply::Frame(m)) => {
-                    if sink.send(m).await.is_err() {
-                        return;
-                    }
-                }
-                Some(Reply::Close(c)) => return close_with(&mut sink, c).await,
-                None => {
-                    // The reader is gone: flush what is queued and stop.
-                    let _ = sink.close().await;
-                    return;
-                }
-            },
-            _ = outbox.ready() => {}
-            _ = async {
-                match wake {
-                    Some(w) => tokio::time::sleep_until(w).await,
-                    None => std::future::pending().await,
-                }
-            } => {}
-        }
     }
-}
-
-/// Sends `c` as the last frame and closes the connection.
-async fn close_with<K>(sink: &mut K, c: Option<CloseFrame>)
-where
-    K: Sink<WsMessage, Error = WsError> + Unpin,
-{
-    let _ = sink.send(WsMessage::Close(c)).await;
-    let _ = sink.close().await;
 }

@@ -25,6 +25,7 @@
 //!   often while reading the text anyway, instead of in a pass of its own.
 
 pub mod frames;
+pub mod replies;
 
 use std::collections::VecDeque;
 use std::io::IoSlice;
