@@ -1,11 +1,12 @@
 // The dashboard's shell: the connection to the hub, sign-in/out, the e-stop, and the
-// router between views (`#/` fleet, `#/robot/<name>`, `#/admin`).
+// router between views (`#/` fleet, `#/robot/<name>`, `#/recordings`, `#/admin`).
 
 import { api, ApiError } from "./api";
 import { probe } from "./probe";
 import { Rosbridge } from "./rosbridge";
 import { session } from "./session";
 import { adminView } from "./views/admin";
+import { recordingsView } from "./views/recordings";
 
 import { fleetView } from "./views/fleet";
 import { robotView } from "./views/robot";
@@ -74,6 +75,7 @@ function route() {
   main.classList.remove("offline");
   if (h.startsWith("robot/")) leave = robotView(main, rb, decodeURIComponent(h.slice(6)));
   else if (h === "admin") leave = adminView(main);
+  else if (h === "recordings") leave = recordingsView(main);
   else leave = fleetView(main, rb, (name) => (location.hash = `#/robot/${encodeURIComponent(name)}`));
 }
 

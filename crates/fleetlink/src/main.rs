@@ -36,6 +36,10 @@ enum Command {
     Admin(cmd::admin::Args),
     /// Inspect ROS interface definitions and convert serialized messages.
     Msg(cmd::msg::Args),
+    /// Record topics to MCAP on a hub; list, stop, download and remove recordings.
+    Record(cmd::record::Args),
+    /// Publish an MCAP file's messages to a hub with their original timing.
+    Play(cmd::play::Args),
     /// Reproduce the AFR paper's quality-of-information comparison (Figure 5).
     QoiSim(cmd::qoi_sim::Args),
 }
@@ -103,6 +107,8 @@ fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
         Command::Bench(args) => cmd::bench::run(args),
         Command::Admin(args) => cmd::admin::run(args),
         Command::Msg(args) => cmd::msg::run(args),
+        Command::Record(args) => cmd::record::run(args),
+        Command::Play(args) => cmd::play::run(args),
         Command::QoiSim(args) => cmd::qoi_sim::run(args),
     }
 }

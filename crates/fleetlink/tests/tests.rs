@@ -16,6 +16,7 @@ mod e2e {
     mod no_drop;
     mod oidc;
     mod priority;
+    mod recording;
     mod relay;
     mod rosbridge;
     mod shutdown;

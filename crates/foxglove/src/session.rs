@@ -382,7 +382,7 @@ impl Session {
             if let Some((topic, form)) = now {
                 let id = self.next_channel;
                 self.next_channel += 1;
-                added.push(form.channel(id, name.as_str()));
+                added.push(channels::advertised(&form, id, name.as_str()));
                 self.channel_topics.insert(id, name.clone());
                 self.channels.insert(name, Advertised { id, topic, form });
             }

@@ -71,6 +71,8 @@ pub struct HubConfig {
     pub door: crate::limits::FrontDoor,
     /// Service and action calls: default deadline, pending-call bounds.
     pub calls: fleetlink_relay::calls::CallLimits,
+    /// Where MCAP recordings go; `None`: `recordings` in `data_dir`.
+    pub recordings_dir: Option<PathBuf>,
 }
 
 impl Default for HubConfig {
@@ -90,6 +92,7 @@ impl Default for HubConfig {
             jwks: None,
             door: crate::limits::FrontDoor::default(),
             calls: fleetlink_relay::calls::CallLimits::default(),
+            recordings_dir: None,
         }
     }
 }
@@ -111,6 +114,11 @@ pub enum HubError {
     SecurityStore(#[from] fleetlink_auth::StoreError),
     #[error("TLS: {0}")]
     Tls(#[from] fleetlink_auth::tls::TlsError),
+    #[error("recordings directory {dir}: {source}")]
+    Recordings {
+        dir: PathBuf,
+        source: std::io::Error,
+    },
 }
 
 /// A bound hub, ready to run.
@@ -157,7 +165,24 @@ impl Hub {
             max_message_size: cfg.max_message_size,
             ..SessionConfig::default()
         });
+        let recordings_dir = cfg
+            .recordings_dir
+            .clone()
+            .unwrap_or_else(|| cfg.data_dir.join("recordings"));
+        let recordings = {
+            let (dir, router) = (recordings_dir.clone(), router.clone());
+            tokio::task::spawn_blocking(move || {
+                fleetlink_record::Recordings::open(&dir, router, "fleetlink hub")
+            })
+            .await
+            .map_err(|e| HubError::Serve(std::io::Error::other(e)))?
+            .map_err(|source| HubError::Recordings {
+                dir: recordings_dir,
+                source,
+            })?
+        };
         let state = Arc::new(HubState {
+            recordings: Arc::new(recordings),
             router,
             registry,
             store,
@@ -268,6 +293,8 @@ impl Hub {
         // reason — within the grace time.
         drop(self.listener);
         token.cancel();
+        // Recordings end with finished files (summary and indexes), not cut off.
+        state.recordings.stop_all().await;
         housekeeping.abort();
         capacity.abort();
         state.tasks.close();

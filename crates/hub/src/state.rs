@@ -21,6 +21,8 @@ use crate::store::Store;
 /// Everything the HTTP handlers and sessions share.
 pub struct HubState {
     pub router: Arc<Router>,
+    /// MCAP recordings of the fleet's topics (`/api/v1/recordings`).
+    pub recordings: Arc<fleetlink_record::Recordings>,
     pub registry: Arc<Registry>,
     pub store: Store,
     pub agents: Arc<AgentContext>,

@@ -30,6 +30,8 @@
 //!   events, and the writer that sends an outbox as (chunked) frames.
 //! - [`link_control`]: per-frame link accounting of a scheduled outbox and the window
 //!   that keeps bulk data from queueing below the scheduler.
+//! - [`channel_form`]: a topic as a typed channel (encoding and schema) for Foxglove
+//!   clients and MCAP files.
 //! - [`stats`]: per-topic counters and rates read by metrics and the API.
 //! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
@@ -38,6 +40,7 @@
 //!   that share only the socket, which rosbridge sessions run on.
 
 pub mod calls;
+pub mod channel_form;
 pub mod gate;
 pub mod link;
 pub mod link_calls;

@@ -50,6 +50,8 @@ pub enum AuditAction {
     /// A refused read of something only some may see: an admin listing (`/rules`,
     /// `/audit`, `/clients`, ...) or `/metrics`.
     AccessDenied,
+    /// A recording started, stopped or removed (and every refused attempt).
+    Recording,
 }
 
 impl AuditAction {
@@ -68,6 +70,7 @@ impl AuditAction {
             AuditAction::RuleChange => "rule_change",
             AuditAction::CredentialChange => "credential_change",
             AuditAction::AccessDenied => "access_denied",
+            AuditAction::Recording => "recording",
         }
     }
 
@@ -87,6 +90,7 @@ impl AuditAction {
             RuleChange,
             CredentialChange,
             AccessDenied,
+            Recording,
         ]
         .into_iter()
         .find(|a| a.as_str() == s)

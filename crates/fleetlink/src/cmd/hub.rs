@@ -20,6 +20,10 @@ pub struct Args {
     /// Where the hub keeps its SQLite database and files.
     #[arg(long, default_value = "./fleetlink-data")]
     pub data_dir: PathBuf,
+    /// Where MCAP recordings (`fleetlink record`, /api/v1/recordings) are written
+    /// [default: DATA_DIR/recordings].
+    #[arg(long, value_name = "DIR")]
+    pub recordings_dir: Option<PathBuf>,
     /// Keep credentials, rules, the audit log, robots, delivery marks and parameters in
     /// this PostgreSQL database (postgres://USER[:PASSWORD]@HOST[:PORT]/DB), shared with
     /// the other hubs using it, instead of SQLite in --data-dir (docs/scaling.md).
@@ -135,6 +139,7 @@ impl Args {
             listen: self.listen,
             data_dir: self.data_dir.clone(),
             database: self.database.clone(),
+            recordings_dir: self.recordings_dir.clone(),
             heartbeat: Duration::from_millis(self.heartbeat_ms.max(10)),
             max_message_size: self.max_message_size,
             default_queue: self.queue_length.max(1),

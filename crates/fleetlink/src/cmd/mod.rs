@@ -9,7 +9,10 @@ pub mod federation;
 pub mod hub;
 mod log_limit;
 pub mod msg;
+pub mod play;
 pub mod qoi_sim;
+pub mod record;
+pub mod remote;
 
 /// Completes on Ctrl-C or SIGTERM.
 pub async fn shutdown_signal() {

@@ -153,7 +153,11 @@ enum Intent {
 }
 
 /// Refuses (403, audited) unless the caller may administer `resource`.
-fn require_admin(st: &HubState, caller: &Identity, resource: &str) -> Result<(), ApiError> {
+pub(crate) fn require_admin(
+    st: &HubState,
+    caller: &Identity,
+    resource: &str,
+) -> Result<(), ApiError> {
     require(st, caller, resource, Intent::Change)
 }
 
@@ -184,6 +188,7 @@ fn require(
     let action = match intent {
         Intent::Read => AuditAction::AccessDenied,
         Intent::Change if resource == "/rules" => AuditAction::RuleChange,
+        Intent::Change if resource == "/recordings" => AuditAction::Recording,
         Intent::Change => AuditAction::CredentialChange,
     };
     st.security.audit.record(

@@ -7,6 +7,8 @@
 //! - [`admin_api`]: `/api/v1/` login/logout, rules, tokens, users and the audit log,
 //!   every change through the security core; its `ApiError` and `require_read` are
 //!   the API's refusals.
+//! - [`recordings`]: `/api/v1/recordings`: MCAP recordings started, stopped, listed,
+//!   removed and downloaded.
 //! - [`metrics`]: Prometheus `/metrics`, read from the router's counters at scrape time.
 //! - [`dashboard`]: the fleet dashboard (`web/`) files, embedded in the binary.
 //!
@@ -21,6 +23,7 @@ pub mod caller;
 pub mod dashboard;
 pub mod metrics;
 pub mod pull;
+pub mod recordings;
 
 use std::sync::Arc;
 
@@ -33,6 +36,7 @@ use crate::state::HubState;
 pub fn routes(state: Arc<HubState>) -> axum::Router<Arc<HubState>> {
     let api = api::routes()
         .merge(admin_api::routes())
+        .merge(recordings::routes())
         .route("/metrics", get(metrics::handler))
         .route_layer(axum::middleware::from_fn_with_state(
             state,

@@ -24,6 +24,8 @@
 //!   hub that restarts, measuring how the fleet comes back.
 //! - [`viewer`]: the `viewer` subcommand: a large point cloud watched over Foxglove
 //!   WebSocket or rosbridge CBOR, side by side.
+//! - [`record`]: the `record` subcommand: the hub recording a robot's mixed topics to
+//!   MCAP at a given rate; the recorder thread's CPU and its drops.
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
 //!   while the durable outbox compacts on a slow disk (test builds).
 
@@ -36,6 +38,7 @@ mod fleet_floor;
 mod journal;
 mod publisher;
 mod reconnect;
+mod record;
 mod relay;
 mod report;
 mod subscriber;
@@ -81,6 +84,10 @@ enum Command {
     /// A robot's large point cloud watched by viewers over the Foxglove WebSocket protocol
     /// or rosbridge CBOR: delivery ratio, latency from the cloud's stamp, the hub's CPU.
     Viewer(viewer::Args),
+    /// The hub recording a robot's mixed topics (point cloud, image, scan, IMU, odometry)
+    /// to MCAP at a given data rate: messages recorded and dropped, the recorder thread's
+    /// CPU.
+    Record(record::Args),
     /// The agent thread's heartbeat lateness and an adapter's latency while the durable
     /// outbox compacts a large journal on a simulated slow disk (test builds only).
     Journal(journal::Args),
@@ -97,6 +104,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::WsFloor(a) => ws_floor::run(a),
         Command::FleetFloor(a) => fleet_floor::run(a),
         Command::Viewer(a) => viewer::run(a),
+        Command::Record(a) => record::run(a),
         Command::Journal(a) => journal::run(a),
     }
 }
