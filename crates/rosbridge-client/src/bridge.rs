@@ -630,13 +630,18 @@ impl Shared {
         match m {
             PeerMsg::Call(req) => self.forward_call(req, out.is_some()),
             PeerMsg::Cancel(call) => {
+                // A goal stays forwarded: the server's `action_result` (cancelled) ends
+                // it. A service call's caller gave up: its answer is not wanted.
                 let mut st = self.lock();
-                if let Some(id) = st.forwarded_ids.remove(&call)
-                    && let Some(f) = st.forwarded.remove(&id)
-                    && f.action
-                {
-                    let frame = ops::cancel_action_goal(&id, &f.name);
-                    self.send(&st, WsMessage::text(frame));
+                let Some(id) = st.forwarded_ids.get(&call).cloned() else {
+                    return;
+                };
+                if st.forwarded.get(&id).is_some_and(|f| f.action) {
+                    let action = st.forwarded[&id].name.clone();
+                    self.send(&st, WsMessage::text(ops::cancel_action_goal(&id, &action)));
+                } else {
+                    st.forwarded_ids.remove(&call);
+                    st.forwarded.remove(&id);
                 }
             }
             PeerMsg::Event(CallEvent::Done {
@@ -1026,4 +1031,59 @@ fn strings(v: &Value, key: &str) -> Vec<String> {
                 .collect()
         })
         .unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shared() -> Shared {
+        let router = Arc::new(Router::new(Arc::new(
+            fleetlink_relay::transcode::GenericTranscoder,
+        )));
+        let (client, _) = router.connect(ClientKind::Internal { role: "t".into() }, None);
+        Shared {
+            opts: RosbridgeClientOptions::new("ws://robot:9090"),
+            router,
+            client,
+            stats: Arc::new(RosbridgeClientStats::default()),
+            state: Mutex::new(State::default()),
+        }
+    }
+
+    /// A server that refuses one topic's subscribe (an unknown type, say): counted and
+    /// logged, and the bridge reads the server's next operations as before.
+    #[test]
+    fn a_refused_subscribe_is_counted_and_the_bridge_goes_on() {
+        let s = shared();
+        let (tx, _rx) = oneshot::channel();
+        s.lock().waiting.insert("rosapi:1".into(), tx);
+        s.on_frame(r#"{"op":"status","level":"error","id":"sub:/odd","msg":"unknown type x/Y"}"#);
+        assert_eq!(s.stats.refusals.load(Relaxed), 1);
+        // Info-level status ops are not refusals; other requests are untouched.
+        s.on_frame(r#"{"op":"status","level":"info","msg":"hello"}"#);
+        assert_eq!(s.stats.refusals.load(Relaxed), 1);
+        assert!(s.lock().waiting.contains_key("rosapi:1"));
+        // A request refused with a status ends with the server's text.
+        let (tx, mut rx) = oneshot::channel();
+        s.lock().waiting.insert("rosapi:2".into(), tx);
+        s.on_frame(r#"{"op":"status","level":"error","id":"rosapi:2","msg":"no such service"}"#);
+        assert_eq!(rx.try_recv().unwrap().unwrap_err(), "no such service");
+    }
+
+    #[test]
+    fn types_are_written_as_a_ros_1_server_names_them() {
+        assert_eq!(
+            type_for_server("std_msgs/msg/String", Some(1)),
+            "std_msgs/String"
+        );
+        assert_eq!(
+            type_for_server("std_msgs/msg/String", Some(2)),
+            "std_msgs/msg/String"
+        );
+        assert_eq!(
+            type_for_server("std_msgs/String", Some(1)),
+            "std_msgs/String"
+        );
+    }
 }

@@ -333,3 +333,169 @@ async fn a_url_that_cannot_work_is_an_error_at_start() {
         "rosbridge: url \"tcp://robot:9090\" must start with ws:// or wss://"
     );
 }
+
+/// A goal from the fleet to the robot's action server: `send_action_goal` on the server,
+/// its feedback and its result come back; a second goal is cancelled.
+#[tokio::test]
+async fn action_goals_reach_the_servers_action_with_feedback_result_and_cancel() {
+    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let robot = router();
+    serve(listener, robot.clone(), CancellationToken::new());
+    // The robot's action server: one feedback, then the result (order 0: never ends,
+    // waits to be cancelled).
+    let (server, _) = robot.connect(ClientKind::Internal { role: "fib".into() }, None);
+    let (peer, rx) = ChannelPeer::new();
+    robot.calls.attach(server, peer);
+    robot.calls.advertise(
+        server,
+        name("/fibonacci"),
+        Schema::named("example_interfaces/action/Fibonacci"),
+        true,
+    );
+    let r = robot.clone();
+    tokio::spawn(async move {
+        while let Some(m) = rx.recv().await {
+            match m {
+                PeerMsg::Call(req) => {
+                    let forever =
+                        String::from_utf8_lossy(&req.payload.bytes).contains("\"order\":0");
+                    r.calls
+                        .feedback(server, req.id, Payload::json(&br#"{"sequence":[0,1]}"#[..]));
+                    if !forever {
+                        r.calls.respond(
+                            server,
+                            req.id,
+                            CallStatus::Ok,
+                            Some(Payload::json(&br#"{"sequence":[0,1,1,2]}"#[..])),
+                            String::new(),
+                        );
+                    }
+                }
+                PeerMsg::Cancel(id) => {
+                    r.calls
+                        .respond(server, id, CallStatus::Cancelled, None, "cancelled".into());
+                }
+                _ => {}
+            }
+        }
+    });
+
+    let agent = router();
+    let stop = CancellationToken::new();
+    let mut opts = options(addr);
+    opts.expose_actions = NameFilter::new(&["/fib.*".into()], &[]).unwrap();
+    let stats = Arc::new(RosbridgeClientStats::default());
+    tokio::spawn(run(opts, agent.clone(), stats, stop.clone()));
+
+    let (caller, _) = agent.connect(ClientKind::Internal { role: "op".into() }, None);
+    let (peer, events) = ChannelPeer::new();
+    agent.calls.attach(caller, peer);
+    let goal = |order: i32| {
+        agent.calls.call(
+            caller,
+            &name("/fibonacci"),
+            Payload::json(format!(r#"{{"order":{order}}}"#).into_bytes()),
+            CallOptions {
+                goal: true,
+                ..CallOptions::default()
+            },
+        )
+    };
+    let until = Instant::now() + WAIT;
+    let first = loop {
+        match goal(3) {
+            Ok(id) => break id,
+            Err(e) if Instant::now() > until => panic!("the action never appeared: {}", e.text),
+            Err(_) => tokio::time::sleep(Duration::from_millis(20)).await,
+        }
+    };
+    let next = || async {
+        let left = until.saturating_duration_since(Instant::now());
+        match tokio::time::timeout(left, events.recv()).await {
+            Ok(Some(PeerMsg::Event(e))) => e,
+            other => panic!("no call event within {WAIT:?}: {other:?}"),
+        }
+    };
+    match next().await {
+        CallEvent::Feedback { id, payload } => {
+            assert_eq!(id, first);
+            assert_eq!(&payload.bytes[..], br#"{"sequence":[0,1]}"#);
+        }
+        other => panic!("expected feedback, got {other:?}"),
+    }
+    match next().await {
+        CallEvent::Done {
+            id,
+            status,
+            payload,
+            ..
+        } => {
+            assert_eq!((id, status), (first, CallStatus::Ok));
+            assert_eq!(&payload.unwrap().bytes[..], br#"{"sequence":[0,1,1,2]}"#);
+        }
+        other => panic!("expected the result, got {other:?}"),
+    }
+
+    let second = goal(0).expect("a second goal");
+    assert!(matches!(next().await, CallEvent::Feedback { id, .. } if id == second));
+    assert!(agent.calls.cancel(caller, second));
+    match next().await {
+        CallEvent::Done { id, status, .. } => {
+            assert_eq!((id, status), (second, CallStatus::Cancelled))
+        }
+        other => panic!("expected the cancelled goal's end, got {other:?}"),
+    }
+    stop.cancel();
+}
+
+/// A robot type the agent has never seen: its definition comes from the server's
+/// `/rosapi/message_details` typedefs, and the agent's registry learns it.
+#[tokio::test]
+async fn an_unknown_type_is_defined_from_the_servers_typedefs() {
+    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let robot = router();
+    serve(listener, robot.clone(), CancellationToken::new());
+    let (program, _) = robot.connect(ClientKind::Internal { role: "bms".into() }, None);
+    let schema = Schema {
+        type_name: "acme_msgs/msg/Battery".into(),
+        encoding: "ros2msg".into(),
+        text: "float32 voltage\nstring[] cells\n".into(),
+    };
+    robot
+        .advertise(program, &name("/battery"), schema, false)
+        .unwrap();
+
+    let agent = router();
+    assert!(
+        agent
+            .transcoder()
+            .schema_for("acme_msgs/msg/Battery")
+            .is_none()
+    );
+    let mut opts = options(addr);
+    opts.publish = NameFilter::new(&["/battery".into()], &[]).unwrap();
+    let stop = CancellationToken::new();
+    let stats = Arc::new(RosbridgeClientStats::default());
+    tokio::spawn(run(opts, agent.clone(), stats, stop.clone()));
+    let until = Instant::now() + WAIT;
+    let meta = loop {
+        if let Some(t) = agent.topic(&name("/battery")) {
+            break t.meta();
+        }
+        assert!(
+            Instant::now() < until,
+            "/battery was not bridged within {WAIT:?}"
+        );
+        tokio::time::sleep(Duration::from_millis(20)).await;
+    };
+    assert_eq!(meta.schema.type_name, "acme_msgs/msg/Battery");
+    assert_eq!(meta.schema.text, "float32 voltage\nstring[] cells\n");
+    let learned = agent
+        .transcoder()
+        .schema_for("acme_msgs/msg/Battery")
+        .expect("the agent's registry learned the type");
+    assert!(learned.text.contains("string[] cells"), "{learned:?}");
+    stop.cancel();
+}
