@@ -19,9 +19,11 @@
 //! - [`options`]: what to bridge ([`RosbridgeClientOptions`]).
 //! - [`ops`]: the operations exchanged with the server (JSON text, no I/O).
 //! - [`typedefs`]: rosapi typedefs into definition text.
-//! - [`bridge`]: the connection loop, discovery and the router side ([`run`]).
+//! - [`bridge`]: the connection loop and the router side ([`run`]).
+//! - `discovery`: what the server has, through its rosapi, once per period.
 
 pub mod bridge;
+mod discovery;
 pub mod ops;
 pub mod options;
 pub mod typedefs;
