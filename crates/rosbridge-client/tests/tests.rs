@@ -499,3 +499,88 @@ async fn an_unknown_type_is_defined_from_the_servers_typedefs() {
     assert!(learned.text.contains("string[] cells"), "{learned:?}");
     stop.cancel();
 }
+
+/// A fleet service offered on the robot's server (`advertise_service`): a program there
+/// calls it and gets the fleet provider's answer.
+#[tokio::test]
+async fn a_fleet_service_is_offered_on_the_server_and_answers_its_callers() {
+    let listener = TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let robot = router();
+    serve(listener, robot.clone(), CancellationToken::new());
+
+    // The fleet's /cloud/greet, provided on the agent's side.
+    let agent = router();
+    let (cloud, _) = agent.connect(
+        ClientKind::Internal {
+            role: "cloud".into(),
+        },
+        None,
+    );
+    let (peer, rx) = ChannelPeer::new();
+    agent.calls.attach(cloud, peer);
+    agent.calls.advertise(
+        cloud,
+        name("/cloud/greet"),
+        Schema::named("std_srvs/srv/Trigger"),
+        false,
+    );
+    let a = agent.clone();
+    tokio::spawn(async move {
+        while let Some(m) = rx.recv().await {
+            if let PeerMsg::Call(req) = m {
+                let body = br#"{"success":true,"message":"hello from the cloud"}"#;
+                a.calls.respond(
+                    cloud,
+                    req.id,
+                    CallStatus::Ok,
+                    Some(Payload::json(&body[..])),
+                    String::new(),
+                );
+            }
+        }
+    });
+    let mut opts = options(addr);
+    opts.offer = NameFilter::new(&["/cloud/.*".into()], &[]).unwrap();
+    let stop = CancellationToken::new();
+    let stats = Arc::new(RosbridgeClientStats::default());
+    tokio::spawn(run(opts, agent.clone(), stats, stop.clone()));
+
+    // A program on the robot's server calls it once it is advertised there.
+    let (program, _) = robot.connect(
+        ClientKind::Internal {
+            role: "program".into(),
+        },
+        None,
+    );
+    let (peer, events) = ChannelPeer::new();
+    robot.calls.attach(program, peer);
+    let until = Instant::now() + WAIT;
+    let id = loop {
+        match robot.calls.call(
+            program,
+            &name("/cloud/greet"),
+            Payload::json(&b"{}"[..]),
+            CallOptions::default(),
+        ) {
+            Ok(id) => break id,
+            Err(e) if Instant::now() > until => panic!("never offered on the server: {}", e.text),
+            Err(_) => tokio::time::sleep(Duration::from_millis(20)).await,
+        }
+    };
+    let left = until.saturating_duration_since(Instant::now());
+    match tokio::time::timeout(left, events.recv()).await {
+        Ok(Some(PeerMsg::Event(CallEvent::Done {
+            id: done,
+            status,
+            payload,
+            text,
+        }))) => {
+            assert_eq!((done, status), (id, CallStatus::Ok), "{text}");
+            let body: serde_json::Value = serde_json::from_slice(&payload.unwrap().bytes).unwrap();
+            assert_eq!(body["message"], "hello from the cloud");
+        }
+        other => panic!("no answer within {WAIT:?}: {other:?}"),
+    }
+    stop.cancel();
+}
