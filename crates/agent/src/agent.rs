@@ -1,5 +1,5 @@
-//! Assembling an agent: local router, hub link, local listener, simulator and the ROS 1
-//! and ROS 2 bridges.
+//! Assembling an agent: local router, hub link, local listener, simulator, the ROS 1
+//! and ROS 2 bridges and the rosbridge client.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -33,6 +33,8 @@ pub struct AgentOptions {
     pub ros1: Option<fleetlink_ros1::Ros1Options>,
     /// The native ROS 2 bridge, if any.
     pub ros2: Option<fleetlink_ros2::Ros2Options>,
+    /// The rosbridge client of the robot's rosbridge server, if any.
+    pub rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
 }
 
 impl AgentOptions {
@@ -81,6 +83,7 @@ impl AgentOptions {
                 .as_ref()
                 .map(|r| ros2_options(r, cfg.name.as_str()))
                 .transpose()?,
+            rosbridge: cfg.rosbridge.as_ref().map(rosbridge_options).transpose()?,
         })
     }
 }
@@ -158,6 +161,41 @@ fn ros2_options(
     })
 }
 
+/// The rosbridge client's options from the `rosbridge:` section (checked already).
+fn rosbridge_options(
+    r: &crate::config::RosbridgeConfig,
+) -> Result<fleetlink_rosbridge_client::RosbridgeClientOptions, OptionsError> {
+    use fleetlink_auth::tls::{ClientTlsFiles, HubRoots, client_config};
+    use fleetlink_relay::names::NameFilter;
+    let tls = if r.url.starts_with("wss://") {
+        let files = ClientTlsFiles {
+            roots: HubRoots::System,
+            client_cert: None,
+        };
+        Some(client_config(&files)?)
+    } else {
+        None
+    };
+    Ok(fleetlink_rosbridge_client::RosbridgeClientOptions {
+        url: r.url.clone(),
+        token: r.token.clone(),
+        publish: NameFilter::new(&r.publish.include, &r.publish.exclude)?,
+        subscribe: r
+            .subscribe
+            .iter()
+            .map(|t| TopicName::parse(t))
+            .collect::<Result<_, _>>()?,
+        expose: NameFilter::new(&r.services.expose, &r.services.exclude)?,
+        offer: NameFilter::new(&r.services.offer, &[])?,
+        expose_actions: NameFilter::new(&r.actions.expose, &r.actions.exclude)?,
+        discovery_period: r.discovery(),
+        call_timeout: r.call_timeout(),
+        reconnect_initial: r.reconnect.initial(),
+        reconnect_max: r.reconnect.max(),
+        tls,
+    })
+}
+
 /// A configuration that checks out field by field but cannot be turned into options.
 #[derive(Debug, thiserror::Error)]
 pub enum OptionsError {
@@ -194,6 +232,7 @@ pub struct Agent {
     sim: Option<SimConfig>,
     ros1: Option<fleetlink_ros1::Ros1Options>,
     ros2: Option<fleetlink_ros2::Ros2Options>,
+    rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
     robot: fleetlink_auth::RobotName,
 }
 
@@ -206,6 +245,9 @@ pub enum AgentError {
     },
     #[error(transparent)]
     Outbox(#[from] crate::outbox_store::StoreError),
+    /// The rosbridge client's URL cannot work (not retried).
+    #[error(transparent)]
+    Rosbridge(#[from] fleetlink_rosbridge_client::RosbridgeClientError),
 }
 
 impl Agent {
@@ -221,6 +263,9 @@ impl Agent {
             ),
             None => None,
         };
+        if let Some(r) = &opts.rosbridge {
+            r.connect_url()?;
+        }
         let router = Arc::new(Router::new(transcoder));
         let robot = opts.uplink.robot.clone();
         let uplink = Uplink::new(opts.uplink, router.clone())?;
@@ -231,6 +276,7 @@ impl Agent {
             sim: opts.sim,
             ros1: opts.ros1,
             ros2: opts.ros2,
+            rosbridge: opts.rosbridge,
             robot,
         })
     }
@@ -334,6 +380,16 @@ impl Agent {
                 .map_err(|e| tracing::error!("ros2: cannot start its thread: {e}"))
                 .ok()
         });
+        let rosbridge = self.rosbridge.map(|opts| {
+            let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let stats = Arc::new(fleetlink_rosbridge_client::RosbridgeClientStats::default());
+            tokio::spawn(async move {
+                if let Err(e) = fleetlink_rosbridge_client::run(opts, router, stats, shutdown).await
+                {
+                    tracing::error!("{e}");
+                }
+            })
+        });
         let status = (!parts.is_empty()).then(|| {
             tokio::spawn(crate::status::publish(
                 self.router.clone(),
@@ -347,7 +403,7 @@ impl Agent {
         self.uplink.run(shutdown.clone()).await;
         sessions.close();
         let rest = async {
-            for t in [local, sim, ros1, status].into_iter().flatten() {
+            for t in [local, sim, ros1, rosbridge, status].into_iter().flatten() {
                 let _ = t.await;
             }
             sessions.wait().await;

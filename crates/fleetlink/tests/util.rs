@@ -213,6 +213,7 @@ pub async fn start_agent_sim(
         sim,
         ros1: None,
         ros2: None,
+        rosbridge: None,
     };
     let agent = Agent::bind(
         opts,

@@ -24,6 +24,7 @@
 mod locate;
 mod ros1;
 mod ros2;
+mod rosbridge;
 mod rosgw;
 mod sim;
 mod validate;
@@ -41,6 +42,7 @@ use serde_saphyr::MessageFormatter;
 use locate::{FieldPath, LocationTree, Segment};
 pub use ros1::{Ros1Config, Ros1Publish, Ros1Services};
 pub use ros2::{Ros2Actions, Ros2Config};
+pub use rosbridge::RosbridgeConfig;
 pub use sim::{
     ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
 };
@@ -81,6 +83,9 @@ pub struct AgentConfig {
     pub ros1: Option<Ros1Config>,
     /// The native ROS 2 bridge; `None` (the default) runs none. See docs/ros2.md.
     pub ros2: Option<Ros2Config>,
+    /// The rosbridge client of the robot's own rosbridge server; `None` (the default)
+    /// runs none. See docs/rosbridge-client.md.
+    pub rosbridge: Option<RosbridgeConfig>,
     /// Per-topic QoS of the uplink, by local topic name (see docs/qos.md); topics not
     /// listed get the defaults for their type.
     pub topics: BTreeMap<String, fleetlink_qos::TopicQosSpec>,
@@ -151,6 +156,7 @@ impl Default for AgentConfig {
             sim: None,
             ros1: None,
             ros2: None,
+            rosbridge: None,
             topics: BTreeMap::new(),
             outbox: None,
             latest_cache_mb: 64,
@@ -305,6 +311,15 @@ impl AgentConfig {
                 "(none)".to_owned()
             } else {
                 format!("(set, {} characters)", self.token.chars().count())
+            });
+        }
+        if let Some(t) = value.pointer_mut("/rosbridge/token")
+            && let Some(rb) = &self.rosbridge
+        {
+            *t = serde_json::Value::String(if rb.token.is_empty() {
+                "(none)".to_owned()
+            } else {
+                format!("(set, {} characters)", rb.token.chars().count())
             });
         }
         serde_saphyr::to_string(&value)
@@ -570,7 +585,8 @@ fn shape_example(path: &str) -> Option<&'static str> {
     Some(match path {
         "ros1" => "ros1: { publish: [/chatter], subscribe: [/cmd_vel] }",
         "ros2" => "ros2: { domain_id: 0, publish: [/scan], subscribe: [/cmd_vel] }",
-        "ros1.subscribe" | "ros2.subscribe" => "subscribe: [/cmd_vel]",
+        "rosbridge" => "rosbridge: { url: ws://192.168.1.10:9090, publish: [/odom] }",
+        "ros1.subscribe" | "ros2.subscribe" | "rosbridge.subscribe" => "subscribe: [/cmd_vel]",
         "sim" => "sim: { laser_scan: { rate_hz: 10 } }",
         "remap" => "remap: { /map: /fleet/map }",
         "subscribe" => "subscribe: [{ hub: /fleet/announcements, local: /announcements }]",

@@ -1014,3 +1014,98 @@ fn yaml_is_not_mistaken_for_rosgw() {
     assert_eq!(cfg.name.to_string(), "r2");
     assert!(cfg.ros2.is_none());
 }
+
+/// Issue 40 part 5: the `rosbridge:` section (the agent as a client of the robot's own
+/// rosbridge server), from the commented example, the reference's snippet and inline.
+#[test]
+fn rosbridge_section_becomes_client_options() {
+    let cfg = AgentConfig::from_str(
+        "rosbridge:\n  url: ws://192.168.1.10:9090\n  token: abc\n  publish: { include: ['.*'], exclude: ['/rosout', /cmd_vel] }\n  subscribe: [/cmd_vel]\n  services: { expose: [/add_two_ints], offer: ['/cloud/.*'] }\n  actions: [/fibonacci]\n  discovery_ms: 2000\n",
+        "robot.yaml",
+    )
+    .expect("valid rosbridge section");
+    let r = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .rosbridge
+        .expect("rosbridge options");
+    assert_eq!(r.url, "ws://192.168.1.10:9090");
+    assert_eq!(
+        r.connect_url().expect("url"),
+        "ws://192.168.1.10:9090?token=abc"
+    );
+    assert!(r.publish.matches("/chatter") && !r.publish.matches("/rosout"));
+    assert!(r.expose.matches("/add_two_ints") && !r.expose.matches("/other"));
+    assert!(r.offer.matches("/cloud/plan"));
+    assert!(r.expose_actions.matches("/fibonacci"));
+    assert_eq!(r.subscribe.len(), 1);
+    assert_eq!(r.discovery_period, Duration::from_secs(2));
+    assert_eq!(r.call_timeout, Duration::from_secs(10));
+    assert_eq!(r.reconnect_initial, Duration::from_millis(250));
+    assert_eq!(r.reconnect_max, Duration::from_secs(10));
+    assert!(r.tls.is_none(), "ws:// needs no TLS");
+    // `--check` shows the section, but not the token.
+    let shown = cfg.effective_yaml();
+    assert!(shown.contains("url: ws://192.168.1.10:9090"), "{shown}");
+    assert!(
+        shown.contains("(set, 3 characters)") && !shown.contains("abc"),
+        "{shown}"
+    );
+
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let cfg = AgentConfig::load(&root.join("examples/rosbridge-robot.yaml"))
+        .expect("examples/rosbridge-robot.yaml");
+    let r = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .rosbridge
+        .expect("rosbridge options");
+    assert!(r.publish.matches("/odom") && r.expose.matches("/set_mode"));
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\nrosbridge:")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("the rosbridge block in docs/config.md");
+    let cfg = AgentConfig::from_str(&format!("rosbridge:{block}"), "docs/config.md")
+        .expect("docs rosbridge example is valid");
+    assert!(cfg.rosbridge.is_some());
+}
+
+#[test]
+fn rosbridge_errors_name_the_field() {
+    assert_err(
+        "rosbridge: { publish: [/odom] }\n",
+        "robot.yaml:1:12: rosbridge.url: is required: the robot's rosbridge server, such as ws://192.168.1.10:9090",
+    );
+    assert_err(
+        "rosbridge: { url: 'http://robot:9090' }\n",
+        "robot.yaml:1:19: rosbridge.url: must be a ws:// or wss:// URL such as ws://192.168.1.10:9090, got \"http://robot:9090\"",
+    );
+    assert_err(
+        "rosbridge:\n  url: ws://robot:9090\n  publish: { include: ['/odom('] }\n",
+        "robot.yaml:3:24: rosbridge.publish.include[0]: is not a valid pattern (error: unclosed group): \"/odom(\"",
+    );
+    assert_err(
+        "rosbridge:\n  url: ws://robot:9090\n  publish: ['.*']\n  subscribe: [/cmd_vel]\n",
+        "robot.yaml:4:15: rosbridge.subscribe[0]: \"/cmd_vel\" also matches rosbridge.publish: it would be sent to the server and read back from it in a loop; exclude it there (publish.exclude)",
+    );
+    assert_err(
+        "rosbridge:\n  url: ws://robot:9090\n  actions: { offer: [/dock] }\n",
+        "robot.yaml:3:21: rosbridge.actions.offer: is not supported by the rosbridge client: fleet actions cannot be offered on a rosbridge server yet (expose the server's actions with actions.expose)",
+    );
+    assert_err(
+        "rosbridge: { url: 'ws://robot:9090', discovery_ms: 0 }\n",
+        "robot.yaml:1:52: rosbridge.discovery_ms: must be > 0, got 0",
+    );
+    assert_err(
+        "rosbridge: { url: 'ws://robot:9090', reconnect: { initial_ms: 500, max_ms: 100 } }\n",
+        "robot.yaml:1:76: rosbridge.reconnect.max_ms: must be >= rosbridge.reconnect.initial_ms (500), got 100",
+    );
+    assert_err(
+        "rosbridge: { url: 'ws://robot:9090', password: x }\n",
+        "robot.yaml:1:38: rosbridge.password: unknown field `password`, expected one of url, token, publish, subscribe, services, actions, discovery_ms, call_timeout_ms, reconnect",
+    );
+    assert_err(
+        "rosbridge: [ws://robot:9090]\n",
+        "robot.yaml:1:12: rosbridge: expected mapping start; write it as, for example, `rosbridge: { url: ws://192.168.1.10:9090, publish: [/odom] }`",
+    );
+}

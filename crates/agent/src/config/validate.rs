@@ -137,6 +137,9 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(r) = &cfg.ros2 {
         validate_ros2(r)?;
     }
+    if let Some(r) = &cfg.rosbridge {
+        validate_rosbridge(r)?;
+    }
     let topics = FieldPath::from("topics");
     for (name, spec) in &cfg.topics {
         check_topic(name).map_err(|m| Problem {
@@ -298,6 +301,78 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
     ];
     check_patterns(lists)?;
     check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
+}
+
+fn validate_rosbridge(r: &super::RosbridgeConfig) -> Result<(), Problem> {
+    let at = FieldPath::from("rosbridge");
+    if r.url.is_empty() {
+        return Err(problem(
+            at.key("url"),
+            "is required: the robot's rosbridge server, such as ws://192.168.1.10:9090",
+        ));
+    }
+    if !(r.url.starts_with("ws://") || r.url.starts_with("wss://")) {
+        return Err(problem(
+            at.key("url"),
+            format!(
+                "must be a ws:// or wss:// URL such as ws://192.168.1.10:9090, got {:?}",
+                r.url
+            ),
+        ));
+    }
+    check_hub_url(&r.url).map_err(|m| problem(at.key("url"), m))?;
+    let lists = [
+        (at.key("publish").key("include"), &r.publish.include),
+        (at.key("publish").key("exclude"), &r.publish.exclude),
+        (at.key("services").key("expose"), &r.services.expose),
+        (at.key("services").key("exclude"), &r.services.exclude),
+        (at.key("services").key("offer"), &r.services.offer),
+        (at.key("actions").key("expose"), &r.actions.expose),
+        (at.key("actions").key("exclude"), &r.actions.exclude),
+    ];
+    check_patterns(lists)?;
+    if !r.actions.offer.is_empty() {
+        return Err(problem(
+            at.key("actions").key("offer"),
+            "is not supported by the rosbridge client: fleet actions cannot be offered on \
+             a rosbridge server yet (expose the server's actions with actions.expose)",
+        ));
+    }
+    check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)?;
+    // A topic both read from the server and written to it would come straight back
+    // (a rosbridge server delivers a client's own publishes to its subscriptions).
+    let publish = fleetlink_relay::names::NameFilter::new(&r.publish.include, &r.publish.exclude)
+        .map_err(|e| problem(at.key("publish"), e.to_string()))?;
+    if let Some((i, t)) = r
+        .subscribe
+        .iter()
+        .enumerate()
+        .find(|(_, t)| publish.matches(t))
+    {
+        return Err(problem(
+            at.key("subscribe").index(i),
+            format!(
+                "{t:?} also matches rosbridge.publish: it would be sent to the server and \
+                 read back from it in a loop; exclude it there (publish.exclude)"
+            ),
+        ));
+    }
+    if r.reconnect.initial_ms == 0 {
+        return Err(problem(
+            at.key("reconnect").key("initial_ms"),
+            "must be > 0, got 0",
+        ));
+    }
+    if r.reconnect.max_ms < r.reconnect.initial_ms {
+        return Err(problem(
+            at.key("reconnect").key("max_ms"),
+            format!(
+                "must be >= rosbridge.reconnect.initial_ms ({}), got {}",
+                r.reconnect.initial_ms, r.reconnect.max_ms
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// A ROS 2 node name, maybe with its namespace: `/`-separated tokens of `[A-Za-z0-9_]`

@@ -165,6 +165,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         if let Some(a) = agent.local_addr() {
             println!("  local rosbridge: ws://{a}/");
         }
+        if let Some(r) = &cfg.rosbridge {
+            println!("  rosbridge client of: {}", r.url);
+        }
         let stop = CancellationToken::new();
         let s = stop.clone();
         tokio::spawn(async move {

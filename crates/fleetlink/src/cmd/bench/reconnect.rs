@@ -110,6 +110,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             sim: None,
             ros1: None,
             ros2: None,
+            rosbridge: None,
         };
         let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;
         states.push(agent.link_state());
