@@ -369,6 +369,20 @@ impl<T: WireLen> Scheduler<T> {
         };
     }
 
+    /// Releases every held topic: the connection whose writer held them (a large
+    /// message going out in chunks) is gone, and with it the lane that would have.
+    pub fn release_all_held(&mut self, now: Nanos) {
+        let held: Vec<TopicId> = self
+            .index
+            .iter()
+            .filter(|(_, i)| self.topics[**i as usize].held)
+            .map(|(id, _)| *id)
+            .collect();
+        for id in held {
+            self.set_held(id, false, now);
+        }
+    }
+
     /// Holds back (or releases) a topic that is not a no-drop one: while held it is never
     /// picked, and what it publishes waits in its own queue under its drop policy. The
     /// link writer holds a topic while one of its large messages is still going out in

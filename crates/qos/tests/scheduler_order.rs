@@ -208,3 +208,23 @@ fn a_held_topic_is_skipped_while_its_queue_keeps_its_policy() {
     assert_eq!((id, m.seq), (A, 2));
     assert!(s.poll_next(later).is_none());
 }
+
+#[test]
+fn a_new_connection_releases_the_topics_the_old_writer_held() {
+    let mut s = sched(32);
+    s.add_topic(A, qos(10.0)).unwrap();
+    s.add_topic(B, qos(1.0)).unwrap();
+    let t = Nanos::ZERO;
+    // Both held mid-message when the link died; their writer (and its lanes) are gone.
+    s.set_held(A, true, t);
+    s.set_held(B, true, t);
+    let _ = s.offer(A, msg(1, 10), t);
+    let _ = s.offer(B, msg(1, 10), t);
+    assert!(s.poll_next(t).is_none());
+    s.on_link_reset();
+    s.release_all_held(Nanos::from_millis(1));
+    let mut got: Vec<_> =
+        std::iter::from_fn(|| s.poll_next(Nanos::from_millis(2)).map(|(id, _)| id)).collect();
+    got.sort_by_key(|id| *id != A);
+    assert_eq!(got, [A, B]);
+}

@@ -599,10 +599,14 @@ impl Outbox {
             link,
             reliable,
             demand,
+            origin,
             ..
         } = &mut st.service
         {
             sched.on_link_reset();
+            // A topic held for a large message the old connection was sending in chunks
+            // would stay held for good: its lane died with that connection's writer.
+            sched.release_all_held(Nanos::since(*origin, Instant::now()));
             link.reset();
             // A new connection has announced nothing yet.
             demand.announced.clear();
