@@ -8,7 +8,7 @@
 #
 #   cargo build --release -p fleetlink && scripts/bench-record.sh [ROUNDS] [MB/s] [SECONDS]
 #
-# Env: FLEETLINK_BIN (default target/release/fleetlink), COMPRESSION (zstd or none).
+# Env: FLEETLINK_BIN (default target/release/fleetlink), COMPRESSION (zstd, lz4 or none).
 set -euo pipefail
 . "$(dirname "$0")/bench-lib.sh"
 rounds="${1:-3}"

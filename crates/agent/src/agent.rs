@@ -1,5 +1,5 @@
 //! Assembling an agent: local router, hub link, local listener, simulator, the ROS 1
-//! and ROS 2 bridges and the rosbridge client.
+//! and ROS 2 bridges, the rosbridge client and the black box.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -35,6 +35,8 @@ pub struct AgentOptions {
     pub ros2: Option<fleetlink_ros2::Ros2Options>,
     /// The rosbridge client of the robot's rosbridge server, if any.
     pub rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
+    /// The black box, if any.
+    pub blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
 }
 
 impl AgentOptions {
@@ -84,6 +86,14 @@ impl AgentOptions {
                 .map(|r| ros2_options(r, cfg.name.as_str()))
                 .transpose()?,
             rosbridge: cfg.rosbridge.as_ref().map(rosbridge_options).transpose()?,
+            blackbox: cfg.blackbox.as_ref().map(|b| {
+                fleetlink_record::blackbox::ring::RingOptions {
+                    dir: b.dir.clone().into(),
+                    max_bytes: b.max_mb.saturating_mul(1 << 20),
+                    topics: b.topics.clone(),
+                    compression: b.compression,
+                }
+            }),
         })
     }
 }
@@ -233,6 +243,7 @@ pub struct Agent {
     ros1: Option<fleetlink_ros1::Ros1Options>,
     ros2: Option<fleetlink_ros2::Ros2Options>,
     rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
+    blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
     robot: fleetlink_auth::RobotName,
 }
 
@@ -277,6 +288,7 @@ impl Agent {
             ros1: opts.ros1,
             ros2: opts.ros2,
             rosbridge: opts.rosbridge,
+            blackbox: opts.blackbox,
             robot,
         })
     }
@@ -390,6 +402,13 @@ impl Agent {
                 }
             })
         });
+        let blackbox = self.blackbox.map(|opts| {
+            tokio::spawn(crate::blackbox::serve(
+                opts,
+                self.router.clone(),
+                shutdown.clone(),
+            ))
+        });
         let status = (!parts.is_empty()).then(|| {
             tokio::spawn(crate::status::publish(
                 self.router.clone(),
@@ -403,7 +422,10 @@ impl Agent {
         self.uplink.run(shutdown.clone()).await;
         sessions.close();
         let rest = async {
-            for t in [local, sim, ros1, rosbridge, status].into_iter().flatten() {
+            for t in [local, sim, ros1, rosbridge, blackbox, status]
+                .into_iter()
+                .flatten()
+            {
                 let _ = t.await;
             }
             sessions.wait().await;

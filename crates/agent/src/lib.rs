@@ -7,6 +7,8 @@
 //! # Layout
 //!
 //! - [`agent`]: assembles and runs the pieces from one set of options.
+//! - [`blackbox`]: the black box: a ring of local topics on disk, and the service the hub
+//!   fetches slices of it through.
 //! - [`config`]: the agent's YAML configuration, with errors that name file, line and field.
 //! - [`local`]: the local rosbridge-compatible listener.
 //! - [`outbox_store`]: the durable outbox: no-drop messages on disk until the hub has them.
@@ -16,6 +18,7 @@
 //! - [`uplink`]: the `fleetlink.v1` link to the hub: reconnects, heartbeat, name mapping.
 
 pub mod agent;
+pub mod blackbox;
 pub mod config;
 pub mod local;
 pub mod outbox_store;

@@ -291,7 +291,11 @@ impl Uplink {
         };
         let specs = cfg.topic_qos.clone();
         let qos_for: QosFor = Arc::new(move |meta: &TopicMeta| {
-            let base = TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name);
+            let base = if meta.name.as_str() == fleetlink_record::blackbox::DATA_TOPIC {
+                crate::blackbox::data_qos()
+            } else {
+                TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name)
+            };
             match specs.iter().find(|(n, _)| *n == meta.name) {
                 Some((_, spec)) => spec.resolve(&base).unwrap_or_else(|e| {
                     tracing::warn!("topic {}: {e}; using the defaults for its type", meta.name);

@@ -7,6 +7,7 @@ mod e2e {
     mod acl;
     mod audit;
     mod bench_cli;
+    mod blackbox;
     mod calls;
     mod capacity;
     mod cli;

@@ -207,14 +207,20 @@ pub async fn start_agent_sim(
     local: bool,
     sim: Option<fleetlink_agent::config::SimConfig>,
 ) -> TestAgent {
-    let opts = AgentOptions {
+    start_agent_opts(AgentOptions {
         uplink,
         local_listen: local.then(|| "127.0.0.1:0".parse().unwrap()),
         sim,
         ros1: None,
         ros2: None,
         rosbridge: None,
-    };
+        blackbox: None,
+    })
+    .await
+}
+
+/// An agent with any options.
+pub async fn start_agent_opts(opts: AgentOptions) -> TestAgent {
     let agent = Agent::bind(
         opts,
         Arc::new(fleetlink_relay::transcode::RegistryTranscoder::bundled()),

@@ -136,6 +136,7 @@ impl McapFile {
             .library(concat!("fleetlink ", env!("CARGO_PKG_VERSION")))
             .compression(match compression {
                 Compression::Zstd => Some(mcap::Compression::Zstd),
+                Compression::Lz4 => Some(mcap::Compression::Lz4),
                 Compression::None => None,
             })
             // Chunks are closed here (`CHUNK_MAX`), and compressed on this thread: the
@@ -208,6 +209,16 @@ impl McapFile {
         f.end_ns = Some(f.end_ns.map_or(log_time, |e| e.max(log_time)));
         f.bytes = len;
         Ok(true)
+    }
+
+    /// Closes the open chunk (if any) and writes it out, so that a reader finds every
+    /// message written so far even if the process dies before the file is finished.
+    pub fn close_chunk(&mut self) -> std::io::Result<()> {
+        if self.in_chunk > 0 {
+            self.writer.flush().map_err(to_io)?;
+            self.in_chunk = 0;
+        }
+        Ok(())
     }
 
     /// Bytes written so far (the open chunk not yet among them).

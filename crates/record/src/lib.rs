@@ -9,7 +9,10 @@
 //! - [`file`]: one MCAP file: typed channels, chunks of at most [`file::CHUNK_MAX`],
 //!   zstd, indexes and summary, the recording's figures as metadata.
 //! - [`read`]: an MCAP file front to back (`fleetlink play`).
+//! - [`blackbox`]: the robot's ring buffer, slices cut from it, and the hub fetching a
+//!   slice over the link.
 
+pub mod blackbox;
 pub mod file;
 pub mod read;
 pub mod recorder;

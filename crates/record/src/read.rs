@@ -22,6 +22,8 @@ pub struct Channel {
     /// `ros2msg`, `ros1msg`, `jsonschema`, ...; empty without a schema.
     pub schema_encoding: String,
     pub schema: Vec<u8>,
+    /// The channel's metadata (`offered_qos_profiles`, `latching`, ...).
+    pub metadata: std::collections::BTreeMap<String, String>,
 }
 
 /// What the file says next.
@@ -30,7 +32,9 @@ pub enum Item {
     Channel(Channel),
     Message {
         channel: u16,
+        sequence: u32,
         log_time: u64,
+        publish_time: u64,
         data: Vec<u8>,
     },
 }
@@ -106,12 +110,15 @@ impl McapReader {
                                 schema_name: name,
                                 schema_encoding: enc,
                                 schema,
+                                metadata: c.metadata,
                             });
                         }
                         Record::Message { header, data } => {
                             return Some(Ok(Item::Message {
                                 channel: header.channel_id,
+                                sequence: header.sequence,
                                 log_time: header.log_time,
+                                publish_time: header.publish_time,
                                 data: data.into_owned(),
                             }));
                         }
@@ -128,7 +135,7 @@ impl McapReader {
 fn describe(e: mcap::McapError) -> String {
     match e {
         mcap::McapError::UnsupportedCompression(c) => format!(
-            "chunks compressed with {c:?}, which fleetlink does not read (zstd or none); \
+            "chunks compressed with {c:?}, which fleetlink does not read (zstd, lz4 or none); \
              recompress with `mcap compress --compression zstd`"
         ),
         e => e.to_string(),

@@ -40,6 +40,8 @@ pub enum State {
     Interrupted,
     /// Writing failed (a full disk, say); `error` says why.
     Failed,
+    /// A slice of a robot's black box on its way (`blackbox` says how far).
+    Fetching,
 }
 
 /// A recording as the API shows it and `recording.json` keeps it.
@@ -67,6 +69,9 @@ pub struct RecordingInfo {
     pub files: Vec<FileFigures>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+    /// Set for a slice fetched from a robot's black box.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub blackbox: Option<crate::blackbox::fetch::BlackBoxFetch>,
 }
 
 /// What the API and the recorder's thread share.
@@ -80,7 +85,7 @@ impl Shared {
         self.info.lock().unwrap_or_else(|p| p.into_inner()).clone()
     }
 
-    fn update(&self, f: impl FnOnce(&mut RecordingInfo)) {
+    pub(crate) fn update(&self, f: impl FnOnce(&mut RecordingInfo)) {
         f(&mut self.info.lock().unwrap_or_else(|p| p.into_inner()))
     }
 }

@@ -10,6 +10,7 @@ use fleetlink_relay::Router;
 use fleetlink_relay::gate::Gate;
 use tokio_util::sync::CancellationToken;
 
+use crate::blackbox::fetch::{self, BlackBoxFetch, FetchSpec};
 use crate::recorder::{self, Job, RecordingInfo, Shared, State};
 use crate::spec::RecordSpec;
 
@@ -26,7 +27,7 @@ pub enum RecordError {
     Invalid(String),
     #[error("no recording {0}")]
     NotFound(String),
-    #[error("{MAX_ACTIVE} recordings are running already; stop one first")]
+    #[error("{MAX_ACTIVE} recordings and fetches are running already; stop one first")]
     TooMany,
     /// The disk or the system refused.
     #[error("{0}")]
@@ -35,7 +36,10 @@ pub enum RecordError {
 
 struct Entry {
     shared: Arc<Shared>,
+    /// A recording's writer.
     thread: Option<std::thread::JoinHandle<()>>,
+    /// A black-box fetch's task.
+    task: Option<tokio::task::JoinHandle<()>>,
 }
 
 pub struct Recordings {
@@ -66,6 +70,12 @@ impl Recordings {
                     continue;
                 }
             };
+            if info.state == State::Fetching {
+                info.state = State::Interrupted;
+                info.error =
+                    Some("the hub stopped while the slice was on its way; fetch it again".into());
+                write_info(&dir.join(&info.id), &info);
+            }
             if info.state == State::Recording {
                 info.state = State::Interrupted;
                 // What the last file holds is what a reader finds up to its last chunk.
@@ -85,6 +95,7 @@ impl Recordings {
                         stop: CancellationToken::new(),
                     }),
                     thread: None,
+                    task: None,
                 },
             );
         }
@@ -110,24 +121,9 @@ impl Recordings {
     ) -> Result<RecordingInfo, RecordError> {
         spec.check().map_err(RecordError::Invalid)?;
         let mut entries = self.lock();
-        let active = entries
-            .values()
-            .filter(|e| e.shared.info().state == State::Recording)
-            .count();
-        if active >= MAX_ACTIVE {
-            return Err(RecordError::TooMany);
-        }
+        check_active(&entries)?;
         let now_ms = fleetlink_relay::unix_nanos() / 1_000_000;
-        let base = id_at(now_ms);
-        let mut id = base.clone();
-        let mut n = 1;
-        while entries.contains_key(&id) || self.dir.join(&id).exists() {
-            n += 1;
-            id = format!("{base}-{n}");
-        }
-        let dir = self.dir.join(&id);
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| RecordError::Io(format!("creating {}: {e}", dir.display())))?;
+        let (id, dir) = self.new_dir(&entries, "rec", now_ms)?;
         let info = RecordingInfo {
             id: id.clone(),
             spec,
@@ -142,6 +138,7 @@ impl Recordings {
             unconvertible: 0,
             files: Vec::new(),
             error: None,
+            blackbox: None,
         };
         write_info(&dir, &info);
         let shared = Arc::new(Shared {
@@ -165,9 +162,102 @@ impl Recordings {
             Entry {
                 shared,
                 thread: Some(thread),
+                task: None,
             },
         );
         Ok(info)
+    }
+
+    /// Asks robot `spec.robot` for a slice of its black box as `started_by`, keeping what
+    /// `gate` allows; the slice arrives in the background (state `fetching`). `online`
+    /// tells a robot that is away (waited for) from one without a black box (an error).
+    /// Must be called within a Tokio runtime.
+    pub fn fetch(
+        &self,
+        spec: FetchSpec,
+        started_by: String,
+        gate: Box<dyn Gate>,
+        online: fetch::Online,
+    ) -> Result<RecordingInfo, RecordError> {
+        spec.check().map_err(RecordError::Invalid)?;
+        let mut entries = self.lock();
+        check_active(&entries)?;
+        let now_ms = fleetlink_relay::unix_nanos() / 1_000_000;
+        let (id, dir) = self.new_dir(&entries, &format!("bb-{}", spec.robot), now_ms)?;
+        let mut record = RecordSpec::topics(spec.topics.clone());
+        record.name = spec.name.clone();
+        let info = RecordingInfo {
+            id: id.clone(),
+            spec: record,
+            state: State::Fetching,
+            started_by,
+            started_at_ms: now_ms,
+            stopped_at_ms: None,
+            messages: 0,
+            bytes: 0,
+            dropped: 0,
+            refused: 0,
+            unconvertible: 0,
+            files: Vec::new(),
+            error: None,
+            blackbox: Some(BlackBoxFetch {
+                robot: spec.robot.clone(),
+                range: spec.range(),
+                size: None,
+                received: 0,
+                sha256: None,
+                calls: 0,
+                resumed: 0,
+                refused: 0,
+                waiting: None,
+            }),
+        };
+        write_info(&dir, &info);
+        let shared = Arc::new(Shared {
+            info: Mutex::new(info.clone()),
+            stop: CancellationToken::new(),
+        });
+        let keep_dir = dir.clone();
+        let job = fetch::FetchJob {
+            router: self.router.clone(),
+            shared: shared.clone(),
+            dir,
+            gate,
+            online,
+            persist: Box::new(move |i| write_info(&keep_dir, i)),
+        };
+        let task = tokio::spawn(fetch::run(job));
+        tracing::info!(recording = %id, robot = %spec.robot, "black-box fetch started");
+        entries.insert(
+            id,
+            Entry {
+                shared,
+                thread: None,
+                task: Some(task),
+            },
+        );
+        Ok(info)
+    }
+
+    /// A new recording's id (`{prefix}-YYYYMMDD-HHMMSS`, numbered if taken) and its
+    /// directory, created.
+    fn new_dir(
+        &self,
+        entries: &BTreeMap<String, Entry>,
+        prefix: &str,
+        now_ms: u64,
+    ) -> Result<(String, PathBuf), RecordError> {
+        let base = format!("{prefix}-{}", id_at(now_ms));
+        let mut id = base.clone();
+        let mut n = 1;
+        while entries.contains_key(&id) || self.dir.join(&id).exists() {
+            n += 1;
+            id = format!("{base}-{n}");
+        }
+        let dir = self.dir.join(&id);
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| RecordError::Io(format!("creating {}: {e}", dir.display())))?;
+        Ok((id, dir))
     }
 
     /// Every recording, newest first.
@@ -187,17 +277,20 @@ impl Recordings {
     /// Stops a recording and waits until its files are finished; stopping a stopped one
     /// changes nothing.
     pub async fn stop(&self, id: &str) -> Result<RecordingInfo, RecordError> {
-        let thread = {
+        let (thread, task) = {
             let mut entries = self.lock();
             let e = entries
                 .get_mut(id)
                 .ok_or_else(|| RecordError::NotFound(clip(id)))?;
             e.shared.stop.cancel();
-            e.thread.take()
+            (e.thread.take(), e.task.take())
         };
         if let Some(t) = thread {
             let _ = tokio::task::spawn_blocking(move || t.join()).await;
             tracing::info!(recording = %id, "recording stopped");
+        }
+        if let Some(t) = task {
+            let _ = t.await;
         }
         self.get(id)
     }
@@ -218,7 +311,7 @@ impl Recordings {
         let running: Vec<String> = self
             .lock()
             .iter()
-            .filter(|(_, e)| e.thread.is_some())
+            .filter(|(_, e)| e.thread.is_some() || e.task.is_some())
             .map(|(id, _)| id.clone())
             .collect();
         for id in running {
@@ -244,12 +337,23 @@ impl Recordings {
     }
 }
 
-/// A recording's id from its start: `rec-20261128-193005` (UTC).
+fn check_active(entries: &BTreeMap<String, Entry>) -> Result<(), RecordError> {
+    let active = entries
+        .values()
+        .filter(|e| matches!(e.shared.info().state, State::Recording | State::Fetching))
+        .count();
+    if active >= MAX_ACTIVE {
+        return Err(RecordError::TooMany);
+    }
+    Ok(())
+}
+
+/// A time for ids: `20261128-193005` (UTC).
 fn id_at(unix_ms: u64) -> String {
     let t = time::OffsetDateTime::from_unix_timestamp((unix_ms / 1000) as i64)
         .unwrap_or(time::OffsetDateTime::UNIX_EPOCH);
     format!(
-        "rec-{:04}{:02}{:02}-{:02}{:02}{:02}",
+        "{:04}{:02}{:02}-{:02}{:02}{:02}",
         t.year(),
         u8::from(t.month()),
         t.day(),
@@ -281,6 +385,6 @@ mod tests {
 
     #[test]
     fn ids_read_as_the_utc_start() {
-        assert_eq!(id_at(1_795_895_405_000), "rec-20261128-195005");
+        assert_eq!(id_at(1_795_895_405_000), "20261128-195005");
     }
 }

@@ -1,7 +1,8 @@
 // The dashboard in real headless Chromium (Debian's package, driven by puppeteer-core)
 // against `fleetlink demo`: fleet view, robot panels (the camera's picture decoded), the
 // marker layer (the simulator's pillars, walls and goal as visualization_msgs markers),
-// navigation goal + cancel, a service form call, and a viewer without publish rights.
+// navigation goal + cancel, a service form call, the recordings page's black-box form, and
+// a viewer without publish rights.
 // Screenshots of each view go to --shots. Exits non-zero when any check failed.
 //
 //   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --user U --password P --viewer-token V --shots DIR
@@ -237,6 +238,26 @@ try {
   await page.click(".filters button[type=submit]");
   const logins = await until(page, () => { const rows = [...document.querySelectorAll("table.audit tbody tr")]; return /page 1/.test(document.querySelector(".pager").textContent) && rows.length > 0 && rows.every((r) => r.children[3].textContent === "login") && rows.map((r) => r.children[1].textContent); }, null, 5000, "audit log filtered by action");
   if (logins) check(logins.includes(`user:${o.user}`), `audit filter action=login: ${logins.join(", ")}`);
+  // --- recordings: the black-box form is there, its robot select filled from the hub's
+  // robots (the form only: the demo's robots keep no black box to fetch from).
+  step = "recordings";
+  await page.goto(`${o.url}#/recordings`);
+  const bbRobots = await until(page, () => {
+    const f = document.querySelector("#blackbox-form");
+    const names = [...(f?.querySelectorAll("select[name=robot] option") ?? [])].map((x) => x.value);
+    return ["robot1", "robot2", "robot3"].every((r) => names.includes(r)) && names;
+  }, null, 5000, "recordings: black-box form with the robots in its select");
+  if (bbRobots) {
+    const form = await page.$eval("#blackbox-form", (f) => ({
+      last: f.querySelector("input[name=last_s]")?.value,
+      topics: !!f.querySelector("input[name=topics]"),
+      name: !!f.querySelector("input[name=name]"),
+      button: f.querySelector("button[type=submit]")?.textContent,
+    }));
+    check(form.last === "60" && form.topics && form.name && form.button === "Fetch black box",
+      `recordings: black-box form (robots ${bbRobots.join(", ")}; ${JSON.stringify(form)})`);
+  }
+  await shot(page, "6b-recordings");
   // --- a pull topic (the robot sends /markers only when asked): its button in the topic
   // table asks the hub (POST …/topics/markers/pull), which asks the robot for one message
   // and shows it.

@@ -12,7 +12,8 @@
 #    token with no group, allowed to subscribe only) and robot4, a separate agent that the
 #    browser check stops to see a robot go offline. Then dashboard_check.mjs drives Chromium
 #    through the fleet view, the robot view, a navigation goal and Cancel, a service form,
-#    the admin view, and the viewer's disabled tasking and refused forged publish.
+#    the admin view, the recordings page's black-box form, and the viewer's disabled
+#    tasking and refused forged publish.
 #
 # Screenshots are kept in the directory printed at the end (outside the suite's temp
 # directory, which is removed). Every process started here is stopped on exit. Bounded:

@@ -14,6 +14,7 @@ import signal
 import subprocess
 import sys
 import time
+import urllib.error
 import urllib.request
 from dataclasses import dataclass, field
 
@@ -256,17 +257,30 @@ class Fleet:
         except (OSError, ValueError, KeyError):
             return []
 
+    def api(self, method, path, body=None, timeout=5):
+        """(status, JSON) of a call of the hub's API as the operator."""
+        data = None if body is None else json.dumps(body).encode()
+        req = urllib.request.Request(f"http://127.0.0.1:{self.hub_port}{path}", data=data, method=method,
+                                     headers={"Authorization": f"Bearer {self.op_token}",
+                                              "Content-Type": "application/json"})
+        try:
+            with urllib.request.urlopen(req, timeout=timeout) as r:
+                return r.status, json.load(r)
+        except urllib.error.HTTPError as e:
+            return e.code, json.loads(e.read() or b"{}")
+
     def hub_url(self, across_link=False):
         """From the hub namespace (loopback), or across the veth from the robot's."""
         host = self.net.hub_ip if across_link else "127.0.0.1"
         return f"ws://{host}:{self.hub_port}/?token={self.op_token}"
 
     # --- agent
-    def agent_yaml(self, sim, topics=None, link=None):
+    def agent_yaml(self, sim, topics=None, link=None, extra=()):
         """`sim`: False (no simulator), True (the point cloud only) or the `sim:` map as
         YAML text. `topics`: more entries of the `topics:` map, local name -> QoS as YAML
         text (`{ compression: none }`). `link`: the `link:` map as YAML text
-        (`{ budget: { max_kbps: 400 } }`), None for none."""
+        (`{ budget: { max_kbps: 400 } }`), None for none. `extra`: more top-level lines
+        (`blackbox: {...}`)."""
         lines = [
             f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
             "name: robot1",
@@ -284,22 +298,23 @@ class Fleet:
         lines += [f"  {name}: {qos}" for name, qos in (topics or {}).items()]
         if link is not None:
             lines.append(f"link: {link}")
+        lines += list(extra)
         if isinstance(sim, str):
             lines.append(f"sim: {sim}")
         elif sim:
             lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
         return "\n".join(lines) + "\n"
 
-    def start_agent(self, sim=False, same_outbox=False, topics=None, link=None):
+    def start_agent(self, sim=False, same_outbox=False, topics=None, link=None, extra=()):
         """A fresh outbox directory per agent, unless this is a restart of the last one (a
-        fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`:
-        see `agent_yaml`."""
+        fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`,
+        `extra`: see `agent_yaml`."""
         if not same_outbox:
             self.agents += 1
             self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
         path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
         with open(path, "w") as f:
-            f.write(self.agent_yaml(sim, topics, link))
+            f.write(self.agent_yaml(sim, topics, link, extra))
         self.agent = self.procs.start("agent", self.net.robot_ns, [self.bin, "agent", "--config", path])
         m = self.procs.wait_line(self.agent, r"^  local rosbridge: (ws://[0-9.:]+/)$", 15, "agent start")
         self.local_url = m.group(1)

@@ -19,7 +19,7 @@
 #
 # Env: FLEETLINK_BIN (default target/release/fleetlink), PYTHON (default .venv/bin/python),
 #      LINKS_OUT (results directory, default target/interop-links),
-#      LINKS_SCENARIOS ("1 2 3 4 5 6 7 8 9"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
+#      LINKS_SCENARIOS ("1 2 3 4 5 6 7 8 9 10"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
 #      LINKS_KEEP (non-empty: keep the logs and records in the temp directory),
 #      LINKS_IDLE_P99_FLOOR_MS (15: the ramp's latency bound is 2 x max(idle p99, floor)).
 set -euo pipefail

@@ -98,6 +98,35 @@ pub struct AgentConfig {
     pub latest_cache_mb: u64,
     /// The robot's link: its data budget.
     pub link: LinkSettings,
+    /// The black box: chosen local topics kept on disk in MCAP, from which the hub can
+    /// fetch a slice; `None` (the default) keeps none. See docs/recording.md.
+    pub blackbox: Option<BlackBoxConfig>,
+}
+
+/// `blackbox:` — a ring buffer of local topics on the robot's disk, in MCAP segments, the
+/// oldest deleted past `max_mb`. It keeps its topics whether or not they are sent.
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BlackBoxConfig {
+    /// Directory of the ring (`ring/`) and of slices cut for the hub (`slices/`). Required.
+    pub dir: String,
+    /// Most megabytes (MiB) of segments kept. Default 512; at least 8.
+    pub max_mb: u64,
+    /// Whole-name patterns of the local topics to keep. Required.
+    pub topics: Vec<String>,
+    /// `zstd` (the default) or `none`.
+    pub compression: fleetlink_record::Compression,
+}
+
+impl Default for BlackBoxConfig {
+    fn default() -> Self {
+        BlackBoxConfig {
+            dir: String::new(),
+            max_mb: 512,
+            topics: Vec::new(),
+            compression: fleetlink_record::Compression::Zstd,
+        }
+    }
 }
 
 /// `link:` — what the robot's link may carry.
@@ -161,6 +190,7 @@ impl Default for AgentConfig {
             outbox: None,
             latest_cache_mb: 64,
             link: LinkSettings::default(),
+            blackbox: None,
         }
     }
 }
@@ -588,6 +618,7 @@ fn shape_example(path: &str) -> Option<&'static str> {
         "rosbridge" => "rosbridge: { url: ws://192.168.1.10:9090, publish: [/odom] }",
         "ros1.subscribe" | "ros2.subscribe" | "rosbridge.subscribe" => "subscribe: [/cmd_vel]",
         "sim" => "sim: { laser_scan: { rate_hz: 10 } }",
+        "blackbox" => "blackbox: { dir: /var/lib/fleetlink/blackbox, topics: [/scan, /odom] }",
         "remap" => "remap: { /map: /fleet/map }",
         "subscribe" => "subscribe: [{ hub: /fleet/announcements, local: /announcements }]",
         "topics" => "topics: { /scan: { priority: 5 } }",

@@ -1109,3 +1109,51 @@ fn rosbridge_errors_name_the_field() {
         "robot.yaml:1:12: rosbridge: expected mapping start; write it as, for example, `rosbridge: { url: ws://192.168.1.10:9090, publish: [/odom] }`",
     );
 }
+
+#[test]
+fn blackbox_section_becomes_ring_options_and_its_errors_name_the_field() {
+    let cfg = AgentConfig::from_str(
+        "blackbox: { dir: /var/lib/fleetlink/bb, max_mb: 64, topics: [/scan, '/camera/.*'] }\n",
+        "robot.yaml",
+    )
+    .expect("valid blackbox section");
+    let b = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .blackbox
+        .expect("ring options");
+    assert_eq!(b.dir, Path::new("/var/lib/fleetlink/bb"));
+    assert_eq!(b.max_bytes, 64 << 20);
+    assert_eq!(b.topics, ["/scan", "/camera/.*"]);
+    assert_eq!(b.compression, fleetlink_record::Compression::Zstd);
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\nblackbox:")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("the blackbox block in docs/config.md");
+    let cfg = AgentConfig::from_str(&format!("blackbox:{block}"), "docs/config.md")
+        .expect("docs blackbox example is valid");
+    assert_eq!(cfg.blackbox.expect("set").max_mb, 2048);
+
+    assert_err(
+        "blackbox: { topics: [/scan] }\n",
+        "robot.yaml:1:11: blackbox.dir: is required: a directory on the robot for the ring, such as /var/lib/fleetlink/blackbox",
+    );
+    assert_err(
+        "blackbox: { dir: /bb, max_mb: 4, topics: [/scan] }\n",
+        "robot.yaml:1:31: blackbox.max_mb: must be at least 8 (MiB), got 4",
+    );
+    assert_err(
+        "blackbox: { dir: /bb }\n",
+        "robot.yaml:1:11: blackbox.topics: is required: the local topics to keep, such as [/scan, /odom, /camera/.*]",
+    );
+    assert_err(
+        "blackbox: { dir: /bb, topics: ['/scan('] }\n",
+        "robot.yaml:1:32: blackbox.topics[0]: is not a valid pattern (error: unclosed group): \"/scan(\"",
+    );
+    assert_err(
+        "blackbox: { dir: /bb, topics: [/scan], compression: gzip }\n",
+        "robot.yaml:1:53: blackbox.compression: unknown variant `gzip`, expected one of zstd, lz4, none",
+    );
+}

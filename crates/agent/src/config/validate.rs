@@ -140,6 +140,9 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(r) = &cfg.rosbridge {
         validate_rosbridge(r)?;
     }
+    if let Some(b) = &cfg.blackbox {
+        validate_blackbox(b)?;
+    }
     let topics = FieldPath::from("topics");
     for (name, spec) in &cfg.topics {
         check_topic(name).map_err(|m| Problem {
@@ -301,6 +304,31 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
     ];
     check_patterns(lists)?;
     check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)
+}
+
+fn validate_blackbox(b: &super::BlackBoxConfig) -> Result<(), Problem> {
+    let at = FieldPath::from("blackbox");
+    if b.dir.trim().is_empty() {
+        return Err(problem(
+            at.key("dir"),
+            "is required: a directory on the robot for the ring, such as \
+             /var/lib/fleetlink/blackbox",
+        ));
+    }
+    let min_mb = fleetlink_record::blackbox::ring::MIN_RING_BYTES >> 20;
+    if b.max_mb < min_mb {
+        return Err(problem(
+            at.key("max_mb"),
+            format!("must be at least {min_mb} (MiB), got {}", b.max_mb),
+        ));
+    }
+    if b.topics.is_empty() {
+        return Err(problem(
+            at.key("topics"),
+            "is required: the local topics to keep, such as [/scan, /odom, /camera/.*]",
+        ));
+    }
+    check_patterns([(at.key("topics"), &b.topics)])
 }
 
 fn validate_rosbridge(r: &super::RosbridgeConfig) -> Result<(), Problem> {

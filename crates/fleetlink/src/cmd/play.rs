@@ -193,6 +193,7 @@ async fn play(args: &Args, filter: Option<&regex::Regex>, prefix: &str) -> anyho
                     channel,
                     log_time,
                     data,
+                    ..
                 } => {
                     let Some(c) = channels.get(&channel) else {
                         bail!(

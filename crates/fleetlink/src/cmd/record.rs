@@ -3,7 +3,8 @@
 //! `fleetlink record --hub URL --topics PATTERN…` starts a recording on the hub and
 //! prints it. With `--out DIR` it stays: until the recording's `--duration` is over, or
 //! until Ctrl-C (which stops it), then downloads its files into DIR. `list`, `stop`,
-//! `download` and `remove` act on the hub's recordings.
+//! `download` and `remove` act on the hub's recordings; `blackbox` asks a robot for a
+//! slice of its black box, which becomes one of them.
 
 use std::path::PathBuf;
 
@@ -58,6 +59,47 @@ enum Action {
         #[command(flatten)]
         remote: Remote,
     },
+    /// Ask a robot for a slice of its black box (its agent's `blackbox:` ring); the hub
+    /// keeps it as a recording.
+    Blackbox(Blackbox),
+}
+
+#[derive(clap::Args, Debug)]
+struct Blackbox {
+    /// The robot's name.
+    #[arg(long)]
+    robot: String,
+    #[command(flatten)]
+    remote: Remote,
+    /// The last this long before now, by the robot's clock (`60s`, `5m`).
+    #[arg(long, value_name = "DURATION", value_parser = parse_duration_s, conflicts_with = "from")]
+    last: Option<u64>,
+    /// From this time (RFC 3339, `2026-11-28T23:00:00Z`).
+    #[arg(long, value_name = "TIME", value_parser = parse_time_ns)]
+    from: Option<u64>,
+    /// Until this time (RFC 3339); default now.
+    #[arg(long, value_name = "TIME", value_parser = parse_time_ns, requires = "from")]
+    to: Option<u64>,
+    /// The robot's local topic names (whole-name regular expressions); default every
+    /// topic its black box keeps.
+    #[arg(long, num_args = 1.., value_name = "PATTERN")]
+    topics: Vec<String>,
+    /// A label; the file is named after it.
+    #[arg(long)]
+    name: Option<String>,
+    /// Wait until the slice is at the hub, then download it into this directory.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+}
+
+/// An RFC 3339 time as Unix nanoseconds.
+fn parse_time_ns(text: &str) -> Result<u64, String> {
+    let t =
+        time::OffsetDateTime::parse(text.trim(), &time::format_description::well_known::Rfc3339)
+            .map_err(|e| {
+                format!("{text:?} is not an RFC 3339 time like 2026-11-28T23:00:00Z: {e}")
+            })?;
+    u64::try_from(t.unix_timestamp_nanos()).map_err(|_| format!("{text:?} is before 1970"))
 }
 
 // The start's flags are declared here rather than as a flattened `Remote`: clap takes an
@@ -111,6 +153,7 @@ struct Start {
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
 enum CompressionArg {
     Zstd,
+    Lz4,
     None,
 }
 
@@ -137,10 +180,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 println!("removed {id}");
                 Ok(())
             }
+            (Some(Action::Blackbox(b)), _) => blackbox(b).await,
             (None, s) if s.hub.is_some() && !s.topics.is_empty() => start(s).await,
             (None, _) => anyhow::bail!(
                 "give --hub URL --topics PATTERN… to start a recording, or one of list, stop, \
-                 download, remove (see fleetlink record --help)"
+                 download, remove, blackbox (see fleetlink record --help)"
             ),
         }
     })
@@ -160,6 +204,7 @@ async fn start(s: Start) -> anyhow::Result<()> {
         duration_s: s.duration,
         compression: match s.compression {
             CompressionArg::Zstd => Compression::Zstd,
+            CompressionArg::Lz4 => Compression::Lz4,
             CompressionArg::None => Compression::None,
         },
         queue: s.queue,
@@ -201,6 +246,76 @@ async fn start(s: Start) -> anyhow::Result<()> {
         .await?
         .json(&format!("stopping {id}"))?;
     println!("{}", summary(&v));
+    download(&remote, &id, &out).await
+}
+
+async fn blackbox(b: Blackbox) -> anyhow::Result<()> {
+    let spec = fleetlink_record::blackbox::fetch::FetchSpec {
+        robot: b.robot,
+        last_s: match (b.last, b.from) {
+            (None, None) => {
+                anyhow::bail!("give the time range: --last 60s, or --from TIME [--to TIME]")
+            }
+            (l, _) => l.map(|s| s as f64),
+        },
+        from_ns: b.from,
+        to_ns: b.to,
+        topics: b.topics,
+        name: b.name,
+    };
+    spec.check().map_err(|e| anyhow::anyhow!("{e}"))?;
+    let remote = b.remote;
+    let v = remote
+        .request(
+            Method::POST,
+            "/api/v1/recordings/blackbox",
+            Some(serde_json::to_value(&spec)?),
+        )
+        .await?
+        .json("asking for the black box")?;
+    let id = v["id"].as_str().unwrap_or_default().to_owned();
+    println!("{}", summary(&v));
+    let Some(out) = b.out else {
+        println!(
+            "follow it with: fleetlink record list --hub {}; download it with: fleetlink record \
+             download {id} --hub {}",
+            remote.hub, remote.hub
+        );
+        return Ok(());
+    };
+    let path = format!("/api/v1/recordings/{id}");
+    let mut said = String::new();
+    let v = loop {
+        tokio::select! {
+            _ = super::shutdown_signal() => {
+                remote.request(Method::POST, &format!("{path}/stop"), None).await?.json(&id)?;
+                anyhow::bail!("interrupted; the fetch {id} was stopped");
+            }
+            _ = tokio::time::sleep(std::time::Duration::from_millis(500)) => {
+                let v = remote.request(Method::GET, &path, None).await?.json(&id)?;
+                if v["state"] != "fetching" {
+                    break v;
+                }
+                let bb = &v["blackbox"];
+                let now = match (bb["waiting"].as_str(), bb["size"].as_u64()) {
+                    (Some(w), _) => w.to_owned(),
+                    (None, Some(size)) => format!("{} of {size} bytes", bb["received"]),
+                    (None, None) => "the robot is cutting the slice".to_owned(),
+                };
+                if now != said {
+                    eprintln!("{now}");
+                    said = now;
+                }
+            }
+        }
+    };
+    println!("{}", summary(&v));
+    if v["state"] != "stopped" {
+        anyhow::bail!(
+            "the fetch {id} failed: {}",
+            v["error"].as_str().unwrap_or("no reason given")
+        );
+    }
     download(&remote, &id, &out).await
 }
 

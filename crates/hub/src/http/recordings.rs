@@ -5,7 +5,10 @@
 //! - `GET /api/v1/recordings/{id}`: one, with its files and figures;
 //! - `POST /api/v1/recordings/{id}/stop`: stop it, answered once its files are finished;
 //! - `DELETE /api/v1/recordings/{id}`: stop it and delete its files;
-//! - `GET /api/v1/recordings/{id}/files/{name}`: download one of its files.
+//! - `GET /api/v1/recordings/{id}/files/{name}`: download one of its files;
+//! - `POST /api/v1/recordings/blackbox` with a [`FetchSpec`] body: ask a robot for a
+//!   slice of its black box (201 with the new recording, state `fetching`; it becomes
+//!   `stopped` when the slice is in, or `failed` with the reason).
 //!
 //! Recordings are the admin resource `/recordings`: reading the list and the files needs
 //! the right to read it, starting, stopping and removing the right to change it (the admin
@@ -22,6 +25,7 @@ use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use fleetlink_auth::audit::{AuditAction, AuditRecord};
 use fleetlink_auth::{Identity, UnixTime};
+use fleetlink_record::blackbox::fetch::FetchSpec;
 use fleetlink_record::{RecordError, RecordSpec};
 use serde_json::{Value, json};
 
@@ -38,6 +42,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/recordings/{id}", get(one).delete(remove))
         .route("/api/v1/recordings/{id}/stop", post(stop))
         .route("/api/v1/recordings/{id}/files/{name}", get(download))
+        .route("/api/v1/recordings/blackbox", post(fetch))
 }
 
 fn refusal(e: RecordError) -> Response {
@@ -122,6 +127,53 @@ async fn start(
             refusal(e)
         }
     })
+}
+
+async fn fetch(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+    body: axum::body::Bytes,
+) -> Result<Response, ApiError> {
+    require_admin(&st, &me, RESOURCE)?;
+    let spec: FetchSpec = match serde_json::from_slice(&body) {
+        Ok(s) => s,
+        Err(e) => {
+            let text = format!(
+                "the body must be a black-box request like {{\"robot\": \"robot1\", \
+                 \"last_s\": 60, \"topics\": [\"/scan\"]}}: {e}"
+            );
+            audit(&st, &me, RESOURCE, false, text.clone());
+            return Ok(refusal(RecordError::Invalid(text)));
+        }
+    };
+    // The slice holds what the requester may read: the rules are asked per topic when
+    // it is in.
+    let gate = Box::new(crate::security::HubGate::new(
+        st.security.clone(),
+        st.registry.clone(),
+        me.clone(),
+    ));
+    let what = format!("black box of {}: {}", spec.robot, spec.topics.join(" "));
+    let registry = st.registry.clone();
+    let online = Box::new(move |robot: &str| registry.is_online(robot));
+    Ok(
+        match st.recordings.fetch(spec, me.principal(), gate, online) {
+            Ok(info) => {
+                audit(
+                    &st,
+                    &me,
+                    &format!("{RESOURCE}/{}", info.id),
+                    true,
+                    format!("fetching the {what}"),
+                );
+                (StatusCode::CREATED, Json(info)).into_response()
+            }
+            Err(e) => {
+                audit(&st, &me, RESOURCE, false, e.to_string());
+                refusal(e)
+            }
+        },
+    )
 }
 
 async fn stop(

@@ -111,6 +111,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             ros1: None,
             ros2: None,
             rosbridge: None,
+            blackbox: None,
         };
         let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;
         states.push(agent.link_state());

@@ -1,0 +1,435 @@
+//! The hub's side of a black-box fetch: ask the robot for a slice, window by window,
+//! append the pieces that arrive in order, ask again from where the file ends when they
+//! stop, and keep the finished file (checked against the robot's SHA-256) as a
+//! recording. Topics the requester may not read are cut out of the file before it is
+//! kept.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use fleetlink_proto::Payload;
+use fleetlink_relay::calls::{CallEvent, CallId, CallOptions, CallStatus, ChannelPeer, PeerMsg};
+use fleetlink_relay::gate::{Gate, Op};
+use fleetlink_relay::outbox::Taken;
+use fleetlink_relay::router::{ClientKind, SubOptions, Target};
+use fleetlink_relay::{ClientId, Router, TopicName};
+use serde::{Deserialize, Serialize};
+use sha2::{Digest, Sha256};
+
+use super::{DATA_TOPIC, FETCH_SERVICE, FetchReply, FetchRequest, Piece, SliceRange};
+use crate::file::FileFigures;
+use crate::recorder::{RecordingInfo, Shared, State};
+
+/// Bytes asked for per call; the next window is asked for when half of this one is in.
+pub const WINDOW: u64 = 1 << 20;
+/// Pieces that stop coming for this long are asked for again from where the file ends.
+pub const STALL: Duration = Duration::from_secs(8);
+/// Wait between calls while the robot cannot be reached.
+const RETRY: Duration = Duration::from_secs(1);
+/// How long one call may take (the first one cuts the slice on the robot).
+const CALL_TIMEOUT: Duration = Duration::from_secs(60);
+/// A fetch that makes no progress for this long fails.
+pub const GIVE_UP: Duration = Duration::from_secs(3600);
+/// Figures are written to `recording.json` at most this often while bytes arrive.
+const PERSIST_EVERY: Duration = Duration::from_secs(2);
+
+/// A request for a slice of a robot's black box (`POST /api/v1/recordings/blackbox`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FetchSpec {
+    /// The robot's name.
+    pub robot: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub last_s: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_ns: Option<u64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_ns: Option<u64>,
+    /// Patterns of the robot's local topic names; empty: everything the ring keeps.
+    #[serde(default)]
+    pub topics: Vec<String>,
+    /// A label for people; the file is named after it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+}
+
+impl FetchSpec {
+    pub fn range(&self) -> SliceRange {
+        SliceRange {
+            last_s: self.last_s,
+            from_ns: self.from_ns,
+            to_ns: self.to_ns,
+            topics: self.topics.clone(),
+        }
+    }
+
+    /// Checks the request; an error names the field.
+    pub fn check(&self) -> Result<(), String> {
+        check_robot(&self.robot)?;
+        let range = self.range();
+        range.resolve(fleetlink_relay::unix_nanos())?;
+        range.pattern()?;
+        if let Some(n) = &self.name {
+            super::check_slice_id(n).map_err(|e| e.replacen("slice", "name", 1))?;
+        }
+        Ok(())
+    }
+}
+
+/// A robot's name as it appears in topic names (`/robot1/...`).
+fn check_robot(robot: &str) -> Result<(), String> {
+    if robot.is_empty() || TopicName::parse(&format!("/{robot}")).is_err() || robot.contains('/') {
+        return Err(format!(
+            "robot: {:?} is not a robot's name (letters, digits and '_', as in /robot1/...)",
+            robot.chars().take(80).collect::<String>()
+        ));
+    }
+    Ok(())
+}
+
+/// A fetch as `recording.json` keeps it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BlackBoxFetch {
+    pub robot: String,
+    pub range: SliceRange,
+    /// The slice's size once the robot has cut it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<u64>,
+    /// Bytes of it at the hub.
+    pub received: u64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sha256: Option<String>,
+    /// Fetch calls made.
+    pub calls: u64,
+    /// Times pieces stopped coming and the rest was asked for again.
+    pub resumed: u64,
+    /// Messages of topics the requester may not read, cut out of the file.
+    #[serde(default)]
+    pub refused: u64,
+    /// What the fetch waits for, while it waits (`robot1 is offline`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub waiting: Option<String>,
+}
+
+/// Is this robot connected to the hub now?
+pub type Online = Box<dyn Fn(&str) -> bool + Send + Sync>;
+
+/// A robot that is online but offers no fetch service this long has no black box.
+const NO_SERVICE: Duration = Duration::from_secs(10);
+
+/// What a fetch's task needs.
+pub(crate) struct FetchJob {
+    pub router: Arc<Router>,
+    pub shared: Arc<Shared>,
+    pub dir: PathBuf,
+    pub gate: Box<dyn Gate>,
+    pub online: Online,
+    pub persist: Box<dyn Fn(&RecordingInfo) + Send + Sync>,
+}
+
+/// Leaves the router when the fetch ends, however it ends.
+struct Member(Arc<Router>, ClientId);
+
+impl Drop for Member {
+    fn drop(&mut self) {
+        self.0.disconnect(self.1);
+    }
+}
+
+pub(crate) async fn run(job: FetchJob) {
+    let outcome = fetch(&job).await;
+    job.shared.update(|i| {
+        i.stopped_at_ms = Some(fleetlink_relay::unix_nanos() / 1_000_000);
+        match outcome {
+            Ok(()) => i.state = State::Stopped,
+            Err(e) => {
+                tracing::warn!(recording = %i.id, "black-box fetch failed: {e}");
+                i.state = State::Failed;
+                i.error = Some(e);
+            }
+        }
+    });
+    (job.persist)(&job.shared.info());
+}
+
+struct Progress {
+    file: std::fs::File,
+    hash: Sha256,
+    received: u64,
+    last: Instant,
+}
+
+async fn fetch(job: &FetchJob) -> Result<(), String> {
+    let info = job.shared.info();
+    let id = info.id.clone();
+    let bb = info.blackbox.clone().ok_or("not a black-box fetch")?;
+    let robot = bb.robot.clone();
+    let service =
+        TopicName::parse(&format!("/{robot}{FETCH_SERVICE}")).map_err(|e| format!("robot: {e}"))?;
+    let data =
+        TopicName::parse(&format!("/{robot}{DATA_TOPIC}")).map_err(|e| format!("robot: {e}"))?;
+    let router = &job.router;
+    let (client, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "blackbox fetch".into(),
+        },
+        None,
+    );
+    let _member = Member(router.clone(), client);
+    let sub = SubOptions {
+        queue_length: 256,
+        ..SubOptions::default()
+    };
+    router
+        .subscribe(client, Target::Exact(data), sub)
+        .map_err(|e| e.to_string())?;
+    let (peer, calls) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    let label = info.spec.name.clone().unwrap_or_else(|| id.clone());
+    let final_name = format!("{label}.mcap");
+    let part = job.dir.join(format!("{final_name}.part"));
+    let mut got = Progress {
+        file: std::fs::File::create(&part)
+            .map_err(|e| format!("creating {}: {e}", part.display()))?,
+        hash: Sha256::new(),
+        received: 0,
+        last: Instant::now(),
+    };
+    let mut reply: Option<FetchReply> = None;
+    let mut asked_to = 0u64;
+    let mut asked_at = Instant::now();
+    let mut pending: Option<(CallId, u64)> = None;
+    let mut retry_at: Option<Instant> = None;
+    let mut last_persist = Instant::now();
+    let mut items: Vec<Taken> = Vec::new();
+    let (mut calls_made, mut resumed) = (0u64, 0u64);
+    // Since when the robot has been online without the service.
+    let mut no_service: Option<Instant> = None;
+    loop {
+        if reply.as_ref().is_some_and(|r| got.received >= r.size) {
+            break;
+        }
+        if job.shared.stop.is_cancelled() {
+            return Err("stopped before the whole slice arrived".into());
+        }
+        let now = Instant::now();
+        if got.last.elapsed() >= GIVE_UP {
+            return Err(format!(
+                "no part of the slice arrived from {robot} for {} minutes; giving up",
+                GIVE_UP.as_secs() / 60
+            ));
+        }
+        if pending.is_none() && retry_at.is_none_or(|t| now >= t) {
+            let stalled = reply.is_some()
+                && got.received < asked_to
+                && now >= asked_at + STALL
+                && now >= got.last + STALL;
+            if stalled {
+                asked_to = got.received;
+                resumed += 1;
+                tracing::info!(recording = %id, "black-box pieces stopped at byte {}; asking again", got.received);
+            }
+            let more = match &reply {
+                None => true,
+                Some(r) => asked_to < r.size && got.received + WINDOW / 2 >= asked_to,
+            };
+            if more {
+                let req = FetchRequest {
+                    slice: id.clone(),
+                    range: bb.range.clone(),
+                    offset: asked_to,
+                    window: WINDOW,
+                };
+                let body = serde_json::to_vec(&req).map_err(|e| e.to_string())?;
+                let opts = CallOptions {
+                    timeout: Some(CALL_TIMEOUT),
+                    ..CallOptions::default()
+                };
+                calls_made += 1;
+                asked_at = now;
+                retry_at = None;
+                match router
+                    .calls
+                    .call(client, &service, Payload::json(body), opts)
+                {
+                    Ok(call) => pending = Some((call, asked_to)),
+                    Err(refused) => {
+                        tracing::debug!(recording = %id, "fetch call refused: {}", refused.text);
+                        let online = (job.online)(&robot);
+                        if online && refused.status == CallStatus::NoProvider {
+                            let since = *no_service.get_or_insert(now);
+                            if now >= since + NO_SERVICE {
+                                return Err(format!(
+                                    "{robot} is online but keeps no black box (its agent has no \
+                                     blackbox: section)"
+                                ));
+                            }
+                        } else {
+                            no_service = None;
+                        }
+                        let why = if online {
+                            format!("{robot} does not offer its black box yet")
+                        } else {
+                            format!("{robot} is offline; the fetch goes on when it is back")
+                        };
+                        job.shared.update(|i| {
+                            if let Some(b) = &mut i.blackbox {
+                                b.waiting = Some(why);
+                            }
+                        });
+                        retry_at = Some(now + RETRY);
+                    }
+                }
+            }
+        }
+        tokio::select! {
+            m = calls.recv() => match m {
+                Some(PeerMsg::Event(CallEvent::Done { id: call, status, payload, text }))
+                    if pending.is_some_and(|(p, _)| p == call) =>
+                {
+                    let (_, offset) = pending.take().expect("matched above");
+                    match status {
+                        CallStatus::Ok => {
+                            let r: FetchReply = payload
+                                .as_ref()
+                                .and_then(|p| serde_json::from_slice(&p.bytes).ok())
+                                .ok_or_else(|| format!("{robot} answered the fetch with something that is not a slice's description"))?;
+                            asked_to = asked_to.max(offset.saturating_add(WINDOW)).min(r.size);
+                            reply = Some(r);
+                            no_service = None;
+                        }
+                        CallStatus::NoProvider | CallStatus::Timeout | CallStatus::Busy | CallStatus::Aborted => {
+                            // The robot is away or its link is: ask again from where the file ends.
+                            asked_to = got.received;
+                            retry_at = Some(Instant::now() + RETRY);
+                        }
+                        _ => return Err(format!("{robot}: {text}")),
+                    }
+                    let waiting = (status != CallStatus::Ok).then(|| format!("{robot}: {text}"));
+                    job.shared.update(|i| {
+                        if let Some(b) = &mut i.blackbox {
+                            b.waiting = waiting;
+                            b.size = reply.as_ref().map(|r| r.size);
+                            b.sha256 = reply.as_ref().map(|r| r.sha256.clone());
+                            b.calls = calls_made;
+                            b.resumed = resumed;
+                        }
+                    });
+                }
+                Some(_) => {}
+                None => return Err("the hub is stopping".into()),
+            },
+            _ = outbox.ready() => {
+                outbox.take_into(&mut items, 256, 16 << 20, Instant::now());
+                for (_, _, msg) in items.drain(..) {
+                    accept(&msg.payload, &id, &mut got).map_err(|e| format!("writing {}: {e}", part.display()))?;
+                }
+                job.shared.update(|i| {
+                    if let Some(b) = &mut i.blackbox {
+                        b.received = got.received;
+                    }
+                    i.bytes = got.received;
+                });
+                if last_persist.elapsed() >= PERSIST_EVERY {
+                    last_persist = Instant::now();
+                    (job.persist)(&job.shared.info());
+                }
+            }
+            _ = tokio::time::sleep(Duration::from_millis(250)) => {}
+            _ = job.shared.stop.cancelled() => {}
+        }
+    }
+    let r = reply.expect("the loop ends with a reply");
+    got.file.flush().map_err(|e| e.to_string())?;
+    got.file.sync_data().map_err(|e| e.to_string())?;
+    drop(got.file);
+    let sha = super::hex(&got.hash.finalize());
+    if sha != r.sha256 {
+        return Err(format!(
+            "the slice arrived whole ({} bytes) but its SHA-256 is {sha}, not the robot's {}",
+            r.size, r.sha256
+        ));
+    }
+    // Keep only what the requester may read (the robot's topics under /<robot>).
+    let dest = job.dir.join(&final_name);
+    let mut gate = job.gate.fork();
+    let prefix = format!("/{robot}");
+    let (kept, refused) = tokio::task::spawn_blocking({
+        let (part, dest) = (part.clone(), dest.clone());
+        move || -> Result<(FetchReply, u64), String> {
+            let mut refused_topics = false;
+            let mut keep = |topic: &str| {
+                let ok = gate.allows(&format!("{prefix}{topic}"), Op::Subscribe);
+                refused_topics |= !ok;
+                ok
+            };
+            let cut = super::slice::cut(&[part.as_path()], 0, u64::MAX, &mut keep, &dest);
+            match cut {
+                Ok(k) if !refused_topics => {
+                    // Nothing was left out: keep the robot's bytes as they came.
+                    std::fs::rename(&part, &dest).map_err(|e| e.to_string())?;
+                    Ok((
+                        FetchReply {
+                            size: r.size,
+                            sha256: r.sha256.clone(),
+                            ..k
+                        },
+                        0,
+                    ))
+                }
+                Ok(k) => {
+                    let _ = std::fs::remove_file(&part);
+                    let refused = r.messages.saturating_sub(k.messages);
+                    Ok((k, refused))
+                }
+                Err(e) => {
+                    let _ = std::fs::remove_file(&part);
+                    Err(format!(
+                        "none of the slice's topics may be read by its requester ({e})"
+                    ))
+                }
+            }
+        }
+    })
+    .await
+    .map_err(|e| e.to_string())??;
+    job.shared.update(|i| {
+        i.messages = kept.messages;
+        i.bytes = kept.size;
+        i.files = vec![FileFigures {
+            name: final_name.clone(),
+            bytes: kept.size,
+            messages: kept.messages,
+            start_ns: Some(kept.start_ns),
+            end_ns: Some(kept.end_ns),
+            dropped: 0,
+        }];
+        i.refused = refused;
+        if let Some(b) = &mut i.blackbox {
+            b.received = r.size;
+            b.refused = refused;
+            b.calls = calls_made;
+            b.resumed = resumed;
+        }
+    });
+    tracing::info!(recording = %id, robot = %robot, bytes = r.size, resumed, "black-box slice fetched");
+    Ok(())
+}
+
+/// Appends a piece that starts where the file ends; others are ignored (a piece of
+/// another slice, or a repeat after asking again).
+fn accept(payload: &Payload, id: &str, got: &mut Progress) -> std::io::Result<()> {
+    let Some(p) = Piece::decode(&payload.bytes) else {
+        return Ok(());
+    };
+    if p.slice != id || p.offset != got.received || p.data.is_empty() {
+        return Ok(());
+    }
+    got.file.write_all(p.data)?;
+    got.hash.update(p.data);
+    got.received += p.data.len() as u64;
+    got.last = Instant::now();
+    Ok(())
+}
