@@ -127,21 +127,7 @@ impl SliceRange {
         if self.topics.is_empty() {
             return Ok(None);
         }
-        for t in &self.topics {
-            if t.trim().is_empty() {
-                return Err("topics: an empty pattern matches nothing; remove it".into());
-            }
-            fleetlink_relay::Router::compile_pattern(t).map_err(|e| format!("topics: {e}"))?;
-        }
-        let joined = self
-            .topics
-            .iter()
-            .map(|t| format!("(?:{t})"))
-            .collect::<Vec<_>>()
-            .join("|");
-        fleetlink_relay::Router::compile_pattern(&joined)
-            .map(Some)
-            .map_err(|e| format!("topics: {e}"))
+        crate::spec::one_pattern(&self.topics).map(Some)
     }
 }
 

@@ -74,6 +74,34 @@ pub struct RecordingInfo {
     pub blackbox: Option<crate::blackbox::fetch::BlackBoxFetch>,
 }
 
+impl RecordingInfo {
+    /// A recording (or fetch) that starts now, with nothing in it yet.
+    pub fn new(
+        id: String,
+        spec: RecordSpec,
+        state: State,
+        started_by: String,
+        started_at_ms: u64,
+    ) -> RecordingInfo {
+        RecordingInfo {
+            id,
+            spec,
+            state,
+            started_by,
+            started_at_ms,
+            stopped_at_ms: None,
+            messages: 0,
+            bytes: 0,
+            dropped: 0,
+            refused: 0,
+            unconvertible: 0,
+            files: Vec::new(),
+            error: None,
+            blackbox: None,
+        }
+    }
+}
+
 /// What the API and the recorder's thread share.
 pub(crate) struct Shared {
     pub info: Mutex<RecordingInfo>,
@@ -170,20 +198,7 @@ fn run(mut job: Job, client: ClientId, outbox: Arc<Outbox>) {
             .into_iter()
             .flatten()
             .min();
-            let stop = job.shared.stop.clone();
-            job.runtime.block_on(async {
-                let sleep = async {
-                    match deadline {
-                        Some(d) => tokio::time::sleep_until(d.into()).await,
-                        None => std::future::pending().await,
-                    }
-                };
-                tokio::select! {
-                    _ = outbox.ready() => {}
-                    _ = stop.cancelled() => {}
-                    _ = sleep => {}
-                }
-            });
+            wait(&job.runtime, &outbox, &job.shared.stop, None, deadline);
         }
         let tc = router.transcoder();
         for (_, _, msg) in items.drain(..) {
@@ -292,6 +307,37 @@ fn run(mut job: Job, client: ClientId, outbox: Arc<Outbox>) {
         }
     });
     (job.persist)(&job.shared.info());
+}
+
+/// Waits on `runtime`, from a thread of its own, until the outbox may have something,
+/// `stop` or `wake` fires, or `deadline` passes.
+pub(crate) fn wait(
+    runtime: &tokio::runtime::Handle,
+    outbox: &Outbox,
+    stop: &CancellationToken,
+    wake: Option<&tokio::sync::Notify>,
+    deadline: Option<Instant>,
+) {
+    runtime.block_on(async {
+        let sleep = async {
+            match deadline {
+                Some(d) => tokio::time::sleep_until(d.into()).await,
+                None => std::future::pending().await,
+            }
+        };
+        let woken = async {
+            match wake {
+                Some(w) => w.notified().await,
+                None => std::future::pending().await,
+            }
+        };
+        tokio::select! {
+            _ = outbox.ready() => {}
+            _ = stop.cancelled() => {}
+            _ = woken => {}
+            _ = sleep => {}
+        }
+    });
 }
 
 /// Finishes a file with the recording's figures in its metadata.

@@ -124,27 +124,8 @@ impl Recordings {
         check_active(&entries)?;
         let now_ms = fleetlink_relay::unix_nanos() / 1_000_000;
         let (id, dir) = self.new_dir(&entries, "rec", now_ms)?;
-        let info = RecordingInfo {
-            id: id.clone(),
-            spec,
-            state: State::Recording,
-            started_by,
-            started_at_ms: now_ms,
-            stopped_at_ms: None,
-            messages: 0,
-            bytes: 0,
-            dropped: 0,
-            refused: 0,
-            unconvertible: 0,
-            files: Vec::new(),
-            error: None,
-            blackbox: None,
-        };
-        write_info(&dir, &info);
-        let shared = Arc::new(Shared {
-            info: Mutex::new(info.clone()),
-            stop: CancellationToken::new(),
-        });
+        let info = RecordingInfo::new(id.clone(), spec, State::Recording, started_by, now_ms);
+        let shared = begin(&dir, &info);
         let keep_dir = dir.clone();
         let job = Job {
             router: self.router.clone(),
@@ -186,37 +167,19 @@ impl Recordings {
         let (id, dir) = self.new_dir(&entries, &format!("bb-{}", spec.robot), now_ms)?;
         let mut record = RecordSpec::topics(spec.topics.clone());
         record.name = spec.name.clone();
-        let info = RecordingInfo {
-            id: id.clone(),
-            spec: record,
-            state: State::Fetching,
-            started_by,
-            started_at_ms: now_ms,
-            stopped_at_ms: None,
-            messages: 0,
-            bytes: 0,
-            dropped: 0,
+        let mut info = RecordingInfo::new(id.clone(), record, State::Fetching, started_by, now_ms);
+        info.blackbox = Some(BlackBoxFetch {
+            robot: spec.robot.clone(),
+            range: spec.range(),
+            size: None,
+            received: 0,
+            sha256: None,
+            calls: 0,
+            resumed: 0,
             refused: 0,
-            unconvertible: 0,
-            files: Vec::new(),
-            error: None,
-            blackbox: Some(BlackBoxFetch {
-                robot: spec.robot.clone(),
-                range: spec.range(),
-                size: None,
-                received: 0,
-                sha256: None,
-                calls: 0,
-                resumed: 0,
-                refused: 0,
-                waiting: None,
-            }),
-        };
-        write_info(&dir, &info);
-        let shared = Arc::new(Shared {
-            info: Mutex::new(info.clone()),
-            stop: CancellationToken::new(),
+            waiting: None,
         });
+        let shared = begin(&dir, &info);
         let keep_dir = dir.clone();
         let job = fetch::FetchJob {
             router: self.router.clone(),
@@ -335,6 +298,15 @@ impl Recordings {
     fn lock(&self) -> std::sync::MutexGuard<'_, BTreeMap<String, Entry>> {
         self.entries.lock().unwrap_or_else(|p| p.into_inner())
     }
+}
+
+/// A new recording's shared state, its `recording.json` written first.
+fn begin(dir: &Path, info: &RecordingInfo) -> Arc<Shared> {
+    write_info(dir, info);
+    Arc::new(Shared {
+        info: Mutex::new(info.clone()),
+        stop: CancellationToken::new(),
+    })
 }
 
 fn check_active(entries: &BTreeMap<String, Entry>) -> Result<(), RecordError> {

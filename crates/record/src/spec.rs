@@ -75,12 +75,7 @@ impl RecordSpec {
                 "topics: give at least one topic name or pattern (e.g. \"/robot1/.*\")".into(),
             );
         }
-        for t in &self.topics {
-            if t.trim().is_empty() {
-                return Err("topics: an empty pattern matches nothing; remove it".into());
-            }
-            fleetlink_relay::Router::compile_pattern(t).map_err(|e| format!("topics: {e}"))?;
-        }
+        let pattern = one_pattern(&self.topics)?;
         if let Some(n) = &self.name
             && (n.is_empty()
                 || n.len() > 64
@@ -115,14 +110,25 @@ impl RecordSpec {
                 self.queue
             ));
         }
-        let joined = self
-            .topics
-            .iter()
-            .map(|t| format!("(?:{t})"))
-            .collect::<Vec<_>>()
-            .join("|");
-        fleetlink_relay::Router::compile_pattern(&joined).map_err(|e| format!("topics: {e}"))
+        Ok(pattern)
     }
+}
+
+/// Whole-name patterns (`topics`) as one pattern; an error names the field and the
+/// pattern that is wrong.
+pub fn one_pattern(topics: &[String]) -> Result<regex::Regex, String> {
+    for t in topics {
+        if t.trim().is_empty() {
+            return Err("topics: an empty pattern matches nothing; remove it".into());
+        }
+        fleetlink_relay::Router::compile_pattern(t).map_err(|e| format!("topics: {e}"))?;
+    }
+    let joined = topics
+        .iter()
+        .map(|t| format!("(?:{t})"))
+        .collect::<Vec<_>>()
+        .join("|");
+    fleetlink_relay::Router::compile_pattern(&joined).map_err(|e| format!("topics: {e}"))
 }
 
 /// A size as people write it: `500MB`, `2GiB`, `1.5G`, `750k`, or a number of bytes.

@@ -105,28 +105,37 @@ async fn start(
             return Ok(refusal(RecordError::Invalid(text)));
         }
     };
-    let gate = Box::new(crate::security::HubGate::new(
+    let topics = spec.topics.join(" ");
+    let started = st.recordings.start(spec, me.principal(), gate_of(&st, &me));
+    Ok(created(&st, &me, started, format!("started: {topics}")))
+}
+
+/// The caller's access rules, asked for every message a recording or a slice keeps.
+fn gate_of(st: &HubState, me: &Identity) -> Box<crate::security::HubGate> {
+    Box::new(crate::security::HubGate::new(
         st.security.clone(),
         st.registry.clone(),
         me.clone(),
-    ));
-    let topics = spec.topics.join(" ");
-    Ok(match st.recordings.start(spec, me.principal(), gate) {
+    ))
+}
+
+/// 201 with a new recording (or fetch), or the refusal; audited either way.
+fn created(
+    st: &HubState,
+    me: &Identity,
+    outcome: Result<fleetlink_record::RecordingInfo, RecordError>,
+    detail: String,
+) -> Response {
+    match outcome {
         Ok(info) => {
-            audit(
-                &st,
-                &me,
-                &format!("{RESOURCE}/{}", info.id),
-                true,
-                format!("started: {topics}"),
-            );
+            audit(st, me, &format!("{RESOURCE}/{}", info.id), true, detail);
             (StatusCode::CREATED, Json(info)).into_response()
         }
         Err(e) => {
-            audit(&st, &me, RESOURCE, false, e.to_string());
+            audit(st, me, RESOURCE, false, e.to_string());
             refusal(e)
         }
-    })
+    }
 }
 
 async fn fetch(
@@ -146,34 +155,19 @@ async fn fetch(
             return Ok(refusal(RecordError::Invalid(text)));
         }
     };
-    // The slice holds what the requester may read: the rules are asked per topic when
-    // it is in.
-    let gate = Box::new(crate::security::HubGate::new(
-        st.security.clone(),
-        st.registry.clone(),
-        me.clone(),
-    ));
-    let what = format!("black box of {}: {}", spec.robot, spec.topics.join(" "));
+    // The slice keeps what the requester may read: the rules are asked per topic once it
+    // is in.
+    let what = format!(
+        "fetching the black box of {}: {}",
+        spec.robot,
+        spec.topics.join(" ")
+    );
     let registry = st.registry.clone();
     let online = Box::new(move |robot: &str| registry.is_online(robot));
-    Ok(
-        match st.recordings.fetch(spec, me.principal(), gate, online) {
-            Ok(info) => {
-                audit(
-                    &st,
-                    &me,
-                    &format!("{RESOURCE}/{}", info.id),
-                    true,
-                    format!("fetching the {what}"),
-                );
-                (StatusCode::CREATED, Json(info)).into_response()
-            }
-            Err(e) => {
-                audit(&st, &me, RESOURCE, false, e.to_string());
-                refusal(e)
-            }
-        },
-    )
+    let started = st
+        .recordings
+        .fetch(spec, me.principal(), gate_of(&st, &me), online);
+    Ok(created(&st, &me, started, what))
 }
 
 async fn stop(

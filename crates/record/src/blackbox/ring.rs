@@ -297,23 +297,13 @@ impl Job {
                     let age = o.opened + SEGMENT_AGE;
                     o.chunk_since.map_or(age, |c| age.min(c + CHUNK_EVERY))
                 });
-                let stop = self.shared.stop.clone();
-                let outbox = self.outbox.clone();
-                let shared = self.shared.clone();
-                self.runtime.block_on(async move {
-                    let sleep = async {
-                        match deadline {
-                            Some(d) => tokio::time::sleep_until(d.into()).await,
-                            None => std::future::pending().await,
-                        }
-                    };
-                    tokio::select! {
-                        _ = outbox.ready() => {}
-                        _ = shared.wake.notified() => {}
-                        _ = stop.cancelled() => {}
-                        _ = sleep => {}
-                    }
-                });
+                crate::recorder::wait(
+                    &self.runtime,
+                    &self.outbox,
+                    &self.shared.stop,
+                    Some(&self.shared.wake),
+                    deadline,
+                );
             }
             if let Some(o) = &open
                 && o.file.writer_len() >= self.segment_bytes
