@@ -67,4 +67,9 @@ export interface TopicInfo {
   link_bandwidth_bps?: number | null;
   /** Held back by its robot's data budget now (thinned or paused). */
   thinned?: boolean;
+  /** A robot's topic: what its publishers offer on the robot (Hz), and what its link
+   * should deliver of that, given the link's capacity, the message sizes and the
+   * robot's other topics (docs/qos.md, receive-rate prediction). */
+  offered_rate_hz?: number | null;
+  predicted_rate_hz?: number | null;
 }

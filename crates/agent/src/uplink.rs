@@ -755,7 +755,8 @@ impl Uplink {
     /// Once a second: the hub hears what this robot would send and what its link carries
     /// (for sharing a site's access link among its robots), which local topics lost
     /// their last publisher, so it stops listing them, and what each topic lost here
-    /// (`TOPIC_DROPS`, for the topics whose counts changed).
+    /// (`TOPIC_DROPS`, for the topics whose counts changed), and what it offers of each
+    /// topic that flows to the hub (`TOPIC_LOAD`, for the hub's receive-rate prediction).
     fn report(
         &self,
         session: &mut LinkSession,
@@ -765,11 +766,18 @@ impl Uplink {
     ) {
         let me = self.client;
         let mut drops = Vec::new();
+        let mut loads = Vec::new();
+        let now_ns = fleetlink_relay::unix_nanos();
         for t in self.router.topics() {
             if !t.subscribers.contains(&me) {
                 continue; // not carried up
             }
             let id = t.meta.id;
+            if !self.outbox.is_held_back(id.0)
+                && let Some(load) = self.topic_load(&t.meta, &t.stats, now_ns)
+            {
+                loads.push(load);
+            }
             let counts = DropReason::ALL.map(|r| t.stats.drops(r));
             if counts.iter().any(|n| *n > 0) && drops_told.get(&id) != Some(&counts) {
                 drops_told.insert(id, counts);
@@ -800,10 +808,14 @@ impl Uplink {
                 demand_bps: f.demand_bps as u64,
                 rate_bps: f.rate_bps as u64,
                 latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
+                capacity_bps: f.capacity_bps.map_or(0, |c| c.round() as u64),
             });
         }
         if !drops.is_empty() {
             session.send(Frame::TopicDrops { topics: drops });
+        }
+        if !loads.is_empty() {
+            session.send(Frame::TopicLoad { topics: loads });
         }
         if let Some(b) = self.outbox.budget_figures(Instant::now()) {
             session.send(Frame::Budget {
@@ -813,6 +825,34 @@ impl Uplink {
                 thinned: b.thinned,
             });
         }
+    }
+
+    /// What the robot offers of a flowing topic: its local publish rate (within its rate
+    /// limit) and bytes, and how the uplink queues it.
+    fn topic_load(
+        &self,
+        meta: &TopicMeta,
+        stats: &fleetlink_relay::stats::TopicStats,
+        now_ns: u64,
+    ) -> Option<fleetlink_proto::frame::TopicLoadEntry> {
+        let qos = self.outbox.topic_qos(meta)?;
+        let (hz, bps) = stats.rates(now_ns);
+        if hz <= 0.0 {
+            return None;
+        }
+        let kept = qos.rate_limit_hz.map_or(hz, |limit| hz.min(limit));
+        Some(fleetlink_proto::frame::TopicLoadEntry {
+            alias: meta.id.0,
+            rate_mhz: (kept * 1000.0).round() as u64,
+            bytes_per_sec: (bps * kept / hz).round() as u64,
+            priority_milli: (f64::from(qos.priority) * 1000.0).round() as u32,
+            queue: u32::try_from(qos.queue).unwrap_or(u32::MAX),
+            flags: if qos.no_drop {
+                fleetlink_proto::frame::TOPIC_LOAD_NO_DROP
+            } else {
+                0
+            },
+        })
     }
 
     /// A topic event or control frame from the hub.

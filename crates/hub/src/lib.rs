@@ -62,6 +62,7 @@ pub mod http_guards;
 pub mod jwks;
 pub mod limits;
 pub mod params;
+pub mod rates;
 pub mod registry;
 pub mod rosout;
 pub mod security;

@@ -37,6 +37,8 @@ pub struct LiveRobot {
     pub demand_bps: AtomicU64,
     pub rate_bps: AtomicU64,
     pub latency_ns: AtomicU64,
+    /// What the robot may send now, bytes/s, from the same report (0 = not known).
+    pub capacity_bps: AtomicU64,
     /// The capacity share last sent to it (bytes/s; 0 = none).
     pub share_bps: AtomicU64,
     /// Hub clock minus robot clock, from the least-delayed of the recent heartbeats.
@@ -122,6 +124,7 @@ impl LiveRobot {
             demand_bps: AtomicU64::new(0),
             rate_bps: AtomicU64::new(0),
             latency_ns: AtomicU64::new(0),
+            capacity_bps: AtomicU64::new(0),
             share_bps: AtomicU64::new(0),
             clock: Mutex::new(ClockSync::default()),
             clock_offset: AtomicI64::new(i64::MIN),

@@ -69,6 +69,7 @@ pub enum FrameKind {
     ZChunk = 0x1b,
     Budget = 0x1c,
     TopicDrops = 0x1d,
+    TopicLoad = 0x1e,
 }
 
 /// Severity of a `STATUS` frame.
@@ -129,6 +130,26 @@ pub const ADVERTISE_LATCHED: u8 = 0x01;
 /// confirms delivery with `DELIVERED`, and the sender keeps every message until then,
 /// resending it on the next connection if this one dies first.
 pub const ADVERTISE_RELIABLE: u8 = 0x02;
+/// `TOPIC_LOAD` flag: the topic is no-drop (its messages go before every other topic's).
+pub const TOPIC_LOAD_NO_DROP: u8 = 0x01;
+
+/// One topic of a `TOPIC_LOAD` report.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TopicLoadEntry {
+    pub alias: u32,
+    /// Messages per second the robot's publishers offer, in thousandths (after the topic's
+    /// rate limit).
+    pub rate_mhz: u64,
+    /// Payload bytes per second they offer, before compression.
+    pub bytes_per_sec: u64,
+    /// The topic's scheduler priority, in thousandths.
+    pub priority_milli: u32,
+    /// Messages its uplink queue holds.
+    pub queue: u32,
+    /// [`TOPIC_LOAD_NO_DROP`].
+    pub flags: u8,
+}
+
 /// `SUBSCRIBE` flag: `pattern` is a regular expression matched against whole topic names.
 pub const SUBSCRIBE_REGEX: u8 = 0x01;
 /// `SERVICE_ADVERTISE` flag: the service is an action (goals, feedback, cancel).
@@ -251,6 +272,11 @@ pub enum Frame {
     /// the agent started. `count varint | (alias varint | n varint | (reason u8 |
     /// dropped varint) × n) × count`
     TopicDrops { topics: Vec<(u32, Vec<(u8, u64)>)> },
+    /// Agent → hub, with the once-a-second report: what the robot offers of each topic it
+    /// carries up, and how its uplink queues it (for the hub's receive-rate prediction).
+    /// `count varint | (alias varint | rate_mhz varint | bytes_per_sec varint |
+    ///  priority_milli varint | queue varint | flags u8) × count`
+    TopicLoad { topics: Vec<TopicLoadEntry> },
     /// `id u64le | sent_ns u64le`
     Ping { id: u64, sent_ns: u64 },
     /// `id u64le | echo_ns u64le | responder_ns u64le`
@@ -276,12 +302,16 @@ pub enum Frame {
     /// (0 = no cap). `bytes_per_sec u64le`
     Share { bytes_per_sec: u64 },
     /// Agent → hub, about once a second: what the robot would send if it could, what its
-    /// link delivered, and its measured one-way latency.
-    /// `demand_bps u64le | rate_bps u64le | latency_ns u64le`
+    /// link delivered, its measured one-way latency, and what it may send now (the
+    /// smallest of its capacity share, its data budget's rate and the link's best
+    /// measured rate; 0 = not known).
+    /// `demand_bps u64le | rate_bps u64le | latency_ns u64le | capacity_bps u64le`
+    /// (`capacity_bps` absent in older senders: read as 0)
     LinkReport {
         demand_bps: u64,
         rate_bps: u64,
         latency_ns: u64,
+        capacity_bps: u64,
     },
     /// Receiver → sender of a reliable topic (`ADVERTISE_RELIABLE`): every message of
     /// `alias` up to and including `seq` has been delivered (and recorded, so it is never
@@ -405,6 +435,7 @@ impl Frame {
             Frame::ZChunk { .. } => FrameKind::ZChunk as u8,
             Frame::Budget { .. } => FrameKind::Budget as u8,
             Frame::TopicDrops { .. } => FrameKind::TopicDrops as u8,
+            Frame::TopicLoad { .. } => FrameKind::TopicLoad as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -468,6 +499,17 @@ impl Frame {
                         b.put_u8(*reason);
                         put_varint(b, *n);
                     }
+                }
+            }
+            Frame::TopicLoad { topics } => {
+                put_varint(b, topics.len() as u64);
+                for t in topics {
+                    put_varint(b, u64::from(t.alias));
+                    put_varint(b, t.rate_mhz);
+                    put_varint(b, t.bytes_per_sec);
+                    put_varint(b, u64::from(t.priority_milli));
+                    put_varint(b, u64::from(t.queue));
+                    b.put_u8(t.flags);
                 }
             }
             Frame::Budget {
@@ -583,10 +625,12 @@ impl Frame {
                 demand_bps,
                 rate_bps,
                 latency_ns,
+                capacity_bps,
             } => {
                 b.put_u64_le(*demand_bps);
                 b.put_u64_le(*rate_bps);
                 b.put_u64_le(*latency_ns);
+                b.put_u64_le(*capacity_bps);
             }
             Frame::Delivered { alias, seq } => {
                 put_varint(b, u64::from(*alias));
@@ -879,6 +923,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             demand_bps: r.u64_le("LINK_REPORT.demand_bps")?,
             rate_bps: r.u64_le("LINK_REPORT.rate_bps")?,
             latency_ns: r.u64_le("LINK_REPORT.latency_ns")?,
+            capacity_bps: if r.remaining() >= 8 {
+                r.u64_le("LINK_REPORT.capacity_bps")?
+            } else {
+                0
+            },
         },
         0x0f => Frame::Delivered {
             alias: r.varint_u32("DELIVERED.alias")?,
@@ -953,6 +1002,28 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                 topics.push((alias, drops));
             }
             Frame::TopicDrops { topics }
+        }
+        0x1e => {
+            let count = r.varint("TOPIC_LOAD.count")?;
+            // Each entry takes at least six bytes.
+            if count > r.remaining() as u64 / 6 {
+                return Err(DecodeError::invalid(
+                    "TOPIC_LOAD.count",
+                    format!("{count} topics in {} bytes", r.remaining()),
+                ));
+            }
+            let mut topics = Vec::with_capacity(count as usize);
+            for _ in 0..count {
+                topics.push(TopicLoadEntry {
+                    alias: r.varint_u32("TOPIC_LOAD.alias")?,
+                    rate_mhz: r.varint("TOPIC_LOAD.rate_mhz")?,
+                    bytes_per_sec: r.varint("TOPIC_LOAD.bytes_per_sec")?,
+                    priority_milli: r.varint_u32("TOPIC_LOAD.priority_milli")?,
+                    queue: r.varint_u32("TOPIC_LOAD.queue")?,
+                    flags: r.u8("TOPIC_LOAD.flags")?,
+                });
+            }
+            Frame::TopicLoad { topics }
         }
         0x1a => Frame::ZMessage {
             alias: r.varint_u32("ZMESSAGE.alias")?,

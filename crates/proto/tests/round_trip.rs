@@ -371,3 +371,23 @@ proptest! {
         );
     }
 }
+
+#[test]
+fn a_link_report_from_an_older_agent_reads_with_no_capacity() {
+    // kind 0x0e, body of three u64le (no capacity_bps).
+    let mut b = vec![0x0e, 24];
+    for v in [2_000_000u64, 480_000, 41_000_000] {
+        b.extend_from_slice(&v.to_le_bytes());
+    }
+    let (f, next) = Frame::decode(&bytes::Bytes::from(b), 0).unwrap();
+    assert_eq!(next, 26);
+    assert_eq!(
+        f,
+        Frame::LinkReport {
+            demand_bps: 2_000_000,
+            rate_bps: 480_000,
+            latency_ns: 41_000_000,
+            capacity_bps: 0,
+        }
+    );
+}

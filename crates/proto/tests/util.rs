@@ -76,6 +76,37 @@ pub fn topic_drops() -> impl Strategy<Value = Frame> {
     .prop_map(|topics| Frame::TopicDrops { topics })
 }
 
+pub fn topic_load() -> impl Strategy<Value = Frame> {
+    prop::collection::vec(
+        (
+            any::<u32>(),
+            any::<u64>(),
+            any::<u64>(),
+            any::<u32>(),
+            any::<u32>(),
+            any::<u8>(),
+        ),
+        0..10,
+    )
+    .prop_map(|topics| Frame::TopicLoad {
+        topics: topics
+            .into_iter()
+            .map(
+                |(alias, rate_mhz, bytes_per_sec, priority_milli, queue, flags)| {
+                    fleetlink_proto::frame::TopicLoadEntry {
+                        alias,
+                        rate_mhz,
+                        bytes_per_sec,
+                        priority_milli,
+                        queue,
+                        flags,
+                    }
+                },
+            )
+            .collect(),
+    })
+}
+
 pub fn interest() -> impl Strategy<Value = Frame> {
     (any::<u32>(), any::<bool>()).prop_map(|(alias, wanted)| Frame::Interest { alias, wanted })
 }
@@ -247,13 +278,14 @@ pub fn share() -> impl Strategy<Value = Frame> {
 }
 
 pub fn link_report() -> impl Strategy<Value = Frame> {
-    (any::<u64>(), any::<u64>(), any::<u64>()).prop_map(|(demand_bps, rate_bps, latency_ns)| {
-        Frame::LinkReport {
+    (any::<u64>(), any::<u64>(), any::<u64>(), any::<u64>()).prop_map(
+        |(demand_bps, rate_bps, latency_ns, capacity_bps)| Frame::LinkReport {
             demand_bps,
             rate_bps,
             latency_ns,
-        }
-    })
+            capacity_bps,
+        },
+    )
 }
 
 pub fn delivered() -> impl Strategy<Value = Frame> {
@@ -385,7 +417,7 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x1eu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x1fu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -419,6 +451,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         zchunk(),
         budget(),
         topic_drops(),
+        topic_load(),
         unknown(),
     ]
 }
@@ -503,6 +536,16 @@ pub fn one_of_each_kind() -> Vec<Frame> {
         Frame::TopicDrops {
             topics: vec![(300, vec![(1, 5), (4, 1 << 33)]), (2, vec![])],
         },
+        Frame::TopicLoad {
+            topics: vec![fleetlink_proto::frame::TopicLoadEntry {
+                alias: 300,
+                rate_mhz: 29_970,
+                bytes_per_sec: 9_000_000,
+                priority_milli: 2_500,
+                queue: 16,
+                flags: fleetlink_proto::frame::TOPIC_LOAD_NO_DROP,
+            }],
+        },
         Frame::Ping { id: 1, sent_ns: 2 },
         Frame::Pong {
             id: 1,
@@ -526,6 +569,7 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             demand_bps: 2_000_000,
             rate_bps: 480_000,
             latency_ns: 41_000_000,
+            capacity_bps: 500_000,
         },
         Frame::Delivered {
             alias: 300,

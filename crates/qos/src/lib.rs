@@ -23,6 +23,8 @@
 //!   ([`LinkEstimator`]): rate, latency, clock offset, pacing rate.
 //! - [`capacity`] — capacity shares for robots on one access link and the offload signal
 //!   ([`CapacityAllocator`]).
+//! - [`predict`] — receive-rate prediction for a robot's topics on its measured link
+//!   ([`predict::receive_rates`]).
 //! - [`qoi`] — Quantity-of-Information evaluation and the offline Oracle (Figure 5 of
 //!   the AFR paper).
 //! - [`time`], [`rng`] — virtual time and a seeded generator.
@@ -37,6 +39,7 @@ mod error;
 pub mod link;
 #[cfg(feature = "plot")]
 pub mod plot;
+pub mod predict;
 pub mod qoi;
 pub mod queue;
 pub mod rate_limit;

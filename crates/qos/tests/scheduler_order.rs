@@ -228,3 +228,70 @@ fn a_new_connection_releases_the_topics_the_old_writer_held() {
     got.sort_by_key(|id| *id != A);
     assert_eq!(got, [A, B]);
 }
+
+#[test]
+fn receive_rate_prediction_matches_what_the_scheduler_sends() {
+    // The latest message only, and a drop-oldest queue of 16 (the default).
+    predicted_rates_match_the_scheduler(Policy::Latest, 1);
+    predicted_rates_match_the_scheduler(Policy::DropOldest, 16);
+}
+
+fn predicted_rates_match_the_scheduler(policy: Policy, queue: usize) {
+    use fleetlink_qos::predict::{TopicLoad, receive_rates};
+    // (topic, priority, offered Hz, bytes): a big low-priority topic, a big one, a small
+    // one that fits whatever happens; together far more than the 150 kB/s link.
+    let topics = [
+        (A, 1.0f32, 200u64, 1000usize),
+        (B, 0.5, 200, 3000),
+        (C, 1.0, 5, 200),
+    ];
+    let capacity = 150_000.0;
+    let mut s = sched(usize::MAX);
+    for (id, p, _, _) in topics {
+        let q = TopicQos {
+            priority: p,
+            policy,
+            queue,
+            ..TopicQos::default()
+        };
+        s.add_topic(id, q).unwrap();
+    }
+    s.set_rate_budget(Some(capacity), Nanos::ZERO);
+    let secs = 20u64;
+    let mut sent = [0u64; 3];
+    for ms in 0..secs * 1000 {
+        let now = Nanos::from_millis(ms);
+        for (id, _, hz, len) in topics {
+            if ms % (1000 / hz) == 0 {
+                let _ = s.offer(id, msg(ms, len), now);
+            }
+        }
+        while let Some((id, _)) = s.poll_next(now) {
+            sent[topics.iter().position(|t| t.0 == id).unwrap()] += 1;
+            s.on_acked(1, now);
+        }
+    }
+    let loads: Vec<TopicLoad> = topics
+        .iter()
+        .map(|&(_, p, hz, len)| TopicLoad {
+            offered_hz: hz as f64,
+            wire_bytes: len as f64,
+            priority: f64::from(p),
+            queue: queue as u32,
+        })
+        .collect();
+    let predicted = receive_rates(capacity, &loads);
+    for (i, n) in sent.iter().enumerate() {
+        let measured = *n as f64 / secs as f64;
+        let want = predicted[i];
+        assert!(
+            (measured - want).abs() <= want * 0.1 + 0.5,
+            "{policy:?}/{queue}: topic {i}: sent {measured:.1}/s, predicted {want:.1}/s ({predicted:?}, sent {sent:?} in {secs} s)"
+        );
+    }
+    // The prediction is not trivial here: both big topics are cut, the small one is not.
+    assert!(
+        predicted[0] < 100.0 && predicted[1] < 100.0 && predicted[2] > 4.9,
+        "{predicted:?}"
+    );
+}

@@ -188,6 +188,11 @@ pub struct LinkFigures {
     pub clock_offset_ns: Option<i64>,
     pub share_bps: Option<f64>,
     pub in_flight_bytes: usize,
+    /// What the robot may send now, bytes/s: the smallest of its capacity share, its data
+    /// budget's rate and the link's best measured rate (the rate over the estimator's
+    /// window or the best 50 ms of the last half second, whichever is higher); `None`
+    /// until something was measured.
+    pub capacity_bps: Option<f64>,
 }
 
 struct State {
@@ -534,6 +539,16 @@ impl Outbox {
             used_bytes: b.used(),
             thinned: sched.thinned_since(since).map(|t| t.0).collect(),
         })
+    }
+
+    /// The QoS a scheduled outbox gives `topic` (its owner's per-topic configuration);
+    /// `None` for a plain outbox.
+    pub fn topic_qos(&self, topic: &TopicMeta) -> Option<TopicQos> {
+        let qos_for = match &self.lock().service {
+            Service::Scheduled { qos_for, .. } => qos_for.clone(),
+            Service::RoundRobin { .. } => return None,
+        };
+        Some(qos_for(topic))
     }
 
     /// Whether this outbox schedules its link (the agent's uplink) rather than serving
@@ -930,10 +945,27 @@ impl Outbox {
     /// second, for the hub's capacity sharing).
     pub fn link_figures(&self, now: Instant) -> Option<LinkFigures> {
         let mut st = self.lock();
-        let Service::Scheduled { origin, link, .. } = &mut st.service else {
+        let Service::Scheduled {
+            origin,
+            link,
+            sched,
+            ..
+        } = &mut st.service
+        else {
             return None;
         };
         let t = Nanos::since(*origin, now);
+        let measured = link.est.rate().max(link.delivered_rate(t));
+        let capacity = [
+            (measured > 0.0).then_some(measured),
+            link.share,
+            sched
+                .data_budget()
+                .and_then(|b| b.config().max_bytes_per_sec),
+        ]
+        .into_iter()
+        .flatten()
+        .reduce(f64::min);
         let span = t.saturating_sub(link.offered_since).as_secs_f64();
         let demand = if span > 0.0 {
             link.offered as f64 / span
@@ -951,6 +983,7 @@ impl Outbox {
             clock_offset_ns: link.est.clock_offset(),
             share_bps: link.share,
             in_flight_bytes: link.unacked_bytes(),
+            capacity_bps: capacity,
         })
     }
 

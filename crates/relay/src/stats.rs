@@ -107,6 +107,24 @@ pub struct TopicStats {
     /// Messages of a robot's topic its agent lost before the link, by reason, as the
     /// agent last reported them (`TOPIC_DROPS`).
     robot_drops: [AtomicU64; DropReason::ALL.len()],
+    /// What the robot's agent last reported offering of it (`TOPIC_LOAD`).
+    robot_offer: std::sync::Mutex<Option<RobotOffer>>,
+}
+
+/// What a robot offers of one topic and how its uplink queues it, as its agent reported
+/// (`TOPIC_LOAD`), for the receive-rate prediction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RobotOffer {
+    /// Messages per second its publishers offer (within the topic's rate limit).
+    pub hz: f64,
+    /// Payload bytes per second of those, before compression.
+    pub bytes_per_sec: f64,
+    pub priority: f64,
+    /// Messages its uplink queue holds.
+    pub queue: u32,
+    pub no_drop: bool,
+    /// When the hub heard it (Unix ns).
+    pub at_ns: u64,
 }
 
 impl TopicStats {
@@ -203,6 +221,16 @@ impl TopicStats {
 
     pub fn robot_drops(&self, reason: DropReason) -> u64 {
         self.robot_drops[reason.index()].load(Relaxed)
+    }
+
+    pub fn set_robot_offer(&self, offer: RobotOffer) {
+        *self.robot_offer.lock().unwrap_or_else(|p| p.into_inner()) = Some(offer);
+    }
+
+    /// The robot's last report about this topic, if it came after `since_ns`.
+    pub fn robot_offer(&self, since_ns: u64) -> Option<RobotOffer> {
+        let o = *self.robot_offer.lock().unwrap_or_else(|p| p.into_inner());
+        o.filter(|o| o.at_ns >= since_ns)
     }
 
     /// Messages per second and bytes per second over the last complete seconds.

@@ -355,7 +355,15 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       r.s[0].push(now, t.rate_hz);
       r.s[1].push(now, t.bandwidth_bps);
       r.s[2].push(now, Number.isFinite(lat) ? lat : null);
-      r.rate.update(`${num(t.rate_hz)} Hz`);
+      // Beside the measured rate: what the robot offers and what its link can deliver of
+      // it, when the link cannot carry everything.
+      const offered = t.offered_rate_hz, predicted = t.predicted_rate_hz;
+      const short = offered != null && predicted != null && predicted < offered * 0.98;
+      r.rate.update(short
+        ? `${num(t.rate_hz)} Hz · link carries ~${num(predicted)} of ${num(offered)} offered`
+        : `${num(t.rate_hz)} Hz`);
+      r.cell.parentElement?.children[2]?.setAttribute("title", offered == null ? ""
+        : `offered on the robot: ${num(offered)} Hz` + (predicted == null ? "" : `; predicted over its link: ${num(predicted)} Hz`));
       // What the robot's link carries, where compression makes it less than the payloads.
       const ratio = t.compression_ratio ?? 1;
       r.bw.update(ratio >= 1.05 && t.link_bandwidth_bps != null

@@ -170,3 +170,146 @@ async fn offload_signal_follows_inequality_5_for_a_robots_measured_link() {
     agent.shutdown().await;
     hub.shutdown().await;
 }
+
+/// Hex text that does not compress much: the link carries about what is published.
+fn noise(len: usize, seed: &mut u64) -> String {
+    let mut s = String::with_capacity(len);
+    while s.len() < len {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        s.push_str(&format!("{:016x}", *seed));
+    }
+    s.truncate(len);
+    s
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn predicted_receive_rates_match_what_a_capped_link_delivers() {
+    // 1.5 Mbit/s = 187.5 kB/s for the robot; it offers a 400 kB/s camera and a 200 kB/s
+    // scan (about half that on the link: hex compresses 2:1) and a 2 kB/s pose, all at
+    // one priority.
+    let hub = hub_with_site(1.5).await;
+    let agent = start_agent_with(uplink_config(&hub, "lab_r"), false).await;
+    agent.wait_connected().await;
+    let _watching = hub_subscriber(&hub, &["/lab_r/cam", "/lab_r/scan", "/lab_r/pose"]);
+    let mut cam = LocalPublisher::new(&agent.router, "/cam", "test_msgs/msg/Blob");
+    let mut scan = LocalPublisher::new(&agent.router, "/scan", "test_msgs/msg/Blob");
+    let mut pose = LocalPublisher::new(&agent.router, "/pose", "test_msgs/msg/Blob");
+    let load = tokio::spawn(async move {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut tick = tokio::time::interval(Duration::from_millis(50));
+        loop {
+            tick.tick().await;
+            cam.publish_json(&json!({"d": noise(20_000, &mut seed)}));
+            scan.publish_json(&json!({"d": noise(10_000, &mut seed)}));
+            for _ in 0..2 {
+                pose.publish_json(&json!({"d": noise(50, &mut seed)}));
+            }
+        }
+    });
+    let rates = || {
+        let (addr, token) = (hub.addr, hub.operator_token.clone());
+        async move {
+            let (code, v) = http_json(
+                addr,
+                "GET",
+                "/api/v1/robots/lab_r/rates",
+                Some(&token),
+                None,
+            )
+            .await;
+            assert_eq!(code, 200, "{v}");
+            v
+        }
+    };
+    let predicted = |v: &serde_json::Value, name: &str| {
+        v["topics"]
+            .as_array()
+            .and_then(|ts| ts.iter().find(|t| t["name"] == name))
+            .and_then(|t| t["predicted_rate_hz"].as_f64())
+    };
+    // Let the share settle and the link fill before taking figures.
+    within("a prediction for all three topics", async {
+        loop {
+            let v = rates().await;
+            if ["/lab_r/cam", "/lab_r/scan", "/lab_r/pose"]
+                .iter()
+                .all(|n| predicted(&v, n).is_some())
+            {
+                return;
+            }
+            tokio::time::sleep(Duration::from_millis(200)).await;
+        }
+    })
+    .await;
+    tokio::time::sleep(Duration::from_secs(3)).await;
+    // Measured at the hub over 4 s, beside the prediction in the middle of that window.
+    let count = |name: &str| {
+        let t = fleetlink_relay::TopicName::parse(name).unwrap();
+        hub.state
+            .router
+            .topic(&t)
+            .map_or(0, |t| t.stats.messages.load(Relaxed))
+    };
+    let names = ["/lab_r/cam", "/lab_r/scan", "/lab_r/pose"];
+    let before: Vec<u64> = names.iter().map(|n| count(n)).collect();
+    let t0 = Instant::now();
+    tokio::time::sleep(Duration::from_secs(2)).await;
+    let v = rates().await;
+    tokio::time::sleep(Duration::from_secs(2)).await;
+    let dt = t0.elapsed().as_secs_f64();
+    let measured: Vec<f64> = names
+        .iter()
+        .zip(&before)
+        .map(|(n, b)| (count(n) - b) as f64 / dt)
+        .collect();
+    println!("measured {measured:?} over {dt:.1} s; prediction {v}");
+    let capacity = v["capacity_bps"].as_f64().expect("a capacity");
+    assert!(capacity <= 187_500.0 * 1.05, "{v}");
+    for (n, m) in names.iter().zip(&measured) {
+        let p = predicted(&v, n).unwrap();
+        assert!(
+            (m - p).abs() <= p * 0.3 + 0.5,
+            "{n}: measured {m:.2}/s, predicted {p:.2}/s\n{v}"
+        );
+    }
+    // The link cannot carry the camera and the scan (both thinned, at about one rate:
+    // one priority), while the pose fits whole.
+    let (pc, ps, pp) = (
+        predicted(&v, "/lab_r/cam").unwrap(),
+        predicted(&v, "/lab_r/scan").unwrap(),
+        predicted(&v, "/lab_r/pose").unwrap(),
+    );
+    assert!(pc < 16.0 && ps < 16.0, "{v}");
+    assert!((pc - ps).abs() <= 0.2 * pc.max(ps), "{v}");
+    assert!(pp > 35.0, "{v}");
+    // The listing carries the same figures.
+    let (code, list) = http_json(
+        hub.addr,
+        "GET",
+        "/api/v1/topics",
+        Some(&hub.operator_token),
+        None,
+    )
+    .await;
+    assert_eq!(code, 200);
+    let cam_row = list["topics"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["name"] == "/lab_r/cam")
+        .unwrap()
+        .clone();
+    assert!(
+        cam_row["offered_rate_hz"].as_f64().unwrap() > 15.0,
+        "{cam_row}"
+    );
+    assert!(
+        cam_row["predicted_rate_hz"].as_f64().unwrap() < 16.0,
+        "{cam_row}"
+    );
+    load.abort();
+    agent.shutdown().await;
+    hub.shutdown().await;
+}

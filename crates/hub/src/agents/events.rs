@@ -320,10 +320,30 @@ impl RobotLink {
                 demand_bps,
                 rate_bps,
                 latency_ns,
+                capacity_bps,
             }) => {
                 self.live.demand_bps.store(demand_bps, Relaxed);
                 self.live.rate_bps.store(rate_bps, Relaxed);
                 self.live.latency_ns.store(latency_ns, Relaxed);
+                self.live.capacity_bps.store(capacity_bps, Relaxed);
+            }
+            LinkEvent::Control(Frame::TopicLoad { topics }) => {
+                let at_ns = fleetlink_relay::unix_nanos();
+                for t in topics {
+                    let Some(p) = self.topics.get(&t.alias) else {
+                        continue; // not announced (yet): the next report tells again
+                    };
+                    p.topic
+                        .stats
+                        .set_robot_offer(fleetlink_relay::stats::RobotOffer {
+                            hz: t.rate_mhz as f64 / 1000.0,
+                            bytes_per_sec: t.bytes_per_sec as f64,
+                            priority: f64::from(t.priority_milli) / 1000.0,
+                            queue: t.queue,
+                            no_drop: t.flags & fleetlink_proto::frame::TOPIC_LOAD_NO_DROP != 0,
+                            at_ns,
+                        });
+                }
             }
             LinkEvent::Control(Frame::TopicDrops { topics }) => {
                 for (alias, counts) in topics {

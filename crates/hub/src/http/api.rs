@@ -32,6 +32,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
         .route("/api/v1/clients", get(clients))
         .route("/api/v1/federation", get(federation))
         .route("/api/v1/robots/{name}/offload", get(offload))
+        .route("/api/v1/robots/{name}/rates", get(rates))
         // One message of a pull topic (reads data; asks the robot for it).
         .route(
             "/api/v1/robots/{name}/topics/{*rest}",
@@ -102,6 +103,8 @@ async fn robots(
                 "demand_bps": r.demand_bps.load(std::sync::atomic::Ordering::Relaxed),
                 "link_rate_bps": r.rate_bps.load(std::sync::atomic::Ordering::Relaxed),
                 "latency_ms": r.latency_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
+                // What the robot may send now (share, budget and the link's measured rate).
+                "capacity_bps": nonzero(r.capacity_bps.load(std::sync::atomic::Ordering::Relaxed)),
                 "clock_offset_ms": r.clock_offset_ns().map(|o| o as f64 / 1e6),
                 // The robot's data budget, as its agent last reported it.
                 "budget": r.budget.lock().unwrap_or_else(|p| p.into_inner()).as_ref().map(|b| json!({
@@ -178,12 +181,23 @@ async fn topics(
         })
         .flatten()
         .collect();
-    let list: Vec<Value> = st
-        .router
-        .topics()
+    let snapshot = st.router.topics();
+    // Each online robot's topics: what it offers and what its link should deliver.
+    let by_publisher = crate::rates::by_publisher(&snapshot);
+    let mut predicted: std::collections::HashMap<String, crate::rates::TopicRate> =
+        std::collections::HashMap::new();
+    for r in st.registry.list() {
+        if let Some(own) = by_publisher.get(&r.client) {
+            for t in crate::rates::robot_rates(&r, own, now).topics {
+                predicted.insert(t.name.clone(), t);
+            }
+        }
+    }
+    let list: Vec<Value> = snapshot
         .iter()
         .filter(|t| t.listed() && access.allows(t.meta.name.as_str(), Operation::Subscribe))
         .map(|t| {
+            let p = predicted.get(t.meta.name.as_str());
             let (rate, bw) = t.stats.rates(now);
             let last = t.stats.last_message_ns.load(std::sync::atomic::Ordering::Relaxed);
             let drops: serde_json::Map<String, Value> =
@@ -199,6 +213,10 @@ async fn topics(
                 "thinned": thinned.contains(t.meta.name.as_str()),
                 "subscribers": t.subscribers.iter().map(|c| client_label(&st, *c)).collect::<Vec<_>>(),
                 "rate_hz": (rate * 100.0).round() / 100.0,
+                // A robot's topic: what its publishers offer on the robot, and what its
+                // link should deliver of that (docs/qos.md, receive-rate prediction).
+                "offered_rate_hz": p.map(|p| round2(p.offer.hz)),
+                "predicted_rate_hz": p.and_then(|p| p.predicted_hz).map(round2),
                 "bandwidth_bps": bw.round(),
                 "messages": t.stats.messages.load(std::sync::atomic::Ordering::Relaxed),
                 "bytes": t.stats.bytes.load(std::sync::atomic::Ordering::Relaxed),
@@ -267,6 +285,74 @@ async fn clients(
         })
         .collect();
     Ok(Json(json!({ "clients": list })))
+}
+
+fn round2(v: f64) -> f64 {
+    (v * 100.0).round() / 100.0
+}
+
+/// One robot's receive-rate prediction with its inputs, so a reader can redo the sum:
+/// the link capacity, and per topic what the robot offers, the message size on the link,
+/// the scheduler's priority and queue, the rate the link could carry of the topic alone
+/// (capacity / size), the prediction, and the rate measured at the hub.
+async fn rates(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+    axum::extract::Path(name): axum::extract::Path<String>,
+) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    let mut access = st.security.access(me);
+    let snapshot = st.router.topics();
+    let Some(robot) = st.registry.list().into_iter().find(|r| r.name == name) else {
+        return (
+            axum::http::StatusCode::NOT_FOUND,
+            Json(json!({"error": format!("robot {name} is not online")})),
+        )
+            .into_response();
+    };
+    let own = robot_topics(&mut access, &snapshot, &name);
+    if own.is_empty() && !namespace_visible(&mut access, &name) {
+        return (
+            axum::http::StatusCode::NOT_FOUND,
+            Json(json!({"error": format!("robot {name} is not online")})),
+        )
+            .into_response();
+    }
+    let now = fleetlink_relay::unix_nanos();
+    let by_publisher = crate::rates::by_publisher(&snapshot);
+    let mine = by_publisher
+        .get(&robot.client)
+        .map_or(&[][..], Vec::as_slice);
+    let r = crate::rates::robot_rates(&robot, mine, now);
+    let topics: Vec<Value> = r
+        .topics
+        .iter()
+        .filter(|t| own.contains(&t.name.as_str()))
+        .map(|t| {
+            let measured = snapshot
+                .iter()
+                .find(|s| s.meta.name.as_str() == t.name)
+                .map(|s| round2(s.stats.rates(now).0));
+            json!({
+                "name": t.name,
+                "offered_rate_hz": round2(t.offer.hz),
+                "offered_bps": t.offer.bytes_per_sec.round(),
+                "wire_bytes": t.wire_bytes.round(),
+                "priority": t.offer.priority,
+                "queue": t.offer.queue,
+                "no_drop": t.offer.no_drop,
+                "link_limit_hz": t.link_limit_hz.map(round2),
+                "predicted_rate_hz": t.predicted_hz.map(round2),
+                "rate_hz": measured,
+            })
+        })
+        .collect();
+    Json(json!({
+        "robot": name,
+        "capacity_bps": r.capacity_bps.map(f64::round),
+        "topics": topics,
+    }))
+    .into_response()
 }
 
 fn nonzero(v: u64) -> Value {
