@@ -9,13 +9,16 @@
 //! 2. Messages no larger than a chunk (about 2 ms of the link, `link_control`) are never
 //!    held back by the link's window or the capacity share: they get what they offer
 //!    while the link has room, else they share it as the scheduler does.
-//! 3. What is left goes to the bulk topics, shared as the uplink scheduler shares the
-//!    link ([`fleetlink_qos::predict::receive_rates`]).
+//! 3. What is left goes to the bulk topics. Their messages go out a chunk of each in turn,
+//!    so the link is shared byte for byte among them: each gets what it offers if that is
+//!    less than an equal share of what is left, the others split the rest
+//!    ([`fleetlink_qos::predict::byte_fair_rates`]). Small messages that do not fit are
+//!    shared as the scheduler picks them ([`fleetlink_qos::predict::receive_rates`]).
 
 use std::collections::HashMap;
 use std::sync::atomic::Ordering::Relaxed;
 
-use fleetlink_qos::predict::{TopicLoad, receive_rates};
+use fleetlink_qos::predict::{TopicLoad, byte_fair_rates, receive_rates};
 use fleetlink_relay::ClientId;
 use fleetlink_relay::router::TopicSnapshot;
 use fleetlink_relay::stats::RobotOffer;
@@ -140,7 +143,12 @@ fn predict(capacity: f64, topics: &[TopicRate]) -> Vec<f64> {
                 queue: topics[i].offer.queue,
             })
             .collect();
-        for (&i, r) in members.iter().zip(receive_rates(left, &loads)) {
+        let rates = if small {
+            receive_rates(left, &loads)
+        } else {
+            byte_fair_rates(left, &loads)
+        };
+        for (&i, r) in members.iter().zip(rates) {
             out[i] = r;
             left = (left - r * topics[i].wire_bytes).max(0.0);
         }
@@ -188,7 +196,7 @@ mod tests {
     #[test]
     fn small_messages_go_whole_and_bulk_topics_share_the_rest() {
         // A pose of 60 bytes at 40 Hz beside a 10 kB camera and a 5 kB scan at 20 Hz over
-        // 250 kB/s: the pose is never held; the two bulk topics alternate.
+        // 250 kB/s: the pose is never held.
         let topics = [
             topic(20.0, 10_000.0, 5.0, false),
             topic(40.0, 60.0, 5.0, false),
@@ -196,9 +204,11 @@ mod tests {
         ];
         let r = predict(250_000.0, &topics);
         assert_eq!(r[1], 40.0);
+        // The rest split byte for byte: the scan fits half (100 kB/s), the camera gets
+        // the remainder.
         let left = 250_000.0 - 40.0 * 60.0;
-        assert!((r[0] - left / 15_000.0).abs() < 0.2, "{r:?}");
-        assert!((r[2] - r[0]).abs() < 0.2, "{r:?}");
+        assert!((r[2] - 20.0).abs() < 1e-9, "{r:?}");
+        assert!((r[0] - (left - 100_000.0) / 10_000.0).abs() < 1e-9, "{r:?}");
     }
 
     #[test]

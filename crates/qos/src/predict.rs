@@ -7,17 +7,23 @@
 //! `s` bytes each on the wire, the link needs `f·s` bytes/s (eq. 3), can carry at most
 //! `C/s` messages/s (eq. 4), so the subscriber receives `min(f, C/s)` (eq. 5).
 //!
-//! With several topics the uplink scheduler decides who gets the link: among topics with
-//! a message waiting it serves the one with the largest `priority × time since its last
-//! message went` (see [`crate::scheduler`]). When what is offered fits the link, every
-//! topic is predicted at its offered rate. When it does not, no closed form follows that
-//! rule well: with large messages the link's time per message dominates, and two
-//! saturated topics of priorities 1 and 0.5 alternate message for message rather than
-//! 2:1. So the shared case replays the rule on virtual time — every topic publishing
-//! periodically at its offered rate, the link serving one message after another at `C`
-//! bytes/s — and reports the message rates the replay delivered.
-//! `receive_rate_prediction_matches_what_the_scheduler_sends` checks the replay against
-//! the scheduler itself.
+//! With several topics two rules apply on the agent's uplink (the hub's `rates` module
+//! combines them):
+//!
+//! - Messages the writer sends whole are taken one at a time as the scheduler picks
+//!   them: among topics with a message waiting, the one with the largest
+//!   `priority × time since its last message went` ([`crate::scheduler`]). No closed form
+//!   follows that rule well once a message takes the link a while — two saturated topics
+//!   of priorities 1 and 0.5 alternate message for message rather than 2:1 — so
+//!   [`receive_rates`] replays it on virtual time (every topic publishing periodically at
+//!   its offered rate into a drop-oldest queue of its length, the link serving one
+//!   message after another at `C` bytes/s) and reports the rates the replay delivered.
+//!   `receive_rate_prediction_matches_what_the_scheduler_sends` checks the replay
+//!   against the scheduler itself.
+//! - Large messages go out a chunk of each in turn, one message per topic at a time, so
+//!   those topics share the link byte for byte ([`byte_fair_rates`]).
+//!
+//! When what is offered fits the link, every topic is predicted at its offered rate.
 //!
 //! Design choice: a pure function of figures the hub already has (the agent's reports and
 //! the hub's own byte counts), so the API can show the inputs beside the result and a
@@ -153,6 +159,30 @@ fn replay(capacity: f64, loads: &[TopicLoad]) -> Vec<f64> {
         .collect()
 }
 
+/// Messages per second of each topic when the link is shared byte for byte among the
+/// topics with a message in progress (the uplink's large messages go out a chunk of each
+/// in turn): a max-min fair share of `capacity` in bytes, each topic getting what it
+/// offers if that is less than an equal share of what is left.
+pub fn byte_fair_rates(capacity: f64, loads: &[TopicLoad]) -> Vec<f64> {
+    let need = |l: &TopicLoad| l.offered_hz.max(0.0) * l.wire_bytes.max(0.0);
+    let mut order: Vec<usize> = (0..loads.len()).collect();
+    order.sort_by(|&a, &b| need(&loads[a]).total_cmp(&need(&loads[b])));
+    let mut out = vec![0.0; loads.len()];
+    let mut left = capacity.max(0.0);
+    for (k, &i) in order.iter().enumerate() {
+        let l = &loads[i];
+        let fair = left / (order.len() - k) as f64;
+        let bytes = need(l).min(fair);
+        left -= bytes;
+        out[i] = if l.wire_bytes > 0.0 {
+            bytes / l.wire_bytes
+        } else {
+            l.offered_hz.max(0.0)
+        };
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -214,6 +244,29 @@ mod tests {
         assert!(near(r[0], 10.0, 0.01), "{r:?}");
         assert!(
             near(r[1], (1_000_000.0 - 2000.0) / 100_000.0, 0.02),
+            "{r:?}"
+        );
+    }
+
+    #[test]
+    fn byte_fair_sharing_gives_small_needs_their_bytes_and_splits_the_rest() {
+        // The simulated robot over 4 Mbit/s: a 50 kB/s camera and a 29 kB/s scan fit an
+        // equal share; the point cloud takes the rest.
+        let loads = [
+            load(10.0, 5000.0, 2.0),
+            load(5.0, 159_000.0, 1.0),
+            load(10.0, 2900.0, 3.0),
+        ];
+        let r = byte_fair_rates(492_000.0, &loads);
+        assert!(close(r[0], 10.0) && close(r[2], 10.0), "{r:?}");
+        assert!(close(r[1], (492_000.0 - 79_000.0) / 159_000.0), "{r:?}");
+        // Two saturated topics get equal bytes, whatever their message sizes.
+        let r = byte_fair_rates(
+            30_000.0,
+            &[load(100.0, 1000.0, 1.0), load(100.0, 3000.0, 1.0)],
+        );
+        assert!(
+            close(r[0] * 1000.0, 15_000.0) && close(r[1] * 3000.0, 15_000.0),
             "{r:?}"
         );
     }

@@ -9,7 +9,7 @@ Runs inside the hub namespace (so the hub is reachable on 127.0.0.1); starts pro
 either namespace with `ip netns exec`. Each scenario is a function returning rows
 (figure, measured, target, ok); the driver prints them as one table, writes them to
 results.md/results.json in --out, and exits 1 if any row is not ok (or a scenario could
-not be run: ERROR). Scenarios: LINKS_SCENARIOS="1 2 3 4 5 6 7 8 9 10" (default all).
+not be run: ERROR). Scenarios: LINKS_SCENARIOS="1 2 3 4 5 6 7 8 9 10 11" (default all).
 
 Thresholds (chosen here, documented in docs/benchmarks/log.md):
   nominal latency  idle, unshaped link, no point cloud: p50 of /probe/fast over 3 s;
@@ -55,7 +55,7 @@ def main():
     net = Net(a.hub_ns, a.robot_ns, a.hub_ip, a.robot_dev)
     procs = Procs(a.tmp)
     fleet = Fleet(net, procs, a.bin, a.python, a.tmp)
-    wanted = os.environ.get("LINKS_SCENARIOS", "1 2 3 4 5 6 7 8 9 10").split()
+    wanted = os.environ.get("LINKS_SCENARIOS", "1 2 3 4 5 6 7 8 9 10 11").split()
     results = {}
     started = time.monotonic()
     try:

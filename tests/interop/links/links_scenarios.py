@@ -1351,6 +1351,73 @@ def scenario_blackbox(fleet, _nominal):
     return rows
 
 
+# --- 11. receive-rate prediction on a shaped link
+
+PREDICT_MBIT = 4                 # tbf on the robot's uplink, against ~1.35 MB/s wanted
+PREDICT_WARMUP_S = 6.0
+PREDICT_WINDOW_S = 10.0
+PREDICT_SAMPLE_S = 2.0
+PREDICT_TOLERANCE = 0.25         # measured within 25 % (+0.5 Hz) of the prediction
+
+
+def scenario_predict(fleet, _nominal):
+    """The simulated robot's five sensors, all `always: true`, over a robot uplink shaped
+    to 4 Mbit/s: the link cannot carry them all. The hub's prediction
+    (GET /api/v1/robots/robot1/rates, averaged over five samples) must match, topic by
+    topic, the message rate the hub received in the same window (its `messages` counts),
+    and must say the link is short for at least one topic (else the check is empty)."""
+    fleet.start_agent(sim="{}", topics={t: "{ always: true }" for t in BUDGET_SIM})
+    fleet.net.shape(PREDICT_MBIT)
+    hub = {f"/robot1{t}": t for t in BUDGET_SIM}
+    samples = []
+    try:
+        wait_until(lambda: len([t for t in fleet.hub_topics() if t["name"] in hub
+                                and (t.get("predicted_rate_hz") or 0) > 0]) == len(hub), 20,
+                   "a prediction for every simulated sensor at the hub")
+        time.sleep(PREDICT_WARMUP_S)
+        m0 = time.monotonic()
+        c0 = {t["name"]: t["messages"] for t in fleet.hub_topics() if t["name"] in hub}
+        while time.monotonic() < m0 + PREDICT_WINDOW_S:
+            time.sleep(PREDICT_SAMPLE_S)
+            code, v = fleet.api("GET", "/api/v1/robots/robot1/rates")
+            if code == 200:
+                samples.append(v)
+        m1 = time.monotonic()
+        c1 = {t["name"]: t["messages"] for t in fleet.hub_topics() if t["name"] in hub}
+    finally:
+        fleet.net.shape(None)
+        fleet.stop_agent()
+    if not samples:
+        raise Failed("predict: GET /api/v1/robots/robot1/rates never answered 200")
+    w = m1 - m0
+    capacity = percentile([s.get("capacity_bps") or 0 for s in samples], 50)
+    rows = [(f"robot uplink tbf {PREDICT_MBIT} Mbit/s: capacity the agent reports (median)",
+             f"{capacity:,.0f} B/s", "", None)]
+    short = 0
+    for name in sorted(hub):
+        per = [t for s in samples for t in s.get("topics", []) if t["name"] == name]
+        pred = [t["predicted_rate_hz"] for t in per if t.get("predicted_rate_hz") is not None]
+        offered = [t["offered_rate_hz"] for t in per if t.get("offered_rate_hz") is not None]
+        if not pred or name not in c0 or name not in c1:
+            rows.append((f"{name}: predicted vs received", "no prediction", "a prediction", False))
+            continue
+        p = sum(pred) / len(pred)
+        f = sum(offered) / len(offered)
+        got = (c1[name] - c0[name]) / w
+        short += p < 0.8 * f
+        size = sum(t.get("wire_bytes") or 0 for t in per) / len(per)
+        near = abs(got - p) <= PREDICT_TOLERANCE * p + 0.5
+        rows.append((f"{name}: offered {f:.1f} Hz of {size:,.0f} B on the link; predicted vs "
+                     f"received over {w:.0f} s",
+                     f"predicted {p:.2f} Hz, received {got:.2f} Hz",
+                     f"within {PREDICT_TOLERANCE:.0%} + 0.5 Hz", near))
+    rows.append(("topics the link cannot carry whole (predicted < 80 % of offered)", f"{short}",
+                 ">= 1", short >= 1))
+    for row in rows:
+        print(f"   {row[0]}: {row[1]} [{'ok' if row[3] else ('' if row[3] is None else 'FAIL')}]", flush=True)
+    return rows
+
+
 SCENARIOS = [
     ("1", "blackouts 5/10/30 s", scenario_blackouts),
     ("2", "bandwidth ramp 100 -> 4 Mbit/s", scenario_ramp),
@@ -1363,4 +1430,5 @@ SCENARIOS = [
     ("9", "data budget: 400 kbit/s held over a minute, the highest priorities keep their rates",
      scenario_budget),
     ("10", "black box: a slice fetched across a 5 s blackout", scenario_blackbox),
+    ("11", "receive-rate prediction: five sensors over 4 Mbit/s", scenario_predict),
 ]

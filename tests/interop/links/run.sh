@@ -15,11 +15,11 @@
 # Namespaces are named per run (flh-<pid>-<random>, flr-...), so parallel or leftover runs
 # do not collide; the veth pair lives only inside them (10.201.0.1/30 hub, .2 robot) and no
 # traffic leaves them. On any exit every process left in the namespaces is killed and
-# the namespaces are deleted. Bounded: the driver runs under `timeout` (8 minutes).
+# the namespaces are deleted. Bounded: the driver runs under `timeout` (9 minutes).
 #
 # Env: FLEETLINK_BIN (default target/release/fleetlink), PYTHON (default .venv/bin/python),
 #      LINKS_OUT (results directory, default target/interop-links),
-#      LINKS_SCENARIOS ("1 2 3 4 5 6 7 8 9 10"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
+#      LINKS_SCENARIOS ("1 2 3 4 5 6 7 8 9 10 11"), LINKS_OUTBOX (auto|1|0), LINKS_SLOWLORIS (force),
 #      LINKS_KEEP (non-empty: keep the logs and records in the temp directory),
 #      LINKS_IDLE_P99_FLOOR_MS (15: the ramp's latency bound is 2 x max(idle p99, floor)).
 set -euo pipefail
@@ -28,7 +28,7 @@ root="$(cd "$here/../../.." && pwd)"
 bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
 python="${PYTHON:-$root/.venv/bin/python}"
 out="${LINKS_OUT:-$root/target/interop-links}"
-limit_s=480
+limit_s=540
 
 if [ "$(id -u)" -ne 0 ]; then
     echo "SKIP: bad-links suite needs root (network namespaces, tc)"; exit 0

@@ -274,15 +274,16 @@ async fn predicted_receive_rates_match_what_a_capped_link_delivers() {
             "{n}: measured {m:.2}/s, predicted {p:.2}/s\n{v}"
         );
     }
-    // The link cannot carry the camera and the scan (both thinned, at about one rate:
-    // one priority), while the pose fits whole.
+    // The link cannot carry the camera and the scan: both are thinned, sharing the link
+    // byte for byte (their chunks go in turn), so the scan's half-size messages come
+    // about twice as often; the pose fits whole.
     let (pc, ps, pp) = (
         predicted(&v, "/lab_r/cam").unwrap(),
         predicted(&v, "/lab_r/scan").unwrap(),
         predicted(&v, "/lab_r/pose").unwrap(),
     );
-    assert!(pc < 16.0 && ps < 16.0, "{v}");
-    assert!((pc - ps).abs() <= 0.2 * pc.max(ps), "{v}");
+    assert!(pc < 16.0 && ps < 19.5, "{v}");
+    assert!(ps > 1.5 * pc, "{v}");
     assert!(pp > 35.0, "{v}");
     // The listing carries the same figures.
     let (code, list) = http_json(

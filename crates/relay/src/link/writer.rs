@@ -221,6 +221,11 @@ pub async fn write_link<K>(
                     let now = Instant::now();
                     if let Err(wake) = outbox.bulk_check(now) {
                         gated = Some(wake);
+                        // The next round resumes the turns here: the lanes before this one
+                        // had theirs, so a gate after every chunk (a capacity share, a
+                        // small window) still gives each lane a chunk in turn rather than
+                        // the first lane all of them.
+                        lanes.rotate_left(i);
                         break 'turns;
                     }
                     let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
