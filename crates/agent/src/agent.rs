@@ -17,6 +17,13 @@ use crate::config::{AgentConfig, SimConfig};
 use crate::uplink::{LinkState, NameMap, Uplink, UplinkConfig, UplinkStats};
 use fleetlink_relay::TopicName;
 
+/// Messages the uplink sends before it waits for the hub's `ACK`: Robofleet's 32 in
+/// flight, plus the small messages a hub may gather before it acknowledges them
+/// (`ACK_EVERY_MESSAGES`), so that a link full of small messages carries as many per round
+/// trip as with an acknowledgement of each.
+pub const UPLINK_IN_FLIGHT: usize =
+    32 + fleetlink_relay::link::session::ACK_EVERY_MESSAGES as usize;
+
 /// How long a stopping agent waits for its parts (after its link and durable outbox,
 /// which the uplink closes itself).
 pub const SHUTDOWN_GRACE: Duration = Duration::from_secs(5);
@@ -67,7 +74,7 @@ impl AgentOptions {
                     .iter()
                     .map(|(n, spec)| Ok((parse(n)?, spec.clone())))
                     .collect::<Result<_, fleetlink_relay::NameError>>()?,
-                max_in_flight: 32,
+                max_in_flight: UPLINK_IN_FLIGHT,
                 tls: tls_client(cfg)?,
                 outbox: cfg.outbox.as_ref().map(|o| o.store()),
                 latest_cache_bytes: cfg.latest_cache_mb.saturating_mul(1 << 20) as usize,

@@ -40,6 +40,11 @@ impl<I> IdleIo<I> {
         }
     }
 
+    /// The socket itself, once nothing is to be guarded any more (after an upgrade).
+    pub fn into_inner(self) -> I {
+        self.inner
+    }
+
     fn armed(&self) -> bool {
         self.http_phase.load(Ordering::Relaxed)
     }

@@ -15,6 +15,8 @@
 //!   to a WebSocket session.
 //! - [`limits`]: the front door's timeouts and connection limits, as permits.
 //! - [`http_guards`]: idle and request-body bounds hyper does not enforce itself.
+//! - [`upgraded`]: the socket under an upgraded connection as two halves (a plain TCP
+//!   connection's own, taken back from hyper).
 //! - [`http`]: the HTTP surface: `/api/v1/*` JSON (`api`, and `admin_api` for login,
 //!   rules, tokens, users and the audit log, every change through the security core),
 //!   Prometheus `/metrics` (`metrics`, read from the router's counters at scrape time),
@@ -45,7 +47,8 @@
 //! 2. `http` (→ `state`, `capacity`, `security`, `connection` for `ConnMeta`, `limits` for
 //!    its counters). Inside it, `mod.rs` → the handlers' modules → `caller`; `api` and
 //!    `metrics` → `admin_api` for its refusals.
-//! 3. `capacity` (→ `state`, `registry`); `connection` (→ `limits`, `http_guards`).
+//! 3. `capacity` (→ `state`, `registry`); `connection` (→ `limits`, `http_guards`);
+//!    `upgraded` (→ `http_guards`).
 //! 4. `state` (→ `agents`, `registry`, `store`, `jwks`, `limits`).
 //! 5. `agents` (→ `security`, `rosout`, `delivery`, `registry`, `store`).
 //! 6. `security`, `rosout` (→ `registry`); `delivery`, `params` (→ `store`).
@@ -69,5 +72,6 @@ pub mod security;
 pub mod server;
 pub mod state;
 pub mod store;
+pub mod upgraded;
 
 pub use server::{Hub, HubConfig};

@@ -26,7 +26,6 @@ use fleetlink_proto::SUBPROTOCOL;
 use fleetlink_relay::Router;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::transcode::Transcoder;
-use hyper_util::rt::TokioIo;
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
 use tokio_util::sync::CancellationToken;
@@ -502,8 +501,9 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         // Held until the session ends: the connection counts against the limits.
         let _open = open;
         let max = st.rosbridge.max_message_size;
+        let (r, w, read) = crate::upgraded::split(upgraded);
+        let (sink, stream) = fleetlink_relay::websocket::server_halves(r, w, read, max);
         if agent {
-            let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
             crate::agents::serve_agent(stream, sink, st.agents.clone(), Some(addr), conn, slot)
                 .await;
         } else {
@@ -524,7 +524,6 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 gate,
                 guard: Some(Arc::new(guard)),
             };
-            let (sink, stream) = fleetlink_relay::websocket::server(TokioIo::new(upgraded), max);
             if foxglove.is_some() {
                 // The same gate as a rosbridge client's: rules and audit apply alike.
                 return fleetlink_foxglove::serve(

@@ -103,6 +103,9 @@ pub struct LinkIn {
     pub unacked: u32,
     /// Payload bytes (message payloads, chunk data) received since the last `ACK`.
     pub unacked_bytes: u64,
+    /// A piece of a chunked message came since the last `ACK` (its sender paces bulk
+    /// data by the acknowledgements: they go at once).
+    pub unacked_chunk: bool,
 }
 
 impl Default for LinkIn {
@@ -112,6 +115,7 @@ impl Default for LinkIn {
             reassembly: Reassembler::new(MAX_LINK_MESSAGE, MAX_LINK_REASSEMBLY),
             unacked: 0,
             unacked_bytes: 0,
+            unacked_chunk: false,
         }
     }
 }
@@ -224,6 +228,7 @@ impl LinkIn {
     ) -> Result<LinkEvent, LinkError> {
         Ok({
             self.unacked_bytes += data.len() as u64;
+            self.unacked_chunk = true;
             let t = self
                 .aliases
                 .get(&alias)
@@ -302,6 +307,7 @@ impl LinkIn {
     pub fn take_ack(&mut self) -> Option<Frame> {
         let n = std::mem::take(&mut self.unacked);
         let bytes = std::mem::take(&mut self.unacked_bytes);
+        self.unacked_chunk = false;
         (n > 0 || bytes > 0).then_some(Frame::Ack { frames: n, bytes })
     }
 }

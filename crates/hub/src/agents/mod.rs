@@ -133,7 +133,10 @@ pub async fn serve_agent<R, W, P>(
     let (peer, peer_rx) = ChannelPeer::new();
     ctx.router.calls.attach(client, peer);
     let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
-    let replaced = CancellationToken::new();
+    // Cancelled by a newer connection of the robot, and with the hub's shutdown: the
+    // session's loop waits on this one token of its own instead of two, one of them
+    // shared (and locked on every turn) by every connection.
+    let replaced = ctx.shutdown.child_token();
     let session_no = ctx.registry.next_session();
     let live = Arc::new(LiveRobot::new(LiveLink {
         name: robot.clone(),
@@ -344,7 +347,7 @@ async fn serve_open<R>(
     peer_rx: &PeerReceiver,
     ctrl_tx: &mpsc::Sender<Control>,
     ctx: &AgentContext,
-    replaced: &CancellationToken,
+    stop: &CancellationToken,
 ) -> CloseReason
 where
     R: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
@@ -353,12 +356,14 @@ where
     // Delivery marks being written, and what to confirm when they are.
     let mut recording: Option<BoxFuture<'static, ()>> = None;
     let mut confirming: Vec<(u32, u64)> = Vec::new();
-    // Made once: the hub's shutdown token is shared by every connection, and a fresh
-    // waiter per loop turn took its lock twice per WebSocket message of every robot.
-    let shutdown = ctx.shutdown.cancelled();
-    tokio::pin!(shutdown);
-    let replaced = replaced.cancelled();
-    tokio::pin!(replaced);
+    // The waits other than the socket's are made once and kept across turns (each
+    // fresh one registered and unregistered a waiter on every WebSocket message), and
+    // made again only after they fire.
+    let stopped = stop.cancelled();
+    tokio::pin!(stopped);
+    let demand = link.demand.clone();
+    let mut demand_changed = std::pin::pin!(demand.changed());
+    let mut call_news = std::pin::pin!(peer_rx.recv());
     loop {
         while let Some(ev) = session.poll_event() {
             match ev {
@@ -390,7 +395,8 @@ where
                     let _ = ctrl_tx.try_send(Control::Pong(ping));
                 }
             }
-            m = peer_rx.recv(), if session.wants_peer_events() => {
+            m = &mut call_news, if session.wants_peer_events() => {
+                call_news.set(peer_rx.recv());
                 if let Some(m) = m {
                     session.handle_peer_event(m);
                 }
@@ -407,14 +413,17 @@ where
                 }
             }
             _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
-            () = link.demand.changed() => link.on_demand_changed(session),
-            _ = &mut shutdown => {
-                session.close(CloseReason::Local("the hub is shutting down".into()));
+            () = &mut demand_changed => {
+                demand_changed.set(demand.changed());
+                link.on_demand_changed(session);
             }
-            _ = &mut replaced => {
-                session.close(CloseReason::Local(
-                    "replaced by a newer connection of the robot".into(),
-                ));
+            _ = &mut stopped => {
+                let why = if ctx.shutdown.is_cancelled() {
+                    "the hub is shutting down"
+                } else {
+                    "replaced by a newer connection of the robot"
+                };
+                session.close(CloseReason::Local(why.into()));
             }
         }
         // Deadlines are kept whichever branch ran: with reads, calls and writes all ready

@@ -85,6 +85,14 @@ pub const HUB_PING_EVERY: u32 = 5;
 const MAX_STATUSES: usize = 64;
 /// The driver feeds call-table news in only while fewer frames than this wait.
 pub const PEER_EVENT_ROOM: usize = 64;
+/// A read finds the hub's `ACK` of a few small messages due once it has waited this long
+/// (see `Transmit::ack_since`).
+pub const ACK_DELAY: Duration = Duration::from_millis(100);
+/// An `ACK` goes at once when it covers this many messages (the agent allows this many
+/// in flight beyond Robofleet's 32, `UPLINK_IN_FLIGHT`) ...
+pub const ACK_EVERY_MESSAGES: u32 = 16;
+/// ... or this many payload bytes, or any piece of a chunked message.
+pub const ACK_EVERY_BYTES: u64 = 1024;
 
 /// Why a session ended.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -230,6 +238,23 @@ enum Phase {
 struct Transmit {
     pongs: VecDeque<Frame>,
     ack: Option<(u32, u64)>,
+    /// Since when the pending `ack` has waited; `None` once it must go now.
+    ///
+    /// Design choice: the hub acknowledges at once what the agent's window waits on — a
+    /// piece of bulk data, a kilobyte, [`ACK_EVERY_MESSAGES`] messages (the room its
+    /// window keeps for them) — and lets an acknowledgement of fewer small messages wait
+    /// for a frame that is written anyway:
+    /// the next `PONG` (the agent probes every 200 ms and pings every heartbeat), the
+    /// hub's own heartbeat `PING`, any other frame, or the next read once it has waited
+    /// [`ACK_DELAY`]. It never gets a timer of its own: a robot publishing small topics
+    /// unsynchronised sends each message as its own WebSocket message, and one `ACK`
+    /// each (or one timer wake-up each) was a system call and a writer wake-up per
+    /// message, the largest share of what a hub of a thousand such robots spent beyond
+    /// the fan-out. The agent loses nothing by it: its round trips and base delay come
+    /// from its probes and from promptly acknowledged bulk, and a small message is never
+    /// held back by the byte window, nor by its window of messages, which has room for
+    /// those the hub has not acknowledged yet.
+    ack_since: Option<Instant>,
     delivered: BTreeMap<u32, u64>,
     frames: VecDeque<Control>,
     statuses: usize,
@@ -408,12 +433,8 @@ impl LinkSession {
                         return;
                     }
                 }
-                if self.role == Role::Hub
-                    && let Some(Frame::Ack { frames, bytes }) = self.link.take_ack()
-                {
-                    let (f, b) = self.tx.ack.get_or_insert((0, 0));
-                    *f = f.saturating_add(frames);
-                    *b = b.saturating_add(bytes);
+                if self.role == Role::Hub {
+                    self.queue_ack(now);
                 }
             }
         }
@@ -615,6 +636,9 @@ impl LinkSession {
                     return;
                 }
                 if now >= self.next_ping {
+                    // An acknowledgement still waiting goes with the heartbeat at the
+                    // latest (or on its own, when the hub leaves out its ping).
+                    self.tx.ack_since = None;
                     if self.skip_ping(now) {
                         self.pings_skipped += 1;
                     } else {
@@ -644,12 +668,18 @@ impl LinkSession {
 
     /// The next frame to send, if any: pongs and acknowledgements first (a peer measures
     /// its link with them), then delivery confirmations, then everything else in order.
+    /// An acknowledgement that may still wait (`Transmit::ack_since`) goes only with other
+    /// frames.
     pub fn poll_transmit(&mut self) -> Option<Control> {
+        // The acknowledgement before the frame it rides with.
+        if self.ack_ready()
+            && let Some((frames, bytes)) = self.tx.ack.take()
+        {
+            self.tx.ack_since = None;
+            return Some(Control::Frame(Frame::Ack { frames, bytes }));
+        }
         if let Some(p) = self.tx.pongs.pop_front() {
             return Some(Control::Frame(p));
-        }
-        if let Some((frames, bytes)) = self.tx.ack.take() {
-            return Some(Control::Frame(Frame::Ack { frames, bytes }));
         }
         if let Some((alias, seq)) = self.tx.delivered.pop_first() {
             return Some(Control::Frame(Frame::Delivered { alias, seq }));
@@ -661,12 +691,18 @@ impl LinkSession {
         Some(c)
     }
 
-    /// Whether anything waits to be sent.
+    /// Whether anything waits to be sent now.
     pub fn has_transmit(&self) -> bool {
-        !self.tx.pongs.is_empty()
-            || self.tx.ack.is_some()
-            || !self.tx.delivered.is_empty()
-            || !self.tx.frames.is_empty()
+        self.ack_ready() || self.has_other_transmit()
+    }
+
+    /// Whether a pending acknowledgement goes now: it must, or other frames go anyway.
+    fn ack_ready(&self) -> bool {
+        self.tx.ack.is_some() && (self.tx.ack_since.is_none() || self.has_other_transmit())
+    }
+
+    fn has_other_transmit(&self) -> bool {
+        !self.tx.pongs.is_empty() || !self.tx.delivered.is_empty() || !self.tx.frames.is_empty()
     }
 
     pub fn poll_event(&mut self) -> Option<Event> {
@@ -677,6 +713,25 @@ impl LinkSession {
 
     fn push(&mut self, c: Control) {
         self.tx.frames.push_back(c);
+    }
+
+    /// Adds what the last WebSocket message brought to the pending `ACK`, and decides
+    /// whether it goes now or may wait (see `Transmit::ack_since`).
+    fn queue_ack(&mut self, now: Instant) {
+        let chunked = self.link.unacked_chunk;
+        let Some(Frame::Ack { frames, bytes }) = self.link.take_ack() else {
+            return;
+        };
+        let (f, b) = self.tx.ack.get_or_insert((0, 0));
+        *f = f.saturating_add(frames);
+        *b = b.saturating_add(bytes);
+        let urgent = chunked || *f >= ACK_EVERY_MESSAGES || *b >= ACK_EVERY_BYTES;
+        self.tx.ack_since = match self.tx.ack_since {
+            _ if urgent => None,
+            Some(since) if now.saturating_duration_since(since) >= ACK_DELAY => None,
+            Some(since) => Some(since),
+            None => Some(now),
+        };
     }
 
     /// Whether the hub may leave out this heartbeat's `PING`: the peer pinged within the

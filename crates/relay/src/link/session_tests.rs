@@ -909,3 +909,133 @@ fn only_bytes_from_the_peer_move_the_deadline() {
     s.handle_timeout(dead);
     assert!(s.is_closed());
 }
+
+// --- acknowledgements (issue 38: one ACK per small message was a system call each)
+
+/// An open hub session with alias 7 bound to a topic, everything it had to send taken.
+fn hub_with_topic() -> (LinkSession, Instant) {
+    let mut p = Pair::new(Duration::from_millis(5));
+    p.open();
+    let now = p.now;
+    let mut s = p.hub.session;
+    let advertise = Frame::Advertise {
+        alias: 7,
+        topic: "/r1/pose".into(),
+        schema: Schema::named("std_msgs/msg/String"),
+        encoding: Encoding::Json,
+        flags: 0,
+    };
+    s.handle_binary(&advertise.to_bytes(), now);
+    while s.poll_transmit().is_some() {}
+    while s.poll_event().is_some() {}
+    (s, now)
+}
+
+fn small_messages(n: u64, size: usize) -> Bytes {
+    let mut b = BytesMut::new();
+    for seq in 0..n {
+        Frame::Message {
+            alias: 7,
+            seq,
+            stamp_ns: 0,
+            payload: Bytes::from(vec![b'x'; size]),
+        }
+        .encode(&mut b);
+    }
+    b.freeze()
+}
+
+/// The ACKs the session sends now, and whether anything else went with them.
+fn acks_now(s: &mut LinkSession) -> (Vec<(u32, u64)>, usize) {
+    let (mut acks, mut others) = (Vec::new(), 0);
+    while s.has_transmit() {
+        match s.poll_transmit() {
+            Some(Control::Frame(Frame::Ack { frames, bytes })) => acks.push((frames, bytes)),
+            Some(_) => others += 1,
+            None => break,
+        }
+    }
+    (acks, others)
+}
+
+#[test]
+fn a_few_small_messages_are_acknowledged_with_the_next_frame_written() {
+    let (mut s, t) = hub_with_topic();
+    s.handle_binary(&small_messages(1, 64), t);
+    assert_eq!(acks_now(&mut s), (vec![], 0), "one small message waits");
+    s.handle_binary(&small_messages(2, 64), t + Duration::from_millis(10));
+    assert_eq!(acks_now(&mut s), (vec![], 0), "so do three");
+    // Any frame written anyway takes the acknowledgement along, ahead of it.
+    s.send(Frame::Interest {
+        alias: 7,
+        wanted: true,
+    });
+    assert_eq!(
+        s.poll_transmit()
+            .map(|c| matches!(c, Control::Frame(Frame::Ack { .. }))),
+        Some(true)
+    );
+    let (acks, others) = acks_now(&mut s);
+    assert_eq!((acks.len(), others), (0, 1), "then the frame it rode with");
+    // A pong to the agent's ping likewise.
+    s.handle_binary(&small_messages(1, 64), t + Duration::from_millis(20));
+    s.handle_binary(
+        &Frame::Ping { id: 3, sent_ns: 1 }.to_bytes(),
+        t + Duration::from_millis(21),
+    );
+    assert_eq!(acks_now(&mut s), (vec![(1, 64)], 1));
+}
+
+#[test]
+fn eight_messages_a_kilobyte_or_a_piece_of_bulk_are_acknowledged_at_once() {
+    let (mut s, t) = hub_with_topic();
+    s.handle_binary(&small_messages(ACK_EVERY_MESSAGES as u64, 64), t);
+    assert_eq!(
+        acks_now(&mut s),
+        (
+            vec![(ACK_EVERY_MESSAGES, 64 * u64::from(ACK_EVERY_MESSAGES))],
+            0
+        )
+    );
+    s.handle_binary(&small_messages(1, ACK_EVERY_BYTES as usize), t);
+    assert_eq!(acks_now(&mut s), (vec![(1, ACK_EVERY_BYTES)], 0));
+    // Seven small ones, then the eighth in another WebSocket message: all eight at once.
+    s.handle_binary(&small_messages(7, 10), t);
+    assert_eq!(acks_now(&mut s), (vec![], 0));
+    s.handle_binary(&small_messages(1, 10), t);
+    assert_eq!(acks_now(&mut s), (vec![(8, 80)], 0));
+    // A chunk of a large message, however small: the agent paces bulk by its ACKs.
+    let chunk = Frame::Chunk {
+        alias: 7,
+        seq: 9,
+        stamp_ns: 0,
+        total_len: 4096,
+        offset: 0,
+        data: Bytes::from(vec![0u8; 100]),
+    };
+    s.handle_binary(&chunk.to_bytes(), t);
+    assert_eq!(acks_now(&mut s), (vec![(0, 100)], 0));
+}
+
+#[test]
+fn a_waiting_acknowledgement_goes_with_a_later_read_or_the_heartbeat() {
+    let (mut s, t) = hub_with_topic();
+    s.handle_binary(&small_messages(1, 64), t);
+    s.handle_binary(&small_messages(1, 64), t + ACK_DELAY / 2);
+    assert_eq!(acks_now(&mut s), (vec![], 0));
+    // A read once the first has waited ACK_DELAY sends all of them.
+    s.handle_binary(&small_messages(1, 64), t + ACK_DELAY);
+    assert_eq!(acks_now(&mut s), (vec![(3, 192)], 0));
+    // With no read after it, the heartbeat takes it: no timer of its own moves the
+    // session's deadline.
+    let t2 = t + ACK_DELAY + Duration::from_millis(1);
+    let before = s.poll_timeout().unwrap();
+    s.handle_binary(&small_messages(1, 64), t2);
+    assert_eq!(acks_now(&mut s), (vec![], 0));
+    let deadline = s.poll_timeout().unwrap();
+    assert!(deadline >= before, "{deadline:?} {before:?}");
+    s.handle_timeout(deadline);
+    let (acks, _) = acks_now(&mut s);
+    assert_eq!(acks, vec![(1, 64)]);
+    assert!(s.is_open());
+}

@@ -101,6 +101,18 @@ where
     (Writer::new(w), Reader::new(r, max_message))
 }
 
+/// The two halves of an accepted server connection whose socket was split already;
+/// `read` are bytes read from it past the handshake, the start of the client's frames.
+pub fn server_halves<R, W>(r: R, w: W, read: Bytes, max_message: usize) -> (Writer<W>, Reader<R>)
+where
+    R: AsyncRead,
+    W: AsyncWrite,
+{
+    let mut reader = Reader::new(r, max_message);
+    reader.buf.extend_from_slice(&read);
+    (Writer::new(w), reader)
+}
+
 /// Client messages read from `R`.
 pub struct Reader<R> {
     io: R,
