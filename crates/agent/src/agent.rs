@@ -79,6 +79,7 @@ impl AgentOptions {
                 outbox: cfg.outbox.as_ref().map(|o| o.store()),
                 latest_cache_bytes: cfg.latest_cache_mb.saturating_mul(1 << 20) as usize,
                 budget: cfg.link.budget.as_ref().map(|b| b.to_config()),
+                hub_id: None,
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),

@@ -41,12 +41,12 @@ use fleetlink_relay::calls::{ChannelPeer, PeerMsg, PeerReceiver, ServiceChange};
 use fleetlink_relay::link::session::{
     AgentHello, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
 };
-use fleetlink_relay::link::{Control, LinkEvent, LinkNamer, drive, write_link};
+use fleetlink_relay::link::{Control, LinkEvent, LinkNamer, ViaOut, drive, write_link};
 use fleetlink_relay::link_calls::{LinkCalls, LinkNames};
 use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
 use fleetlink_relay::reliable::ReliableOut;
-use fleetlink_relay::router::{SubOptions, Target};
+use fleetlink_relay::router::{SubOptions, Target, TopicsWatch};
 use fleetlink_relay::websocket::ClientMessage;
 use fleetlink_relay::{
     ClientId, ClientKind, DropReason, Outbox, Router, Topic, TopicId, TopicName,
@@ -59,6 +59,10 @@ use tokio_tungstenite::tungstenite::http::HeaderValue;
 use tokio_util::sync::CancellationToken;
 
 use failover::{Backoff, Failover};
+
+/// Messages a robot's no-drop stream may have waiting in a hub's uplink without a durable
+/// outbox (with one, only its byte bound counts).
+const INHERITED_NO_DROP_QUEUE: usize = 100_000;
 
 /// How often the agent reports its demand and link figures to the hub.
 const LINK_REPORT_INTERVAL: Duration = Duration::from_secs(1);
@@ -191,6 +195,10 @@ pub struct UplinkConfig {
     pub latest_cache_bytes: usize,
     /// The robot's data budget, if any (`link.budget`).
     pub budget: Option<fleetlink_qos::BudgetConfig>,
+    /// Set when the router is a hub's (a site hub's link upstream): that hub's id. What
+    /// goes up is marked with the hubs it passed (`VIA`), and what comes back down having
+    /// passed this hub is dropped.
+    pub hub_id: Option<u64>,
 }
 
 /// The link's state, observable by tests, the CLI and the status topic. `hub` is the URL
@@ -291,11 +299,21 @@ impl Uplink {
         };
         let specs = cfg.topic_qos.clone();
         let qos_for: QosFor = Arc::new(move |meta: &TopicMeta| {
-            let base = if meta.name.as_str() == fleetlink_record::blackbox::DATA_TOPIC {
+            let mut base = if meta.name.as_str() == fleetlink_record::blackbox::DATA_TOPIC {
                 crate::blackbox::data_qos()
             } else {
                 TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name)
             };
+            if meta.no_drop {
+                // A robot's no-drop stream (on a site hub, carried upstream by this
+                // uplink) stays no-drop on the next hop. The hub cannot slow the robot's
+                // link down for it, so its queue is long (a durable outbox, which a site
+                // hub has by default, holds any number, up to its byte bound).
+                base.no_drop = true;
+                base.policy = fleetlink_qos::Policy::Fifo;
+                base.rate_limit_hz = None;
+                base.queue = base.queue.max(INHERITED_NO_DROP_QUEUE);
+            }
             match specs.iter().find(|(n, _)| *n == meta.name) {
                 Some((_, spec)) => spec.resolve(&base).unwrap_or_else(|e| {
                     tracing::warn!("topic {}: {e}; using the defaults for its type", meta.name);
@@ -318,7 +336,12 @@ impl Uplink {
         outbox.set_latest_limit(cfg.latest_cache_bytes);
         outbox.set_data_budget(cfg.budget, Instant::now());
         let all = Router::compile_pattern(".*").expect("a constant pattern compiles");
-        let opts = SubOptions::default();
+        // Passive: the local publishers (a site hub's robots) hear the hub's interest,
+        // not this subscription to everything.
+        let opts = SubOptions {
+            passive: true,
+            ..SubOptions::default()
+        };
         router
             .subscribe(client, Target::Pattern(all), opts)
             .expect("the uplink client was just connected");
@@ -558,6 +581,9 @@ impl Uplink {
             }),
             Instant::now(),
         );
+        if let Some(id) = self.cfg.hub_id {
+            session.set_local_hub(id);
+        }
         // HELLO, straight to the socket: the writer starts once the hub has answered.
         while let Some(c) = session.poll_transmit() {
             if let Control::Frame(f) = c {
@@ -640,6 +666,11 @@ impl Uplink {
             });
         }
         let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
+        let via = self.cfg.hub_id.map(|me| ViaOut {
+            me,
+            peer: session.link_in().peer_hub.clone(),
+            always: true,
+        });
         let writer = tokio::spawn(write_link(
             sink,
             self.outbox.clone(),
@@ -647,6 +678,7 @@ impl Uplink {
             namer,
             announce,
             None,
+            via,
         ));
         self.state.send_replace(LinkState::Connected {
             session: session_id,
@@ -671,6 +703,9 @@ impl Uplink {
         }
 
         let mut down: HashMap<u32, Arc<Topic>> = HashMap::new();
+        // Topics that appear later are announced as they do, before any message of theirs
+        // flows (a site hub's robots send nothing nobody wants).
+        let topics = self.router.watch_topics();
         // Local topics carried up that have lost their last publisher (a ROS node gone).
         let mut unpublished: HashSet<TopicId> = HashSet::new();
         // Each topic's drop counts as last told to the hub on this connection.
@@ -718,6 +753,7 @@ impl Uplink {
                     }
                 }
                 _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
+                () = topics.changed() => self.announce_new(&topics, &mut session),
                 _ = shutdown.cancelled() => {
                     session.close(CloseReason::Local("the agent is shutting down".into()));
                 }
@@ -855,10 +891,32 @@ impl Uplink {
         })
     }
 
+    /// Announces the topics that changed since the last look and are carried up, with a
+    /// publisher here and a known encoding, but not yet announced on this connection (the
+    /// writer skips those it has).
+    fn announce_new(&self, watch: &TopicsWatch, session: &mut LinkSession) {
+        for name in watch.take() {
+            let Some(t) = self.router.snapshot(&name) else {
+                continue;
+            };
+            if !t.subscribers.contains(&self.client)
+                || !t.publishers.iter().any(|p| *p != self.client)
+            {
+                continue;
+            }
+            if let Some(encoding) = t.topic.last_encoding() {
+                session.send_control(Control::Announce {
+                    meta: t.meta.clone(),
+                    encoding,
+                });
+            }
+        }
+    }
+
     /// A topic event or control frame from the hub.
     fn on_event(&self, ev: LinkEvent, namespace: &str, down: &mut HashMap<u32, Arc<Topic>>) {
         match ev {
-            LinkEvent::Advertise { alias, topic } => {
+            LinkEvent::Advertise { alias, topic, via } => {
                 let Ok(hub) = TopicName::parse(&topic.name) else {
                     return;
                 };
@@ -866,9 +924,14 @@ impl Uplink {
                     tracing::debug!("hub sent {hub}, which has no local name here");
                     return;
                 };
+                let how = fleetlink_relay::router::Publication {
+                    latch: topic.latched,
+                    no_drop: false,
+                    via,
+                };
                 match self
                     .router
-                    .advertise(self.client, &local, topic.schema, topic.latched)
+                    .advertise_as(self.client, &local, topic.schema, how)
                 {
                     Ok(t) => {
                         down.insert(alias, t);
@@ -884,10 +947,24 @@ impl Uplink {
                 seq,
                 stamp_ns,
                 payload,
+                via,
                 ..
             } => {
                 if let Some(t) = down.get(&alias) {
-                    t.publish(self.client, seq, stamp_ns, payload);
+                    if via.is_some() {
+                        // Down from the hub upstream: it keeps the hubs it passed.
+                        let msg = fleetlink_relay::Message::new(
+                            t.meta(),
+                            seq,
+                            stamp_ns,
+                            self.client,
+                            payload,
+                        )
+                        .with_via(via);
+                        t.deliver(&Arc::new(msg));
+                    } else {
+                        t.publish(self.client, seq, stamp_ns, payload);
+                    }
                 }
             }
             LinkEvent::Control(Frame::Status { level, text, .. }) => {
@@ -895,6 +972,8 @@ impl Uplink {
             }
             LinkEvent::Control(Frame::Interest { alias, wanted }) => {
                 self.outbox.set_wanted(alias, wanted, Instant::now());
+                // On a site hub the topic's robot hears it (the subscription is passive).
+                self.router.note_demand(TopicId(alias));
             }
             LinkEvent::Control(Frame::Pull { alias }) => self.outbox.pull(alias, Instant::now()),
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {

@@ -21,5 +21,6 @@ mod e2e {
     mod relay;
     mod rosbridge;
     mod shutdown;
+    mod site;
     mod tls;
 }

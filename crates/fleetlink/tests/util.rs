@@ -194,6 +194,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         outbox: None,
         latest_cache_bytes: 64 << 20,
         budget: None,
+        hub_id: None,
     }
 }
 

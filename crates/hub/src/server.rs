@@ -158,6 +158,7 @@ impl Hub {
             default_heartbeat_ms: cfg.heartbeat.as_millis() as u32,
             ledger: Arc::new(crate::delivery::DeliveryLedger::new(store.clone())),
             rosout: crate::rosout::RosOut::start(router.clone()),
+            hub_id: this_run(),
         });
         let rosbridge = Arc::new(SessionConfig {
             node_name: "/fleetlink_hub".into(),
@@ -566,4 +567,12 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         h.insert(header::SEC_WEBSOCKET_PROTOCOL, HeaderValue::from_static(p));
     }
     res
+}
+
+/// This run's id among hubs (`VIA`): random, so two hubs never share one, and new for each
+/// run (a message in flight across a restart counts the hub's earlier run as another).
+fn this_run() -> u64 {
+    use std::hash::BuildHasher;
+    let seed = (std::process::id(), std::time::SystemTime::now());
+    std::collections::hash_map::RandomState::new().hash_one(seed) | 1
 }

@@ -70,7 +70,11 @@ pub enum FrameKind {
     Budget = 0x1c,
     TopicDrops = 0x1d,
     TopicLoad = 0x1e,
+    Via = 0x1f,
 }
+
+/// Most hubs a `VIA` lists: a chain of site hubs deeper than this is refused.
+pub const MAX_VIA: usize = 64;
 
 /// Severity of a `STATUS` frame.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -399,6 +403,14 @@ pub enum Frame {
     /// `alias` (one message; nothing if it has none, or none younger than its age limit).
     /// `alias varint`
     Pull { alias: u32 },
+    /// Between hubs (a site hub and its upstream, either way): the hubs each message that
+    /// follows on this link (`MESSAGE`, `ZMESSAGE`, each `CHUNK`) has been published on, in
+    /// the order it passed them, the sender last; until the next `VIA`. A hub finding
+    /// itself in the list drops the message, and a sender does not send a message
+    /// listing its peer: a message never comes back to a hub it has passed. Agents never
+    /// send it and skip it as an unknown kind.
+    /// `count varint | hub u64 LE × count` (count ≤ [`MAX_VIA`])
+    Via { hubs: Vec<u64> },
     /// A kind this decoder does not know; skipped.
     Unknown { kind: u8 },
 }
@@ -436,6 +448,7 @@ impl Frame {
             Frame::Budget { .. } => FrameKind::Budget as u8,
             Frame::TopicDrops { .. } => FrameKind::TopicDrops as u8,
             Frame::TopicLoad { .. } => FrameKind::TopicLoad as u8,
+            Frame::Via { .. } => FrameKind::Via as u8,
             Frame::Unknown { kind } => *kind,
         }
     }
@@ -490,6 +503,12 @@ impl Frame {
                 b.put_u8(u8::from(*wanted));
             }
             Frame::Pull { alias } => put_varint(b, u64::from(*alias)),
+            Frame::Via { hubs } => {
+                put_varint(b, hubs.len() as u64);
+                for h in hubs {
+                    b.put_u64_le(*h);
+                }
+            }
             Frame::TopicDrops { topics } => {
                 put_varint(b, topics.len() as u64);
                 for (alias, drops) in topics {
@@ -950,6 +969,19 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
         0x19 => Frame::Pull {
             alias: r.varint_u32("PULL.alias")?,
         },
+        0x1f => {
+            let count = r.varint("VIA.count")?;
+            if count > MAX_VIA as u64 {
+                return Err(DecodeError::invalid(
+                    "VIA.count",
+                    format!("{count} hubs: a chain of more than {MAX_VIA} hubs"),
+                ));
+            }
+            let hubs = (0..count)
+                .map(|_| r.u64_le("VIA.hub"))
+                .collect::<Result<_, _>>()?;
+            Frame::Via { hubs }
+        }
         0x1c => {
             let max_bps = r.varint("BUDGET.max_bps")?;
             let day_bytes = r.varint("BUDGET.day_bytes")?;

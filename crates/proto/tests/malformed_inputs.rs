@@ -877,3 +877,18 @@ fn interest_with_a_flag_other_than_0_or_1_is_invalid() {
         }
     );
 }
+
+#[test]
+fn via_listing_more_hubs_than_a_chain_may_have_is_refused_before_allocating() {
+    // 2^40 hubs claimed in a body of a few bytes: refused by the count, not by running out.
+    let body = Body::default().varint(1 << 40).u64_le(1);
+    let e = decode_err(&raw_frame(FrameKind::Via as u8, &body.0));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "VIA.count"));
+    let body = Body::default().varint(frame::MAX_VIA as u64 + 1);
+    let e = decode_err(&raw_frame(FrameKind::Via as u8, &body.0));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "VIA.count"));
+    // Two hubs said, one there.
+    let body = Body::default().varint(2).u64_le(1);
+    let e = decode_err(&raw_frame(FrameKind::Via as u8, &body.0));
+    assert_eq!((e.kind, e.context), (ErrorKind::Invalid, "VIA.hub"));
+}

@@ -417,7 +417,12 @@ pub fn call_chunk() -> impl Strategy<Value = Frame> {
 
 /// A frame of a kind this decoder does not know: encoded with an empty body.
 pub fn unknown() -> impl Strategy<Value = Frame> {
-    prop_oneof![Just(0u8), 0x1fu8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+    prop_oneof![Just(0u8), 0x20u8..=0xff].prop_map(|kind| Frame::Unknown { kind })
+}
+
+pub fn via() -> impl Strategy<Value = Frame> {
+    prop::collection::vec(any::<u64>(), 0..=fleetlink_proto::frame::MAX_VIA)
+        .prop_map(|hubs| Frame::Via { hubs })
 }
 
 pub fn any_frame() -> impl Strategy<Value = Frame> {
@@ -452,6 +457,7 @@ pub fn any_frame() -> impl Strategy<Value = Frame> {
         budget(),
         topic_drops(),
         topic_load(),
+        via(),
         unknown(),
     ]
 }
@@ -545,6 +551,9 @@ pub fn one_of_each_kind() -> Vec<Frame> {
                 queue: 16,
                 flags: fleetlink_proto::frame::TOPIC_LOAD_NO_DROP,
             }],
+        },
+        Frame::Via {
+            hubs: vec![0x0123_4567_89ab_cdef, 7],
         },
         Frame::Ping { id: 1, sent_ns: 2 },
         Frame::Pong {

@@ -13,10 +13,12 @@ pub mod drive;
 pub mod session;
 mod writer;
 
-pub use writer::write_link;
+pub use writer::{ViaOut, write_link};
 
 use std::collections::VecDeque;
 use std::sync::Arc;
+use std::sync::atomic::AtomicU64;
+use std::sync::atomic::Ordering::Relaxed;
 use std::time::Instant;
 
 use bytes::Bytes;
@@ -25,7 +27,7 @@ use fleetlink_proto::reassembly::{Reassembler, ReassemblyError};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 
-use crate::message::TopicMeta;
+use crate::message::{TopicMeta, Via};
 use crate::names::TopicId;
 
 /// Ids of heartbeat `PING`s start here; lower ids are link-estimator probes.
@@ -56,6 +58,8 @@ pub enum LinkEvent {
     Advertise {
         alias: u32,
         topic: InTopic,
+        /// The hubs its publisher is behind, from a peer hub's `VIA`.
+        via: Option<Arc<Via>>,
     },
     Unadvertise {
         alias: u32,
@@ -71,6 +75,8 @@ pub enum LinkEvent {
         reliable: bool,
         /// Bytes the message took on the link (compressed, if it came so).
         wire_len: usize,
+        /// The hubs it has passed, from a peer hub's `VIA`.
+        via: Option<Arc<Via>>,
     },
     /// Every other frame (HELLO, SUBSCRIBE, PING, ACK, SHARE, ...), as decoded: there is
     /// nothing to resolve on the link for them.
@@ -106,6 +112,19 @@ pub struct LinkIn {
     /// A piece of a chunked message came since the last `ACK` (its sender paces bulk
     /// data by the acknowledgements: they go at once).
     pub unacked_chunk: bool,
+    /// The hubs the messages arriving now have passed: the peer hub's last `VIA` (none
+    /// from an agent, which sends no `VIA`).
+    via: Option<Arc<Via>>,
+    /// This end's hub, if it is one: a message whose `VIA` lists it has come back and is
+    /// dropped ([`LinkIn::looped`]).
+    pub local_hub: Option<u64>,
+    /// The peer hub's id, the last of its `VIA`s (0 until one came): the link's writer
+    /// sends it nothing that has passed it, and marks what it sends with `VIA`.
+    pub peer_hub: Arc<AtomicU64>,
+    /// Messages dropped because they had passed this hub before.
+    pub looped: u64,
+    /// Topics refused because their publisher is behind this hub (a cycle of hub links).
+    pub looped_topics: u64,
 }
 
 impl Default for LinkIn {
@@ -116,6 +135,11 @@ impl Default for LinkIn {
             unacked: 0,
             unacked_bytes: 0,
             unacked_chunk: false,
+            via: None,
+            local_hub: None,
+            peer_hub: Arc::default(),
+            looped: 0,
+            looped_topics: 0,
         }
     }
 }
@@ -142,8 +166,17 @@ impl LinkIn {
                     reliable: flags & ADVERTISE_RELIABLE != 0,
                     pull: flags & ADVERTISE_PULL != 0,
                 };
+                if self.came_back() {
+                    // A cycle of hub links: the topic's publisher is behind this hub.
+                    self.looped_topics += 1;
+                    return Ok(LinkEvent::None);
+                }
                 self.aliases.insert(alias, t.clone());
-                LinkEvent::Advertise { alias, topic: t }
+                LinkEvent::Advertise {
+                    alias,
+                    topic: t,
+                    via: self.via.clone(),
+                }
             }
             Frame::Unadvertise { alias } => {
                 self.reassembly.forget(alias);
@@ -180,6 +213,13 @@ impl LinkIn {
                 offset,
                 data,
             } => self.on_chunk(alias, seq, stamp_ns, total_len, offset, data, true)?,
+            Frame::Via { hubs } => {
+                if let Some(peer) = hubs.last() {
+                    self.peer_hub.store(*peer, Relaxed);
+                }
+                self.via = (!hubs.is_empty()).then(|| Arc::new(Via::new(hubs)));
+                LinkEvent::None
+            }
             Frame::Unknown { .. } => LinkEvent::None,
             other => LinkEvent::Control(other),
         })
@@ -198,6 +238,13 @@ impl LinkIn {
         {
             self.unacked += 1;
             self.unacked_bytes += payload.len() as u64;
+            if !self.aliases.contains_key(&alias) {
+                return Err(LinkError::UnknownAlias(alias));
+            }
+            if self.came_back() {
+                self.looped += 1;
+                return Ok(LinkEvent::None);
+            }
             let t = self
                 .aliases
                 .get(&alias)
@@ -210,6 +257,7 @@ impl LinkIn {
                 payload: Payload::new(t.encoding, open(t, payload, compressed)?),
                 reliable: t.reliable,
                 wire_len,
+                via: self.via.clone(),
             })
         }
     }
@@ -245,8 +293,13 @@ impl LinkIn {
                         .get(&alias)
                         .ok_or(LinkError::UnknownAlias(alias))?;
                     let wire_len = done.payload.len();
-                    // The last piece's kind says what the whole is.
+                    // The last piece's kind says what the whole is, and the VIA before
+                    // it which hubs the message passed (a sender marks every piece).
                     let payload = open(t, done.payload, compressed)?;
+                    if self.came_back() {
+                        self.looped += 1;
+                        return Ok(LinkEvent::None);
+                    }
                     LinkEvent::Message {
                         alias,
                         seq: done.seq,
@@ -254,11 +307,19 @@ impl LinkIn {
                         payload: Payload::new(encoding, payload),
                         reliable,
                         wire_len,
+                        via: self.via.clone(),
                     }
                 }
                 None => LinkEvent::None,
             }
         })
+    }
+}
+
+impl LinkIn {
+    /// Whether what arrives now has passed this hub before.
+    fn came_back(&self) -> bool {
+        matches!((self.local_hub, &self.via), (Some(me), Some(v)) if v.contains(me))
     }
 }
 
@@ -294,6 +355,12 @@ pub enum Control {
     Unadvertise {
         topic: TopicId,
         since: Instant,
+    },
+    /// Announce the topic (`ADVERTISE`) if it is not announced on this link yet, in
+    /// `encoding`: a topic nobody on the far side wants has no message to announce it by.
+    Announce {
+        meta: Arc<TopicMeta>,
+        encoding: fleetlink_proto::Encoding,
     },
     /// A WebSocket pong answering the peer's ping (RFC 6455 5.5.3), after what is queued.
     Pong(Bytes),

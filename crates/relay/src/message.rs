@@ -27,6 +27,12 @@ pub struct TopicMeta {
     /// A publisher advertised the topic latched: links announce it so (`ADVERTISE_LATCHED`),
     /// and the far side latches it too.
     pub latched: bool,
+    /// A robot publishes it as a no-drop stream (`ADVERTISE_RELIABLE`): a hub's own
+    /// uplink carries it upstream as no-drop too.
+    pub no_drop: bool,
+    /// Its publisher is behind these hubs (it came from another hub); `None` when it is
+    /// published here. A link announces it with them, and a hub among them refuses it.
+    pub via: Option<Arc<Via>>,
     /// What a rosbridge JSON `publish` of this topic starts with (see
     /// [`outbound::publish_json_head`]): made once per topic, not per message.
     json_head: Box<str>,
@@ -40,8 +46,22 @@ impl TopicMeta {
             name,
             schema,
             latched,
+            no_drop: false,
+            via: None,
             json_head,
         }
+    }
+
+    /// The same topic, published behind the hubs `via`.
+    pub fn with_topic_via(mut self, via: Option<Arc<Via>>) -> TopicMeta {
+        self.via = via;
+        self
+    }
+
+    /// The same topic, published as a no-drop stream or not.
+    pub fn with_no_drop(mut self, no_drop: bool) -> TopicMeta {
+        self.no_drop = no_drop;
+        self
     }
 
     /// `{"op":"publish","topic":<name>,"msg":`.
@@ -84,6 +104,27 @@ pub struct Message {
     /// subscribers all take it as JSON text never allocates them, and stays small (it is
     /// allocated once per message and held in every subscriber's queue).
     frames: OnceLock<Box<Frames>>,
+    /// The hubs it was published on before this one, when it came from another hub.
+    via: Option<Arc<Via>>,
+}
+
+/// The hubs a message has been published on, in the order it passed them (the `VIA` of
+/// docs/protocol.md §1.8d): one value shared by every message that came the same way.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Via(Box<[u64]>);
+
+impl Via {
+    pub fn new(hubs: Vec<u64>) -> Via {
+        Via(hubs.into_boxed_slice())
+    }
+
+    pub fn hubs(&self) -> &[u64] {
+        &self.0
+    }
+
+    pub fn contains(&self, hub: u64) -> bool {
+        self.0.contains(&hub)
+    }
 }
 
 /// The frames of one message, each built the first time a subscriber needs it.
@@ -163,7 +204,20 @@ impl Message {
             json_text: json_text && payload.encoding == Encoding::Json,
             payload,
             frames: OnceLock::new(),
+            via: None,
         }
+    }
+
+    /// The same message, come from another hub by way of `via`.
+    pub fn with_via(mut self, via: Option<Arc<Via>>) -> Message {
+        self.via = via;
+        self
+    }
+
+    /// The hubs it was published on before this one (none when it was published here
+    /// first).
+    pub fn via(&self) -> Option<&Arc<Via>> {
+        self.via.as_ref()
     }
 
     /// The rosbridge JSON `publish` frame of a message published as JSON text, in the

@@ -773,6 +773,21 @@ impl Outbox {
         }
     }
 
+    /// [`Outbox::reads`] of the topic a slot of this outbox receives (false for a slot it
+    /// no longer has).
+    pub fn reads_slot(&self, slot: SlotId) -> bool {
+        let st = self.lock();
+        let Some(topic) = st.slots.get(&slot).map(|s| s.topic) else {
+            return false;
+        };
+        match &st.service {
+            Service::Scheduled { demand, .. } => {
+                demand.flows(topic) || demand.pull.contains(&topic)
+            }
+            Service::RoundRobin { .. } => true,
+        }
+    }
+
     /// Returns when the peer's demand next changes (a topic wanted or let go, interest
     /// turned on or off).
     pub async fn interest_changed(&self) {

@@ -64,6 +64,17 @@ pub struct ClientInfo {
     pub connected_at: SystemTime,
 }
 
+/// What a publisher says of its publication when it advertises a topic.
+#[derive(Debug, Clone, Default)]
+pub struct Publication {
+    /// New subscribers get the last message.
+    pub latch: bool,
+    /// A robot's no-drop stream (`ADVERTISE_RELIABLE`).
+    pub no_drop: bool,
+    /// The hubs the publisher is behind, when it is another hub's link (`VIA`).
+    pub via: Option<Arc<crate::message::Via>>,
+}
+
 /// A subscription's identity within its client.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
 pub struct SubscriptionId(pub u64);
@@ -89,6 +100,11 @@ pub struct SubOptions {
     /// subscription on behalf of another hub: the topic exists here only once someone
     /// publishes it).
     pub unlisted: bool,
+    /// The subscriber wants a topic only while its outbox sends it on ([`Outbox::reads`]):
+    /// an uplink that carries everything its own peer asks for subscribes to every topic
+    /// this way, so that the topics' publishers hear only that peer's interest, not a
+    /// subscription to everything.
+    pub passive: bool,
 }
 
 #[derive(Clone)]
@@ -100,6 +116,15 @@ struct SubscriberRef {
     /// publishing connection when it subscribed. Link peers (agents, an agent's uplink)
     /// and in-process participants do not: that is the loop guard between robot and hub.
     own: bool,
+    /// Counts as demand only while its outbox sends the topic on (`SubOptions::passive`).
+    passive: bool,
+}
+
+impl SubscriberRef {
+    /// Whether this subscriber wants what is published now.
+    fn wants(&self) -> bool {
+        !self.passive || self.outbox.reads_slot(self.slot)
+    }
 }
 
 pub struct Topic {
@@ -295,7 +320,7 @@ impl Topic {
         self.subscribers
             .load()
             .iter()
-            .any(|s| s.client != publisher || s.own)
+            .any(|s| (s.client != publisher || s.own) && s.wants())
     }
 
     /// Whether a client other than `me` wants what is published here by others than
@@ -305,15 +330,24 @@ impl Topic {
         self.subscribers
             .load()
             .iter()
-            .any(|s| s.client != me && (s.own || !publishers.contains(&s.client)))
+            .any(|s| s.client != me && (s.own || !publishers.contains(&s.client)) && s.wants())
     }
 
-    /// Whether a client other than those in `but` subscribes to the topic.
+    /// Whether a client other than those in `but` subscribes to the topic (a passive
+    /// subscriber only while it sends the topic on).
     pub fn has_subscriber_besides(&self, but: &[ClientId]) -> bool {
         self.subscribers
             .load()
             .iter()
-            .any(|s| !but.contains(&s.client))
+            .any(|s| !but.contains(&s.client) && s.wants())
+    }
+
+    /// Remembers the encoding its publisher announced, until a message says otherwise: a
+    /// link can then announce the topic before any message of it has flowed.
+    pub fn note_encoding(&self, encoding: fleetlink_proto::Encoding) {
+        let _ = self
+            .last_encoding
+            .compare_exchange(u8::MAX, encoding as u8, Relaxed, Relaxed);
     }
 
     /// Marks the topic idle (its publisher was told nobody wants it) or flowing.
@@ -466,6 +500,8 @@ struct ClientEntry {
 #[derive(Default)]
 struct State {
     topics: HashMap<TopicName, Arc<Topic>>,
+    /// The topics' names by id (a link's alias is its topic's id).
+    names: HashMap<TopicId, TopicName>,
     publishers: HashMap<TopicName, Vec<ClientId>>,
     clients: HashMap<ClientId, ClientEntry>,
     /// Publishers that follow the demand for their topics.
@@ -681,6 +717,28 @@ impl Router {
         schema: Schema,
         latch: bool,
     ) -> Result<Arc<Topic>, RouteError> {
+        let how = Publication {
+            latch,
+            ..Publication::default()
+        };
+        self.advertise_as(client, name, schema, how)
+    }
+
+    /// [`Router::advertise`] with everything the publisher says of its publication. A
+    /// no-drop stream is one from the topic's creation, so the subscribers who attach
+    /// then (a hub's uplink) see it as one.
+    pub fn advertise_as(
+        &self,
+        client: ClientId,
+        name: &TopicName,
+        schema: Schema,
+        how: Publication,
+    ) -> Result<Arc<Topic>, RouteError> {
+        let Publication {
+            latch,
+            no_drop,
+            via,
+        } = how;
         // Definitions travel with topics: learn what the publisher sent, or fill in what
         // the registry knows so listings and viewers get the full text.
         let schema = if schema.text.is_empty() {
@@ -712,16 +770,32 @@ impl Router {
                         requested: schema.type_name,
                     });
                 }
-                if known.is_empty()
+                let schema_news = known.is_empty()
                     || !same_type(known, &schema.type_name)
-                    || (meta.schema.text.is_empty() && !schema.text.is_empty())
-                {
-                    t.set_meta(TopicMeta::new(meta.id, name.clone(), schema, meta.latched));
+                    || (meta.schema.text.is_empty() && !schema.text.is_empty());
+                // A publisher here makes it a topic of this hub's own; the first publisher
+                // that is another hub's link says which hubs it is behind.
+                let topic_via = match via {
+                    None => None,
+                    Some(_) if others_publish => meta.via.clone(),
+                    Some(v) => Some(v),
+                };
+                if schema_news || (no_drop && !meta.no_drop) || topic_via != meta.via {
+                    let schema = if schema_news {
+                        schema
+                    } else {
+                        meta.schema.clone()
+                    };
+                    t.set_meta(
+                        TopicMeta::new(meta.id, name.clone(), schema, meta.latched)
+                            .with_no_drop(meta.no_drop || no_drop)
+                            .with_topic_via(topic_via),
+                    );
                 }
                 t
             }
             None => {
-                let t = self.create_topic(&mut st, name, schema);
+                let t = self.create_topic(&mut st, name, schema, no_drop, via);
                 meta_before = t.meta();
                 t
             }
@@ -731,12 +805,11 @@ impl Router {
             // Messages carry the flag from now on, so links announce the topic latched.
             let meta = topic.meta();
             if !meta.latched {
-                topic.set_meta(TopicMeta::new(
-                    meta.id,
-                    meta.name.clone(),
-                    meta.schema.clone(),
-                    true,
-                ));
+                topic.set_meta(
+                    TopicMeta::new(meta.id, meta.name.clone(), meta.schema.clone(), true)
+                        .with_no_drop(meta.no_drop)
+                        .with_topic_via(meta.via.clone()),
+                );
             }
         }
         let pubs = st.publishers.entry(name.clone()).or_default();
@@ -765,6 +838,21 @@ impl Router {
         gc_topic(&mut st, name);
         if was {
             st.topic_changed(name);
+        }
+    }
+
+    /// The topic with id `id`, if it exists.
+    pub fn topic_by_id(&self, id: TopicId) -> Option<Arc<Topic>> {
+        let st = self.lock();
+        st.names.get(&id).and_then(|n| st.topics.get(n)).cloned()
+    }
+
+    /// A passive subscriber of the topic with id `id` started or stopped sending it on:
+    /// its publishers hear that the demand for it may have changed.
+    pub fn note_demand(&self, id: TopicId) {
+        let st = self.lock();
+        if let Some(t) = st.names.get(&id).and_then(|n| st.topics.get(n)) {
+            st.demand_changed(t);
         }
     }
 
@@ -797,10 +885,20 @@ impl Router {
         self.lock().topics.get(name).cloned()
     }
 
-    fn create_topic(&self, st: &mut State, name: &TopicName, schema: Schema) -> Arc<Topic> {
+    fn create_topic(
+        &self,
+        st: &mut State,
+        name: &TopicName,
+        schema: Schema,
+        no_drop: bool,
+        via: Option<Arc<crate::message::Via>>,
+    ) -> Arc<Topic> {
         let id = TopicId(self.next_topic.fetch_add(1, Relaxed));
+        let meta = TopicMeta::new(id, name.clone(), schema, false)
+            .with_no_drop(no_drop)
+            .with_topic_via(via);
         let topic = Arc::new(Topic {
-            meta: ArcSwap::from_pointee(TopicMeta::new(id, name.clone(), schema, false)),
+            meta: ArcSwap::from_pointee(meta),
             stats: Arc::new(TopicStats::default()),
             subscribers: ArcSwap::from_pointee(Vec::new()),
             version: AtomicU64::new(0),
@@ -812,6 +910,7 @@ impl Router {
             reliable: AtomicU64::new(0),
         });
         st.topics.insert(name.clone(), topic.clone());
+        st.names.insert(id, name.clone());
         st.topic_changed(name);
         // Pattern subscriptions pick up new topics as they appear.
         let mut matches = Vec::new();
@@ -883,7 +982,7 @@ impl Router {
             Target::Exact(name) => {
                 let t = match st.topics.get(name) {
                     Some(t) => t.clone(),
-                    None => self.create_topic(st, name, Schema::default()),
+                    None => self.create_topic(st, name, Schema::default(), false, None),
                 };
                 vec![t]
             }
@@ -938,6 +1037,7 @@ impl Router {
             outbox: c.outbox.clone(),
             slot,
             own,
+            passive: opts.passive,
         };
         let mut list = Vec::clone(&topic.subscribers.load());
         list.push(r);
@@ -1059,7 +1159,8 @@ fn gc_topic(st: &mut State, name: &TopicName) {
         .is_some_and(|t| t.subscriber_count() > 0);
     if !has_pub && !has_sub {
         st.publishers.remove(name);
-        if st.topics.remove(name).is_some() {
+        if let Some(t) = st.topics.remove(name) {
+            st.names.remove(&t.id());
             st.topic_changed(name);
         }
     }

@@ -105,6 +105,7 @@ fn spawn_writer(
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
         None,
+        None,
     ));
     (ctrl_tx, rx, writer)
 }
@@ -231,6 +232,7 @@ async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
         ctrl_rx,
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
+        None,
         None,
     ));
     let payload = Bytes::from(vec![7u8; 4 * frame::DEFAULT_CHUNK_SIZE]);
@@ -570,6 +572,7 @@ async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
         ctrl_rx,
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
+        None,
         None,
     ));
     let size = 8 * FIRST_CHUNK;
@@ -1149,5 +1152,98 @@ fn a_bad_compressed_message_is_refused_and_the_link_goes_on() {
             }
         ),
         "{ok:?}"
+    );
+}
+
+/// Between hubs (issue 40): the writer marks each message with the hubs it passed, this
+/// hub last, writing `VIA` only when the way changes, and sends nothing that has passed
+/// the peer hub.
+#[tokio::test]
+async fn a_link_between_hubs_marks_messages_with_the_hubs_they_passed() {
+    use fleetlink_relay::link::ViaOut;
+    use fleetlink_relay::message::Via;
+    use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+    let router = Arc::new(Router::default());
+    let (outbox, publisher) = link_and_publisher(&router, ".*");
+    let topic = router
+        .advertise(
+            publisher,
+            &TopicName::parse("/chat").unwrap(),
+            Schema::named("std_msgs/msg/String"),
+            false,
+        )
+        .unwrap();
+    let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(64);
+    let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let peer = Arc::new(AtomicU64::new(0));
+    let via = ViaOut {
+        me: 10,
+        peer: peer.clone(),
+        always: false,
+    };
+    let _writer = tokio::spawn(write_link(
+        sink,
+        outbox,
+        ctrl_rx,
+        Arc::new(|m| Some(m.name.to_string())),
+        Vec::new(),
+        None,
+        Some(via),
+    ));
+    let send = |data: &str, via: Option<Vec<u64>>| {
+        let msg = fleetlink_relay::Message::new(
+            topic.meta(),
+            1,
+            0,
+            publisher,
+            Payload::json(Bytes::from(format!("{{\"data\":\"{data}\"}}"))),
+        )
+        .with_via(via.map(|v| Arc::new(Via::new(v))));
+        topic.deliver(&Arc::new(msg));
+    };
+    // The peer is not known to be a hub yet: no VIA at all.
+    send("plain", None);
+    let frames = next_frames(&mut rx).await;
+    assert!(
+        !frames.iter().any(|f| matches!(f, Frame::Via { .. })),
+        "{frames:?}"
+    );
+    // Once it is (its own VIA said so), every message is marked, the way written once.
+    peer.store(20, Relaxed);
+    send("here-1", None);
+    send("here-2", None);
+    send("from-30", Some(vec![30]));
+    send("back-to-20", Some(vec![30, 20]));
+    send("from-30-again", Some(vec![30]));
+    let mut seen = Vec::new();
+    while seen
+        .iter()
+        .filter(|s: &&String| !s.starts_with("via"))
+        .count()
+        < 4
+    {
+        for f in next_frames(&mut rx).await {
+            match f {
+                Frame::Via { hubs } => seen.push(format!("via {hubs:?}")),
+                Frame::Message { payload, .. } => {
+                    let v: serde_json::Value = serde_json::from_slice(&payload).unwrap();
+                    seen.push(v["data"].as_str().unwrap().to_owned());
+                }
+                _ => {}
+            }
+        }
+    }
+    assert_eq!(
+        seen,
+        [
+            "via [10]",
+            "here-1",
+            "here-2",
+            "via [30, 10]",
+            "from-30",
+            "from-30-again",
+        ],
+        "the message that passed the peer (20) is not sent"
     );
 }

@@ -125,6 +125,8 @@ pub struct Args {
     pub max_pending_calls_per_provider: u32,
     #[command(flatten)]
     pub federation: super::federation::FederationArgs,
+    #[command(flatten)]
+    pub upstream: super::upstream::UpstreamArgs,
     /// Check the options and the files they name (TLS certificate and key, message
     /// definitions, JWKS file, data directory or database URL, Zenoh configuration), print
     /// the effective options with their defaults, and exit 0 if all is well, 1 if not —
@@ -256,6 +258,12 @@ pub fn check(
             super::federation::check(&args.federation),
         );
     }
+    if args.upstream.wanted() {
+        r.step(
+            "upstream link (site hub): configuration",
+            super::upstream::config(&args.upstream, &args.data_dir),
+        );
+    }
     let files = u64::from(args.max_connections) + 256;
     match super::open_files_limit() {
         Some(hard) if hard < files => r.note(format!(
@@ -317,11 +325,16 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     if let Err(e) = super::raise_open_files(files) {
         tracing::warn!("{e:#}: the hub can hold fewer connections than --max-connections");
     }
+    let upstream_cfg = super::upstream::config(&args.upstream, &args.data_dir)?;
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     let transcoder = crate::transcoder(&args.msg_path)?;
     rt.block_on(async {
         let hub = Hub::bind(args.config(), transcoder).await?;
         super::federation::join(&args.federation, &hub).await?;
+        let upstream = match &upstream_cfg {
+            Some(cfg) => Some(super::upstream::start(cfg, &hub)?),
+            None => None,
+        };
         let addr = hub.local_addr();
         let (ws, http) = if args.tls_cert.is_some() {
             ("wss", "https")
@@ -344,7 +357,19 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                 args.data_dir.display()
             ),
         }
-        hub.run(super::shutdown_signal()).await?;
+        if let Some(cfg) = &upstream_cfg {
+            println!(
+                "  upstream:   {} as site {} (its robots there: /{}/<robot>/…)",
+                cfg.hub.join(", "),
+                cfg.name,
+                cfg.name
+            );
+        }
+        let result = hub.run(super::shutdown_signal()).await;
+        if let Some(u) = upstream {
+            u.stop().await;
+        }
+        result?;
         println!("fleetlink hub stopped");
         Ok::<_, anyhow::Error>(())
     })?;

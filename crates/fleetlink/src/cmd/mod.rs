@@ -13,6 +13,7 @@ pub mod play;
 pub mod qoi_sim;
 pub mod record;
 pub mod remote;
+pub mod upstream;
 
 /// Completes on Ctrl-C or SIGTERM.
 pub async fn shutdown_signal() {

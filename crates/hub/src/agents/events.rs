@@ -13,9 +13,12 @@ use fleetlink_proto::frame::{Frame, Level, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, 
 use fleetlink_relay::gate::Op;
 use fleetlink_relay::link::LinkEvent;
 use fleetlink_relay::link::session::{Event, LinkSession};
-use fleetlink_relay::router::{DemandWatch, SubOptions, SubscriptionId, Target, TopicView};
+use fleetlink_relay::message::Via;
+use fleetlink_relay::router::{
+    DemandWatch, Publication, SubOptions, SubscriptionId, Target, TopicView,
+};
 use fleetlink_relay::stats::StatsBatch;
-use fleetlink_relay::{ClientId, DropReason, Router, Topic, TopicId, TopicName};
+use fleetlink_relay::{ClientId, DropReason, Message, Router, Topic, TopicId, TopicName};
 
 use crate::delivery::RobotBook;
 use crate::registry::LiveRobot;
@@ -141,6 +144,7 @@ impl RobotLink {
                 payload,
                 reliable: true,
                 wire_len,
+                via,
             }) => {
                 let name = session
                     .link_in()
@@ -154,7 +158,7 @@ impl RobotLink {
                 let c = self.confirm.entry(alias).or_default();
                 *c = (*c).max(seq);
                 if fresh {
-                    self.publish(alias, seq, stamp_ns, payload, wire_len, session);
+                    self.publish(alias, seq, stamp_ns, payload, wire_len, via, session);
                 }
             }
             Event::Link(ev) => self.on_link(ev, session),
@@ -165,6 +169,7 @@ impl RobotLink {
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn publish(
         &mut self,
         alias: u32,
@@ -172,6 +177,7 @@ impl RobotLink {
         stamp_ns: u64,
         payload: fleetlink_proto::Payload,
         wire_len: usize,
+        via: Option<Arc<Via>>,
         session: &mut LinkSession,
     ) {
         let Some(p) = self.topics.get_mut(&alias) else {
@@ -186,17 +192,25 @@ impl RobotLink {
         p.counts.link_raw += size as u64;
         p.counts.link_wire += wire_len as u64;
         let (received, received_ns) = self.read_at;
-        let view = p.topic.view(&mut p.view);
-        p.topic.publish_framed(
-            view,
-            self.client,
-            seq,
-            stamp_ns,
-            payload,
-            received,
-            false,
-            &mut p.counts,
-        );
+        if via.is_some() {
+            // From a site hub (or the hub upstream): the message keeps the hubs it passed.
+            let meta = p.topic.meta();
+            let msg = Message::received_at(meta, seq, stamp_ns, self.client, payload, received)
+                .with_via(via);
+            p.topic.deliver(&Arc::new(msg));
+        } else {
+            let view = p.topic.view(&mut p.view);
+            p.topic.publish_framed(
+                view,
+                self.client,
+                seq,
+                stamp_ns,
+                payload,
+                received,
+                false,
+                &mut p.counts,
+            );
+        }
         if !p.unflushed {
             p.unflushed = true;
             self.unflushed.push(alias);
@@ -216,7 +230,7 @@ impl RobotLink {
 
     fn on_link(&mut self, ev: LinkEvent, session: &mut LinkSession) {
         match ev {
-            LinkEvent::Advertise { alias, topic } => {
+            LinkEvent::Advertise { alias, topic, via } => {
                 let name = match TopicName::parse(&topic.name) {
                     Ok(n) => n,
                     Err(e) => {
@@ -232,11 +246,18 @@ impl RobotLink {
                     let text = format!("advertise {name}: not allowed for {}", gate.principal());
                     return session.status(Level::Error, status_code::FORBIDDEN, text);
                 }
+                let how = Publication {
+                    latch: topic.latched,
+                    no_drop: topic.reliable,
+                    via,
+                };
                 match self
                     .router
-                    .advertise(self.client, &name, topic.schema, topic.latched)
+                    .advertise_as(self.client, &name, topic.schema, how)
                 {
                     Ok(t) => {
+                        // Announced further (a site hub's uplink) before a message flows.
+                        t.note_encoding(topic.encoding);
                         self.by_topic.insert(t.id(), alias);
                         t.set_pull(topic.pull);
                         let epoch = self.book.lock().unwrap_or_else(|p| p.into_inner()).epoch();
@@ -286,8 +307,9 @@ impl RobotLink {
                 stamp_ns,
                 payload,
                 wire_len,
+                via,
                 ..
-            } => self.publish(alias, seq, stamp_ns, payload, wire_len, session),
+            } => self.publish(alias, seq, stamp_ns, payload, wire_len, via, session),
             LinkEvent::Control(Frame::Subscribe { pattern, flags, .. })
                 if flags & SUBSCRIBE_SERVICES != 0 =>
             {

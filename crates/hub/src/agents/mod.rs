@@ -22,7 +22,7 @@ use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
     Accept, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
 };
-use fleetlink_relay::link::{Control, drive, write_link};
+use fleetlink_relay::link::{Control, ViaOut, drive, write_link};
 use fleetlink_relay::link_calls::{LinkCalls, SameNames};
 use fleetlink_relay::websocket::ClientMessage;
 use fleetlink_relay::{ClientKind, Router};
@@ -62,6 +62,9 @@ pub struct AgentContext {
     pub ledger: Arc<DeliveryLedger>,
     /// The hub's `/rosout`: robots connecting, leaving, refused.
     pub rosout: Arc<crate::rosout::RosOut>,
+    /// This hub's id on links between hubs (`VIA`): a message that has passed it never
+    /// comes back (docs/site-hubs.md).
+    pub hub_id: u64,
 }
 
 /// What `HELLO` said, once authenticated.
@@ -97,6 +100,7 @@ pub async fn serve_agent<R, W, P>(
         },
         Instant::now(),
     );
+    session.set_local_hub(ctx.hub_id);
     let admitted = match handshake(&mut reader, &mut sink, &mut session, &ctx, conn).await {
         Ok(a) => a,
         Err(Ended::Gone(reason)) => {
@@ -184,6 +188,13 @@ pub async fn serve_agent<R, W, P>(
         },
         Instant::now(),
     );
+    // A peer that turns out to be a site hub (it sends `VIA`) gets its messages marked
+    // with the hubs they passed, and none that passed it.
+    let via = ViaOut {
+        me: ctx.hub_id,
+        peer: session.link_in().peer_hub.clone(),
+        always: false,
+    };
     let writer = tokio::spawn(write_link(
         sink,
         outbox,
@@ -191,6 +202,7 @@ pub async fn serve_agent<R, W, P>(
         Arc::new(|m| Some(m.name.to_string())),
         Vec::new(),
         Some(writer_gate),
+        Some(via),
     ));
     // WELCOME is on its way: the hub has answered.
     drop(slot);

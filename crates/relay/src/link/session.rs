@@ -401,6 +401,13 @@ impl LinkSession {
         &self.link
     }
 
+    /// This end is hub `id`: messages whose `VIA` lists it are dropped as they arrive
+    /// (they came back), and its writer marks what it sends to a peer hub
+    /// ([`super::ViaOut`], with [`LinkIn::peer_hub`]).
+    pub fn set_local_hub(&mut self, id: u64) {
+        self.link.local_hub = Some(id);
+    }
+
     /// Calls in flight across this link: (served for the peer, forwarded to it).
     pub fn calls_in_flight(&self) -> (usize, usize) {
         self.calls.as_ref().map_or((0, 0), LinkCalls::in_flight)
@@ -507,6 +514,14 @@ impl LinkSession {
     pub fn send(&mut self, frame: Frame) {
         if self.phase == Phase::Open {
             self.push(Control::Frame(frame));
+        }
+    }
+
+    /// Queues an instruction for the link's writer, in order with the frames (a topic to
+    /// announce). Ignored unless the session is open.
+    pub fn send_control(&mut self, c: Control) {
+        if self.phase == Phase::Open {
+            self.push(c);
         }
     }
 

@@ -1043,3 +1043,64 @@ fn a_waiting_acknowledgement_goes_with_a_later_read_or_the_heartbeat() {
     assert_eq!(acks, vec![(1, 64)]);
     assert!(s.is_open());
 }
+
+// --- between hubs (issue 40: a message never comes back to a hub it has passed)
+
+fn with_via(hubs: &[u64], then: Bytes) -> Bytes {
+    let mut b = BytesMut::new();
+    Frame::Via {
+        hubs: hubs.to_vec(),
+    }
+    .encode(&mut b);
+    b.extend_from_slice(&then);
+    b.freeze()
+}
+
+fn messages(s: &mut LinkSession) -> Vec<Option<Vec<u64>>> {
+    let mut out = Vec::new();
+    while let Some(e) = s.poll_event() {
+        if let Event::Link(LinkEvent::Message { via, .. }) = e {
+            out.push(via.map(|v| v.hubs().to_vec()));
+        }
+    }
+    out
+}
+
+#[test]
+fn a_message_or_topic_that_passed_this_hub_is_dropped_as_it_arrives() {
+    let (mut s, t) = hub_with_topic();
+    s.set_local_hub(5);
+    // From an agent: no VIA, nothing to check.
+    s.handle_binary(&small_messages(1, 8), t);
+    assert_eq!(messages(&mut s), vec![None]);
+    // From a site hub (7) whose message passed hub 3 first: kept, with its way.
+    s.handle_binary(&with_via(&[3, 7], small_messages(1, 8)), t);
+    assert_eq!(messages(&mut s), vec![Some(vec![3, 7])]);
+    assert_eq!(
+        s.link_in()
+            .peer_hub
+            .load(std::sync::atomic::Ordering::Relaxed),
+        7
+    );
+    // One that passed this hub (5) before: dropped, counted; the VIA holds for what follows
+    // in later WebSocket messages too.
+    s.handle_binary(&with_via(&[5, 7], small_messages(2, 8)), t);
+    s.handle_binary(&small_messages(1, 8), t);
+    assert_eq!(messages(&mut s), vec![]);
+    assert_eq!(s.link_in().looped, 3);
+    // A topic whose publisher is behind this hub is refused the same way.
+    let advertise = Frame::Advertise {
+        alias: 9,
+        topic: "/site5/r/scan".into(),
+        schema: Schema::named("std_msgs/msg/String"),
+        encoding: Encoding::Json,
+        flags: 0,
+    };
+    s.handle_binary(&advertise.to_bytes(), t);
+    assert!(s.link_in().topic(9).is_none());
+    assert_eq!(s.link_in().looped_topics, 1);
+    // A new way without this hub: messages flow again.
+    s.handle_binary(&with_via(&[7], small_messages(1, 8)), t);
+    assert_eq!(messages(&mut s), vec![Some(vec![7])]);
+    assert!(s.is_open());
+}

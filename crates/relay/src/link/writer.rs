@@ -4,6 +4,8 @@
 
 use std::collections::{HashMap, VecDeque};
 use std::sync::Arc;
+use std::sync::atomic::AtomicU64;
+use std::sync::atomic::Ordering::Relaxed;
 use std::time::Instant;
 
 use bytes::{Bytes, BytesMut};
@@ -16,7 +18,7 @@ use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
 use super::compress::Compressor;
 use super::{Control, LinkNamer};
-use crate::message::{Message, TopicMeta};
+use crate::message::{Message, TopicMeta, Via};
 use crate::names::TopicId;
 use crate::outbox::Outbox;
 
@@ -135,24 +137,27 @@ pub async fn write_link<K>(
     namer: LinkNamer,
     announce_first: Vec<(Arc<TopicMeta>, Encoding)>,
     mut gate: Option<Box<dyn crate::gate::Gate>>,
+    via: Option<ViaOut>,
 ) where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
+    let mut via = ViaMark {
+        out: via,
+        written: None,
+    };
     let mut advertised: HashMap<TopicId, Encoding> = HashMap::new();
     let mut buf = BytesMut::new();
     // Topics the peer should know before any message flows (e.g. after a reconnect).
     for (meta, enc) in announce_first {
-        if let Some(name) = namer(&meta) {
-            Frame::Advertise {
-                alias: meta.id.0,
-                topic: name,
-                schema: meta.schema.clone(),
-                encoding: enc,
-                flags: advertise_flags(&outbox, &meta),
-            }
-            .encode(&mut buf);
-            advertised.insert(meta.id, enc);
-        }
+        announce_topic(
+            &mut buf,
+            &mut advertised,
+            &meta,
+            enc,
+            &namer,
+            &outbox,
+            &mut via,
+        );
     }
     let mut lanes: Vec<Lane> = Vec::new();
     // Each topic's compression on this link, looked up on its first message.
@@ -174,6 +179,19 @@ pub async fn write_link<K>(
                 Ok(Control::Frame(f)) => f.encode(&mut buf),
                 Ok(Control::Sequence(s)) => sequences.push_back(s),
                 Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
+                Ok(Control::Announce { meta, encoding }) => {
+                    if !advertised.contains_key(&meta.id) {
+                        announce_topic(
+                            &mut buf,
+                            &mut advertised,
+                            &meta,
+                            encoding,
+                            &namer,
+                            &outbox,
+                            &mut via,
+                        );
+                    }
+                }
                 Ok(Control::Pong(p)) => {
                     if pong(&mut sink, &mut buf, p).await.is_err() {
                         return;
@@ -229,6 +247,7 @@ pub async fn write_link<K>(
                         break 'turns;
                     }
                     let chunk = outbox.chunk_size().unwrap_or(DEFAULT_CHUNK_SIZE);
+                    via.mark(&mut buf, &lane.msg);
                     let (f, n) = lane.next_frame(chunk);
                     if send_large(&mut sink, &mut buf, &f, PACK).await.is_err() {
                         return;
@@ -243,7 +262,8 @@ pub async fn write_link<K>(
                         Some(m) => {
                             let (topic, sized) = (lane.topic, lane.cached.is_none());
                             let waiting = std::mem::take(&mut lane.waiting);
-                            let carried = announce(&mut buf, &mut advertised, &m, &namer, &outbox);
+                            let carried =
+                                announce(&mut buf, &mut advertised, &m, &namer, &outbox, &mut via);
                             let (m, compressed) = if carried {
                                 for_link(&mut compressors, &outbox, m)
                             } else {
@@ -274,7 +294,7 @@ pub async fn write_link<K>(
         // peer can ask for them.
         outbox.take_unannounced(&mut held);
         for msg in held.drain(..) {
-            announce(&mut buf, &mut advertised, &msg, &namer, &outbox);
+            announce(&mut buf, &mut advertised, &msg, &namer, &outbox, &mut via);
         }
         // 4. A batch from the outbox.
         // When it takes nothing, the time its data budget next lets something go.
@@ -291,6 +311,9 @@ pub async fn write_link<K>(
             {
                 continue;
             }
+            if !via.sends(&msg) {
+                continue;
+            }
             let tid = msg.topic.id;
             if !unadvertise.is_empty() {
                 // Published again since it was seen without a publisher: keep it.
@@ -300,12 +323,13 @@ pub async fn write_link<K>(
                 lane.waiting.push_back(msg);
                 continue;
             }
-            if !announce(&mut buf, &mut advertised, &msg, &namer, &outbox) {
+            if !announce(&mut buf, &mut advertised, &msg, &namer, &outbox, &mut via) {
                 continue;
             }
             // Per message on the hub's fan-out path: these calls read no clock and take no
             // lock unless the outbox is the agent's scheduled uplink.
             let (msg, compressed) = for_link(&mut compressors, &outbox, msg);
+            via.mark(&mut buf, &msg);
             let sized = outbox.chunk_size();
             let whole = sized.unwrap_or(DEFAULT_CHUNK_SIZE);
             if compressed && msg.payload.len() <= whole {
@@ -405,6 +429,19 @@ pub async fn write_link<K>(
                 Some(Control::Frame(f)) => f.encode(&mut buf),
                 Some(Control::Sequence(s)) => sequences.push_back(s),
                 Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
+                Some(Control::Announce { meta, encoding }) => {
+                    if !advertised.contains_key(&meta.id) {
+                        announce_topic(
+                            &mut buf,
+                            &mut advertised,
+                            &meta,
+                            encoding,
+                            &namer,
+                            &outbox,
+                            &mut via,
+                        );
+                    }
+                }
                 Some(Control::Pong(p)) => {
                     if pong(&mut sink, &mut buf, p).await.is_err() {
                         return;
@@ -416,6 +453,67 @@ pub async fn write_link<K>(
             _ = outbox.ready() => {}
             _ = sleep_until(wake) => {}
         }
+    }
+}
+
+/// How a link between hubs marks its messages with the hubs they passed (`VIA`, docs/
+/// protocol.md §1.8d): a site hub's uplink, and a hub's end of a link whose peer turned
+/// out to be a hub.
+pub struct ViaOut {
+    /// This hub, the last one in every `VIA` it writes.
+    pub me: u64,
+    /// The peer hub, once its own `VIA` said which it is (0: not known).
+    pub peer: Arc<AtomicU64>,
+    /// Mark messages even before the peer is known to be a hub (an uplink's peer is one).
+    pub always: bool,
+}
+
+/// The `VIA` state of one connection's writer.
+struct ViaMark {
+    out: Option<ViaOut>,
+    /// The hubs before this one in the last `VIA` written, if one was.
+    written: Option<Option<Arc<Via>>>,
+}
+
+impl ViaMark {
+    /// Whether `msg` goes on this link: not to a hub it has passed, nor past the longest
+    /// chain a `VIA` may name.
+    fn sends(&self, msg: &Message) -> bool {
+        let (Some(out), Some(v)) = (&self.out, msg.via()) else {
+            return true;
+        };
+        let peer = out.peer.load(Relaxed);
+        !(peer != 0 && v.contains(peer)) && v.hubs().len() < fleetlink_proto::frame::MAX_VIA
+    }
+
+    /// Writes a `VIA` before `msg` when this link marks messages and the last one written
+    /// named other hubs.
+    fn mark(&mut self, buf: &mut BytesMut, msg: &Message) {
+        self.mark_path(buf, msg.via());
+    }
+
+    /// Writes a `VIA` for what comes by way of `via` (a message, or a topic announced).
+    fn mark_path(&mut self, buf: &mut BytesMut, via: Option<&Arc<Via>>) {
+        let Some(out) = &self.out else {
+            return;
+        };
+        if !out.always && out.peer.load(Relaxed) == 0 {
+            return;
+        }
+        if let Some(last) = &self.written {
+            let same = match (last, via) {
+                (None, None) => true,
+                (Some(a), Some(b)) => Arc::ptr_eq(a, b) || a == b,
+                _ => false,
+            };
+            if same {
+                return;
+            }
+        }
+        let mut hubs = via.map_or_else(Vec::new, |v| v.hubs().to_vec());
+        hubs.push(out.me);
+        Frame::Via { hubs }.encode(buf);
+        self.written = Some(via.cloned());
     }
 }
 
@@ -485,23 +583,40 @@ fn announce(
     msg: &Message,
     namer: &LinkNamer,
     outbox: &Outbox,
+    via: &mut ViaMark,
 ) -> bool {
     let enc = msg.payload.encoding;
     if advertised.get(&msg.topic.id) == Some(&enc) {
         return true;
     }
-    let Some(name) = namer(&msg.topic) else {
+    announce_topic(buf, advertised, &msg.topic, enc, namer, outbox, via)
+}
+
+/// Writes `ADVERTISE` of `meta` in `enc` (and notes it announced); false if the topic
+/// has no name on this link.
+fn announce_topic(
+    buf: &mut BytesMut,
+    advertised: &mut HashMap<TopicId, Encoding>,
+    meta: &TopicMeta,
+    enc: Encoding,
+    namer: &LinkNamer,
+    outbox: &Outbox,
+    via: &mut ViaMark,
+) -> bool {
+    let Some(name) = namer(meta) else {
         return false;
     };
+    // Between hubs, a topic is announced with the hubs its publisher is behind.
+    via.mark_path(buf, meta.via.as_ref());
     Frame::Advertise {
-        alias: msg.topic.id.0,
+        alias: meta.id.0,
         topic: name,
-        schema: msg.topic.schema.clone(),
+        schema: meta.schema.clone(),
         encoding: enc,
-        flags: advertise_flags(outbox, &msg.topic),
+        flags: advertise_flags(outbox, meta),
     }
     .encode(buf);
-    advertised.insert(msg.topic.id, enc);
+    advertised.insert(meta.id, enc);
     true
 }
 

@@ -669,6 +669,7 @@ impl Session {
                                 fragment_size,
                             },
                             unlisted: false,
+                            passive: false,
                         };
                         self.subscribe(&topic, type_name.as_deref(), regex, opts, id.clone())
                     }

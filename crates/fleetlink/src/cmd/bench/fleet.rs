@@ -910,7 +910,7 @@ async fn subscribe_loop(
                             latency.saturating_record(now.saturating_sub(stamp_ns));
                         }
                     }
-                    Ok(LinkEvent::Advertise { alias, topic })
+                    Ok(LinkEvent::Advertise { alias, topic, .. })
                         if parse_topic(&topic.name).is_some() =>
                     {
                         last.insert(alias, None);

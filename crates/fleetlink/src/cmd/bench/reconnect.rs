@@ -103,6 +103,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             outbox: None,
             latest_cache_bytes: 64 << 20,
             budget: None,
+            hub_id: None,
         };
         let opts = AgentOptions {
             uplink,

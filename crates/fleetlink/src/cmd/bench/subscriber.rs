@@ -156,7 +156,7 @@ pub async fn run(
                         latency.saturating_record(now.saturating_sub(stamp_ns));
                     }
                 }
-                Ok(LinkEvent::Advertise { alias, topic }) => {
+                Ok(LinkEvent::Advertise { alias, topic, .. }) => {
                     if let Some(p) = publisher_of(&topic.name).filter(|p| *p < rx.len()) {
                         topics.insert(alias, p);
                     }
