@@ -80,6 +80,7 @@ impl AgentOptions {
                 latest_cache_bytes: cfg.latest_cache_mb.saturating_mul(1 << 20) as usize,
                 budget: cfg.link.budget.as_ref().map(|b| b.to_config()),
                 hub_id: None,
+                upstream_gate: None,
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),

@@ -199,6 +199,21 @@ pub struct UplinkConfig {
     /// goes up is marked with the hubs it passed (`VIA`), and what comes back down having
     /// passed this hub is dropped.
     pub hub_id: Option<u64>,
+    /// What the hub upstream may do here, when the router is a hub's: see and call its
+    /// services, publish down to it, receive its topics. `None` lets it do everything (a
+    /// robot's hub acts for its operators, whose rights it checks itself).
+    pub upstream_gate: Option<GateFactory>,
+}
+
+/// Makes the gate a connection upstream checks the hub upstream's doings with (one for the
+/// session, one for the link's writer).
+#[derive(Clone)]
+pub struct GateFactory(pub Arc<dyn Fn() -> Box<dyn fleetlink_relay::gate::Gate> + Send + Sync>);
+
+impl std::fmt::Debug for GateFactory {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("GateFactory")
+    }
 }
 
 /// The link's state, observable by tests, the CLI and the status topic. `hub` is the URL
@@ -584,6 +599,9 @@ impl Uplink {
         if let Some(id) = self.cfg.hub_id {
             session.set_local_hub(id);
         }
+        if let Some(g) = &self.cfg.upstream_gate {
+            session.set_gate((g.0)());
+        }
         // HELLO, straight to the socket: the writer starts once the hub has answered.
         while let Some(c) = session.poll_transmit() {
             if let Control::Frame(f) = c {
@@ -671,13 +689,16 @@ impl Uplink {
             peer: session.link_in().peer_hub.clone(),
             always: true,
         });
+        // What the hub upstream may receive (checked per message, so a rule change
+        // applies at once).
+        let writer_gate = self.cfg.upstream_gate.as_ref().map(|g| (g.0)());
         let writer = tokio::spawn(write_link(
             sink,
             self.outbox.clone(),
             ctrl_rx,
             namer,
             announce,
-            None,
+            writer_gate,
             via,
         ));
         self.state.send_replace(LinkState::Connected {
@@ -715,7 +736,7 @@ impl Uplink {
             while let Some(ev) = session.poll_event() {
                 match ev {
                     Event::Closed(r) => break 'serve r,
-                    Event::Link(ev) => self.on_event(ev, &namespace, &mut down),
+                    Event::Link(ev) => self.on_event(ev, &namespace, &mut down, &mut session),
                     Event::Pong {
                         id,
                         responder_ns,
@@ -914,7 +935,13 @@ impl Uplink {
     }
 
     /// A topic event or control frame from the hub.
-    fn on_event(&self, ev: LinkEvent, namespace: &str, down: &mut HashMap<u32, Arc<Topic>>) {
+    fn on_event(
+        &self,
+        ev: LinkEvent,
+        namespace: &str,
+        down: &mut HashMap<u32, Arc<Topic>>,
+        session: &mut LinkSession,
+    ) {
         match ev {
             LinkEvent::Advertise { alias, topic, via } => {
                 let Ok(hub) = TopicName::parse(&topic.name) else {
@@ -924,6 +951,16 @@ impl Uplink {
                     tracing::debug!("hub sent {hub}, which has no local name here");
                     return;
                 };
+                let gate = session.gate();
+                if !gate.allows(local.as_str(), fleetlink_relay::gate::Op::Publish) {
+                    let text = format!("advertise {local}: not allowed for {}", gate.principal());
+                    tracing::warn!("{text}");
+                    return session.status(
+                        fleetlink_proto::frame::Level::Error,
+                        fleetlink_proto::frame::status_code::FORBIDDEN,
+                        text,
+                    );
+                }
                 let how = fleetlink_relay::router::Publication {
                     latch: topic.latched,
                     no_drop: false,
@@ -951,6 +988,19 @@ impl Uplink {
                 ..
             } => {
                 if let Some(t) = down.get(&alias) {
+                    // On a site hub, asked per message (a cached answer), so a rule change
+                    // applies at once.
+                    if self.cfg.upstream_gate.is_some() {
+                        let meta = t.meta();
+                        let op = fleetlink_relay::gate::Op::Publish;
+                        let gate = session.gate();
+                        if !gate.allows_topic(meta.id.0, meta.name.as_str(), op) {
+                            return;
+                        }
+                        // A command to one of the hub's robots is audited, as an
+                        // operator's on the hub is.
+                        gate.done(meta.name.as_str(), op, payload.len());
+                    }
                     if via.is_some() {
                         // Down from the hub upstream: it keeps the hubs it passed.
                         let msg = fleetlink_relay::Message::new(

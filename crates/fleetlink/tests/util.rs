@@ -195,6 +195,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         latest_cache_bytes: 64 << 20,
         budget: None,
         hub_id: None,
+        upstream_gate: None,
     }
 }
 

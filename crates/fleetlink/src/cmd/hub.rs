@@ -332,7 +332,11 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let hub = Hub::bind(args.config(), transcoder).await?;
         super::federation::join(&args.federation, &hub).await?;
         let upstream = match &upstream_cfg {
-            Some(cfg) => Some(super::upstream::start(cfg, &hub)?),
+            Some(cfg) => Some(super::upstream::start(
+                cfg,
+                &args.upstream.upstream_group,
+                &hub,
+            )?),
             None => None,
         };
         let addr = hub.local_addr();

@@ -17,7 +17,7 @@ use fleetlink_agent::uplink::Uplink;
 use fleetlink_auth::RobotName;
 use tokio_util::sync::CancellationToken;
 
-#[derive(clap::Args, Debug, Clone, Default)]
+#[derive(clap::Args, Debug, Clone)]
 pub struct UpstreamArgs {
     /// Serve as a site hub: connect out to this upstream hub (ws:// or wss://) as an
     /// agent named --name; give it once per hub to list several (failover, tried in
@@ -47,6 +47,12 @@ pub struct UpstreamArgs {
     /// `rosbridge`, `blackbox`) have no place here.
     #[arg(long, value_name = "FILE")]
     pub upstream_config: Option<PathBuf>,
+    /// What the hub upstream may do here — see and call this hub's services and actions,
+    /// publish to its topics (commands down to its robots), receive its topics — is what
+    /// this hub's rules let the user `upstream` in this group do (docs/site-hubs.md). The
+    /// default, `admin`, trusts the hub upstream with everything.
+    #[arg(long, value_name = "GROUP", default_value = "admin")]
+    pub upstream_group: fleetlink_auth::GroupName,
 }
 
 impl UpstreamArgs {
@@ -136,13 +142,42 @@ impl Running {
     }
 }
 
-/// Starts the site's link upstream on the hub's router.
-pub fn start(cfg: &AgentConfig, hub: &fleetlink_hub::Hub) -> anyhow::Result<Running> {
+/// The identity the hub upstream acts as here: the user `upstream` in `group`.
+fn upstream_identity(group: &fleetlink_auth::GroupName) -> fleetlink_auth::Identity {
+    let local = std::net::IpAddr::from([127, 0, 0, 1]);
+    fleetlink_auth::Identity {
+        kind: fleetlink_auth::IdentityKind::User {
+            name: fleetlink_auth::UserName::new("upstream").expect("a valid user name"),
+            groups: vec![group.clone()],
+        },
+        source: fleetlink_auth::ConnInfo::new(local),
+        client_ip: local,
+    }
+}
+
+/// Starts the site's link upstream on the hub's router; the hub upstream acts here as the
+/// user `upstream` of `group`.
+pub fn start(
+    cfg: &AgentConfig,
+    group: &fleetlink_auth::GroupName,
+    hub: &fleetlink_hub::Hub,
+) -> anyhow::Result<Running> {
     let options =
         fleetlink_agent::AgentOptions::from_config(cfg).context("the upstream link's options")?;
     let mut up = options.uplink;
+    let state = hub.state();
     // Marks what goes up with this hub, and drops what comes back having passed it.
-    up.hub_id = Some(hub.state().agents.hub_id);
+    up.hub_id = Some(state.agents.hub_id);
+    let identity = upstream_identity(group);
+    up.upstream_gate = Some(fleetlink_agent::uplink::GateFactory(std::sync::Arc::new(
+        move || {
+            Box::new(fleetlink_hub::security::HubGate::new(
+                state.security.clone(),
+                state.registry.clone(),
+                identity.clone(),
+            ))
+        },
+    )));
     let uplink = Uplink::new(up, hub.router().clone()).context("the upstream link")?;
     let stop = CancellationToken::new();
     let task = tokio::spawn(uplink.run(stop.clone()));

@@ -422,3 +422,98 @@ async fn a_topic_bridged_both_ways_around_a_triangle_of_hubs_never_comes_back() 
     }
     assert!(topic(&hubs[0], "/site2/site1/rosout").is_some());
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_sites_rules_decide_what_the_hub_upstream_may_do_there() {
+    let cloud = start_hub().await;
+    let site = start_hub().await;
+    // At the site, the hub upstream (the user `upstream` of group `upstream`) may watch
+    // robot3's topics, nothing more.
+    site.set_rules(
+        "rules:\n  - subject: {group: upstream}\n    names: \"/robot3/.*\"\n    ops: [subscribe]\n",
+    );
+    let mut cfg = uplink_config(&cloud, "site7");
+    cfg.hub_id = Some(site.state.agents.hub_id);
+    let state = site.state.clone();
+    let local = std::net::IpAddr::from([127, 0, 0, 1]);
+    let identity = fleetlink_auth::Identity {
+        kind: fleetlink_auth::IdentityKind::User {
+            name: fleetlink_auth::UserName::new("upstream").unwrap(),
+            groups: vec![fleetlink_auth::GroupName::new("upstream").unwrap()],
+        },
+        source: fleetlink_auth::ConnInfo::new(local),
+        client_ip: local,
+    };
+    cfg.upstream_gate = Some(fleetlink_agent::uplink::GateFactory(std::sync::Arc::new(
+        move || {
+            Box::new(fleetlink_hub::security::HubGate::new(
+                state.security.clone(),
+                state.registry.clone(),
+                identity.clone(),
+            ))
+        },
+    )));
+    let uplink = Uplink::new(cfg, site.state.router.clone()).expect("the site's uplink");
+    let stop = CancellationToken::new();
+    tokio::spawn(uplink.run(stop.clone()));
+    let _stop = stop.drop_guard();
+    let sim = SimConfig {
+        laser_scan: None,
+        point_cloud: None,
+        image: None,
+        ..SimConfig::default()
+    };
+    let robot = start_agent_sim(uplink_config(&site, "robot3"), true, Some(sim)).await;
+    robot.wait_connected().await;
+    // Watching works.
+    let mut op = Rosbridge::connect(&cloud.ws_url()).await;
+    op.send(json!({"op": "subscribe", "topic": "/site7/robot3/odom", "id": "o"}))
+        .await;
+    let odom = within("odometry upstream", op.recv_op("publish")).await;
+    assert_eq!(odom["topic"], "/site7/robot3/odom");
+    // Only what it may watch is announced upstream: robot3's topics, not the site's own.
+    eventually("robot3's topics announced upstream", || {
+        topic(&cloud, "/site7/robot3/odom").is_some()
+    })
+    .await;
+    assert!(
+        topic(&cloud, "/site7/rosout").is_none(),
+        "the site's /rosout announced upstream"
+    );
+    // The robot's services are not offered upstream: the upstream may not call them.
+    assert!(
+        cloud
+            .state
+            .router
+            .calls
+            .service(&TopicName::parse("/site7/robot3/set_mode").unwrap())
+            .is_none()
+    );
+    let r = op
+        .call("/site7/robot3/set_mode", json!({"data": true}), "c")
+        .await;
+    assert_eq!(r["result"], false, "{r}");
+    // A command from upstream does not reach the robot.
+    let mut listener = Rosbridge::connect(&robot.local_url()).await;
+    listener
+        .send(json!({"op": "subscribe", "topic": "/cmd_vel", "id": "c"}))
+        .await;
+    op.send(json!({"op": "advertise", "topic": "/site7/robot3/cmd_vel",
+        "type": "geometry_msgs/msg/Twist"}))
+        .await;
+    for _ in 0..10 {
+        op.send(json!({"op": "publish", "topic": "/site7/robot3/cmd_vel",
+            "msg": {"linear": {"x": 0.25}}}))
+            .await;
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    let got = tokio::time::timeout(Duration::from_millis(500), listener.recv_op("publish")).await;
+    assert!(
+        got.is_err(),
+        "a command the site's rules refuse reached the robot: {got:?}"
+    );
+    assert!(
+        topic(&site, "/robot3/cmd_vel").is_none_or(|t| t.stats.messages.load(Relaxed) == 0),
+        "published at the site"
+    );
+}

@@ -401,6 +401,13 @@ impl LinkSession {
         &self.link
     }
 
+    /// What the peer may do on this side (its calls to this side's services, the services
+    /// it may see): the hub's end gets it with [`LinkSession::accept`]; a site hub's link
+    /// upstream sets the rules its hub has for the hub upstream.
+    pub fn set_gate(&mut self, gate: Box<dyn Gate>) {
+        self.gate = gate;
+    }
+
     /// This end is hub `id`: messages whose `VIA` lists it are dropped as they arrive
     /// (they came back), and its writer marks what it sends to a peer hub
     /// ([`super::ViaOut`], with [`LinkIn::peer_hub`]).

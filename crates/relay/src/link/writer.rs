@@ -149,6 +149,9 @@ pub async fn write_link<K>(
     let mut buf = BytesMut::new();
     // Topics the peer should know before any message flows (e.g. after a reconnect).
     for (meta, enc) in announce_first {
+        if !may_see(&mut gate, &meta) {
+            continue;
+        }
         announce_topic(
             &mut buf,
             &mut advertised,
@@ -180,7 +183,7 @@ pub async fn write_link<K>(
                 Ok(Control::Sequence(s)) => sequences.push_back(s),
                 Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Ok(Control::Announce { meta, encoding }) => {
-                    if !advertised.contains_key(&meta.id) {
+                    if !advertised.contains_key(&meta.id) && may_see(&mut gate, &meta) {
                         announce_topic(
                             &mut buf,
                             &mut advertised,
@@ -294,7 +297,9 @@ pub async fn write_link<K>(
         // peer can ask for them.
         outbox.take_unannounced(&mut held);
         for msg in held.drain(..) {
-            announce(&mut buf, &mut advertised, &msg, &namer, &outbox, &mut via);
+            if may_see(&mut gate, &msg.topic) {
+                announce(&mut buf, &mut advertised, &msg, &namer, &outbox, &mut via);
+            }
         }
         // 4. A batch from the outbox.
         // When it takes nothing, the time its data budget next lets something go.
@@ -430,7 +435,7 @@ pub async fn write_link<K>(
                 Some(Control::Sequence(s)) => sequences.push_back(s),
                 Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Some(Control::Announce { meta, encoding }) => {
-                    if !advertised.contains_key(&meta.id) {
+                    if !advertised.contains_key(&meta.id) && may_see(&mut gate, &meta) {
                         announce_topic(
                             &mut buf,
                             &mut advertised,
@@ -590,6 +595,13 @@ fn announce(
         return true;
     }
     announce_topic(buf, advertised, &msg.topic, enc, namer, outbox, via)
+}
+
+/// Whether the link's gate (if any) lets the peer see `meta`'s topic: topics are announced
+/// without a message only to a peer that may receive them.
+fn may_see(gate: &mut Option<Box<dyn crate::gate::Gate>>, meta: &TopicMeta) -> bool {
+    gate.as_mut()
+        .is_none_or(|g| g.allows_topic(meta.id.0, meta.name.as_str(), crate::gate::Op::Subscribe))
 }
 
 /// Writes `ADVERTISE` of `meta` in `enc` (and notes it announced); false if the topic

@@ -104,6 +104,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             latest_cache_bytes: 64 << 20,
             budget: None,
             hub_id: None,
+            upstream_gate: None,
         };
         let opts = AgentOptions {
             uplink,
