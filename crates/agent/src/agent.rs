@@ -81,6 +81,7 @@ impl AgentOptions {
                 budget: cfg.link.budget.as_ref().map(|b| b.to_config()),
                 hub_id: None,
                 upstream_gate: None,
+                mirror: cfg.mirror.clone(),
             },
             local_listen: cfg.local_rosbridge_listen(),
             sim: cfg.sim.clone(),
@@ -161,6 +162,7 @@ fn ros2_options(
             .iter()
             .map(|t| TopicName::parse(t))
             .collect::<Result<_, _>>()?,
+        read: NameFilter::new(&r.read, &[])?,
         expose: NameFilter::new(&r.services.expose, &r.services.exclude)?,
         offer: NameFilter::new(&r.services.offer, &[])?,
         expose_actions: NameFilter::new(&r.actions.expose, &r.actions.exclude)?,

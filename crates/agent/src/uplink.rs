@@ -203,7 +203,22 @@ pub struct UplinkConfig {
     /// services, publish down to it, receive its topics. `None` lets it do everything (a
     /// robot's hub acts for its operators, whose rights it checks itself).
     pub upstream_gate: Option<GateFactory>,
+    /// The robot this agent mirrors (docs/mirror.md): `robot` is the mirror's own name,
+    /// the hub puts its topics in the mirrored robot's namespace, and it asks the hub for
+    /// each of that robot's topics only while a local subscriber wants it.
+    pub mirror: Option<fleetlink_auth::RobotName>,
 }
+
+/// A mirror's subscriptions at the hub: the robot's topics local subscribers want, by
+/// local name, with the `SUBSCRIBE` id of each (on one connection).
+#[derive(Default)]
+struct MirrorSubs {
+    by_name: HashMap<TopicName, u32>,
+    next_id: u32,
+}
+
+/// Ids of a mirror's `SUBSCRIBE`s (clear of the fixed ones and the services').
+const MIRROR_SUBSCRIPTIONS: u32 = 1 << 20;
 
 /// Makes the gate a connection upstream checks the hub upstream's doings with (one for the
 /// session, one for the link's writer).
@@ -586,6 +601,12 @@ impl Uplink {
                 robot: self.cfg.robot.to_string(),
                 token: self.cfg.token.clone(),
                 outbox_epoch: self.outbox.outbox_epoch(),
+                mirror: self
+                    .cfg
+                    .mirror
+                    .as_ref()
+                    .map(|m| m.to_string())
+                    .unwrap_or_default(),
             },
             Box::new(move |namespace: &str| {
                 let names = AgentNames {
@@ -661,11 +682,20 @@ impl Uplink {
                 )
             })
             .collect();
-        let mut subs = vec![(
-            1u32,
-            format!("{}/.*", regex::escape(&namespace)),
-            SUBSCRIBE_REGEX,
-        )];
+        // A robot hears everything sent to its namespace (commands); a mirror asks for each
+        // of its robot's topics while a local subscriber wants it ([`MirrorSubs`]).
+        let mut subs = Vec::new();
+        if self.cfg.mirror.is_none() {
+            subs.push((
+                1u32,
+                format!("{}/.*", regex::escape(&namespace)),
+                SUBSCRIBE_REGEX,
+            ));
+        }
+        let mut mirror_subs = self.cfg.mirror.as_ref().map(|_| MirrorSubs {
+            next_id: MIRROR_SUBSCRIPTIONS,
+            ..MirrorSubs::default()
+        });
         for (i, (hub, _)) in self.cfg.names.subscribe.iter().enumerate() {
             subs.push((i as u32 + 2, hub.to_string(), 0));
         }
@@ -774,7 +804,9 @@ impl Uplink {
                     }
                 }
                 _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
-                () = topics.changed() => self.announce_new(&topics, &mut session),
+                () = topics.changed() => {
+                    self.announce_new(&topics, &namespace, mirror_subs.as_mut(), &mut session)
+                }
                 _ = shutdown.cancelled() => {
                     session.close(CloseReason::Local("the agent is shutting down".into()));
                 }
@@ -915,9 +947,21 @@ impl Uplink {
     /// Announces the topics that changed since the last look and are carried up, with a
     /// publisher here and a known encoding, but not yet announced on this connection (the
     /// writer skips those it has).
-    fn announce_new(&self, watch: &TopicsWatch, session: &mut LinkSession) {
+    /// A mirror also asks for its robot's topics local subscribers want, and lets go of
+    /// those they no longer do.
+    fn announce_new(
+        &self,
+        watch: &TopicsWatch,
+        namespace: &str,
+        mut mirror: Option<&mut MirrorSubs>,
+        session: &mut LinkSession,
+    ) {
         for name in watch.take() {
-            let Some(t) = self.router.snapshot(&name) else {
+            let t = self.router.snapshot(&name);
+            if let Some(m) = mirror.as_deref_mut() {
+                self.follow_local_demand(&name, t.as_ref(), namespace, m, session);
+            }
+            let Some(t) = t else {
                 continue;
             };
             if !t.subscribers.contains(&self.client)
@@ -931,6 +975,47 @@ impl Uplink {
                     encoding,
                 });
             }
+        }
+    }
+
+    /// A mirror's subscription at the hub of the robot topic `name` (a local name): there
+    /// while a local subscriber other than this uplink wants the topic.
+    fn follow_local_demand(
+        &self,
+        name: &TopicName,
+        t: Option<&fleetlink_relay::router::TopicSnapshot>,
+        namespace: &str,
+        subs: &mut MirrorSubs,
+        session: &mut LinkSession,
+    ) {
+        let wanted = t.is_some_and(|t| t.topic.wanted_by_others(self.client));
+        match (wanted, subs.by_name.get(name).copied()) {
+            (true, None) => {
+                let hub = self.cfg.names.to_hub(name, namespace);
+                // Only the robot's own topics; `subscribe:` names the others.
+                if hub.strip_namespace(namespace).is_none()
+                    || self.cfg.names.subscribe.iter().any(|(h, _)| *h == hub)
+                {
+                    return;
+                }
+                let id = subs.next_id;
+                subs.next_id = subs.next_id.wrapping_add(1).max(MIRROR_SUBSCRIPTIONS);
+                subs.by_name.insert(name.clone(), id);
+                tracing::debug!("mirror: asking the hub for {hub}");
+                session.send(Frame::Subscribe {
+                    id,
+                    pattern: hub.to_string(),
+                    flags: 0,
+                    throttle_ms: 0,
+                    queue_length: 0,
+                });
+            }
+            (false, Some(id)) => {
+                subs.by_name.remove(name);
+                tracing::debug!("mirror: {name} no longer wanted here");
+                session.send(Frame::Unsubscribe { id });
+            }
+            _ => {}
         }
     }
 

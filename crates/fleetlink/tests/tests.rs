@@ -14,6 +14,7 @@ mod e2e {
     mod interest;
     mod isolation;
     mod link;
+    mod mirror;
     mod no_drop;
     mod oidc;
     mod priority;

@@ -196,6 +196,7 @@ pub fn uplink_config(hub: &TestHub, robot: &str) -> UplinkConfig {
         budget: None,
         hub_id: None,
         upstream_gate: None,
+        mirror: None,
     }
 }
 

@@ -24,6 +24,9 @@ use tokio_util::sync::CancellationToken;
 /// A robot that is online now.
 pub struct LiveRobot {
     pub name: String,
+    /// The robot this link mirrors (docs/mirror.md), if it is a mirror: `name` is then
+    /// the mirror's own.
+    pub mirror_of: Option<String>,
     pub client: ClientId,
     pub session: u64,
     pub addr: Option<SocketAddr>,
@@ -102,6 +105,7 @@ const CLOCK_SAMPLES: usize = 16;
 /// What a new [`LiveRobot`] starts from.
 pub struct LiveLink {
     pub name: String,
+    pub mirror_of: Option<String>,
     pub client: ClientId,
     pub session: u64,
     pub addr: Option<SocketAddr>,
@@ -114,6 +118,7 @@ impl LiveRobot {
     pub fn new(l: LiveLink) -> LiveRobot {
         LiveRobot {
             name: l.name,
+            mirror_of: l.mirror_of,
             client: l.client,
             session: l.session,
             addr: l.addr,
@@ -175,6 +180,8 @@ impl LiveRobot {
 pub struct Registry {
     // std Mutex: lookups and swaps only, never held across an await.
     robots: Mutex<HashMap<String, Arc<LiveRobot>>>,
+    /// Mirrors online, by their own names (a robot's list and checks do not see them).
+    mirrors: Mutex<HashMap<String, Arc<LiveRobot>>>,
     next_session: AtomicU64,
     /// Bumped whenever a robot comes or goes, so callers can cache [`Registry::is_online`]
     /// answers between changes.
@@ -205,6 +212,32 @@ impl Registry {
         let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
         self.changes.fetch_add(1, Relaxed);
         m.insert(robot.name.clone(), robot)
+    }
+
+    /// Lists a mirror as online; returns the entry of the same name it replaces.
+    pub fn insert_mirror(&self, mirror: Arc<LiveRobot>) -> Option<Arc<LiveRobot>> {
+        let mut m = self.mirrors.lock().unwrap_or_else(|p| p.into_inner());
+        m.insert(mirror.name.clone(), mirror)
+    }
+
+    /// Removes mirror `name` if its entry is still that of `session`.
+    pub fn remove_mirror_if_session(&self, name: &str, session: u64) {
+        let mut m = self.mirrors.lock().unwrap_or_else(|p| p.into_inner());
+        if m.get(name).is_some_and(|r| r.session == session) {
+            m.remove(name);
+        }
+    }
+
+    /// The mirrors of `robot` online now, by name.
+    pub fn mirrors_of(&self, robot: &str) -> Vec<Arc<LiveRobot>> {
+        let m = self.mirrors.lock().unwrap_or_else(|p| p.into_inner());
+        let mut v: Vec<_> = m
+            .values()
+            .filter(|r| r.mirror_of.as_deref() == Some(robot))
+            .cloned()
+            .collect();
+        v.sort_by(|a, b| a.name.cmp(&b.name));
+        v
     }
 
     /// Changes whenever the set of robots online changes.

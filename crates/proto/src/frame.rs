@@ -180,12 +180,17 @@ pub enum Frame {
     /// agent's outbox starts afresh (a new durable outbox, or no durable outbox and a
     /// restart), telling the receiver that sequence numbers begin again. 0 = none (no
     /// reliable topics); absent in older senders, read as 0.
+    ///
+    /// `mirror str`, written only when not empty: this link is a *mirror* of the robot it
+    /// names (docs/mirror.md): its topics live in that robot's namespace, and it does not
+    /// replace the robot's own link; `robot` is then the mirror's own name.
     Hello {
         version: u32,
         robot: String,
         token: String,
         heartbeat_ms: u32,
         outbox_epoch: u64,
+        mirror: String,
     },
     /// Hub → agent, answers `HELLO`.
     /// `session str | namespace str | hub_time_ns u64le | heartbeat_ms varint |
@@ -478,12 +483,16 @@ impl Frame {
                 token,
                 heartbeat_ms,
                 outbox_epoch,
+                mirror,
             } => {
                 put_varint(b, u64::from(*version));
                 put_str(b, robot);
                 put_str(b, token);
                 put_varint(b, u64::from(*heartbeat_ms));
                 b.put_u64_le(*outbox_epoch);
+                if !mirror.is_empty() {
+                    put_str(b, mirror);
+                }
             }
             Frame::Welcome {
                 session,
@@ -843,6 +852,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                 0
             } else {
                 r.u64_le("HELLO.outbox_epoch")?
+            },
+            mirror: if r.is_empty() {
+                String::new()
+            } else {
+                r.string("HELLO.mirror")?
             },
         },
         0x02 => Frame::Welcome {

@@ -15,14 +15,16 @@ pub fn hello() -> impl Strategy<Value = Frame> {
         any::<String>(),
         any::<u32>(),
         any::<u64>(),
+        any::<String>(),
     )
         .prop_map(
-            |(version, robot, token, heartbeat_ms, outbox_epoch)| Frame::Hello {
+            |(version, robot, token, heartbeat_ms, outbox_epoch, mirror)| Frame::Hello {
                 version,
                 robot,
                 token,
                 heartbeat_ms,
                 outbox_epoch,
+                mirror,
             },
         )
 }
@@ -471,6 +473,7 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             token: "secret".into(),
             heartbeat_ms: 1000,
             outbox_epoch: 0x0123_4567_89ab_cdef,
+            mirror: "robot-6".into(),
         },
         Frame::Welcome {
             session: "s-1".into(),

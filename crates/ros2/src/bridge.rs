@@ -16,7 +16,7 @@ use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::ChannelPeer;
 use fleetlink_relay::names::ClientId;
 use fleetlink_relay::read_interest::{Look, ReadInterest};
-use fleetlink_relay::router::{RouteError, SubOptions, Target};
+use fleetlink_relay::router::{RouteError, SubOptions, SubscriptionId, Target};
 use fleetlink_relay::stats::{AdapterReport, Problems};
 use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
 use futures::StreamExt;
@@ -269,6 +269,8 @@ impl Down {
 pub(crate) struct State {
     up: HashMap<String, Up>,
     down: HashMap<String, Option<Down>>,
+    /// Router topics subscribed because a node of the graph reads them (`read`).
+    read: HashMap<String, SubscriptionId>,
     /// Topics and services already reported (unknown type, mismatch): once each.
     reported: HashSet<String>,
     pub(crate) remotes: HashMap<String, Arc<Remote>>,
@@ -820,7 +822,72 @@ fn discover(bridge: &Arc<Bridge>) {
         }
     }
     follow_interest(bridge, Instant::now());
+    follow_readers(bridge);
     services::discover(bridge);
+}
+
+/// Subscribes the router topics `read` matches that a node of the graph reads (a reader
+/// other than the bridge's), and lets go of those whose last reader went: what no node
+/// reads is not asked for, so its robot does not send it.
+fn follow_readers(bridge: &Bridge) {
+    if bridge.opts.read.is_empty() {
+        return;
+    }
+    let mut readers: HashSet<String> = HashSet::new();
+    for r in bridge.dp.discovered_readers() {
+        let s = &r.subscription_topic_data;
+        if bridge.is_own(s.key()) {
+            continue;
+        }
+        if let Some(DdsName::Topic(ros)) = DdsName::parse(s.topic_name())
+            && !names::is_hidden(&ros)
+            && bridge.opts.read.matches(&ros)
+            && !bridge.opts.subscribe.iter().any(|n| n.as_str() == ros)
+        {
+            readers.insert(ros);
+        }
+    }
+    let (gone, new): (Vec<(String, SubscriptionId)>, Vec<String>) = {
+        let mut st = bridge.lock();
+        let gone: Vec<String> = st
+            .read
+            .keys()
+            .filter(|k| !readers.contains(*k))
+            .cloned()
+            .collect();
+        let gone = gone
+            .into_iter()
+            .filter_map(|k| st.read.remove_entry(&k))
+            .collect();
+        let new = readers
+            .into_iter()
+            .filter(|k| !st.read.contains_key(k))
+            .collect();
+        (gone, new)
+    };
+    for (ros, sid) in gone {
+        bridge.router.unsubscribe(bridge.client, sid);
+        tracing::info!("ros2: no node reads {ros} any more; no longer asking for it");
+    }
+    for ros in new {
+        let name = match TopicName::parse(&ros) {
+            Ok(n) => n,
+            Err(e) => {
+                tracing::debug!("ros2: a reader of {ros}, which is no topic name here: {e}");
+                continue;
+            }
+        };
+        match bridge
+            .router
+            .subscribe(bridge.client, Target::Exact(name), SubOptions::default())
+        {
+            Ok(sid) => {
+                tracing::info!("ros2: a node reads {ros}; asking for it");
+                bridge.lock().read.insert(ros, sid);
+            }
+            Err(e) => tracing::warn!("ros2: cannot ask for {ros}: {e}"),
+        }
+    }
 }
 
 /// Drops the reader of each topic nobody has wanted for a while ([`ReadInterest::look`]; the

@@ -13,6 +13,10 @@ pub struct Ros2Options {
     pub publish: NameFilter,
     /// Local router topics (hub topics brought down) written into the graph.
     pub subscribe: Vec<TopicName>,
+    /// Local router topics written into the graph while one of its nodes reads them (a
+    /// mirror's robot topics): subscribed only while such a reader is discovered, so a
+    /// topic no node reads is not brought down at all.
+    pub read: NameFilter,
     /// Local ROS 2 services offered to the fleet.
     pub expose: NameFilter,
     /// Fleet services (as named in the agent's call table) offered to local nodes.

@@ -102,6 +102,11 @@ impl LocationTree {
         serde_saphyr::from_str::<Spanned<Node>>(text).map(|root| Self { root })
     }
 
+    /// Whether the document's top-level mapping has key `key` (written, not defaulted).
+    pub(crate) fn has_top_key(&self, key: &str) -> bool {
+        matches!(&self.root.value, Node::Map(entries) if entries.iter().any(|(k, _)| k.value == key))
+    }
+
     /// Position of the field at `path`: its key when `at_key` (for problems with the key
     /// itself, like a bad topic name in `remap`), otherwise its value. When the path is
     /// only partly present (a default that was never written), the deepest present

@@ -61,6 +61,11 @@ pub struct AgentConfig {
     /// refused while parsing, at its line); its topics appear on the hub under `/<name>`.
     /// Default `robot1`. CLI `--name` overrides.
     pub name: RobotName,
+    /// The robot this agent mirrors, if it is a mirror (docs/mirror.md): it runs beside
+    /// offloaded nodes (in the cloud), which see the robot's topics, services and actions
+    /// under the robot's own local names, and their outputs go to the robot. `name` is
+    /// then the mirror's own (default `<robot>_mirror`). CLI `--mirror` overrides.
+    pub mirror: Option<RobotName>,
     /// Credential presented to the hub. Default empty (no credential).
     pub token: String,
     /// TLS for a `wss://` hub: a private CA and, for mutual TLS, the robot's certificate.
@@ -175,6 +180,7 @@ impl Default for AgentConfig {
         Self {
             hub: vec!["ws://127.0.0.1:8080".to_owned()],
             name: RobotName::new("robot1").expect("robot1 is a valid robot name"),
+            mirror: None,
             token: String::new(),
             tls: None,
             heartbeat_ms: 1000,
@@ -305,16 +311,24 @@ pub struct Overrides {
     /// `--hub`, given once per hub: replaces the file's whole list.
     pub hub: Option<Vec<String>>,
     pub name: Option<RobotName>,
+    /// `--mirror ROBOT`.
+    pub mirror: Option<RobotName>,
 }
 
 impl Overrides {
-    fn apply(&self, cfg: &mut AgentConfig) {
+    /// `name_written`: the file has a `name:` of its own.
+    fn apply(&self, cfg: &mut AgentConfig, name_written: bool) {
         if let Some(h) = &self.hub {
             cfg.hub = h.clone();
         }
         if let Some(n) = &self.name {
             cfg.name = n.clone();
         }
+        if let Some(m) = &self.mirror {
+            cfg.mirror = Some(m.clone());
+        }
+        let name_given = name_written || self.name.is_some();
+        cfg.name_the_mirror(name_given);
     }
 
     /// The command-line flag that set the field at `path` (`hub[1]` was set by `--hub`
@@ -323,6 +337,7 @@ impl Overrides {
         match path.0.first() {
             Some(Segment::Key(k)) if k == "hub" && self.hub.is_some() => Some("--hub"),
             Some(Segment::Key(k)) if k == "name" && self.name.is_some() => Some("--name"),
+            Some(Segment::Key(k)) if k == "mirror" && self.mirror.is_some() => Some("--mirror"),
             _ => None,
         }
     }
@@ -367,7 +382,7 @@ impl AgentConfig {
     pub fn load_with(path: Option<&Path>, overrides: &Overrides) -> Result<Self, ConfigError> {
         let Some(path) = path else {
             let mut cfg = Self::default();
-            overrides.apply(&mut cfg);
+            overrides.apply(&mut cfg, false);
             validate::validate(&cfg).map_err(|problem| flag_or_field(problem, overrides))?;
             return Ok(cfg);
         };
@@ -387,7 +402,7 @@ impl AgentConfig {
         // A ROS Gateway JSON file describes the same agent in rosgw's terms.
         if let Some(converted) = rosgw::parse(text) {
             let mut config = converted.map_err(|p| field_error(p, text, file_name))?;
-            overrides.apply(&mut config);
+            overrides.apply(&mut config, false);
             // What the conversion produced is checked like a YAML file's fields; a problem
             // left (say with `--hub`) names the agent's field, as there is no line for it.
             validate::validate(&config).map_err(|p| flag_or_field(p, overrides))?;
@@ -395,7 +410,9 @@ impl AgentConfig {
         }
         let mut config: Self =
             serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
-        overrides.apply(&mut config);
+        let name_written = (config.mirror.is_some() || overrides.mirror.is_some())
+            && LocationTree::parse(text).is_ok_and(|t| t.has_top_key("name"));
+        overrides.apply(&mut config, name_written);
         validate::validate(&config).map_err(|problem| {
             if overrides.flag_for(&problem.path).is_some() {
                 return flag_or_field(problem, overrides);
@@ -412,6 +429,25 @@ impl AgentConfig {
             field: problem.path.to_string(),
             message: problem.message,
         })
+    }
+
+    /// A mirror given no name of its own (`name_given` false) is `<robot>_mirror`: not
+    /// the default `robot1`, which may well be a robot's.
+    fn name_the_mirror(&mut self, name_given: bool) {
+        if let Some(m) = &self.mirror
+            && !name_given
+        {
+            let own = format!("{m}_mirror");
+            if let Ok(n) = RobotName::new(&own) {
+                self.name = n;
+            }
+        }
+    }
+
+    /// The robot whose namespace the agent's topics live in on the hub: its own, or the
+    /// one it mirrors.
+    pub fn namespace_robot(&self) -> &RobotName {
+        self.mirror.as_ref().unwrap_or(&self.name)
     }
 
     /// Ping interval.
@@ -436,7 +472,7 @@ impl AgentConfig {
     pub fn hub_topic(&self, local: &str) -> String {
         match self.remap.get(local) {
             Some(hub) => hub.clone(),
-            None => format!("/{}{}", self.name, local),
+            None => format!("/{}{}", self.namespace_robot(), local),
         }
     }
 }

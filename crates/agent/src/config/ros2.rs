@@ -19,6 +19,9 @@ pub struct Ros2Config {
     pub publish: Ros1Publish,
     /// Topics of the agent's router written into the graph.
     pub subscribe: Vec<String>,
+    /// Topics of the agent's router (names or patterns) written into the graph while one
+    /// of its nodes reads them, and not asked for otherwise: a mirror's robot topics.
+    pub read: Vec<String>,
     /// Services both ways (same shape as `ros1.services`).
     #[serde(deserialize_with = "list_or_mapping")]
     pub services: Ros1Services,
@@ -46,6 +49,7 @@ impl Default for Ros2Config {
             domain_id: None,
             publish: Ros1Publish::default(),
             subscribe: Vec::new(),
+            read: Vec::new(),
             services: Ros1Services::default(),
             actions: Ros2Actions::default(),
             discovery_ms: 250,

@@ -369,6 +369,7 @@ fn command_line_overrides_are_checked_together_with_the_file() {
     let hub = |h: &str| Overrides {
         hub: Some(vec![h.to_owned()]),
         name: None,
+        mirror: None,
     };
     // The README's pattern: the wss:// hub on the command line, tls: in the file.
     let cfg = AgentConfig::load_with(Some(&path), &hub("wss://hub.example:8080")).expect("valid");
@@ -389,6 +390,7 @@ fn command_line_overrides_are_checked_together_with_the_file() {
         &Overrides {
             hub: Some(vec!["wss://hub.example:8080".into()]),
             name: Some(RobotName::new("robot8").unwrap()),
+            mirror: None,
         },
     )
     .expect("valid");
@@ -522,7 +524,7 @@ fn ros2_errors_name_the_field() {
     );
     assert_err(
         "ros2: { qos: 1 }\n",
-        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, services, actions, discovery_ms, call_timeout_ms, node_name, distro, parameters",
+        "robot.yaml:1:9: ros2.qos: unknown field `qos`, expected one of domain_id, publish, subscribe, read, services, actions, discovery_ms, call_timeout_ms, node_name, distro, parameters",
     );
 }
 
@@ -777,6 +779,7 @@ fn issue38_hub_flags_replace_the_files_list() {
     let hubs = |h: &[&str]| Overrides {
         hub: Some(h.iter().map(|u| u.to_string()).collect()),
         name: None,
+        mirror: None,
     };
     let cfg = AgentConfig::load_with(Some(&path), &hubs(&["wss://c.example:8443"])).expect("one");
     assert_eq!(cfg.hub, ["wss://c.example:8443"]);
@@ -925,6 +928,7 @@ fn rosgw_single_entry_object_and_overrides() {
     let overrides = Overrides {
         hub: Some(vec!["wss://hub.example:8443".into()]),
         name: None,
+        mirror: None,
     };
     let cfg = AgentConfig::parse_with(json, "rosgw.json", &overrides).unwrap();
     assert_eq!(cfg.hub, vec!["wss://hub.example:8443".to_owned()]);
@@ -1156,4 +1160,38 @@ fn blackbox_section_becomes_ring_options_and_its_errors_name_the_field() {
         "blackbox: { dir: /bb, topics: [/scan], compression: gzip }\n",
         "robot.yaml:1:53: blackbox.compression: unknown variant `gzip`, expected one of zstd, lz4, none",
     );
+}
+
+#[test]
+fn a_mirror_lives_in_its_robots_namespace_under_a_name_of_its_own() {
+    // `mirror:` alone: the mirror is named after its robot, its topics go under the robot.
+    let cfg = AgentConfig::from_str("mirror: robot3\n", "m.yaml").expect("valid");
+    assert_eq!(cfg.name.as_str(), "robot3_mirror");
+    assert_eq!(cfg.namespace_robot().as_str(), "robot3");
+    assert_eq!(cfg.hub_topic("/map"), "/robot3/map");
+    // A name of its own is kept; --mirror overrides the file's.
+    let cfg = AgentConfig::parse_with(
+        "name: slam_cloud\nmirror: robot3\n",
+        "m.yaml",
+        &Overrides {
+            mirror: Some(RobotName::new("robot4").unwrap()),
+            ..Overrides::default()
+        },
+    )
+    .expect("valid");
+    assert_eq!(
+        (cfg.name.as_str(), cfg.namespace_robot().as_str()),
+        ("slam_cloud", "robot4")
+    );
+    // A mirror is no simulator: refused at the field, saying what to do.
+    let e = AgentConfig::from_str("mirror: robot3\nsim: {}\n", "m.yaml").expect_err("sim");
+    assert_eq!(e.field(), Some("sim"), "{e}");
+    assert!(e.to_string().contains("remove sim: or mirror:"), "{e}");
+    // Its own name may not be its robot's.
+    let e = AgentConfig::from_str("name: robot3\nmirror: robot3\n", "m.yaml").expect_err("self");
+    assert_eq!(e.field(), Some("name"), "{e}");
+    assert!(e.to_string().contains("robot3_mirror"), "{e}");
+    // And the robot name rule applies to the robot it mirrors, at its line.
+    let e = AgentConfig::from_str("name: a\nmirror: 3robot\n", "m.yaml").expect_err("name");
+    assert!(e.to_string().starts_with("m.yaml:2:"), "{e}");
 }

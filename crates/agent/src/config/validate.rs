@@ -29,6 +29,23 @@ fn problem(path: FieldPath, message: impl Into<String>) -> Problem {
 
 pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     validate_hubs(cfg)?;
+    if let Some(m) = &cfg.mirror {
+        if *m == cfg.name {
+            return Err(problem(
+                "name".into(),
+                format!("a mirror needs a name of its own, not {m}'s (e.g. {m}_mirror)"),
+            ));
+        }
+        if cfg.sim.is_some() {
+            return Err(problem(
+                "sim".into(),
+                format!(
+                    "a mirror of {m} presents the real robot's topics; a simulated robot \
+                     belongs in an agent of its own (remove sim: or mirror:)"
+                ),
+            ));
+        }
+    }
     if let Some(tls) = &cfg.tls {
         for (field, path) in [
             ("tls.ca", &tls.ca),
@@ -301,6 +318,7 @@ fn validate_ros2(r: &super::Ros2Config) -> Result<(), Problem> {
         (at.key("actions").key("expose"), &r.actions.expose),
         (at.key("actions").key("exclude"), &r.actions.exclude),
         (at.key("actions").key("offer"), &r.actions.offer),
+        (at.key("read"), &r.read),
     ];
     check_patterns(lists)?;
     check_bridge_common(&at, &r.subscribe, r.discovery_ms, r.call_timeout_ms)

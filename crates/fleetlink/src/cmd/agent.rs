@@ -19,6 +19,12 @@ pub struct Args {
     /// docs/config.md, "Robot names".
     #[arg(long)]
     pub name: Option<RobotName>,
+    /// Run as a mirror of ROBOT (overrides `mirror:`), beside offloaded ROS nodes in the
+    /// cloud: they see ROBOT's topics, services and actions under its own local names,
+    /// and what they publish goes to ROBOT (docs/mirror.md). --name is then the mirror's
+    /// own name (default ROBOT_mirror), its credential one with rights under /ROBOT.
+    #[arg(long, value_name = "ROBOT")]
+    pub mirror: Option<RobotName>,
     /// Configuration file: the agent's YAML (docs/config.md) or a ROS Gateway JSON file
     /// (docs/rosgw.md). Without it, defaults apply.
     #[arg(long)]
@@ -50,6 +56,7 @@ pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
     let overrides = Overrides {
         hub: (!args.hub.is_empty()).then(|| args.hub.clone()),
         name: args.name.clone(),
+        mirror: args.mirror.clone(),
     };
     let mut cfg = AgentConfig::load_with(args.config.as_deref(), &overrides)?;
     if let Some(path) = &args.token_file {

@@ -79,6 +79,7 @@ pub fn config(args: &UpstreamArgs, data_dir: &Path) -> anyhow::Result<Option<Age
     let overrides = Overrides {
         hub: (!args.upstream.is_empty()).then(|| args.upstream.clone()),
         name: args.name.clone(),
+        mirror: None,
     };
     let mut cfg = AgentConfig::load_with(args.upstream_config.as_deref(), &overrides)
         .map_err(|e| anyhow::anyhow!("the upstream link's configuration: {e}"))?;
@@ -88,6 +89,7 @@ pub fn config(args: &UpstreamArgs, data_dir: &Path) -> anyhow::Result<Option<Age
         ("ros2", cfg.ros2.is_some()),
         ("rosbridge", cfg.rosbridge.is_some()),
         ("blackbox", cfg.blackbox.is_some()),
+        ("mirror", cfg.mirror.is_some()),
     ];
     if let Some((section, _)) = robot_side.iter().find(|(_, set)| *set) {
         anyhow::bail!(

@@ -73,6 +73,8 @@ struct Admitted {
     heartbeat_ms: u32,
     identity: fleetlink_auth::Identity,
     outbox_epoch: u64,
+    /// The robot this link mirrors (`HELLO.mirror`), if it is a mirror.
+    mirror: Option<String>,
 }
 
 /// Runs one agent connection to the end. `slot` (the hub's handshake admission) is held
@@ -125,8 +127,14 @@ pub async fn serve_agent<R, W, P>(
         heartbeat_ms,
         identity,
         outbox_epoch,
+        mirror,
     } = admitted;
-    let namespace = format!("/{robot}");
+    // A mirror's topics live in its robot's namespace.
+    let namespace = format!("/{}", mirror.as_deref().unwrap_or(&robot));
+    let what = match &mirror {
+        Some(of) => format!("mirror {robot} of robot {of}"),
+        None => format!("robot {robot}"),
+    };
     let book = ctx.ledger.open(&robot, outbox_epoch).await;
     let (client, outbox) = ctx.router.connect(
         ClientKind::Agent {
@@ -144,6 +152,7 @@ pub async fn serve_agent<R, W, P>(
     let session_no = ctx.registry.next_session();
     let live = Arc::new(LiveRobot::new(LiveLink {
         name: robot.clone(),
+        mirror_of: mirror.clone(),
         client,
         session: session_no,
         addr,
@@ -151,30 +160,44 @@ pub async fn serve_agent<R, W, P>(
         control: ctrl_tx.clone(),
         replaced: replaced.clone(),
     }));
-    if let Some(old) = ctx.registry.insert(live.clone()) {
-        tracing::info!(robot = %robot, "robot reconnected; replacing its previous connection");
+    // A mirror replaces an older connection of the same mirror, never its robot's.
+    let old = match mirror {
+        Some(_) => ctx.registry.insert_mirror(live.clone()),
+        None => ctx.registry.insert(live.clone()),
+    };
+    if let Some(old) = old {
+        tracing::info!(robot = %robot, "{what} reconnected; replacing its previous connection");
         ctx.rosout.log(
             crate::rosout::Level::Info,
             "connected",
-            format!("robot {robot} reconnected from {who}; its previous connection is closed"),
+            format!("{what} reconnected from {who}; its previous connection is closed"),
         );
         old.replace();
         ctx.router.disconnect(old.client);
     }
-    tracing::info!(robot = %robot, ?addr, "robot connected");
+    tracing::info!(robot = %robot, ?addr, "{what} connected");
     ctx.rosout.log(
         crate::rosout::Level::Info,
         "connected",
-        format!("robot {robot} connected from {who}"),
+        format!("{what} connected from {who}"),
     );
-    record_seen(&ctx.store, &robot, addr, true);
+    if mirror.is_none() {
+        record_seen(&ctx.store, &robot, addr, true);
+    }
 
-    let gate = crate::security::HubGate::for_agent(
-        ctx.security.clone(),
-        ctx.registry.clone(),
-        identity,
-        &robot,
-    );
+    // What a mirror publishes in its robot's namespace is input to that robot (audited
+    // as an operator's is): it speaks for no robot of its own.
+    let gate = match mirror {
+        Some(_) => {
+            crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity)
+        }
+        None => crate::security::HubGate::for_agent(
+            ctx.security.clone(),
+            ctx.registry.clone(),
+            identity,
+            &robot,
+        ),
+    };
     let writer_gate = gate.fork();
     let calls = ctx.router.calls.clone();
     session.accept(
@@ -224,19 +247,24 @@ pub async fn serve_agent<R, W, P>(
         session.handle_peer_event(m);
     }
     ctx.router.disconnect(client);
-    ctx.registry.remove_if_session(&robot, session_no);
+    match mirror {
+        Some(_) => ctx.registry.remove_mirror_if_session(&robot, session_no),
+        None => ctx.registry.remove_if_session(&robot, session_no),
+    }
     let level = match reason {
         CloseReason::Silent { .. } | CloseReason::ReadError(_) => crate::rosout::Level::Warn,
         _ => crate::rosout::Level::Info,
     };
-    tracing::info!(robot = %robot, "robot disconnected: {reason}");
+    tracing::info!(robot = %robot, "{what} disconnected: {reason}");
     ctx.rosout.log(
         level,
         "disconnected",
-        format!("robot {robot} disconnected: {reason}"),
+        format!("{what} disconnected: {reason}"),
     );
     drive::stop_writer(writer, ctrl_tx, &reason).await;
-    record_seen(&ctx.store, &robot, addr, false);
+    if mirror.is_none() {
+        record_seen(&ctx.store, &robot, addr, false);
+    }
 }
 
 /// How a handshake ended without admitting the robot.
@@ -260,14 +288,15 @@ where
     R: Stream<Item = Result<ClientMessage, WsError>> + Unpin,
     W: Sink<WsMessage, Error = WsError> + Unpin,
 {
-    let (robot, token, hb, outbox_epoch) = loop {
+    let (robot, token, hb, outbox_epoch, mirror) = loop {
         match session.poll_event() {
             Some(Event::Hello {
                 robot,
                 token,
                 heartbeat_ms,
                 outbox_epoch,
-            }) => break (robot, token, heartbeat_ms, outbox_epoch),
+                mirror,
+            }) => break (robot, token, heartbeat_ms, outbox_epoch, mirror),
             Some(Event::Closed(r)) => {
                 return Err(match r {
                     r @ (CloseReason::PeerClosed(_)
@@ -293,6 +322,19 @@ where
     };
     // The name is parsed here, at the edge; a refusal quotes the rule.
     let name = RobotName::new(&robot).map_err(|e| Ended::Refuse(e.to_string(), None))?;
+    let mirror = match mirror.as_str() {
+        "" => None,
+        m => match RobotName::new(m) {
+            Ok(_) if m == robot => {
+                let reason = format!(
+                    "mirror {robot} names itself as the robot it mirrors: give the mirror a name of its own (e.g. {robot}_mirror)"
+                );
+                return Err(Ended::Refuse(reason, Some(robot)));
+            }
+            Ok(_) => Some(mirror),
+            Err(e) => return Err(Ended::Refuse(format!("mirror of {m:?}: {e}"), Some(robot))),
+        },
+    };
     let heartbeat_ms = if hb == 0 {
         ctx.default_heartbeat_ms
     } else {
@@ -322,19 +364,20 @@ where
         }
     };
     let admin = GroupName::new("admin").expect("a valid group name");
+    // The namespace the link acts in: a mirror's is its robot's.
+    let acts_in = mirror.as_deref().unwrap_or(&robot);
     match authenticated {
         // Anyone else acting as a robot needs a rule letting it publish under that
-        // robot's namespace: otherwise a viewer's token could evict a robot.
+        // robot's namespace: otherwise a viewer's token could evict a robot. So does any
+        // mirror, whatever its credential: a robot token names the mirror, not the robot.
         Ok(identity)
-            if operator
+            if (operator || mirror.is_some())
                 && !identity.in_group(&admin)
-                && !ctx
-                    .security
-                    .access(identity.clone())
-                    .allows(&format!("/{robot}"), Operation::Publish) =>
+                && !may_publish_under(&ctx.security, &identity, acts_in) =>
         {
+            let what = if mirror.is_some() { "mirror" } else { "act as" };
             let reason = format!(
-                "{} may not act as robot {robot}: no rule lets it publish under /{robot}",
+                "{} may not {what} robot {acts_in}: no rule lets it publish under /{acts_in}",
                 identity.principal()
             );
             Err(Ended::Refuse(reason, Some(robot)))
@@ -344,11 +387,24 @@ where
             heartbeat_ms,
             identity,
             outbox_epoch,
+            mirror,
         }),
         // The public message alone ("authentication failed", "authentication required",
         // a rate limit): the agent turns it into advice.
         Err(e) => Err(Ended::Refuse(e.public_message(), Some(robot))),
     }
+}
+
+/// Whether a rule lets `identity` publish in `robot`'s namespace (`/robot` or
+/// `/robot/…`, so that both `"/r1(/.*)?"` and `"/r1/.*"` rules count).
+fn may_publish_under(
+    security: &fleetlink_auth::Security,
+    identity: &fleetlink_auth::Identity,
+    robot: &str,
+) -> bool {
+    let mut access = security.access(identity.clone());
+    access.allows(&format!("/{robot}"), Operation::Publish)
+        || access.allows(&format!("/{robot}/"), Operation::Publish)
 }
 
 /// The open link, until its session ends: returns why.

@@ -251,6 +251,7 @@ where
         token: token.into(),
         heartbeat_ms: 0,
         outbox_epoch: 0,
+        mirror: String::new(),
     };
     ws.send(Message::Binary(f.to_bytes()))
         .await

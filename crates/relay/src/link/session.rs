@@ -162,6 +162,8 @@ pub enum Event {
         /// The heartbeat the agent asks for (0 = the hub's default).
         heartbeat_ms: u32,
         outbox_epoch: u64,
+        /// The robot this link mirrors, if it is a mirror (empty: it is the robot).
+        mirror: String,
     },
     /// The session is open: the agent got `WELCOME`, or the hub accepted.
     Opened {
@@ -206,6 +208,8 @@ pub struct AgentHello {
     pub robot: String,
     pub token: String,
     pub outbox_epoch: u64,
+    /// The robot this agent mirrors (`HELLO.mirror`); empty for a robot's own agent.
+    pub mirror: String,
 }
 
 /// The hub's answer to a `HELLO` it accepts.
@@ -362,6 +366,7 @@ impl LinkSession {
             token: hello.token,
             heartbeat_ms,
             outbox_epoch: hello.outbox_epoch,
+            mirror: hello.mirror,
         }));
         s
     }
@@ -805,6 +810,7 @@ impl LinkSession {
                 token,
                 heartbeat_ms,
                 outbox_epoch,
+                mirror,
             })) => {
                 if version != VERSION {
                     return self.refuse(format!(
@@ -821,6 +827,7 @@ impl LinkSession {
                     token,
                     heartbeat_ms,
                     outbox_epoch,
+                    mirror,
                 });
             }
             Some(Err(e)) => self.refuse(format!("malformed HELLO: {e}")),

@@ -295,6 +295,7 @@ impl Pair {
                 robot: "r1".into(),
                 token: String::new(),
                 outbox_epoch: 0,
+                mirror: String::new(),
             },
             Box::new(move |_| LinkCalls::new(c, me, Box::new(SameNames))),
             base,
@@ -738,6 +739,7 @@ fn the_hub_refuses_another_protocol_version_and_waits_ten_seconds_for_hello() {
         token: String::new(),
         heartbeat_ms: 0,
         outbox_epoch: 0,
+        mirror: String::new(),
     };
     s.handle_binary(&hello.to_bytes(), t);
     assert!(
@@ -768,6 +770,7 @@ fn the_agent_reads_a_refusal_and_times_out_without_welcome() {
         robot: "r1".into(),
         token: "t".into(),
         outbox_epoch: 3,
+        mirror: String::new(),
     };
     let mut s = LinkSession::agent(
         config(Role::Agent, base),

@@ -164,6 +164,7 @@ async fn connect_inner(
         token: token.to_owned(),
         heartbeat_ms: HEARTBEAT_MS,
         outbox_epoch: 0,
+        mirror: String::new(),
     };
     ws.send(WsMessage::Binary(hello.to_bytes()))
         .await

@@ -105,6 +105,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             budget: None,
             hub_id: None,
             upstream_gate: None,
+            mirror: None,
         };
         let opts = AgentOptions {
             uplink,
