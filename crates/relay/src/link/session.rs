@@ -594,7 +594,7 @@ impl LinkSession {
             return;
         }
         self.tx.frames.clear();
-        self.tx.statuses = 1;
+        self.tx.statuses = 0;
         self.push(Control::Frame(Frame::Status {
             level: Level::Error,
             code: status_code::UNAUTHORIZED,
@@ -738,7 +738,12 @@ impl LinkSession {
 
     // --- inside
 
+    /// Queues `c`; a `STATUS` counts towards the cap wherever it comes from (the call
+    /// table's refusals too), so that taking it off the queue balances the count.
     fn push(&mut self, c: Control) {
+        if let Control::Frame(Frame::Status { .. }) = c {
+            self.tx.statuses += 1;
+        }
         self.tx.frames.push_back(c);
     }
 
