@@ -109,6 +109,35 @@ async fn a_mirror_presents_its_robot_under_local_names_and_asks_only_for_what_is
         "{per_sec} odometry messages a second"
     );
 
+    // The hub lists the mirror with its robot, what it reads and the offload signal.
+    let (status, robots) = http_json(
+        hub.addr,
+        "GET",
+        "/api/v1/robots",
+        Some(&hub.operator_token),
+        None,
+    )
+    .await;
+    assert_eq!(status, 200, "{robots}");
+    let listed = robots["robots"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["name"] == "robot3")
+        .cloned()
+        .unwrap();
+    let m = &listed["mirrors"][0];
+    assert_eq!(m["name"], "robot3_mirror", "{listed}");
+    assert_eq!(m["reads"], json!(["/robot3/odom"]), "{listed}");
+    assert!(m["inputs_bps"].as_f64().unwrap() > 0.0, "{listed}");
+    assert!(
+        m["offload"]["rule"]
+            .as_str()
+            .unwrap()
+            .contains("capacity_bps"),
+        "{m}"
+    );
+
     // The robot's service, by its local name.
     let r = nodes[0]
         .call("/set_mode", json!({"data": true}), "mode")

@@ -114,6 +114,7 @@ async fn robots(
                     "use_bps": b.use_bps.round(),
                     "thinned": b.thinned,
                 })),
+                "mirrors": mirrors_of(&st, r, &topics),
         }));
     }
     // Robots on the other hubs of a federation, where the caller may see them.
@@ -353,6 +354,53 @@ async fn rates(
         "topics": topics,
     }))
     .into_response()
+}
+
+/// A robot's mirrors (docs/mirror.md) with the topics each reads, and the offload signal:
+/// Cloudroid's rule, offload while the link can carry the offloaded nodes' inputs (their
+/// topics' bytes per second over the robot's link, against the capacity its agent
+/// reports).
+fn mirrors_of(
+    st: &HubState,
+    robot: &crate::registry::LiveRobot,
+    topics: &[fleetlink_relay::router::TopicSnapshot],
+) -> Value {
+    let now = fleetlink_relay::unix_nanos();
+    let capacity = robot
+        .capacity_bps
+        .load(std::sync::atomic::Ordering::Relaxed);
+    let list: Vec<Value> = st
+        .registry
+        .mirrors_of(&robot.name)
+        .iter()
+        .map(|m| {
+            let read: Vec<&fleetlink_relay::router::TopicSnapshot> = topics
+                .iter()
+                .filter(|t| t.publishers.contains(&robot.client) && t.subscribers.contains(&m.client))
+                .collect();
+            let inputs_bps: f64 = read
+                .iter()
+                .map(|t| {
+                    let (_, bw) = t.stats.rates(now);
+                    match t.stats.link_figures() {
+                        Some((wire, raw)) => bw * wire as f64 / raw.max(1) as f64,
+                        None => bw,
+                    }
+                })
+                .sum();
+            json!({
+                "name": m.name,
+                "connected_at_ms": ms(m.connected_at),
+                "reads": read.iter().map(|t| t.meta.name.as_str()).collect::<Vec<_>>(),
+                "inputs_bps": inputs_bps.round(),
+                "offload": {
+                    "rule": "offload while inputs_bps <= capacity_bps (the link carries the offloaded nodes' inputs)",
+                    "fits": (capacity > 0).then(|| inputs_bps <= capacity as f64),
+                },
+            })
+        })
+        .collect();
+    json!(list)
 }
 
 fn nonzero(v: u64) -> Value {
