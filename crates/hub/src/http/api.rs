@@ -395,7 +395,7 @@ fn mirrors_of(
                 "inputs_bps": inputs_bps.round(),
                 "offload": {
                     "rule": "offload while inputs_bps <= capacity_bps (the link carries the offloaded nodes' inputs)",
-                    "fits": (capacity > 0).then(|| inputs_bps <= capacity as f64),
+                    "fits": (capacity > 0).then_some(inputs_bps <= capacity as f64),
                 },
             })
         })
