@@ -44,6 +44,12 @@ export interface RobotInfo {
   /** The robot's data budget as its agent last reported it (absent: none). Bytes per
    * second and per day on the wire; `thinned`: topics it holds back now. */
   budget?: { max_bps: number | null; day_bytes: number | null; used_bytes: number; use_bps: number; thinned: string[] } | null;
+  /** What the robot may send now, bytes/s, as its agent last reported it. */
+  capacity_bps?: number | null;
+  /** Mirrors of the robot beside offloaded nodes (docs/mirror.md): the robot topics each
+   * reads now, their bytes/s over the robot's link, and the offload signal (`fits`: the
+   * link carries them; null while the capacity is not known). */
+  mirrors?: { name: string; connected_at_ms: number; reads: string[]; inputs_bps: number; offload: { rule: string; fits: boolean | null } }[];
 }
 
 export interface TopicInfo {

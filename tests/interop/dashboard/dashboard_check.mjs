@@ -130,6 +130,15 @@ try {
   }
   const insp = await page.$eval(".inspector .tree", (e) => e.textContent);
   check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
+  // robot1's mirror in the link panel, with the offload rule it applies.
+  if (robot === "robot1") {
+    const mirror = await until(page, () => {
+      const h = [...document.querySelectorAll(".robot-grid section h2")].find((e) => e.textContent.startsWith("Link quality"));
+      const info = h?.querySelector(".info");
+      return info && /mirror robot1_mirror/.test(info.textContent) ? { text: info.textContent, rule: info.title } : null;
+    }, null, 5000, "robot view: the link panel shows robot1's mirror");
+    if (mirror) check(/mirror robot1_mirror reads \d+ topics?, /.test(mirror.text) && /capacity_bps/.test(mirror.rule), `robot view: the mirror and its offload signal: "${mirror.text.trim()}" (${mirror.rule})`);
+  }
   const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
   check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
   // The camera panel shows the simulator's picture of its room: a JPEG the browser

@@ -10,7 +10,8 @@
 # 3. `fleetlink demo` (hub + 3 simulated robots) with extra credentials minted in its
 #    database first: alice (admin group, signs in with a password), a viewer (operator
 #    token with no group, allowed to subscribe only) and robot4, a separate agent that the
-#    browser check stops to see a robot go offline. Then dashboard_check.mjs drives Chromium
+#    browser check stops to see a robot go offline, and a mirror of robot1 (`fleetlink
+#    agent --mirror robot1`, shown in robot1's link panel with its offload signal). Then dashboard_check.mjs drives Chromium
 #    through the fleet view, the robot view, a navigation goal and Cancel, a service form,
 #    the admin view, the recordings page's black-box form, and the viewer's disabled
 #    tasking and refused forged publish.
@@ -109,6 +110,12 @@ topics:
   /markers: { mode: pull }
 EOF
 "$bin" agent --config "$tmp/robot5.yaml" >"$tmp/agent5.log" 2>&1 &
+pids+=($!)
+# A mirror of robot1 (docs/mirror.md), shown in robot1's view with the offload signal; an
+# operator token of the admin group may mirror any robot.
+printf '%s\n' "$op_token" >"$tmp/mirror.token"
+"$bin" agent --mirror robot1 --hub "ws://$addr/" --token-file "$tmp/mirror.token" --no-local \
+    >"$tmp/mirror.log" 2>&1 &
 pids+=($!)
 # Ready: five robots online (bounded, 15 s).
 for i in $(seq 150); do

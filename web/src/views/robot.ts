@@ -310,6 +310,16 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     linkP.info.textContent = b
       ? ` · budget ${limits.join(" and ")}: using ${bps(b.use_bps)}${b.thinned.length ? `, thinning ${b.thinned.length} topic${b.thinned.length > 1 ? "s" : ""}` : ""}`
       : "";
+    // Its mirrors in the cloud, and whether the link carries what their nodes read.
+    const mirrors = me?.mirrors ?? [];
+    linkP.info.textContent += mirrors
+      .map((m) => {
+        const of = me?.capacity_bps ? ` of ${bps(me.capacity_bps)}` : "";
+        const verdict = m.offload.fits === null ? "link capacity not known yet" : m.offload.fits ? "fits the link: offload" : "does not fit the link";
+        return ` · mirror ${m.name} reads ${m.reads.length} topic${m.reads.length === 1 ? "" : "s"}, ${bps(m.inputs_bps)}${of}: ${verdict}`;
+      })
+      .join("");
+    linkP.info.title = mirrors.length ? mirrors[0].offload.rule : "";
     linkChart.update();
     for (const t of topics.filter((x) => x.name.startsWith(`/${name}/`))) {
       let r = rows.get(t.name);
