@@ -1107,3 +1107,30 @@ fn a_message_or_topic_that_passed_this_hub_is_dropped_as_it_arrives() {
     assert_eq!(messages(&mut s), vec![Some(vec![7])]);
     assert!(s.is_open());
 }
+
+#[test]
+fn a_refusal_from_the_call_table_counts_like_any_other_status() {
+    let mut p = Pair::new(Duration::from_millis(5));
+    p.open();
+    // The call table refuses a service it cannot name; its STATUS goes out with the rest.
+    let bad = Frame::ServiceAdvertise {
+        alias: 7,
+        name: "not a name".into(),
+        schema: Schema::named("std_srvs/srv/Trigger"),
+        flags: 0,
+    };
+    p.hub.session.handle_binary(&bad.to_bytes(), p.now);
+    let sent = statuses(&mut p.hub.session);
+    assert!(
+        sent.iter()
+            .any(|(code, text)| *code == 400 && text.contains("invalid name")),
+        "{sent:?}"
+    );
+    // Taking it off the queue left the count where it was: the cap still lets a full
+    // quota of reports through.
+    for i in 0..MAX_STATUSES {
+        p.hub.session.status(Level::Error, 9, format!("{i}"));
+    }
+    assert_eq!(statuses(&mut p.hub.session).len(), MAX_STATUSES);
+    assert_eq!(p.hub.session.stats().statuses_dropped, 0);
+}
