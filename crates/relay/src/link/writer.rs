@@ -149,12 +149,10 @@ pub async fn write_link<K>(
     let mut buf = BytesMut::new();
     // Topics the peer should know before any message flows (e.g. after a reconnect).
     for (meta, enc) in announce_first {
-        if !may_see(&mut gate, &meta) {
-            continue;
-        }
-        announce_topic(
+        announce_before_messages(
             &mut buf,
             &mut advertised,
+            &mut gate,
             &meta,
             enc,
             &namer,
@@ -183,17 +181,16 @@ pub async fn write_link<K>(
                 Ok(Control::Sequence(s)) => sequences.push_back(s),
                 Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Ok(Control::Announce { meta, encoding }) => {
-                    if !advertised.contains_key(&meta.id) && may_see(&mut gate, &meta) {
-                        announce_topic(
-                            &mut buf,
-                            &mut advertised,
-                            &meta,
-                            encoding,
-                            &namer,
-                            &outbox,
-                            &mut via,
-                        );
-                    }
+                    announce_before_messages(
+                        &mut buf,
+                        &mut advertised,
+                        &mut gate,
+                        &meta,
+                        encoding,
+                        &namer,
+                        &outbox,
+                        &mut via,
+                    );
                 }
                 Ok(Control::Pong(p)) => {
                     if pong(&mut sink, &mut buf, p).await.is_err() {
@@ -435,17 +432,16 @@ pub async fn write_link<K>(
                 Some(Control::Sequence(s)) => sequences.push_back(s),
                 Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
                 Some(Control::Announce { meta, encoding }) => {
-                    if !advertised.contains_key(&meta.id) && may_see(&mut gate, &meta) {
-                        announce_topic(
-                            &mut buf,
-                            &mut advertised,
-                            &meta,
-                            encoding,
-                            &namer,
-                            &outbox,
-                            &mut via,
-                        );
-                    }
+                    announce_before_messages(
+                        &mut buf,
+                        &mut advertised,
+                        &mut gate,
+                        &meta,
+                        encoding,
+                        &namer,
+                        &outbox,
+                        &mut via,
+                    );
                 }
                 Some(Control::Pong(p)) => {
                     if pong(&mut sink, &mut buf, p).await.is_err() {
@@ -602,6 +598,24 @@ fn announce(
 fn may_see(gate: &mut Option<Box<dyn crate::gate::Gate>>, meta: &TopicMeta) -> bool {
     gate.as_mut()
         .is_none_or(|g| g.allows_topic(meta.id.0, meta.name.as_str(), crate::gate::Op::Subscribe))
+}
+
+/// Announces `meta` before any message of it goes (a reconnect's topics, a site hub's
+/// new ones): once per link, and only to a peer the gate lets receive it.
+#[allow(clippy::too_many_arguments)]
+fn announce_before_messages(
+    buf: &mut BytesMut,
+    advertised: &mut HashMap<TopicId, Encoding>,
+    gate: &mut Option<Box<dyn crate::gate::Gate>>,
+    meta: &TopicMeta,
+    enc: Encoding,
+    namer: &LinkNamer,
+    outbox: &Outbox,
+    via: &mut ViaMark,
+) {
+    if !advertised.contains_key(&meta.id) && may_see(gate, meta) {
+        announce_topic(buf, advertised, meta, enc, namer, outbox, via);
+    }
 }
 
 /// Writes `ADVERTISE` of `meta` in `enc` (and notes it announced); false if the topic
