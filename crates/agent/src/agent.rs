@@ -44,9 +44,24 @@ pub struct AgentOptions {
     pub rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
     /// The black box, if any.
     pub blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
+    /// The configuration, changeable while the agent runs ([`crate::runtime`]); `None`:
+    /// fixed as built.
+    pub runtime: Option<Arc<crate::runtime::RuntimeConfig>>,
 }
 
 impl AgentOptions {
+    /// Options from a loaded configuration that may change while the agent runs: the
+    /// changes kept in `cfg.runtime_file_path()` are applied first (docs/runtime-config.md).
+    pub fn changeable(cfg: &AgentConfig) -> Result<AgentOptions, OptionsError> {
+        let runtime = Arc::new(crate::runtime::RuntimeConfig::open(
+            cfg.clone(),
+            cfg.runtime_file_path(),
+        ));
+        let mut opts = Self::from_config(&runtime.current())?;
+        opts.runtime = Some(runtime);
+        Ok(opts)
+    }
+
     /// Options from a loaded configuration file.
     pub fn from_config(cfg: &AgentConfig) -> Result<AgentOptions, OptionsError> {
         let parse = TopicName::parse;
@@ -104,6 +119,7 @@ impl AgentOptions {
                     compression: b.compression,
                 }
             }),
+            runtime: None,
         })
     }
 }
@@ -140,6 +156,7 @@ fn ros1_options(
         discovery_period: r.discovery(),
         call_timeout: r.call_timeout(),
         parameters: r.parameters,
+        changes: None,
     })
 }
 
@@ -174,6 +191,7 @@ fn ros2_options(
             .node_name
             .clone()
             .unwrap_or_else(|| format!("/fleetlink_{robot}")),
+        changes: None,
         distro: r.distro.clone().or_else(|| {
             std::env::var("ROS_DISTRO")
                 .ok()
@@ -255,6 +273,10 @@ pub struct Agent {
     ros2: Option<fleetlink_ros2::Ros2Options>,
     rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
     blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
+    runtime: Option<Arc<crate::runtime::RuntimeConfig>>,
+    /// A mirror offers no configuration services to the fleet (their names would be its
+    /// robot's).
+    mirror: bool,
     robot: fleetlink_auth::RobotName,
 }
 
@@ -290,6 +312,7 @@ impl Agent {
         }
         let router = Arc::new(Router::new(transcoder));
         let robot = opts.uplink.robot.clone();
+        let mirror = opts.uplink.mirror.is_some();
         let uplink = Uplink::new(opts.uplink, router.clone())?;
         Ok(Agent {
             router,
@@ -300,6 +323,8 @@ impl Agent {
             ros2: opts.ros2,
             rosbridge: opts.rosbridge,
             blackbox: opts.blackbox,
+            runtime: opts.runtime,
+            mirror,
             robot,
         })
     }
@@ -321,11 +346,43 @@ impl Agent {
         self.uplink.stats.clone()
     }
 
+    /// The changeable configuration, if the agent was built with one.
+    pub fn runtime(&self) -> Option<Arc<crate::runtime::RuntimeConfig>> {
+        self.runtime.clone()
+    }
+
     /// Runs until `shutdown` is cancelled, then stops: the link closes with 1001, local
     /// clients get 1001, the durable outbox writes and syncs what it holds, and the tasks
     /// are waited for (at most [`SHUTDOWN_GRACE`]).
-    pub async fn run(self, shutdown: CancellationToken) {
+    pub async fn run(mut self, shutdown: CancellationToken) {
         let sessions = TaskTracker::new();
+        // The running parts take a runtime change through these.
+        let mut ros1_changes = None;
+        let mut ros2_changes = None;
+        if let Some(o) = self.ros1.as_mut().filter(|_| self.runtime.is_some()) {
+            let (tx, rx) = watch::channel(o.clone());
+            o.changes = Some(rx);
+            ros1_changes = Some(tx);
+        }
+        if let Some(o) = self.ros2.as_mut().filter(|_| self.runtime.is_some()) {
+            let (tx, rx) = watch::channel(o.clone());
+            o.changes = Some(rx);
+            ros2_changes = Some(tx);
+        }
+        let runtime_task = self.runtime.clone().map(|rt| {
+            rt.attach(crate::runtime::Parts {
+                uplink: self.uplink.control(),
+                ros1: ros1_changes,
+                ros2: ros2_changes,
+            });
+            let (router, shutdown) = (self.router.clone(), shutdown.clone());
+            let offer = !self.mirror;
+            tokio::spawn(async move {
+                if offer {
+                    crate::runtime::serve(rt, router, shutdown).await;
+                }
+            })
+        });
         let deadlines = tokio::spawn(self.router.calls.clone().run_deadlines(shutdown.clone()));
         let local = self.local.map(|l| {
             let cfg = Arc::new(SessionConfig {
@@ -336,6 +393,7 @@ impl Agent {
                 l,
                 self.router.clone(),
                 cfg,
+                self.runtime.clone(),
                 shutdown.clone(),
                 sessions.clone(),
             ))
@@ -433,7 +491,7 @@ impl Agent {
         self.uplink.run(shutdown.clone()).await;
         sessions.close();
         let rest = async {
-            for t in [local, sim, ros1, rosbridge, blackbox, status]
+            for t in [local, sim, ros1, rosbridge, blackbox, status, runtime_task]
                 .into_iter()
                 .flatten()
             {

@@ -22,6 +22,7 @@ pub mod blackbox;
 pub mod config;
 pub mod local;
 pub mod outbox_store;
+pub mod runtime;
 pub mod sim;
 pub mod status;
 pub mod uplink;

@@ -1,12 +1,18 @@
 //! The agent's local rosbridge listener (default `127.0.0.1:9090`): local programs
 //! (roslibpy, roslibjs, anything that speaks rosbridge v2) publish to and subscribe from
 //! the fleet through it, exactly as they would talk to a rosbridge server.
+//!
+//! The same port answers plain HTTP requests with the configuration API
+//! (`GET`/`PUT /api/v1/config`, docs/runtime-config.md): a connection whose request asks
+//! for a WebSocket upgrade is a rosbridge client, any other is an HTTP client.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Duration;
 
 use fleetlink_relay::Router;
+
+use crate::runtime::RuntimeConfig;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
@@ -23,6 +29,7 @@ pub async fn serve(
     listener: TcpListener,
     router: Arc<Router>,
     cfg: Arc<SessionConfig>,
+    runtime: Option<Arc<RuntimeConfig>>,
     shutdown: CancellationToken,
     sessions: TaskTracker,
 ) {
@@ -59,7 +66,13 @@ pub async fn serve(
         }
         let _ = tcp.set_nodelay(true);
         let (router, cfg, shutdown) = (router.clone(), cfg.clone(), shutdown.clone());
+        let runtime = runtime.clone();
         sessions.spawn(async move {
+            match sniff(&tcp).await {
+                Sniffed::WebSocket => {}
+                Sniffed::Http => return serve_api(tcp, runtime, shutdown).await,
+                Sniffed::Gone => return,
+            }
             // tungstenite answers the handshake; the session then runs on the socket's
             // own halves (a client sends nothing more before the handshake's answer).
             match tokio_tungstenite::accept_async_with_config(tcp, Some(ws_config)).await {
@@ -73,6 +86,161 @@ pub async fn serve(
             }
         });
     }
+}
+
+/// What a new connection's first request is.
+enum Sniffed {
+    WebSocket,
+    Http,
+    /// Closed, or silent for [`SNIFF_TIMEOUT`].
+    Gone,
+}
+
+/// How long a new connection may take to send its request's head.
+const SNIFF_TIMEOUT: Duration = Duration::from_secs(10);
+/// Most bytes of a request head looked at; a longer head is left to the WebSocket
+/// handshake, which refuses it.
+const SNIFF_MAX: usize = 8192;
+
+/// Looks at (without taking) the request head: a WebSocket upgrade, or not.
+async fn sniff(tcp: &tokio::net::TcpStream) -> Sniffed {
+    let mut buf = vec![0u8; SNIFF_MAX];
+    let look = async {
+        loop {
+            let n = match tcp.peek(&mut buf).await {
+                Ok(0) | Err(_) => return Sniffed::Gone,
+                Ok(n) => n,
+            };
+            let head = &buf[..n];
+            if let Some(end) = head.windows(4).position(|w| w == b"\r\n\r\n") {
+                let text = String::from_utf8_lossy(&head[..end]).to_ascii_lowercase();
+                let upgrade = text.lines().any(|l| {
+                    l.strip_prefix("upgrade:")
+                        .is_some_and(|v| v.contains("websocket"))
+                });
+                return if upgrade {
+                    Sniffed::WebSocket
+                } else {
+                    Sniffed::Http
+                };
+            }
+            if n == buf.len() {
+                return Sniffed::WebSocket;
+            }
+            // More of the head is on its way.
+            tokio::time::sleep(Duration::from_millis(5)).await;
+        }
+    };
+    tokio::time::timeout(SNIFF_TIMEOUT, look)
+        .await
+        .unwrap_or(Sniffed::Gone)
+}
+
+/// Largest change accepted by the configuration API.
+const MAX_CHANGE_BYTES: usize = 1 << 20;
+
+/// Serves HTTP/1.1 on `tcp`: the configuration API.
+async fn serve_api(
+    tcp: tokio::net::TcpStream,
+    runtime: Option<Arc<RuntimeConfig>>,
+    shutdown: CancellationToken,
+) {
+    let service = hyper::service::service_fn(move |req| {
+        let runtime = runtime.clone();
+        async move { Ok::<_, std::convert::Infallible>(config_api(req, runtime).await) }
+    });
+    let conn = hyper::server::conn::http1::Builder::new()
+        .serve_connection(hyper_util::rt::TokioIo::new(tcp), service);
+    tokio::select! {
+        r = conn => if let Err(e) = r {
+            tracing::debug!("local configuration API: {e}");
+        },
+        _ = shutdown.cancelled() => {}
+    }
+}
+
+type ApiBody = http_body_util::Full<bytes::Bytes>;
+
+fn answer(status: u16, body: serde_json::Value) -> hyper::Response<ApiBody> {
+    hyper::Response::builder()
+        .status(status)
+        .header("content-type", "application/json")
+        .body(ApiBody::from(body.to_string()))
+        .unwrap_or_else(|_| hyper::Response::new(ApiBody::default()))
+}
+
+/// `GET /api/v1/config` (the configuration in force) and `PUT /api/v1/config` (a change,
+/// YAML or JSON), with `Authorization: Bearer <local_rosbridge.config_token>`.
+async fn config_api(
+    req: hyper::Request<hyper::body::Incoming>,
+    runtime: Option<Arc<RuntimeConfig>>,
+) -> hyper::Response<ApiBody> {
+    use http_body_util::BodyExt;
+    use serde_json::json;
+    if req.uri().path() != "/api/v1/config" {
+        return answer(
+            404,
+            json!({"error": "this is a rosbridge WebSocket endpoint; the one HTTP resource here is /api/v1/config"}),
+        );
+    }
+    let Some(runtime) = runtime else {
+        return answer(
+            404,
+            json!({"error": "this agent's configuration cannot change while it runs"}),
+        );
+    };
+    let token = runtime.current().local_config_token().to_owned();
+    if token.is_empty() {
+        return answer(
+            403,
+            json!({"error": "the configuration API is closed: set local_rosbridge.config_token in the agent's YAML to open it"}),
+        );
+    }
+    let given = req
+        .headers()
+        .get(hyper::header::AUTHORIZATION)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.strip_prefix("Bearer "))
+        .unwrap_or_default();
+    if !constant_time_eq(given.as_bytes(), token.as_bytes()) {
+        return answer(
+            401,
+            json!({"error": "authentication required: Authorization: Bearer <local_rosbridge.config_token>"}),
+        );
+    }
+    match *req.method() {
+        hyper::Method::GET => answer(200, runtime.view()),
+        hyper::Method::PUT | hyper::Method::PATCH | hyper::Method::POST => {
+            let limited = http_body_util::Limited::new(req.into_body(), MAX_CHANGE_BYTES);
+            let body = match limited.collect().await {
+                Ok(b) => b.to_bytes(),
+                Err(e) => {
+                    return answer(
+                        413,
+                        json!({"error": format!("the change could not be read (at most {MAX_CHANGE_BYTES} bytes): {e}")}),
+                    );
+                }
+            };
+            let Ok(text) = std::str::from_utf8(&body) else {
+                return answer(
+                    400,
+                    json!({"error": "a change is YAML or JSON text, in UTF-8"}),
+                );
+            };
+            // A short write and sync of a small file, on this thread.
+            match runtime.apply(text, "the local API") {
+                Ok(view) => answer(200, view),
+                Err(refusal) => answer(400, serde_json::to_value(refusal).unwrap_or_default()),
+            }
+        }
+        _ => answer(405, json!({"error": "use GET or PUT"})),
+    }
+}
+
+/// Compares a presented token with the configured one in time independent of where they
+/// differ.
+fn constant_time_eq(a: &[u8], b: &[u8]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).fold(0u8, |acc, (x, y)| acc | (x ^ y)) == 0
 }
 
 /// Binds the local listener address.

@@ -276,11 +276,117 @@ impl LinkNames for AgentNames {
     }
 }
 
+/// Why a connection ends when the names changed at run time (the next one uses them).
+const RENAMED: &str = "the topic names changed (runtime configuration)";
+
+/// The QoS the uplink gives a local topic: the defaults for its type (or the black box's
+/// data topic's), made no-drop for a no-drop stream from below, then `specs`' entry.
+fn uplink_qos(meta: &TopicMeta, specs: &[(TopicName, TopicQosSpec)]) -> TopicQos {
+    let mut base = if meta.name.as_str() == fleetlink_record::blackbox::DATA_TOPIC {
+        crate::blackbox::data_qos()
+    } else {
+        TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name)
+    };
+    if meta.no_drop {
+        // A robot's no-drop stream (on a site hub, carried upstream by this uplink) stays
+        // no-drop on the next hop. The hub cannot slow the robot's link down for it, so its
+        // queue is long (a durable outbox, which a site hub has by default, holds any
+        // number, up to its byte bound).
+        base.no_drop = true;
+        base.policy = fleetlink_qos::Policy::Fifo;
+        base.rate_limit_hz = None;
+        base.queue = base.queue.max(INHERITED_NO_DROP_QUEUE);
+    }
+    match specs.iter().find(|(n, _)| *n == meta.name) {
+        Some((_, spec)) => spec.resolve(&base).unwrap_or_else(|e| {
+            tracing::warn!("topic {}: {e}; using the defaults for its type", meta.name);
+            base
+        }),
+        None => base,
+    }
+}
+
+/// The uplink's part of a runtime configuration change (crate::runtime): per-topic QoS,
+/// applied to flowing topics at once, and the topic names, applied by reconnecting.
+pub struct UplinkControl {
+    specs: Arc<std::sync::RwLock<Vec<(TopicName, TopicQosSpec)>>>,
+    names: std::sync::RwLock<NameMap>,
+    /// Woken when `names` changed: the connection ends and the next one uses them.
+    renamed: tokio::sync::Notify,
+    router: Arc<Router>,
+    client: ClientId,
+    outbox: Arc<Outbox>,
+}
+
+impl UplinkControl {
+    pub fn names(&self) -> NameMap {
+        self.names.read().unwrap_or_else(|p| p.into_inner()).clone()
+    }
+
+    /// The local topics the uplink carries up now.
+    fn carried(&self) -> Vec<Arc<TopicMeta>> {
+        self.router
+            .topics()
+            .into_iter()
+            .filter(|t| t.subscribers.contains(&self.client))
+            .map(|t| t.meta.clone())
+            .collect()
+    }
+
+    /// Whether `specs` can replace the per-topic QoS: a topic already flowing keeps its
+    /// `no_drop` (its messages are numbered for the hub's confirmation, or not). `Err`
+    /// names the topic.
+    pub fn check_topic_qos(&self, specs: &[(TopicName, TopicQosSpec)]) -> Result<(), String> {
+        for meta in self.carried() {
+            let Some(now) = self.outbox.known_no_drop(meta.id.0) else {
+                continue;
+            };
+            if uplink_qos(&meta, specs).no_drop != now {
+                return Err(format!(
+                    "topics[\"{}\"].no_drop: cannot change while {} flows (its messages are {} \
+                     numbered for the hub's confirmation); change it in the agent's YAML and \
+                     restart it",
+                    meta.name,
+                    meta.name,
+                    if now { "" } else { "not " }
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Replaces the per-topic QoS (checked with [`UplinkControl::check_topic_qos`]) and
+    /// gives every flowing topic its new QoS at once.
+    pub fn set_topic_qos(&self, specs: Vec<(TopicName, TopicQosSpec)>) {
+        *self.specs.write().unwrap_or_else(|p| p.into_inner()) = specs;
+        let now = Instant::now();
+        for meta in self.carried() {
+            if let Err(e) = self.outbox.requalify(&meta, now) {
+                tracing::warn!("topic {}: the new QoS was not applied: {e}", meta.name);
+            }
+        }
+    }
+
+    /// Replaces the topic names (`remap`, `subscribe`); if they changed, the link
+    /// reconnects at once to announce them.
+    pub fn set_names(&self, names: NameMap) {
+        let mut now = self.names.write().unwrap_or_else(|p| p.into_inner());
+        if now.remap == names.remap && now.subscribe == names.subscribe {
+            return;
+        }
+        *now = names;
+        drop(now);
+        self.renamed.notify_one();
+    }
+}
+
 /// Id of the `SUBSCRIBE` that asks the hub for the fleet services this robot may call.
 const SERVICES_SUBSCRIPTION: u32 = 0x7fff_0000;
 
 pub struct Uplink {
     cfg: UplinkConfig,
+    /// What a runtime change of the configuration changes here.
+    control: Arc<UplinkControl>,
     router: Arc<Router>,
     client: ClientId,
     outbox: Arc<Outbox>,
@@ -327,31 +433,13 @@ impl Uplink {
             }
             None => (ReliableOut::in_memory(), Vec::new()),
         };
-        let specs = cfg.topic_qos.clone();
-        let qos_for: QosFor = Arc::new(move |meta: &TopicMeta| {
-            let mut base = if meta.name.as_str() == fleetlink_record::blackbox::DATA_TOPIC {
-                crate::blackbox::data_qos()
-            } else {
-                TopicQos::default_for_topic(meta.name.as_str(), &meta.schema.type_name)
-            };
-            if meta.no_drop {
-                // A robot's no-drop stream (on a site hub, carried upstream by this
-                // uplink) stays no-drop on the next hop. The hub cannot slow the robot's
-                // link down for it, so its queue is long (a durable outbox, which a site
-                // hub has by default, holds any number, up to its byte bound).
-                base.no_drop = true;
-                base.policy = fleetlink_qos::Policy::Fifo;
-                base.rate_limit_hz = None;
-                base.queue = base.queue.max(INHERITED_NO_DROP_QUEUE);
-            }
-            match specs.iter().find(|(n, _)| *n == meta.name) {
-                Some((_, spec)) => spec.resolve(&base).unwrap_or_else(|e| {
-                    tracing::warn!("topic {}: {e}; using the defaults for its type", meta.name);
-                    base
-                }),
-                None => base,
-            }
-        });
+        let specs = Arc::new(std::sync::RwLock::new(cfg.topic_qos.clone()));
+        let qos_for: QosFor = {
+            let specs = specs.clone();
+            Arc::new(move |meta: &TopicMeta| {
+                uplink_qos(meta, &specs.read().unwrap_or_else(|p| p.into_inner()))
+            })
+        };
         let sched = SchedulerConfig {
             max_in_flight: cfg.max_in_flight,
             ..SchedulerConfig::default()
@@ -388,11 +476,20 @@ impl Uplink {
             attempt: 0,
             hub: first,
         });
+        let control = Arc::new(UplinkControl {
+            specs,
+            names: std::sync::RwLock::new(cfg.names.clone()),
+            renamed: tokio::sync::Notify::new(),
+            router: router.clone(),
+            client,
+            outbox: outbox.clone(),
+        });
         Ok(Uplink {
             cfg,
             router,
             client,
             outbox,
+            control,
             calls_rx,
             state,
             stats: Arc::default(),
@@ -403,8 +500,13 @@ impl Uplink {
         self.state.subscribe()
     }
 
+    /// What changes the uplink's names and per-topic QoS while it runs.
+    pub fn control(&self) -> Arc<UplinkControl> {
+        self.control.clone()
+    }
+
     /// Connects, serves, reconnects — until `shutdown`.
-    pub async fn run(self, shutdown: CancellationToken) {
+    pub async fn run(mut self, shutdown: CancellationToken) {
         let journal = {
             let outbox = self.outbox.clone();
             tokio::spawn(async move {
@@ -429,6 +531,8 @@ impl Uplink {
                 break;
             };
             attempt += 1;
+            // Names changed at run time apply from the next connection on.
+            self.cfg.names = self.control.names();
             tracing::debug!(robot = %self.cfg.robot, "trying hub {url} (attempt {attempt})");
             self.state.send_replace(LinkState::Connecting {
                 attempt,
@@ -441,6 +545,11 @@ impl Uplink {
                 break;
             }
             let (reason, wait) = match outcome {
+                Ok(reason) if reason == RENAMED => {
+                    attempt = 0;
+                    tracing::info!(robot = %self.cfg.robot, "{RENAMED}: reconnecting to {url} at once");
+                    continue;
+                }
                 Ok(reason) => {
                     attempt = 0;
                     (format!("{reason} (hub {url})"), failover.after_session())
@@ -804,6 +913,9 @@ impl Uplink {
                     }
                 }
                 _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
+                () = self.control.renamed.notified() => {
+                    session.close(CloseReason::Local(RENAMED.into()));
+                }
                 () = topics.changed() => {
                     self.announce_new(&topics, &namespace, mirror_subs.as_mut(), &mut session)
                 }

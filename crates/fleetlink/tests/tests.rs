@@ -21,6 +21,7 @@ mod e2e {
     mod recording;
     mod relay;
     mod rosbridge;
+    mod runtime_config;
     mod shutdown;
     mod site;
     mod tls;

@@ -218,6 +218,7 @@ pub async fn start_agent_sim(
         ros2: None,
         rosbridge: None,
         blackbox: None,
+        runtime: None,
     })
     .await
 }

@@ -64,6 +64,9 @@ pub struct HubGate {
     /// another, so this saves splitting the name and a registry lookup per message (the
     /// identity and `acting_as` never change for a gate).
     last_input: Option<(String, u64, bool)>,
+    /// Calls of robots' configuration services are let through (the gate of a site hub's
+    /// link upstream: the hub there changes its robots' configuration through them).
+    config_calls: bool,
     /// Decisions by router topic id, with the rules' generation they were made in: the
     /// publish and delivery paths ask once per message, and an id is cheaper to look up
     /// than a name.
@@ -82,7 +85,22 @@ impl HubGate {
             reported: Default::default(),
             acting_as: None,
             last_input: None,
+            config_calls: false,
             by_topic: HashMap::default(),
+        }
+    }
+
+    /// A gate for the link to a hub upstream (a site hub's): as [`HubGate::new`], and
+    /// the hub there may call the robots' configuration services (its API checks who may
+    /// change a robot's configuration).
+    pub fn for_upstream(
+        security: Arc<Security>,
+        registry: Arc<Registry>,
+        identity: Identity,
+    ) -> HubGate {
+        HubGate {
+            config_calls: true,
+            ..HubGate::new(security, registry, identity)
         }
     }
 
@@ -143,8 +161,32 @@ impl HubGate {
     }
 }
 
+/// Whether `name` is one of a robot's configuration services (`/<robot>/fleetlink/config/
+/// get` and `…/set`): only the hub calls them, for `/api/v1/robots/<robot>/config`.
+pub fn is_config_service(name: &str) -> bool {
+    use fleetlink_relay::names::{CONFIG_GET_SERVICE, CONFIG_SET_SERVICE};
+    name.strip_suffix(CONFIG_GET_SERVICE)
+        .or_else(|| name.strip_suffix(CONFIG_SET_SERVICE))
+        .is_some_and(|robot| robot.len() > 1 && robot.starts_with('/'))
+}
+
 impl Gate for HubGate {
     fn allows(&mut self, name: &str, op: Op) -> bool {
+        if op == Op::CallService && !self.config_calls && is_config_service(name) {
+            if self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
+                let rec = AuditRecord::operation(
+                    self.identity(),
+                    audit_action(op),
+                    name,
+                    None,
+                    false,
+                    UnixTime::now(),
+                )
+                .with_detail("a robot's configuration changes through the hub's API only");
+                self.security.audit.record(rec);
+            }
+            return false;
+        }
         let d = self.access.decide(name, operation(op));
         if !d.allowed && self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
             let rec = AuditRecord::operation(
@@ -217,6 +259,7 @@ impl Gate for HubGate {
             reported: Default::default(),
             acting_as: self.acting_as.clone(),
             last_input: None,
+            config_calls: self.config_calls,
             by_topic: HashMap::default(),
         })
     }

@@ -253,6 +253,11 @@ impl Hub {
                 .clone()
                 .run(state.registry.clone(), token.clone()),
         );
+        // Robots' kept configuration changes, applied again as they connect.
+        tokio::spawn(crate::http::robot_config::keep_applied(
+            state.clone(),
+            token.clone(),
+        ));
         let app = crate::http::routes(state.clone())
             .route("/", get(root))
             .fallback(root)

@@ -51,8 +51,19 @@ pub struct RobotRecord {
     pub connects: i64,
 }
 
+/// The configuration changes the hub applied to a robot while it ran, as kept to apply
+/// again when it reconnects (`crate::http::robot_config`).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct KeptConfig {
+    /// The changes in force, as the agent answered them (JSON text).
+    pub overlay: String,
+    pub by: String,
+    pub at_ms: i64,
+}
+
 /// The PostgreSQL schema, one entry per version (never edit one that shipped; add one).
-const PG_MIGRATIONS: &[&str] = &["
+const PG_MIGRATIONS: &[&str] = &[
+    "
     CREATE TABLE robots (
         name TEXT PRIMARY KEY,
         first_seen_ms BIGINT NOT NULL,
@@ -71,7 +82,16 @@ const PG_MIGRATIONS: &[&str] = &["
         seq BIGINT NOT NULL,
         PRIMARY KEY (robot, topic)
     );
-"];
+",
+    "
+    CREATE TABLE robot_configs (
+        robot TEXT PRIMARY KEY,
+        overlay TEXT NOT NULL,
+        by_whom TEXT NOT NULL,
+        at_ms BIGINT NOT NULL
+    );
+",
+];
 
 #[derive(Clone)]
 pub struct Store {
@@ -116,6 +136,12 @@ impl Store {
                  epoch INTEGER NOT NULL,
                  seq INTEGER NOT NULL,
                  PRIMARY KEY (robot, topic)
+             );
+             CREATE TABLE IF NOT EXISTS robot_configs (
+                 robot TEXT PRIMARY KEY,
+                 overlay TEXT NOT NULL,
+                 by_whom TEXT NOT NULL,
+                 at_ms INTEGER NOT NULL
              );",
         )
         .map_err(|source| StoreError::Open { path, source })?;
@@ -181,6 +207,59 @@ impl Store {
                      ON CONFLICT (name) DO UPDATE SET last_seen_ms = $2, last_addr = $3,
                          connects = robots.connects + $4",
                     &[&name, &now, &addr, &connected],
+                )?;
+                Ok(())
+            }
+        }
+    }
+
+    /// The configuration changes kept for `robot`, if the hub applied any.
+    pub fn robot_config(&self, robot: &str) -> Result<Option<KeptConfig>, StoreError> {
+        let sql_lite = "SELECT overlay, by_whom, at_ms FROM robot_configs WHERE robot = ?1";
+        let sql_pg = "SELECT overlay, by_whom, at_ms FROM robot_configs WHERE robot = $1";
+        match &self.backend {
+            Backend::Sqlite(c) => Self::with(c, |c| {
+                let mut st = c.prepare(sql_lite)?;
+                let mut rows = st.query_map(params![robot], |r| {
+                    Ok(KeptConfig {
+                        overlay: r.get(0)?,
+                        by: r.get(1)?,
+                        at_ms: r.get(2)?,
+                    })
+                })?;
+                rows.next().transpose()
+            }),
+            Backend::Postgres(db) => Ok(db
+                .query(sql_pg, &[&robot])?
+                .first()
+                .map(|r| -> Result<KeptConfig, StoreError> {
+                    Ok(KeptConfig {
+                        overlay: r.try_get(0)?,
+                        by: r.try_get(1)?,
+                        at_ms: r.try_get(2)?,
+                    })
+                })
+                .transpose()?),
+        }
+    }
+
+    /// Keeps `overlay` as `robot`'s configuration changes, applied by `by` now.
+    pub fn set_robot_config(&self, robot: &str, overlay: &str, by: &str) -> Result<(), StoreError> {
+        let now = now_ms();
+        match &self.backend {
+            Backend::Sqlite(c) => Self::with(c, |c| {
+                c.execute(
+                    "INSERT INTO robot_configs (robot, overlay, by_whom, at_ms) VALUES (?1, ?2, ?3, ?4)
+                     ON CONFLICT(robot) DO UPDATE SET overlay = ?2, by_whom = ?3, at_ms = ?4",
+                    params![robot, overlay, by, now],
+                )
+                .map(|_| ())
+            }),
+            Backend::Postgres(db) => {
+                db.execute(
+                    "INSERT INTO robot_configs (robot, overlay, by_whom, at_ms) VALUES ($1, $2, $3, $4)
+                     ON CONFLICT (robot) DO UPDATE SET overlay = $2, by_whom = $3, at_ms = $4",
+                    &[&robot, &overlay, &by, &now],
                 )?;
                 Ok(())
             }

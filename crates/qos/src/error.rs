@@ -11,6 +11,12 @@ pub enum QosError {
     InvalidField { field: &'static str, reason: String },
     #[error("topic {0:?} is already registered with the scheduler")]
     DuplicateTopic(TopicId),
+    #[error("topic {0:?} is not registered with the scheduler")]
+    UnknownTopic(TopicId),
+    /// A registered topic's `no_drop` cannot change: its messages are in the no-drop
+    /// FIFO (or not), under the reliable layer's sequence numbers (or not).
+    #[error("`no_drop` of a topic that is already flowing cannot change")]
+    NoDropChange(TopicId),
     #[error("invalid {what}: {reason}")]
     InvalidParameter { what: &'static str, reason: String },
 }

@@ -141,6 +141,12 @@ impl<T> TopicQueue<T> {
                 reason: DropReason::RateLimit,
             };
         }
+        self.push_kept(item)
+    }
+
+    /// Queues `item` under the drop policy, past the rate limit (an item that was admitted
+    /// once, moved to a queue with new settings).
+    pub fn push_kept(&mut self, item: T) -> Push<T> {
         let cap = self.capacity;
         let policy = self.policy;
         let dropped = |item| Push::Dropped {

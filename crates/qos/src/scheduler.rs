@@ -190,28 +190,7 @@ impl<T: WireLen> Scheduler<T> {
         if self.index.contains_key(&id) {
             return Err(QosError::DuplicateTopic(id));
         }
-        let group = match self.groups.iter().position(|g| g.priority == qos.priority) {
-            Some(g) => g,
-            None => {
-                // Keep groups in descending priority, so equal scores favour the higher.
-                let at = self.groups.partition_point(|g| g.priority > qos.priority);
-                self.groups.insert(
-                    at,
-                    Group {
-                        priority: qos.priority,
-                        ready: BinaryHeap::new(),
-                    },
-                );
-                self.group_priority.insert(at, f64::from(qos.priority));
-                self.group_head.insert(at, f64::INFINITY);
-                for t in &mut self.topics {
-                    if t.group >= at {
-                        t.group += 1;
-                    }
-                }
-                at
-            }
-        };
+        let group = self.group_for(qos.priority);
         let lane = if qos.no_drop {
             // A durable outbox sets a queue length that only its byte bound limits.
             self.no_drop.reserve(qos.queue.min(1024));
@@ -235,6 +214,89 @@ impl<T: WireLen> Scheduler<T> {
         });
         self.index.insert(id, index);
         Ok(())
+    }
+
+    /// Gives registered `topic` a new `qos` (a configuration changed while it flows): its
+    /// priority group, queue length, drop policy and rate limit. What it has queued stays
+    /// queued, oldest first, as far as the new queue holds it (the rest counts as dropped
+    /// by policy, returned). `no_drop` cannot change ([`QosError::NoDropChange`]).
+    pub fn set_qos(
+        &mut self,
+        topic: TopicId,
+        qos: TopicQos,
+        now: Nanos,
+    ) -> Result<Vec<T>, QosError> {
+        qos.validate()?;
+        let index = *self
+            .index
+            .get(&topic)
+            .ok_or(QosError::UnknownTopic(topic))?;
+        let was_no_drop = matches!(self.topics[index as usize].lane, Lane::NoDrop { .. });
+        if was_no_drop != qos.no_drop {
+            return Err(QosError::NoDropChange(topic));
+        }
+        // Out of its group's ready heap (it goes back below, into its new group's).
+        let old_group = self.topics[index as usize].group;
+        if self.topics[index as usize].ready {
+            self.groups[old_group]
+                .ready
+                .retain(|Reverse((_, i))| *i != index);
+            self.refresh_head(old_group);
+            self.topics[index as usize].ready = false;
+        }
+        let group = self.group_for(qos.priority);
+        let t = &mut self.topics[index as usize];
+        t.group = group;
+        let mut dropped = Vec::new();
+        match &mut t.lane {
+            Lane::NoDrop { capacity, .. } => *capacity = qos.queue,
+            Lane::Queue(queue) => {
+                let mut new = TopicQueue::with_seed(&qos, u64::from(topic.0));
+                while let Some(item) = queue.pop(now) {
+                    // Re-queued, not offered anew: the rate limit applies to arrivals.
+                    match new.push_kept(item) {
+                        Push::Dropped { item, .. } | Push::Backpressure(item) => dropped.push(item),
+                        _ => {}
+                    }
+                }
+                *queue = new;
+            }
+        }
+        let t = &mut self.topics[index as usize];
+        if let Lane::Queue(queue) = &t.lane
+            && !t.held
+            && !queue.is_empty()
+        {
+            t.ready = true;
+            let since = t.last_sent.unwrap_or(now);
+            self.groups[group].ready.push(Reverse((since, index)));
+            self.refresh_head(group);
+        }
+        Ok(dropped)
+    }
+
+    /// The index of the group of `priority`, made if there is none yet (groups are kept
+    /// in descending priority, so equal scores favour the higher).
+    fn group_for(&mut self, priority: f32) -> usize {
+        if let Some(g) = self.groups.iter().position(|g| g.priority == priority) {
+            return g;
+        }
+        let at = self.groups.partition_point(|g| g.priority > priority);
+        self.groups.insert(
+            at,
+            Group {
+                priority,
+                ready: BinaryHeap::new(),
+            },
+        );
+        self.group_priority.insert(at, f64::from(priority));
+        self.group_head.insert(at, f64::INFINITY);
+        for t in &mut self.topics {
+            if t.group >= at {
+                t.group += 1;
+            }
+        }
+        at
     }
 
     /// Offers a message of `topic` arriving at `now`. Drops (by rate limit or policy) and

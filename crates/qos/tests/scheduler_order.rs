@@ -295,3 +295,49 @@ fn predicted_rates_match_the_scheduler(policy: Policy, queue: usize) {
         "{predicted:?}"
     );
 }
+
+#[test]
+fn a_new_qos_moves_a_flowing_topic_and_keeps_what_it_queued() {
+    // A and B wait equally at p = 1; B raised to p = 5 goes first, with its three queued
+    // messages kept in order as far as its new queue of two holds them (drop_oldest: the
+    // oldest goes).
+    let mut s = sched(8);
+    let fifo = |priority, queue| TopicQos {
+        priority,
+        policy: Policy::DropOldest,
+        queue,
+        ..TopicQos::default()
+    };
+    s.add_topic(A, fifo(1.0, 4)).unwrap();
+    s.add_topic(B, fifo(1.0, 4)).unwrap();
+    let t0 = Nanos::from_secs(1);
+    let _ = s.offer(A, msg(1, 10), t0);
+    for seq in 1..=3 {
+        let _ = s.offer(B, msg(seq, 10), t0);
+    }
+    let dropped = s.set_qos(B, fifo(5.0, 2), t0).unwrap();
+    assert_eq!(dropped.iter().map(|m| m.seq).collect::<Vec<_>>(), vec![1]);
+    let order: Vec<(TopicId, u64)> =
+        std::iter::from_fn(|| s.poll_next(t0).map(|(t, m)| (t, m.seq))).collect();
+    assert_eq!(order, vec![(B, 2), (B, 3), (A, 1)]);
+    // A rate limit set later applies to what arrives from then on.
+    let limited = TopicQos {
+        rate_limit_hz: Some(1.0),
+        ..fifo(1.0, 4)
+    };
+    s.set_qos(A, limited, t0).unwrap();
+    let t1 = Nanos::from_secs(2);
+    assert_eq!(s.offer(A, msg(2, 10), t1), Push::Queued);
+    assert!(matches!(
+        s.offer(A, msg(3, 10), t1 + Nanos::from_millis(10)),
+        Push::Dropped { .. }
+    ));
+    // no_drop cannot change on a registered topic; an unknown topic is refused.
+    let no_drop = TopicQos {
+        no_drop: true,
+        policy: Policy::Fifo,
+        ..fifo(1.0, 4)
+    };
+    assert!(s.set_qos(A, no_drop, t1).is_err());
+    assert!(s.set_qos(C, fifo(1.0, 4), t1).is_err());
+}

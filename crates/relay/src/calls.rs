@@ -677,6 +677,11 @@ impl Calls {
         send(out);
     }
 
+    /// `client` no longer hears about services (until it watches again).
+    pub fn unwatch(&self, client: ClientId) {
+        self.lock().watches.remove(&client);
+    }
+
     /// Every service, sorted by name.
     pub fn services(&self) -> Vec<Arc<ServiceInfo>> {
         let mut v: Vec<_> = self.lock().services.values().cloned().collect();

@@ -129,6 +129,14 @@ impl NameFilter {
     }
 }
 
+/// A robot's configuration service answering with the configuration in force (the
+/// agent's local name; on the hub `/<robot>/fleetlink/config/get`).
+pub const CONFIG_GET_SERVICE: &str = "/fleetlink/config/get";
+/// A robot's configuration service applying a change (JSON `{"change": TEXT, "by": WHO}`).
+pub const CONFIG_SET_SERVICE: &str = "/fleetlink/config/set";
+/// The configuration services' type name (their requests and answers are JSON).
+pub const CONFIG_SERVICE_TYPE: &str = "fleetlink/RuntimeConfig";
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -123,6 +123,34 @@ struct Demand {
 }
 
 impl Demand {
+    /// Notes what `topic`'s QoS `q` asks of the demand (flows always, an age limit, pull,
+    /// compression), replacing what an earlier QoS asked; returns `q` as the scheduler
+    /// takes it.
+    fn follow_qos(&mut self, topic: u32, mut q: TopicQos, durable: bool) -> TopicQos {
+        self.always.remove(&topic);
+        self.max_age.remove(&topic);
+        self.pull.remove(&topic);
+        self.compression.remove(&topic);
+        if q.always || q.no_drop {
+            self.always.insert(topic);
+        }
+        if let Some(ms) = q.max_age_ms.filter(|_| !q.no_drop) {
+            self.max_age.insert(topic, Duration::from_millis(ms));
+        }
+        if q.mode == fleetlink_qos::Mode::Pull && !q.no_drop {
+            self.pull.insert(topic);
+        }
+        if q.compression != fleetlink_qos::Compression::None {
+            self.compression.insert(topic, q.compression);
+        }
+        if q.no_drop && durable {
+            // Waiting messages are on disk too: the journal's byte bound limits them,
+            // not a count.
+            q.queue = usize::MAX;
+        }
+        q
+    }
+
     /// Keeps `msg` as its topic's latest, if it fits the bound with the others.
     fn keep_latest(&mut self, topic: u32, msg: &Arc<Message>) {
         if let Some(old) = self.latest.remove(&topic) {
@@ -324,24 +352,7 @@ impl Outbox {
                 ..
             } => {
                 if known.insert(tid) {
-                    let mut q = qos_for(topic);
-                    if q.always || q.no_drop {
-                        demand.always.insert(tid);
-                    }
-                    if let Some(ms) = q.max_age_ms.filter(|_| !q.no_drop) {
-                        demand.max_age.insert(tid, Duration::from_millis(ms));
-                    }
-                    if q.mode == fleetlink_qos::Mode::Pull && !q.no_drop {
-                        demand.pull.insert(tid);
-                    }
-                    if q.compression != fleetlink_qos::Compression::None {
-                        demand.compression.insert(tid, q.compression);
-                    }
-                    if q.no_drop && reliable.is_durable() {
-                        // Waiting messages are on disk too: the journal's byte bound
-                        // limits them, not a count.
-                        q.queue = usize::MAX;
-                    }
+                    let q = demand.follow_qos(tid, qos_for(topic), reliable.is_durable());
                     if let Err(e) = sched.add_topic(QosTopic(tid), q) {
                         tracing::warn!("topic {}: invalid QoS ({e}); using defaults", topic.name);
                         let _ = sched.add_topic(QosTopic(tid), TopicQos::default());
@@ -539,6 +550,56 @@ impl Outbox {
             used_bytes: b.used(),
             thinned: sched.thinned_since(since).map(|t| t.0).collect(),
         })
+    }
+
+    /// Gives `topic` its owner's per-topic configuration anew (it changed while the topic
+    /// flows: [`Scheduler::set_qos`]). A topic that has not flowed yet gets it when it
+    /// does; a plain outbox has no per-topic configuration.
+    pub fn requalify(
+        &self,
+        topic: &TopicMeta,
+        now: Instant,
+    ) -> Result<(), fleetlink_qos::QosError> {
+        let mut st = self.lock();
+        let Service::Scheduled {
+            sched,
+            origin,
+            qos_for,
+            known,
+            reliable,
+            demand,
+            ..
+        } = &mut st.service
+        else {
+            return Ok(());
+        };
+        let tid = topic.id.0;
+        if !known.contains(&tid) {
+            return Ok(());
+        }
+        let q = qos_for(topic);
+        if sched.is_no_drop(QosTopic(tid)) != q.no_drop {
+            return Err(fleetlink_qos::QosError::NoDropChange(QosTopic(tid)));
+        }
+        let q = demand.follow_qos(tid, q, reliable.is_durable());
+        let dropped = sched.set_qos(QosTopic(tid), q, Nanos::since(*origin, now))?;
+        self.dropped.fetch_add(dropped.len() as u64, Relaxed);
+        drop(st);
+        // The demand may have changed (a topic that flows always now).
+        self.interest.notify_waiters();
+        self.notify.notify_one();
+        Ok(())
+    }
+
+    /// Whether `topic` (a router topic id) flows as a no-drop topic; `None` before it
+    /// first flowed, and for a plain outbox.
+    pub fn known_no_drop(&self, topic: u32) -> Option<bool> {
+        match &self.lock().service {
+            Service::Scheduled { sched, known, .. } if known.contains(&topic) => {
+                Some(sched.is_no_drop(QosTopic(topic)))
+            }
+            _ => None,
+        }
     }
 
     /// The QoS a scheduled outbox gives `topic` (its owner's per-topic configuration);

@@ -78,15 +78,15 @@ pub async fn run(
     if node.opts.parameters {
         fleetlink_relay::params::advertise_services(&router.calls, client);
     }
-    for re in &node.opts.offer.include {
-        router.calls.watch(client, re.clone());
+    let mut changes = node.opts.changes.clone();
+    if let Some(rx) = &mut changes {
+        // A change made before the node started is in force from the start.
+        *node.live.write().unwrap_or_else(|p| p.into_inner()) =
+            Arc::new(rx.borrow_and_update().clone());
     }
-    for name in &node.opts.subscribe {
-        if let Err(e) = router.subscribe(client, Target::Exact(name.clone()), SubOptions::default())
-        {
-            tracing::warn!("ros1: cannot subscribe to {name}: {e}");
-        }
-    }
+    let mut subscribed = std::collections::HashMap::new();
+    follow_offers(&node).await;
+    follow_subscriptions(&node, &mut subscribed).await;
     let tasks = [
         tokio::spawn(crate::node::serve_slave(
             node.clone(),
@@ -132,6 +132,13 @@ pub async fn run(
                 }
             }
             Some(m) = peer_rx.recv() => on_peer(&node, m),
+            Some(new) = next_change(&mut changes) => {
+                tracing::info!("ros1: what crosses changed (runtime configuration)");
+                *node.live.write().unwrap_or_else(|p| p.into_inner()) = Arc::new(new);
+                follow_offers(&node).await;
+                follow_subscriptions(&node, &mut subscribed).await;
+                node.rediscover.notify_one();
+            }
         }
     }
     for t in tasks {
@@ -145,6 +152,96 @@ pub async fn run(
     unregister_all(&node).await;
     router.disconnect(client);
     Ok(())
+}
+
+/// The next runtime change of the options, if the node has a source of them (pending
+/// forever otherwise, and once the source is gone).
+async fn next_change(
+    changes: &mut Option<tokio::sync::watch::Receiver<Ros1Options>>,
+) -> Option<Ros1Options> {
+    if let Some(rx) = changes {
+        if rx.changed().await.is_ok() {
+            return Some(rx.borrow_and_update().clone());
+        }
+        *changes = None;
+    }
+    std::future::pending().await
+}
+
+/// Watches the fleet services the options offer to local nodes, and withdraws from the
+/// master those they no longer do (after a runtime change).
+async fn follow_offers(node: &Arc<Node>) {
+    let opts = node.live();
+    let gone: Vec<String> = {
+        let mut st = node.lock();
+        let names: Vec<String> = st
+            .offered
+            .keys()
+            .filter(|n| !opts.offer.matches(n))
+            .cloned()
+            .collect();
+        for n in &names {
+            st.offered.remove(n);
+            st.registered_services.remove(n);
+        }
+        names
+    };
+    for name in gone {
+        let _ = node
+            .master
+            .unregister_service(&name, &node.service_api)
+            .await;
+        tracing::info!("ros1: fleet service {name} no longer offered to local nodes");
+    }
+    // Watched anew: the services that match now are told at once.
+    node.router.calls.unwatch(node.client);
+    for re in &opts.offer.include {
+        node.router.calls.watch(node.client, re.clone());
+    }
+}
+
+/// Subscribes the router topics the options publish into the graph, and lets go of those
+/// they no longer do (unregistered as publisher, their subscribers' connections closed).
+async fn follow_subscriptions(
+    node: &Arc<Node>,
+    subscribed: &mut std::collections::HashMap<String, fleetlink_relay::router::SubscriptionId>,
+) {
+    let opts = node.live();
+    let gone: Vec<String> = subscribed
+        .keys()
+        .filter(|k| !opts.subscribe.iter().any(|n| n.as_str() == k.as_str()))
+        .cloned()
+        .collect();
+    for name in gone {
+        if let Some(sid) = subscribed.remove(&name) {
+            node.router.unsubscribe(node.client, sid);
+        }
+        let publication = {
+            let mut st = node.lock();
+            st.registered_pubs.remove(&name);
+            st.pubs.remove(&name)
+        };
+        if let Some(p) = publication {
+            p.close();
+        }
+        let _ = node.master.unregister_publisher(&name).await;
+        tracing::info!("ros1: no longer publishing {name} into the graph");
+    }
+    for name in &opts.subscribe {
+        if subscribed.contains_key(name.as_str()) {
+            continue;
+        }
+        match node.router.subscribe(
+            node.client,
+            Target::Exact(name.clone()),
+            SubOptions::default(),
+        ) {
+            Ok(sid) => {
+                subscribed.insert(name.to_string(), sid);
+            }
+            Err(e) => tracing::warn!("ros1: cannot subscribe to {name}: {e}"),
+        }
+    }
 }
 
 /// A hub message for the graph: published as it arrived when it is ROS 1 already,
@@ -379,7 +476,7 @@ fn on_peer(node: &Arc<Node>, m: PeerMsg) {
         PeerMsg::Cancel(_) => {}
         PeerMsg::Changed(ServiceChange::Added(info)) => {
             let name = info.name.as_str();
-            if info.action || info.provider == node.client || !node.opts.offer.matches(name) {
+            if info.action || info.provider == node.client || !node.live().offer.matches(name) {
                 return;
             }
             let srv_type = srv_type_of(&info.schema.type_name);
@@ -500,6 +597,7 @@ async fn discovery(node: Arc<Node>, shutdown: CancellationToken) {
     loop {
         tokio::select! {
             _ = tick.tick() => {}
+            _ = node.rediscover.notified() => {}
             _ = shutdown.cancelled() => return,
         }
         let pid = match node.master.pid().await {
@@ -582,7 +680,9 @@ async fn follow_graph(node: &Arc<Node>) {
     for s in services {
         register_service(node, &s).await;
     }
-    if node.opts.publish.is_empty() && node.opts.expose.is_empty() {
+    let opts = node.live();
+    let following = !node.lock().subs.is_empty() || !node.lock().exposed.is_empty();
+    if opts.publish.is_empty() && opts.expose.is_empty() && !following {
         return;
     }
     let state = match node.master.system_state().await {
@@ -593,11 +693,11 @@ async fn follow_graph(node: &Arc<Node>) {
         }
     };
     let me = node.opts.node_name.as_str();
-    if !node.opts.publish.is_empty() {
+    {
         let candidates = state
             .publishers
             .iter()
-            .filter(|(t, nodes)| node.opts.publish.matches(t) && nodes.iter().any(|n| n != me));
+            .filter(|(t, nodes)| opts.publish.matches(t) && nodes.iter().any(|n| n != me));
         // Types are needed only for topics not bridged yet: a steady graph costs one call
         // a period, not two.
         let new_topic = {
@@ -620,11 +720,11 @@ async fn follow_graph(node: &Arc<Node>) {
             .collect();
         follow_topics(node, &wanted).await;
     }
-    if !node.opts.expose.is_empty() {
+    {
         let wanted: Vec<String> = state
             .services
             .iter()
-            .filter(|(s, nodes)| node.opts.expose.matches(s) && !nodes.iter().any(|n| n == me))
+            .filter(|(s, nodes)| opts.expose.matches(s) && !nodes.iter().any(|n| n == me))
             .map(|(s, _)| s.clone())
             .collect();
         follow_services(node, &wanted).await;
@@ -641,10 +741,15 @@ async fn follow_topics(node: &Arc<Node>, wanted: &[(String, String)]) {
             .collect();
         // A topic whose publishers all left the master's list is dropped once its
         // connections ended too (publishers that outlived a master restart keep it).
+        // A topic the options no longer include goes at once, connections and all.
+        let opts = node.live();
         let gone = st
             .subs
             .iter()
-            .filter(|(t, s)| !wanted.iter().any(|(w, _)| w == *t) && s.conns.is_empty())
+            .filter(|(t, s)| {
+                !wanted.iter().any(|(w, _)| w == *t)
+                    && (s.conns.is_empty() || !opts.publish.matches(t))
+            })
             .map(|(t, _)| t.clone())
             .collect();
         (new, gone)
@@ -673,12 +778,16 @@ async fn follow_topics(node: &Arc<Node>, wanted: &[(String, String)]) {
         }
     }
     for topic in gone {
-        node.lock().subs.remove(&topic);
+        if let Some(sub) = node.lock().subs.remove(&topic) {
+            for c in sub.conns.values() {
+                c.abort.abort();
+            }
+        }
         let _ = node.master.unregister_subscriber(&topic).await;
         if let Ok(name) = TopicName::parse(&topic) {
             node.router.unadvertise(node.client, &name);
         }
-        tracing::info!("ros1: {topic} has no publisher any more; no longer bridged");
+        tracing::info!("ros1: {topic} is no longer bridged (no publisher, or not in ros1.publish)");
     }
 }
 

@@ -79,6 +79,15 @@ pub struct Held {
 const HELD_MAX: usize = 10;
 
 impl Publication {
+    /// Ends the publication: its subscribers' connections close (their queues' senders
+    /// go) and nothing is kept for late ones.
+    pub fn close(&self) {
+        let mut out = self.out.lock().unwrap_or_else(|p| p.into_inner());
+        out.conns.clear();
+        out.last = None;
+        out.held = None;
+    }
+
     /// Queues a framed message for every connected subscriber (never waits), or holds it
     /// while the publication waits for its subscribers ([`Held`]).
     pub fn publish(&self, frame: Bytes) {
@@ -230,7 +239,12 @@ impl AdapterReport for Ros1Stats {
 }
 
 pub struct Node {
+    /// The options the node started with (what crosses is [`Node::live`]'s).
     pub opts: Ros1Options,
+    /// The options in force: `opts`, or the last runtime change of them.
+    pub live: std::sync::RwLock<Arc<Ros1Options>>,
+    /// Woken when what crosses changed: the discovery looks at once.
+    pub rediscover: tokio::sync::Notify,
     pub router: Arc<Router>,
     pub client: ClientId,
     pub master: Master,
@@ -310,6 +324,8 @@ impl Node {
         Node {
             service_api: format!("rosrpc://{}:{tcpros_port}", opts.host),
             tcpros_port,
+            live: std::sync::RwLock::new(Arc::new(opts.clone())),
+            rediscover: tokio::sync::Notify::new(),
             opts,
             router,
             client,
@@ -320,6 +336,11 @@ impl Node {
             next_conn: AtomicU64::new(1),
             updates: PublisherUpdates::default(),
         }
+    }
+
+    /// The options in force (what crosses may change while the node runs).
+    pub fn live(&self) -> Arc<Ros1Options> {
+        self.live.read().unwrap_or_else(|p| p.into_inner()).clone()
     }
 
     pub fn lock(&self) -> std::sync::MutexGuard<'_, State> {
@@ -682,6 +703,7 @@ mod tests {
             discovery_period: std::time::Duration::from_secs(1),
             call_timeout: std::time::Duration::from_secs(1),
             parameters: false,
+            changes: None,
         };
         Node::new(opts, router, client, 1, 2, Arc::default())
     }

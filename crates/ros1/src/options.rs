@@ -28,6 +28,10 @@ pub struct Ros1Options {
     pub call_timeout: Duration,
     /// Provide rosapi's parameter services from the master's parameters (`crate::params`).
     pub parameters: bool,
+    /// Options that replace these while the bridge runs (a runtime configuration change):
+    /// what crosses (`publish`, `subscribe`, `expose`, `offer`) changes at once, without
+    /// disturbing the rest; the other fields stay as the bridge started.
+    pub changes: Option<tokio::sync::watch::Receiver<Ros1Options>>,
 }
 
 impl Ros1Options {

@@ -271,6 +271,8 @@ pub(crate) struct State {
     down: HashMap<String, Option<Down>>,
     /// Router topics subscribed because a node of the graph reads them (`read`).
     read: HashMap<String, SubscriptionId>,
+    /// Router topics subscribed to be written into the graph (`subscribe`).
+    subscribed: HashMap<String, SubscriptionId>,
     /// Topics and services already reported (unknown type, mismatch): once each.
     reported: HashSet<String>,
     pub(crate) remotes: HashMap<String, Arc<Remote>>,
@@ -289,7 +291,10 @@ pub(crate) struct State {
 
 /// The bridge's shared half: the participant, the router client and the state.
 pub struct Bridge {
+    /// The options the bridge started with (what crosses is [`Bridge::live`]'s).
     pub opts: Ros2Options,
+    /// The options in force: `opts`, or the last runtime change of them.
+    live: std::sync::RwLock<Arc<Ros2Options>>,
     pub router: Arc<Router>,
     pub client: ClientId,
     pub stats: Arc<Stats>,
@@ -308,6 +313,11 @@ pub struct Bridge {
 impl Bridge {
     pub(crate) fn lock(&self) -> MutexGuard<'_, State> {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The options in force (what crosses may change while the bridge runs).
+    pub(crate) fn live(&self) -> Arc<Ros2Options> {
+        self.live.read().unwrap_or_else(|p| p.into_inner()).clone()
     }
 
     pub(crate) fn is_own(&self, guid: GUID) -> bool {
@@ -657,8 +667,15 @@ async fn run_participant(
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let own = dp.guid();
+    let mut changes = opts.changes.clone();
+    // A change made while the participant was away is in force from the start.
+    let live = match &mut changes {
+        Some(rx) => Arc::new(rx.borrow_and_update().clone()),
+        None => Arc::new(opts.clone()),
+    };
     let bridge = Arc::new(Bridge {
         opts,
+        live: std::sync::RwLock::new(live),
         router: router.clone(),
         client,
         stats: stats.clone(),
@@ -679,21 +696,8 @@ async fn run_participant(
     if bridge.opts.parameters {
         fleetlink_relay::params::advertise_services(&router.calls, client);
     }
-    for re in bridge
-        .opts
-        .offer
-        .include
-        .iter()
-        .chain(&bridge.opts.offer_actions.include)
-    {
-        router.calls.watch(client, re.clone());
-    }
-    for name in &bridge.opts.subscribe {
-        if let Err(e) = router.subscribe(client, Target::Exact(name.clone()), SubOptions::default())
-        {
-            tracing::warn!("ros2: cannot subscribe to {name}: {e}");
-        }
-    }
+    follow_offers(&bridge);
+    follow_subscriptions(&bridge);
     let mut tick = tokio::time::interval(bridge.opts.discovery_period);
     tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
     // While a new writer holds messages for its readers to be matched.
@@ -735,6 +739,13 @@ async fn run_participant(
             _ = tick.tick() => {
                 discover(&bridge);
                 node_info.refresh(&bridge);
+            }
+            Some(new) = next_change(&mut changes) => {
+                tracing::info!("ros2: what crosses changed (runtime configuration)");
+                *bridge.live.write().unwrap_or_else(|p| p.into_inner()) = Arc::new(new);
+                follow_offers(&bridge);
+                follow_subscriptions(&bridge);
+                discover(&bridge);
             }
             // (A change between two turns of this loop is seen at the next tick.)
             _ = ReadInterest::changed(interest) => follow_interest(&bridge, Instant::now()),
@@ -783,11 +794,112 @@ async fn run_participant(
     Ok(end)
 }
 
+/// The next runtime change of the options, if the bridge has a source of them (pending
+/// forever otherwise, and once the source is gone).
+async fn next_change(
+    changes: &mut Option<tokio::sync::watch::Receiver<Ros2Options>>,
+) -> Option<Ros2Options> {
+    if let Some(rx) = changes {
+        if rx.changed().await.is_ok() {
+            return Some(rx.borrow_and_update().clone());
+        }
+        *changes = None;
+    }
+    std::future::pending().await
+}
+
+/// Watches the fleet services and actions the options offer to local nodes, and stops
+/// offering those they no longer do (after a runtime change).
+fn follow_offers(bridge: &Arc<Bridge>) {
+    let opts = bridge.live();
+    let (services, actions) = {
+        let mut st = bridge.lock();
+        let services: Vec<_> = st
+            .offered
+            .keys()
+            .filter(|n| !opts.offer.matches(n))
+            .cloned()
+            .collect();
+        let actions: Vec<_> = st
+            .offered_actions
+            .keys()
+            .filter(|n| !opts.offer_actions.matches(n))
+            .cloned()
+            .collect();
+        (
+            services
+                .into_iter()
+                .filter_map(|n| st.offered.remove(&n).map(|o| (n, o)))
+                .collect::<Vec<_>>(),
+            actions
+                .into_iter()
+                .filter_map(|n| st.offered_actions.remove(&n).map(|a| (n, a)))
+                .collect::<Vec<_>>(),
+        )
+    };
+    for (name, o) in services {
+        o.task.abort();
+        tracing::info!("ros2: fleet service {name} no longer offered to local nodes");
+    }
+    for (name, a) in actions {
+        a.abort();
+        tracing::info!("ros2: fleet action {name} no longer offered to local nodes");
+    }
+    // Watched anew: the services that match now are told at once (those offered already
+    // stay as they are).
+    bridge.router.calls.unwatch(bridge.client);
+    for re in opts.offer.include.iter().chain(&opts.offer_actions.include) {
+        bridge.router.calls.watch(bridge.client, re.clone());
+    }
+}
+
+/// Subscribes the router topics the options write into the graph, and lets go of those
+/// they no longer do (with their DDS writers).
+fn follow_subscriptions(bridge: &Bridge) {
+    let opts = bridge.live();
+    let gone: Vec<(String, SubscriptionId)> = {
+        let mut st = bridge.lock();
+        let names: Vec<String> = st
+            .subscribed
+            .keys()
+            .filter(|k| !opts.subscribe.iter().any(|n| n.as_str() == k.as_str()))
+            .cloned()
+            .collect();
+        names
+            .into_iter()
+            .filter_map(|k| {
+                st.down.remove(&k);
+                st.subscribed.remove_entry(&k)
+            })
+            .collect()
+    };
+    for (name, sid) in gone {
+        bridge.router.unsubscribe(bridge.client, sid);
+        tracing::info!("ros2: no longer writing {name} into the graph");
+    }
+    for name in &opts.subscribe {
+        if bridge.lock().subscribed.contains_key(name.as_str()) {
+            continue;
+        }
+        match bridge.router.subscribe(
+            bridge.client,
+            Target::Exact(name.clone()),
+            SubOptions::default(),
+        ) {
+            Ok(sid) => {
+                bridge.lock().subscribed.insert(name.to_string(), sid);
+            }
+            Err(e) => tracing::warn!("ros2: cannot subscribe to {name}: {e}"),
+        }
+    }
+}
+
 /// One look at what discovery knows: starts and stops bridged topics, exposed services
 /// and actions.
 fn discover(bridge: &Arc<Bridge>) {
     let mut writers: HashMap<String, Vec<rustdds::discovery::DiscoveredWriterData>> =
         HashMap::new();
+    let opts = bridge.live();
     for w in bridge.dp.discovered_writers() {
         let p = &w.publication_topic_data;
         if bridge.is_own(p.key) {
@@ -795,7 +907,7 @@ fn discover(bridge: &Arc<Bridge>) {
         }
         if let Some(DdsName::Topic(ros)) = DdsName::parse(&p.topic_name)
             && !names::is_hidden(&ros)
-            && bridge.opts.publish.matches(&ros)
+            && opts.publish.matches(&ros)
         {
             writers.entry(ros).or_default().push(w);
         }
@@ -830,7 +942,8 @@ fn discover(bridge: &Arc<Bridge>) {
 /// other than the bridge's), and lets go of those whose last reader went: what no node
 /// reads is not asked for, so its robot does not send it.
 fn follow_readers(bridge: &Bridge) {
-    if bridge.opts.read.is_empty() {
+    let opts = bridge.live();
+    if opts.read.is_empty() && bridge.lock().read.is_empty() {
         return;
     }
     let mut readers: HashSet<String> = HashSet::new();
@@ -841,8 +954,8 @@ fn follow_readers(bridge: &Bridge) {
         }
         if let Some(DdsName::Topic(ros)) = DdsName::parse(s.topic_name())
             && !names::is_hidden(&ros)
-            && bridge.opts.read.matches(&ros)
-            && !bridge.opts.subscribe.iter().any(|n| n.as_str() == ros)
+            && opts.read.matches(&ros)
+            && !opts.subscribe.iter().any(|n| n.as_str() == ros)
         {
             readers.insert(ros);
         }

@@ -36,6 +36,10 @@ pub struct Ros2Options {
     /// The robot's ROS 2 distribution (`ros2.distro`, else `ROS_DISTRO`), for the layout
     /// of `ros_discovery_info` ([`crate::node_info`]); `None`: learned from the graph.
     pub distro: Option<String>,
+    /// Options that replace these while the bridge runs (a runtime configuration change):
+    /// what crosses (`publish`, `subscribe`, `read`, services and actions) changes at
+    /// once, without disturbing the rest; the other fields stay as the bridge started.
+    pub changes: Option<tokio::sync::watch::Receiver<Ros2Options>>,
 }
 
 impl Ros2Options {

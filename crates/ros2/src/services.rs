@@ -383,6 +383,7 @@ impl ReplyTo {
 pub(crate) fn discover(bridge: &Arc<Bridge>) {
     let mut services: HashMap<String, (String, Mapping)> = HashMap::new();
     let mut actions: HashMap<String, (String, Mapping)> = HashMap::new();
+    let opts = bridge.live();
     for r in bridge.dp.discovered_readers() {
         let s = &r.subscription_topic_data;
         if bridge.is_own(s.key()) {
@@ -393,13 +394,13 @@ pub(crate) fn discover(bridge: &Arc<Bridge>) {
         };
         let mapping = Mapping::of(r.reader_proxy.remote_reader_guid);
         if let Some(action) = names::action_of_send_goal(&service) {
-            if bridge.opts.expose_actions.matches(action)
+            if opts.expose_actions.matches(action)
                 && let Some(t) = names::action_type(s.type_name())
             {
                 actions.insert(action.to_owned(), (t, mapping));
             }
         } else if !names::is_hidden(&service)
-            && bridge.opts.expose.matches(&service)
+            && opts.expose.matches(&service)
             && let Some(t) = names::service_type(s.type_name())
         {
             services.insert(service, (t, mapping));
@@ -638,9 +639,10 @@ pub(crate) fn on_peer(bridge: &Arc<Bridge>, m: PeerMsg) {
             if info.provider == bridge.client {
                 return;
             }
-            if info.action && bridge.opts.offer_actions.matches(name) {
+            let opts = bridge.live();
+            if info.action && opts.offer_actions.matches(name) {
                 offer_action(bridge, name, &info.schema.type_name);
-            } else if !info.action && bridge.opts.offer.matches(name) {
+            } else if !info.action && opts.offer.matches(name) {
                 offer(bridge, name, &info.schema.type_name);
             }
         }

@@ -107,6 +107,27 @@ impl LocationTree {
         matches!(&self.root.value, Node::Map(entries) if entries.iter().any(|(k, _)| k.value == key))
     }
 
+    /// The keys of the mapping at `path` (`&[]`: the document's top level), each with its
+    /// position; `None` when there is no mapping there.
+    pub(crate) fn keys_at(&self, path: &[&str]) -> Option<Vec<(String, LineCol)>> {
+        let mut node = &self.root;
+        for k in path {
+            let Node::Map(entries) = &node.value else {
+                return None;
+            };
+            node = &entries.iter().find(|(key, _)| key.value == *k)?.1;
+        }
+        match &node.value {
+            Node::Map(entries) => Some(
+                entries
+                    .iter()
+                    .map(|(k, _)| (k.value.clone(), line_col(k)))
+                    .collect(),
+            ),
+            _ => None,
+        }
+    }
+
     /// Position of the field at `path`: its key when `at_key` (for problems with the key
     /// itself, like a bad topic name in `remap`), otherwise its value. When the path is
     /// only partly present (a default that was never written), the deepest present

@@ -26,6 +26,7 @@ mod ros1;
 mod ros2;
 mod rosbridge;
 mod rosgw;
+pub mod runtime;
 mod sim;
 mod validate;
 
@@ -106,6 +107,10 @@ pub struct AgentConfig {
     /// The black box: chosen local topics kept on disk in MCAP, from which the hub can
     /// fetch a slice; `None` (the default) keeps none. See docs/recording.md.
     pub blackbox: Option<BlackBoxConfig>,
+    /// Where the changes made while the agent runs are kept, restored at its next start
+    /// (docs/runtime-config.md). Default `$XDG_STATE_HOME/fleetlink/<name>/runtime.json`
+    /// (`~/.local/state/…` without `XDG_STATE_HOME`).
+    pub runtime_file: Option<PathBuf>,
 }
 
 /// `blackbox:` — a ring buffer of local topics on the robot's disk, in MCAP segments, the
@@ -197,6 +202,7 @@ impl Default for AgentConfig {
             latest_cache_mb: 64,
             link: LinkSettings::default(),
             blackbox: None,
+            runtime_file: None,
         }
     }
 }
@@ -268,6 +274,9 @@ pub struct LocalRosbridgeConfig {
     /// `IP:PORT` to listen on (an IP literal, not a host name). Default `127.0.0.1:9090`.
     #[serde(deserialize_with = "socket_addr")]
     pub listen: SocketAddr,
+    /// The bearer token of the listener's configuration API (`GET`/`PUT /api/v1/config`,
+    /// docs/runtime-config.md). Default empty: the API is closed.
+    pub config_token: String,
 }
 
 impl Default for LocalRosbridgeConfig {
@@ -275,6 +284,7 @@ impl Default for LocalRosbridgeConfig {
         Self {
             enabled: true,
             listen: SocketAddr::from(([127, 0, 0, 1], 9090)),
+            config_token: String::new(),
         }
     }
 }
@@ -365,6 +375,15 @@ impl AgentConfig {
                 "(none)".to_owned()
             } else {
                 format!("(set, {} characters)", rb.token.chars().count())
+            });
+        }
+        if let Some(t) = value.pointer_mut("/local_rosbridge/config_token")
+            && let Some(l) = &self.local_rosbridge
+        {
+            *t = serde_json::Value::String(if l.config_token.is_empty() {
+                "(none)".to_owned()
+            } else {
+                format!("(set, {} characters)", l.config_token.chars().count())
             });
         }
         serde_saphyr::to_string(&value)
@@ -458,6 +477,35 @@ impl AgentConfig {
     /// Silence after which the hub link is declared dead: two heartbeats.
     pub fn link_timeout(&self) -> Duration {
         self.heartbeat() * 2
+    }
+
+    /// Where the runtime changes are kept: `runtime_file`, else the default in the user's
+    /// state directory; `None` when there is no home to put it in.
+    pub fn runtime_file_path(&self) -> Option<PathBuf> {
+        if let Some(f) = &self.runtime_file {
+            return Some(f.clone());
+        }
+        let state = std::env::var_os("XDG_STATE_HOME")
+            .filter(|d| !d.is_empty())
+            .map(PathBuf::from)
+            .or_else(|| {
+                std::env::var_os("HOME")
+                    .filter(|d| !d.is_empty())
+                    .map(|h| PathBuf::from(h).join(".local/state"))
+            })?;
+        Some(
+            state
+                .join("fleetlink")
+                .join(self.name.as_str())
+                .join("runtime.json"),
+        )
+    }
+
+    /// The local listener's configuration API token (empty: the API is closed).
+    pub fn local_config_token(&self) -> &str {
+        self.local_rosbridge
+            .as_ref()
+            .map_or("", |l| l.config_token.as_str())
     }
 
     /// Address of the local rosbridge listener, `None` when disabled.

@@ -52,6 +52,8 @@ pub enum AuditAction {
     AccessDenied,
     /// A recording started, stopped or removed (and every refused attempt).
     Recording,
+    /// A robot's configuration changed while it runs (and every refused attempt).
+    ConfigChange,
 }
 
 impl AuditAction {
@@ -71,6 +73,7 @@ impl AuditAction {
             AuditAction::CredentialChange => "credential_change",
             AuditAction::AccessDenied => "access_denied",
             AuditAction::Recording => "recording",
+            AuditAction::ConfigChange => "config_change",
         }
     }
 
@@ -91,6 +94,7 @@ impl AuditAction {
             CredentialChange,
             AccessDenied,
             Recording,
+            ConfigChange,
         ]
         .into_iter()
         .find(|a| a.as_str() == s)

@@ -155,7 +155,8 @@ pub fn check(
 pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
     let cfg = load(&args)?;
-    let opts = AgentOptions::from_config(&cfg).context("configuration")?;
+    // Changes made while it ran before are applied first (docs/runtime-config.md).
+    let opts = AgentOptions::changeable(&cfg).context("configuration")?;
     let transcoder = crate::transcoder(&args.msg_path)?;
     // One thread. The agent's work is moving bytes between sockets; on a multi-threaded
     // runtime most of its CPU went to waking threads (an ACK read on one, the writer it
@@ -174,6 +175,9 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         }
         if let Some(r) = &cfg.rosbridge {
             println!("  rosbridge client of: {}", r.url);
+        }
+        if let Some(f) = cfg.runtime_file_path() {
+            println!("  changes made at run time kept in: {}", f.display());
         }
         let stop = CancellationToken::new();
         let s = stop.clone();

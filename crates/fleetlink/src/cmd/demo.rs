@@ -70,8 +70,15 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             cfg.token = tokens.get_or_mint(&security, &format!("robot:{robot}"), |exp| {
                 Ok(security.store.add_robot_token(&robot, exp, now)?)
             })?;
+            // Changes made through the dashboard are kept with the demo's data.
+            cfg.runtime_file = Some(
+                args.data_dir
+                    .join("robots")
+                    .join(robot.as_str())
+                    .join("runtime.json"),
+            );
             let agent =
-                Agent::bind(AgentOptions::from_config(&cfg)?, crate::transcoder(&[])?).await?;
+                Agent::bind(AgentOptions::changeable(&cfg)?, crate::transcoder(&[])?).await?;
             robots.push(tokio::spawn(agent.run(stop.clone())));
         }
         println!("fleetlink demo: hub with {} simulated robots", args.robots);

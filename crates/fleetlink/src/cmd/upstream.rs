@@ -173,7 +173,7 @@ pub fn start(
     let identity = upstream_identity(group);
     up.upstream_gate = Some(fleetlink_agent::uplink::GateFactory(std::sync::Arc::new(
         move || {
-            Box::new(fleetlink_hub::security::HubGate::new(
+            Box::new(fleetlink_hub::security::HubGate::for_upstream(
                 state.security.clone(),
                 state.registry.clone(),
                 identity.clone(),

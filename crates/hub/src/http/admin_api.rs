@@ -177,6 +177,31 @@ fn require(
     resource: &str,
     intent: Intent,
 ) -> Result<(), ApiError> {
+    let action = match intent {
+        Intent::Read => AuditAction::AccessDenied,
+        Intent::Change if resource == "/rules" => AuditAction::RuleChange,
+        Intent::Change if resource == "/recordings" => AuditAction::Recording,
+        Intent::Change => AuditAction::CredentialChange,
+    };
+    require_or_audit(st, caller, resource, action)
+}
+
+/// Refuses (403, audited as `action`) unless the caller may administer `resource`.
+pub(crate) fn require_admin_as(
+    st: &HubState,
+    caller: &Identity,
+    resource: &str,
+    action: AuditAction,
+) -> Result<(), ApiError> {
+    require_or_audit(st, caller, resource, action)
+}
+
+fn require_or_audit(
+    st: &HubState,
+    caller: &Identity,
+    resource: &str,
+    action: AuditAction,
+) -> Result<(), ApiError> {
     if st
         .security
         .authz
@@ -185,12 +210,6 @@ fn require(
     {
         return Ok(());
     }
-    let action = match intent {
-        Intent::Read => AuditAction::AccessDenied,
-        Intent::Change if resource == "/rules" => AuditAction::RuleChange,
-        Intent::Change if resource == "/recordings" => AuditAction::Recording,
-        Intent::Change => AuditAction::CredentialChange,
-    };
     st.security.audit.record(
         AuditRecord::operation(caller, action, resource, None, false, UnixTime::now())
             .with_detail("admin API: not in the admin group and no admin rule"),

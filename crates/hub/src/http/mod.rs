@@ -24,6 +24,7 @@ pub mod dashboard;
 pub mod metrics;
 pub mod pull;
 pub mod recordings;
+pub mod robot_config;
 
 use std::sync::Arc;
 
@@ -37,6 +38,7 @@ pub fn routes(state: Arc<HubState>) -> axum::Router<Arc<HubState>> {
     let api = api::routes()
         .merge(admin_api::routes())
         .merge(recordings::routes())
+        .merge(robot_config::routes())
         .route("/metrics", get(metrics::handler))
         .route_layer(axum::middleware::from_fn_with_state(
             state,

@@ -212,6 +212,7 @@ fn options(master: &str) -> Ros1Options {
         discovery_period: Duration::from_millis(50),
         call_timeout: Duration::from_secs(2),
         parameters: true,
+        changes: None,
     }
 }
 

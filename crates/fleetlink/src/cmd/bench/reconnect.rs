@@ -115,6 +115,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             ros2: None,
             rosbridge: None,
             blackbox: None,
+            runtime: None,
         };
         let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;
         states.push(agent.link_state());
