@@ -927,6 +927,11 @@ fn discover(bridge: &Arc<Bridge>) {
     };
     for ros in gone {
         stop_up(bridge, &ros);
+        if opts.publish.matches(&ros) {
+            tracing::info!("ros2: {ros} has no local writers any more: unadvertised");
+        } else {
+            tracing::info!("ros2: {ros} is no longer in ros2.publish: unadvertised");
+        }
     }
     for (ros, ws) in writers {
         if !bridge.lock().up.contains_key(&ros) {
@@ -1148,7 +1153,8 @@ fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::Disc
     );
 }
 
-/// Every local writer of `ros` is gone: stop reading it and unadvertise it.
+/// `ros` is no longer bridged (its local writers are gone, or `publish` no longer has it):
+/// stop reading it and unadvertise it.
 fn stop_up(bridge: &Bridge, ros: &str) {
     let Some(up) = bridge.lock().up.remove(ros) else {
         return;
@@ -1159,7 +1165,6 @@ fn stop_up(bridge: &Bridge, ros: &str) {
     if let Ok(name) = TopicName::parse(ros) {
         bridge.router.unadvertise(bridge.client, &name);
     }
-    tracing::info!("ros2: {ros} has no local writers any more: unadvertised");
 }
 
 /// Forwards a reader's samples to the router as they arrived.

@@ -71,8 +71,12 @@ fn audit(st: &HubState, caller: &Identity, robot: &str, allowed: bool, detail: S
 }
 
 fn robot_name(name: &str) -> Result<fleetlink_auth::RobotName, Box<Response>> {
-    fleetlink_auth::RobotName::new(name)
-        .map_err(|e| Box::new(error(StatusCode::BAD_REQUEST, format!("robot {name:?}: {e}"))))
+    fleetlink_auth::RobotName::new(name).map_err(|e| {
+        Box::new(error(
+            StatusCode::BAD_REQUEST,
+            format!("robot {name:?}: {e}"),
+        ))
+    })
 }
 
 async fn read(
