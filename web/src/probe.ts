@@ -16,6 +16,9 @@ export interface Probe {
   markers: { drawn: number; shapes: number; byType: Record<string, number>; byNs: Record<string, number> };
   /** Map coordinates → CSS pixels inside the robot view's map canvas (for click tests). */
   mapToScreen: ((x: number, y: number) => [number, number]) | null;
+  /** The robot view's configuration panel: loaded, whether the operator may change it,
+   * the changes in force, the last apply's outcome. */
+  config: { loaded: boolean; mayChange: boolean; overlay: unknown; result: string };
 }
 
 export const probe: Probe = {
@@ -30,6 +33,7 @@ export const probe: Probe = {
   busyMs: { decode: 0, cloudUnpack: 0, cloudRender: 0 },
   markers: { drawn: 0, shapes: 0, byType: {}, byNs: {} },
   mapToScreen: null,
+  config: { loaded: false, mayChange: false, overlay: null, result: "" },
 };
 
 export function count(panel: string) {

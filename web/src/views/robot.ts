@@ -13,6 +13,7 @@ import { count, probe } from "../probe";
 import type { Rosbridge } from "../rosbridge";
 import { Chart, Series, Sparkline } from "./charts";
 import { CloudView } from "./cloud3d";
+import { configPanel } from "./config";
 import { bps, button, el, jsonTree, num } from "./dom";
 import { poseTopic } from "./fleet";
 import { MapView } from "./map2d";
@@ -71,6 +72,9 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
   const topicsP = panel(grid, "Topics", "full");
   const inspP = panel(grid, "Inspector", "inspector");
   const linkP = panel(grid, "Link quality (last 5 minutes)", "wide");
+  const configP = panel(grid, "Configuration", "full config");
+  probe.config = { loaded: false, mayChange: false, overlay: null, result: "" };
+  cleanups.push(configPanel(configP.body, configP.info, name, probe.config));
 
   let pose: { x: number; y: number; yaw: number } | null = null;
   let started = false;
