@@ -149,6 +149,15 @@ impl RuntimeConfig {
         *self.parts.lock().unwrap_or_else(|p| p.into_inner()) = Some(parts);
     }
 
+    /// The client whose calls are the hub's (the uplink's), once the parts are attached.
+    fn hub_client(&self) -> Option<fleetlink_relay::ClientId> {
+        self.parts
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .as_ref()
+            .map(|p| p.uplink.client())
+    }
+
     fn lock(&self) -> std::sync::MutexGuard<'_, State> {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
     }
@@ -292,6 +301,23 @@ pub async fn serve(config: Arc<RuntimeConfig>, router: Arc<Router>, shutdown: Ca
         tokio::select! {
             m = calls.recv() => match m {
                 Some(PeerMsg::Call(req)) => {
+                    // Only the hub, whose calls come through the uplink: a local program
+                    // (a rosbridge client, a ROS node) changes the configuration through
+                    // the local API, with its token.
+                    if config.hub_client() != Some(req.caller) {
+                        router.calls.respond(
+                            client,
+                            req.id,
+                            CallStatus::Failed,
+                            None,
+                            format!(
+                                "{} is the hub's: on the robot, use the local listener's \
+                                 /api/v1/config with local_rosbridge.config_token",
+                                req.service.name
+                            ),
+                        );
+                        continue;
+                    }
                     let answer = match req.service.name.as_str() {
                         GET_SERVICE => config.view(),
                         _ => set_call(&config, &req.payload),

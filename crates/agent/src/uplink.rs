@@ -319,6 +319,11 @@ pub struct UplinkControl {
 }
 
 impl UplinkControl {
+    /// The uplink's client of the local router: what the hub calls arrives as its calls.
+    pub fn client(&self) -> ClientId {
+        self.client
+    }
+
     pub fn names(&self) -> NameMap {
         self.names.read().unwrap_or_else(|p| p.into_inner()).clone()
     }

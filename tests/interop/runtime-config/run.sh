@@ -15,6 +15,8 @@
 #      reconnect;
 #   3. a second change gives /chatter_c a rate limit of 2 Hz: c arrives at about 2 msg/s,
 #      a still at about 10;
+#   3b. the node's service /add_two_ints, not exposed at first (a roslibpy call of
+#      /robot1/add_two_ints fails), is exposed by a third change: the call answers 42;
 #   4. an invalid change (rate_limit_hz: 0) is refused with the error text the agent
 #      gives for the same lines in its YAML file (`fleetlink agent --config`), and a
 #      caller without the right to change the robot's configuration gets 403;
@@ -23,7 +25,7 @@
 #   6. then the hub restarted (same database, same port): it still keeps the changes
 #      (GET shows who made them), the robot reconnects, and 2-3 hold;
 #   7. the agent started again without its kept changes (their file deleted): the hub
-#      applies what it keeps when the robot connects, and 2-3 hold.
+#      applies what it keeps when the robot connects, and 2-3b hold.
 #   8. ROS 1: Debian's roscore and two `rostopic pub -r 10` publishers (/ros1_a, /ros1_b)
 #      beside a second robot's agent with `ros1.publish: [/ros1_a]`; a change through the
 #      hub to `[/ros1_b]`: roslibpy then receives /robot2/ros1_b at about 10 msg/s and
@@ -169,6 +171,21 @@ connects_after="$(grep -c 'connected to hub' "$tmp/agent-$agent_runs.log")"
 [ "$connects_before" = "$connects_after" ] && echo "ok: the changes did not reconnect the agent" \
     || fail "the agent reconnected for a change ($connects_before -> $connects_after connections)"
 
+step "3b. a service exposed while the agent runs"
+got="$(peer call "$ws" /robot1/add_two_ints)"
+case "$got" in failed:*) echo "ok: before: /robot1/add_two_ints $got" ;; *) fail "step 3b: /robot1/add_two_ints answered '$got' before it was exposed" ;; esac
+out="$(put "$op_token" '{"ros2": {"services": {"expose": ["/add_two_ints"]}}}')"
+[ "$(status_of "$out")" = 200 ] || fail "step 3b: PUT answered $(status_of "$out"): $(tail -n1 <<<"$out")"
+got=""
+for _ in $(seq 20); do
+    got="$(peer call "$ws" /robot1/add_two_ints)"
+    [ "$got" = 42 ] && break
+    sleep 0.25
+done
+[ "$got" = 42 ] && echo "ok: after the change, /robot1/add_two_ints answers 2 + 40 = $got" \
+    || fail "step 3b: /robot1/add_two_ints answered '$got' after it was exposed"
+expect "the topics meanwhile" "$(rates)" "7 13" "0 0" "1.3 2.7"
+
 step "4. an invalid change is refused with the YAML's text; a viewer may not change"
 bad=$'topics:\n  /chatter_c: { rate_limit_hz: 0 }\n'
 out="$(put "$op_token" "$bad")"
@@ -219,6 +236,9 @@ else
     fail "step 7: the hub did not apply its kept changes to the returning agent"
 fi
 expect "applied again by the hub" "$(rates)" "7 13" "0 0" "1.3 2.7"
+got="$(peer call "$ws" /robot1/add_two_ints)"
+[ "$got" = 42 ] && echo "ok: /robot1/add_two_ints exposed again: $got" \
+    || fail "step 7: /robot1/add_two_ints answered '$got' once the hub applied its changes"
 [ -f "$tmp/robot-state/runtime.json" ] && echo "ok: the robot keeps them again" \
     || fail "step 7: the hub's changes were not kept on the robot"
 step "8. ROS 1: ros1.publish changed on a running agent"

@@ -2,10 +2,14 @@
 Modes:
 
   publish TOPIC...        a Cyclone DDS node writing std_msgs/String on each ROS topic at
-                          10 Hz (ROS 2 names and CDR); prints "ready", runs until killed.
+                          10 Hz (ROS 2 names and CDR), and serving /add_two_ints
+                          (example_interfaces, rmw_cyclonedds's request/reply topics);
+                          prints "ready", runs until killed.
   count URL SECS TOPIC... a roslibpy client of the hub at URL (token in its query)
                           subscribing to each hub topic; once the first of them delivers
                           (at most 30 s), counts for SECS and prints {topic: msg/s} as JSON.
+  call URL SERVICE        a roslibpy call of the hub's AddTwoInts service SERVICE with
+                          {a: 2, b: 40}: prints the sum, or "failed: WHY".
   api METHOD URL TOKEN [FILE]  an HTTP request (FILE's bytes as its body); prints the
                           status on the first line and the JSON answer on the second.
 """
@@ -26,6 +30,8 @@ def publish(topics):
     import ros2_types as T
 
     node = D.Node()
+    D.ServiceServer(node, "/add_two_ints", T.AddTwoIntsRequest, T.AddTwoIntsResponse,
+                    lambda req, reply: reply(sum=req.a + req.b))
     writers = [(t, node.writer(D.topic_name(t), T.String)) for t in topics]
     print("ready", flush=True)
     n = 0
@@ -78,6 +84,22 @@ def count(url, secs, topics):
     ros.terminate()
 
 
+def call(url, service):
+    import roslibpy
+
+    u = urllib.parse.urlparse(url)
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers={"Authorization": f"Bearer {token}"})
+    ros.run(timeout=10)
+    svc = roslibpy.Service(ros, service, "example_interfaces/srv/AddTwoInts")
+    try:
+        res = dict(svc.call(roslibpy.ServiceRequest({"a": 2, "b": 40}), timeout=5))
+        print(res.get("sum"))
+    except Exception as e:  # roslibpy raises for a failed call; say why
+        print(f"failed: {e}")
+    ros.terminate()
+
+
 def api(method, url, token, body_file=None):
     body = open(body_file, "rb").read() if body_file else None
     req = urllib.request.Request(url, data=body, method=method)
@@ -97,6 +119,8 @@ if __name__ == "__main__":
         publish(args)
     elif mode == "count":
         count(args[0], float(args[1]), args[2:])
+    elif mode == "call":
+        call(*args)
     elif mode == "api":
         api(*args)
     else:

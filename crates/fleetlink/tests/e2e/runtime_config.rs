@@ -238,6 +238,19 @@ async fn the_local_listener_serves_the_configuration_api_with_its_token() {
         .send(json!({"op": "subscribe", "topic": "/odom", "id": "l"}))
         .await;
     within("odometry at the local client", client.recv_op("publish")).await;
+    // A local rosbridge client cannot use the hub's way in (no token there).
+    let call = client
+        .call(
+            "/fleetlink/config/set",
+            json!({"change": "topics: {}"}),
+            "local",
+        )
+        .await;
+    assert_eq!(call["result"], false, "{call}");
+    assert!(
+        call["values"].to_string().contains("local listener"),
+        "{call}"
+    );
 
     // A remap changes the odometry's hub name: the link reconnects to announce it.
     let change = json!({"remap": {"/odom": "/cfg2/odometry"}});
