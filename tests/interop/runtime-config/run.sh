@@ -17,6 +17,8 @@
 #      a still at about 10;
 #   3b. the node's service /add_two_ints, not exposed at first (a roslibpy call of
 #      /robot1/add_two_ints fails), is exposed by a third change: the call answers 42;
+#   3c. roslibpy publishes /robot1/cmd at the hub: a Cyclone reader of /cmd gets none of
+#      it until a change adds /cmd to `ros2.subscribe`, then gets it;
 #   4. an invalid change (rate_limit_hz: 0) is refused with the error text the agent
 #      gives for the same lines in its YAML file (`fleetlink agent --config`), and a
 #      caller without the right to change the robot's configuration gets 403;
@@ -185,6 +187,25 @@ done
 [ "$got" = 42 ] && echo "ok: after the change, /robot1/add_two_ints answers 2 + 40 = $got" \
     || fail "step 3b: /robot1/add_two_ints answered '$got' after it was exposed"
 expect "the topics meanwhile" "$(rates)" "7 13" "0 0" "1.3 2.7"
+
+step "3c. a hub topic written into the graph once a change subscribes it"
+# count_down: how many of 3 s of roslibpy's /robot1/cmd (10 Hz) a Cyclone reader of /cmd got.
+count_down() {
+    peer listen /cmd 6 >"$tmp/listen.log" 2>&1 &
+    local lp=$!
+    wait_for_line "$tmp/listen.log" '^(ready)$' "the Cyclone reader of /cmd" "$lp" >/dev/null
+    peer send "$ws" /robot1/cmd 3 >/dev/null 2>&1 || true
+    wait "$lp" || true
+    tail -n1 "$tmp/listen.log"
+}
+got="$(count_down)"
+[ "$got" = 0 ] && echo "ok: before: the graph's /cmd got $got messages" \
+    || fail "step 3c: the graph's /cmd got '$got' messages before ros2.subscribe had it"
+out="$(put "$op_token" '{"ros2": {"subscribe": ["/cmd"]}}')"
+[ "$(status_of "$out")" = 200 ] || fail "step 3c: PUT answered $(status_of "$out"): $(tail -n1 <<<"$out")"
+got="$(count_down)"
+within 15 40 "$got" && echo "ok: after the change: the graph's /cmd got $got of about 30 messages" \
+    || fail "step 3c: the graph's /cmd got '$got' messages after the change"
 
 step "4. an invalid change is refused with the YAML's text; a viewer may not change"
 bad=$'topics:\n  /chatter_c: { rate_limit_hz: 0 }\n'

@@ -8,6 +8,10 @@ Modes:
   count URL SECS TOPIC... a roslibpy client of the hub at URL (token in its query)
                           subscribing to each hub topic; once the first of them delivers
                           (at most 30 s), counts for SECS and prints {topic: msg/s} as JSON.
+  listen TOPIC SECS       a Cyclone DDS reader of std_msgs/String on the ROS topic for
+                          SECS (printing "ready" first): prints how many it got.
+  send URL TOPIC SECS     a roslibpy publisher of std_msgs/String on the hub topic, 10 Hz
+                          for SECS.
   call URL SERVICE        a roslibpy call of the hub's AddTwoInts service SERVICE with
                           {a: 2, b: 40}: prints the sum, or "failed: WHY".
   api METHOD URL TOKEN [FILE]  an HTTP request (FILE's bytes as its body); prints the
@@ -84,6 +88,42 @@ def count(url, secs, topics):
     ros.terminate()
 
 
+def listen(topic, secs):
+    import ros2_dds as D
+    import ros2_types as T
+
+    node = D.Node()
+    got = [0]
+    lock = threading.Lock()
+
+    def on(_s):
+        with lock:
+            got[0] += 1
+
+    node.reader(D.topic_name(topic), T.String, on)
+    print("ready", flush=True)
+    time.sleep(secs)
+    with lock:
+        print(got[0], flush=True)
+
+
+def send(url, topic, secs):
+    import roslibpy
+
+    u = urllib.parse.urlparse(url)
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers={"Authorization": f"Bearer {token}"})
+    ros.run(timeout=10)
+    pub = roslibpy.Topic(ros, topic, "std_msgs/String")
+    end = time.monotonic() + secs
+    n = 0
+    while time.monotonic() < end:
+        pub.publish(roslibpy.Message({"data": f"down {n}"}))
+        n += 1
+        time.sleep(0.1)
+    ros.terminate()
+
+
 def call(url, service):
     import roslibpy
 
@@ -119,6 +159,10 @@ if __name__ == "__main__":
         publish(args)
     elif mode == "count":
         count(args[0], float(args[1]), args[2:])
+    elif mode == "listen":
+        listen(args[0], float(args[1]))
+    elif mode == "send":
+        send(args[0], args[1], float(args[2]))
     elif mode == "call":
         call(*args)
     elif mode == "api":

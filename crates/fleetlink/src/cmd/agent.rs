@@ -101,6 +101,31 @@ pub fn check(
         "options the agent runs with",
         AgentOptions::from_config(&cfg),
     );
+    // The changes made while it ran before, which it applies at start.
+    if let Some(file) = cfg.runtime_file_path() {
+        match std::fs::read_to_string(&file) {
+            Ok(text) => match fleetlink_agent::config::runtime::change(
+                &cfg,
+                &Default::default(),
+                &text,
+                &file.display().to_string(),
+            ) {
+                Ok(c) => r.ok(format!(
+                    "changes kept in {}, applied at start: {}",
+                    file.display(),
+                    c.fields.join(", ")
+                )),
+                Err(e) => r.note(format!(
+                    "the changes kept in {} no longer apply ({e}); the agent will run without them",
+                    file.display()
+                )),
+            },
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                r.ok(format!("no changes kept in {} yet", file.display()))
+            }
+            Err(e) => r.problem(format!("runtime_file {}: {e}", file.display())),
+        }
+    }
     r.definitions(&args.msg_path);
     if let Some(tls) = &cfg.tls {
         if let Some(ca) = &tls.ca {
