@@ -536,7 +536,10 @@ impl Uplink {
                 break;
             };
             attempt += 1;
-            // Names changed at run time apply from the next connection on.
+            // Names changed at run time apply from the next connection on. A change made
+            // while no connection was up needs no reconnect of its own: its wake-up is
+            // taken first, then the names read (a change in between wakes the connection).
+            let _ = futures_util::FutureExt::now_or_never(self.control.renamed.notified());
             self.cfg.names = self.control.names();
             tracing::debug!(robot = %self.cfg.robot, "trying hub {url} (attempt {attempt})");
             self.state.send_replace(LinkState::Connecting {

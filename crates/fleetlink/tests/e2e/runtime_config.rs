@@ -253,6 +253,7 @@ async fn the_local_listener_serves_the_configuration_api_with_its_token() {
     );
 
     // A remap changes the odometry's hub name: the link reconnects to announce it.
+    let connects = agent.stats.connects.load(Relaxed);
     let change = json!({"remap": {"/odom": "/cfg2/odometry"}});
     let (status, answer) = http_json(
         local,
@@ -273,6 +274,11 @@ async fn the_local_listener_serves_the_configuration_api_with_its_token() {
     )
     .await;
     assert_eq!(m["topic"], "/cfg2/odometry");
+    assert_eq!(
+        agent.stats.connects.load(Relaxed),
+        connects + 1,
+        "a remap reconnects the link once"
+    );
     // Bad YAML is refused with its position in the change.
     let (status, refusal) = http_json(
         local,
