@@ -331,4 +331,68 @@ mod tests {
         let restored = change(&cfg, &Map::new(), &overlay_text(&two.overlay), "o").unwrap();
         assert_eq!(restored.config, two.config);
     }
+
+    proptest::proptest! {
+        /// Whatever a change says, reading it never panics; a change that is taken gives a
+        /// configuration that checks out and that its overlay, applied to the file's
+        /// configuration, gives again; one that is refused says why.
+        #[test]
+        fn any_change_is_taken_whole_or_refused_with_a_reason(
+            entries in proptest::collection::vec(
+                (
+                    proptest::sample::select(vec![
+                        "remap", "subscribe", "topics", "ros2", "ros1", "hub", "name", "sim",
+                        "ros2.publish", "ros2.subscribe", "ros2.services", "ros2.actions",
+                        "ros2.read", "ros2.domain_id", "topics./a", "topics./a.rate_limit_hz",
+                        "topics./a.priority", "topics./a.policy", "remap./a",
+                    ]),
+                    proptest::sample::select(vec![
+                        "[/a, /b]", "[]", "{}", "0", "2", "-1", "latest", "/x/a", "null",
+                        "{ include: [/a], exclude: [/b] }", "[{ hub: /h, local: /l }]",
+                        "{ rate_limit_hz: 2 }", "\"bad name\"", "[1, 2]", "{ x: 1 }",
+                    ]),
+                ),
+                0..5,
+            )
+        ) {
+            let cfg = running();
+            // Dotted keys become nested mappings, written in flow style.
+            let mut doc = serde_json::Map::new();
+            let mut text = String::new();
+            for (key, value) in &entries {
+                let mut parts: Vec<&str> = key.split('.').collect();
+                if key.starts_with("topics./") || key.starts_with("remap./") {
+                    let (section, rest) = key.split_once('.').unwrap();
+                    let mut p = vec![section];
+                    p.extend(rest.splitn(2, '.'));
+                    parts = p;
+                }
+                let mut line = String::new();
+                for p in &parts[..parts.len() - 1] {
+                    line.push_str(&format!("{p}: {{ "));
+                }
+                line.push_str(&format!("{}: {value}", parts[parts.len() - 1]));
+                for _ in 1..parts.len() {
+                    line.push_str(" }");
+                }
+                // One key once: a second would be a duplicate, which the parser refuses too.
+                if doc.insert(parts[0].to_owned(), Value::Null).is_none() {
+                    text.push_str(&line);
+                    text.push('\n');
+                }
+            }
+            match change(&cfg, &Map::new(), &text, "change") {
+                Ok(c) => {
+                    proptest::prop_assert!(c.config.validate().is_ok());
+                    let again = change(&cfg, &Map::new(), &overlay_text(&c.overlay), "overlay");
+                    proptest::prop_assert!(again.is_ok(), "{:?} from {}", again, overlay_text(&c.overlay));
+                    proptest::prop_assert_eq!(again.unwrap().config, c.config);
+                }
+                Err(e) => {
+                    let said = e.to_string();
+                    proptest::prop_assert!(!said.is_empty() && (e.field().is_some() || e.position().is_some()), "{}", said);
+                }
+            }
+        }
+    }
 }
