@@ -613,6 +613,24 @@ pub async fn http_json(
     (status, v)
 }
 
+/// `site`'s link to `cloud` as site `name`, running until the returned token is cancelled.
+pub async fn link_site(cloud: &TestHub, site: &TestHub, name: &str) -> CancellationToken {
+    let mut cfg = uplink_config(cloud, name);
+    cfg.hub_id = Some(site.state.agents.hub_id);
+    let uplink = fleetlink_agent::uplink::Uplink::new(cfg, site.state.router.clone())
+        .expect("the site's uplink");
+    let mut state = uplink.watch();
+    let stop = CancellationToken::new();
+    tokio::spawn(uplink.run(stop.clone()));
+    within(
+        "the site to connect upstream",
+        state.wait_for(|s| matches!(s, fleetlink_agent::uplink::LinkState::Connected { .. })),
+    )
+    .await
+    .expect("the uplink's state");
+    stop
+}
+
 /// Waits until `cond` holds, checking every few milliseconds, for at most [`WAIT`].
 pub async fn eventually(what: &str, mut cond: impl FnMut() -> bool) {
     within(what, async {

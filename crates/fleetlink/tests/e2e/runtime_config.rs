@@ -316,3 +316,69 @@ async fn the_local_listener_serves_the_configuration_api_with_its_token() {
     agent.shutdown().await;
     hub.shutdown().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_site_hubs_robot_is_changed_through_the_cloud_hub() {
+    let cloud = start_hub().await;
+    let site = start_hub().await;
+    let _link = link_site(&cloud, &site, "site7").await;
+    let dir = temp_dir("runtime-config-site");
+    let file = dir.join("runtime.json");
+    let cfg = robot_config(&site, "robot7", &file, "");
+    let agent = start(&cfg).await;
+    let mut watcher = Rosbridge::connect(&cloud.ws_url()).await;
+    watcher
+        .send(json!({"op": "subscribe", "topic": "/site7/robot7/odom", "id": "w"}))
+        .await;
+    within(
+        "the site robot's odometry upstream",
+        watcher.recv_op("publish"),
+    )
+    .await;
+    let path = "/api/v1/robots/site7/robots/robot7/config";
+    let (status, view) =
+        http_json(cloud.addr, "GET", path, Some(&cloud.operator_token), None).await;
+    assert_eq!(status, 200, "{view}");
+    assert!(
+        view["effective"].as_str().unwrap().contains("name: robot7"),
+        "{view}"
+    );
+    let change = json!({"topics": {"/odom": {"rate_limit_hz": 2}}});
+    let (status, answer) = http_json(
+        cloud.addr,
+        "PUT",
+        path,
+        Some(&cloud.operator_token),
+        Some(&change),
+    )
+    .await;
+    assert_eq!(status, 200, "{answer}");
+    tokio::time::sleep(Duration::from_millis(300)).await;
+    let limited = received(&cloud, "/site7/robot7/odom", Duration::from_secs(2)).await;
+    assert!(
+        (2..=6).contains(&limited),
+        "{limited} odometry messages in 2 s at 2 Hz, upstream"
+    );
+
+    // Back without its file: the cloud hub applies what it keeps, across the site hub.
+    agent.shutdown().await;
+    std::fs::remove_file(&file).unwrap();
+    let agent = start(&cfg).await;
+    let mut view = Value::Null;
+    for _ in 0..100 {
+        view = http_json(cloud.addr, "GET", path, Some(&cloud.operator_token), None)
+            .await
+            .1;
+        if view["overlay"]["topics"]["/odom"]["rate_limit_hz"] == 2.0 {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    assert_eq!(
+        view["overlay"]["topics"]["/odom"]["rate_limit_hz"], 2.0,
+        "{view}"
+    );
+    agent.shutdown().await;
+    site.shutdown().await;
+    cloud.shutdown().await;
+}

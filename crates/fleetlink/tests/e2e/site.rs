@@ -23,23 +23,6 @@ fn received(hub: &TestHub, name: &str) -> u64 {
     topic(hub, name).map_or(0, |t| t.stats.messages.load(Relaxed))
 }
 
-/// `site`'s link to `cloud` as site `name`, running until the returned token is cancelled.
-async fn link_site(cloud: &TestHub, site: &TestHub, name: &str) -> CancellationToken {
-    let mut cfg = uplink_config(cloud, name);
-    cfg.hub_id = Some(site.state.agents.hub_id);
-    let uplink = Uplink::new(cfg, site.state.router.clone()).expect("the site's uplink");
-    let mut state = uplink.watch();
-    let stop = CancellationToken::new();
-    tokio::spawn(uplink.run(stop.clone()));
-    within(
-        "the site to connect upstream",
-        state.wait_for(|s| matches!(s, fleetlink_agent::uplink::LinkState::Connected { .. })),
-    )
-    .await
-    .expect("the uplink's state");
-    stop
-}
-
 async fn call_when_ready(client: &mut Rosbridge, service: &str, args: Value) -> Value {
     within("the service to be reachable across both hops", async {
         for i in 0.. {

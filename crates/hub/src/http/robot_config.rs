@@ -44,7 +44,13 @@ use crate::state::HubState;
 const CALL_TIMEOUT: Duration = Duration::from_secs(10);
 
 pub fn routes() -> axum::Router<Arc<HubState>> {
-    axum::Router::new().route("/api/v1/robots/{name}/config", get(read).put(change))
+    axum::Router::new()
+        .route("/api/v1/robots/{name}/config", get(read).put(change))
+        // A robot of a site hub chained to this one (docs/site-hubs.md), `/site7/robot1`.
+        .route(
+            "/api/v1/robots/{site}/robots/{name}/config",
+            get(read_site).put(change_site),
+        )
 }
 
 fn error(status: StatusCode, text: String) -> Response {
@@ -70,13 +76,14 @@ fn audit(st: &HubState, caller: &Identity, robot: &str, allowed: bool, detail: S
     );
 }
 
-fn robot_name(name: &str) -> Result<fleetlink_auth::RobotName, Box<Response>> {
-    fleetlink_auth::RobotName::new(name).map_err(|e| {
-        Box::new(error(
-            StatusCode::BAD_REQUEST,
-            format!("robot {name:?}: {e}"),
-        ))
-    })
+/// A robot's path: its name, or `site/name` for a site hub's robot; each part a valid
+/// robot name.
+fn robot_path(parts: &[&str]) -> Result<String, Box<Response>> {
+    for p in parts {
+        fleetlink_auth::RobotName::new(p)
+            .map_err(|e| Box::new(error(StatusCode::BAD_REQUEST, format!("robot {p:?}: {e}"))))?;
+    }
+    Ok(parts.join("/"))
 }
 
 async fn read(
@@ -84,10 +91,36 @@ async fn read(
     Extension(Caller(me)): Extension<Caller>,
     Path(name): Path<String>,
 ) -> Response {
-    let robot = match robot_name(&name) {
-        Ok(r) => r,
-        Err(r) => return *r,
-    };
+    match robot_path(&[&name]) {
+        Ok(robot) => read_robot(st, me, robot).await,
+        Err(r) => *r,
+    }
+}
+
+async fn read_site(
+    State(st): State<Arc<HubState>>,
+    Extension(Caller(me)): Extension<Caller>,
+    Path((site, name)): Path<(String, String)>,
+) -> Response {
+    match robot_path(&[&site, &name]) {
+        Ok(robot) => read_robot(st, me, robot).await,
+        Err(r) => *r,
+    }
+}
+
+async fn change_site(
+    State(st): State<Arc<HubState>>,
+    Extension(caller): Extension<Caller>,
+    Path((site, name)): Path<(String, String)>,
+    body: Bytes,
+) -> Response {
+    match robot_path(&[&site, &name]) {
+        Ok(robot) => change_robot(st, caller.0, robot, body).await,
+        Err(r) => *r,
+    }
+}
+
+async fn read_robot(st: Arc<HubState>, me: Identity, robot: String) -> Response {
     let mut access = st.security.access(me);
     let visible = access.allows(&format!("/{robot}"), Operation::Subscribe)
         || access.allows(&format!("/{robot}/"), Operation::Subscribe)
@@ -145,10 +178,13 @@ async fn change(
     Path(name): Path<String>,
     body: Bytes,
 ) -> Response {
-    let robot = match robot_name(&name) {
-        Ok(r) => r,
-        Err(r) => return *r,
-    };
+    match robot_path(&[&name]) {
+        Ok(robot) => change_robot(st, me, robot, body).await,
+        Err(r) => *r,
+    }
+}
+
+async fn change_robot(st: Arc<HubState>, me: Identity, robot: String, body: Bytes) -> Response {
     if let Err(e) = super::admin_api::require_admin_as(
         &st,
         &me,
@@ -301,7 +337,8 @@ pub async fn keep_applied(st: Arc<HubState>, shutdown: CancellationToken) {
     );
     let (peer, events) = ChannelPeer::new();
     router.calls.attach(client, peer);
-    let pattern = format!("/[^/]+{}", regex::escape(CONFIG_SET_SERVICE));
+    // A robot here, or a site hub's robot (`/site7/robot1/…`).
+    let pattern = format!("(/[^/]+)+{}", regex::escape(CONFIG_SET_SERVICE));
     match Router::compile_pattern(&pattern) {
         Ok(re) => router.calls.watch(client, re),
         Err(e) => {
