@@ -108,8 +108,8 @@ pub struct AgentConfig {
     /// fetch a slice; `None` (the default) keeps none. See docs/recording.md.
     pub blackbox: Option<BlackBoxConfig>,
     /// Where the changes made while the agent runs are kept, restored at its next start
-    /// (docs/runtime-config.md). Default `$XDG_STATE_HOME/fleetlink/<name>/runtime.json`
-    /// (`~/.local/state/…` without `XDG_STATE_HOME`).
+    /// (docs/runtime-config.md). Default: `<name>/runtime.json` in the state directory
+    /// ([`AgentConfig::runtime_file_path`]).
     pub runtime_file: Option<PathBuf>,
 }
 
@@ -479,26 +479,26 @@ impl AgentConfig {
         self.heartbeat() * 2
     }
 
-    /// Where the runtime changes are kept: `runtime_file`, else the default in the user's
-    /// state directory; `None` when there is no home to put it in.
+    /// Where the runtime changes are kept: `runtime_file`, else `<name>/runtime.json` in
+    /// the service's state directory (systemd's `StateDirectory=`, `$STATE_DIRECTORY`),
+    /// the user's (`$XDG_STATE_HOME/fleetlink`, `~/.local/state/fleetlink`), or
+    /// `/var/lib/fleetlink` without a home.
     pub fn runtime_file_path(&self) -> Option<PathBuf> {
         if let Some(f) = &self.runtime_file {
             return Some(f.clone());
         }
-        let state = std::env::var_os("XDG_STATE_HOME")
-            .filter(|d| !d.is_empty())
-            .map(PathBuf::from)
-            .or_else(|| {
-                std::env::var_os("HOME")
-                    .filter(|d| !d.is_empty())
-                    .map(|h| PathBuf::from(h).join(".local/state"))
-            })?;
-        Some(
-            state
-                .join("fleetlink")
-                .join(self.name.as_str())
-                .join("runtime.json"),
-        )
+        let var = |k: &str| {
+            std::env::var_os(k)
+                .filter(|d| !d.is_empty())
+                .map(PathBuf::from)
+        };
+        let dir = var("STATE_DIRECTORY")
+            // systemd may list several, separated by colons: the first is the service's.
+            .map(|d| PathBuf::from(d.to_string_lossy().split(':').next().unwrap_or_default()))
+            .or_else(|| var("XDG_STATE_HOME").map(|d| d.join("fleetlink")))
+            .or_else(|| var("HOME").map(|h| h.join(".local/state/fleetlink")))
+            .unwrap_or_else(|| PathBuf::from("/var/lib/fleetlink"));
+        Some(dir.join(self.name.as_str()).join("runtime.json"))
     }
 
     /// The local listener's configuration API token (empty: the API is closed).
