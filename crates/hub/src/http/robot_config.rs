@@ -121,18 +121,15 @@ async fn change_site(
 }
 
 async fn read_robot(st: Arc<HubState>, me: Identity, robot: String) -> Response {
+    let may_change = st
+        .security
+        .authz
+        .decide(&me, &resource(&robot), Operation::Admin)
+        .allowed;
     let mut access = st.security.access(me);
-    let visible = access.allows(&format!("/{robot}"), Operation::Subscribe)
-        || access.allows(&format!("/{robot}/"), Operation::Subscribe)
-        || st
-            .security
-            .authz
-            .decide(
-                access.identity(),
-                &resource(robot.as_str()),
-                Operation::Admin,
-            )
-            .allowed;
+    let visible = may_change
+        || access.allows(&format!("/{robot}"), Operation::Subscribe)
+        || access.allows(&format!("/{robot}/"), Operation::Subscribe);
     if !visible {
         return error(
             StatusCode::FORBIDDEN,
@@ -142,15 +139,6 @@ async fn read_robot(st: Arc<HubState>, me: Identity, robot: String) -> Response 
             ),
         );
     }
-    let may_change = st
-        .security
-        .authz
-        .decide(
-            access.identity(),
-            &resource(robot.as_str()),
-            Operation::Admin,
-        )
-        .allowed;
     let kept = kept(&st, robot.as_str()).await;
     match call(&st.router, robot.as_str(), CONFIG_GET_SERVICE, json!({})).await {
         Ok(mut view) => {
