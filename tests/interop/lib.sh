@@ -5,10 +5,13 @@
 # After `interop_begin NAME`: $tmp is the suite's directory; append background pids to
 # the `pids` array; logs named $tmp/hub.log and $tmp/agent.log are shown on failure.
 # INTEROP_KEEP=DIR copies the suite's directory (logs, records) there before it is removed.
+# `interop_netns NS` makes a network namespace that is deleted on exit too, with whatever
+# still runs in it.
 
 interop_begin() {
     tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-$1.XXXXXX")"
     pids=()
+    interop_namespaces=()
     trap interop_cleanup EXIT
     trap 'exit 130' INT TERM
 }
@@ -22,6 +25,12 @@ interop_cleanup() {
         kill -KILL "$pid" 2>/dev/null || true
         wait "$pid" 2>/dev/null || true
     done
+    for ns in "${interop_namespaces[@]}"; do
+        # What was started in it beyond `pids` (children of a shell function, say).
+        for _ in $(seq 50); do [ -z "$(ip netns pids "$ns" 2>/dev/null)" ] && break; sleep 0.1; done
+        for pid in $(ip netns pids "$ns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null || true; done
+        ip netns del "$ns" 2>/dev/null || echo "warning: could not delete network namespace $ns" >&2
+    done
     if [ "$rc" -ne 0 ]; then
         for f in hub agent; do
             [ -f "$tmp/$f.log" ] && { echo "--- last lines of $f log"; tail -n 30 "$tmp/$f.log"; } >&2
@@ -30,6 +39,15 @@ interop_cleanup() {
     if [ -n "${INTEROP_KEEP:-}" ]; then cp -r "$tmp" "$INTEROP_KEEP" && echo "kept: $INTEROP_KEEP" >&2; fi
     rm -rf "$tmp"
     exit "$rc"
+}
+
+# A network namespace named $1, deleted on exit: its loopback up, with multicast routed on
+# it (DDS discovery stays inside the namespace).
+interop_netns() {
+    ip netns add "$1" || { echo "FAIL: cannot create network namespace $1" >&2; exit 1; }
+    interop_namespaces+=("$1")
+    ip netns exec "$1" ip link set lo up multicast on
+    ip netns exec "$1" ip route add 224.0.0.0/4 dev lo
 }
 
 # Waits (bounded, 10 s) until a line matching $2 appears in log $1 written by process $4;

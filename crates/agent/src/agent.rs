@@ -369,19 +369,20 @@ impl Agent {
             o.changes = Some(rx);
             ros2_changes = Some(tx);
         }
-        let runtime_task = self.runtime.clone().map(|rt| {
+        if let Some(rt) = &self.runtime {
             rt.attach(crate::runtime::Parts {
                 uplink: self.uplink.control(),
                 ros1: ros1_changes,
                 ros2: ros2_changes,
             });
-            let (router, shutdown) = (self.router.clone(), shutdown.clone());
-            let offer = !self.mirror;
-            tokio::spawn(async move {
-                if offer {
-                    crate::runtime::serve(rt, router, shutdown).await;
-                }
-            })
+        }
+        // A mirror offers no configuration services (their names would be its robot's).
+        let runtime_task = self.runtime.clone().filter(|_| !self.mirror).map(|rt| {
+            tokio::spawn(crate::runtime::serve(
+                rt,
+                self.router.clone(),
+                shutdown.clone(),
+            ))
         });
         let deadlines = tokio::spawn(self.router.calls.clone().run_deadlines(shutdown.clone()));
         let local = self.local.map(|l| {

@@ -631,6 +631,28 @@ pub async fn link_site(cloud: &TestHub, site: &TestHub, name: &str) -> Cancellat
     stop
 }
 
+/// Messages of topic `name` the hub receives in `window` (once the topic exists).
+pub async fn messages_in(hub: &TestHub, name: &str, window: Duration) -> u64 {
+    let name = fleetlink_relay::TopicName::parse(name).unwrap();
+    let mut topic = None;
+    eventually("the topic at the hub", || {
+        topic = hub.state.router.topic(&name);
+        topic.is_some()
+    })
+    .await;
+    let topic = topic.unwrap();
+    let before = topic
+        .stats
+        .messages
+        .load(std::sync::atomic::Ordering::Relaxed);
+    tokio::time::sleep(window).await;
+    topic
+        .stats
+        .messages
+        .load(std::sync::atomic::Ordering::Relaxed)
+        - before
+}
+
 /// Waits until `cond` holds, checking every few milliseconds, for at most [`WAIT`].
 pub async fn eventually(what: &str, mut cond: impl FnMut() -> bool) {
     within(what, async {

@@ -170,25 +170,11 @@ pub fn is_config_service(name: &str) -> bool {
         .is_some_and(|robot| robot.len() > 1 && robot.starts_with('/'))
 }
 
-impl Gate for HubGate {
-    fn allows(&mut self, name: &str, op: Op) -> bool {
-        if op == Op::CallService && !self.config_calls && is_config_service(name) {
-            if self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
-                let rec = AuditRecord::operation(
-                    self.identity(),
-                    audit_action(op),
-                    name,
-                    None,
-                    false,
-                    UnixTime::now(),
-                )
-                .with_detail("a robot's configuration changes through the hub's API only");
-                self.security.audit.record(rec);
-            }
-            return false;
-        }
-        let d = self.access.decide(name, operation(op));
-        if !d.allowed && self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
+impl HubGate {
+    /// Audits a refusal of `op` on `name`, once per name and operation on this connection
+    /// (a client retrying 30 times a second is one record), with `detail`'s reason.
+    fn audit_refusal(&mut self, name: &str, op: Op, detail: impl FnOnce() -> String) {
+        if self.reported.len() < 1024 && self.reported.insert((name.to_owned(), op)) {
             let rec = AuditRecord::operation(
                 self.identity(),
                 audit_action(op),
@@ -197,8 +183,23 @@ impl Gate for HubGate {
                 false,
                 UnixTime::now(),
             )
-            .with_detail(format!("{:?}", d.reason));
+            .with_detail(detail());
             self.security.audit.record(rec);
+        }
+    }
+}
+
+impl Gate for HubGate {
+    fn allows(&mut self, name: &str, op: Op) -> bool {
+        if op == Op::CallService && !self.config_calls && is_config_service(name) {
+            self.audit_refusal(name, op, || {
+                "a robot's configuration changes through the hub's API only".into()
+            });
+            return false;
+        }
+        let d = self.access.decide(name, operation(op));
+        if !d.allowed {
+            self.audit_refusal(name, op, || format!("{:?}", d.reason));
         }
         d.allowed
     }

@@ -45,6 +45,7 @@ pub mod gate;
 pub mod link;
 pub mod link_calls;
 pub mod link_control;
+pub mod live;
 pub mod message;
 pub mod names;
 pub mod outbox;

@@ -132,7 +132,7 @@ pub async fn run(
                 }
             }
             Some(m) = peer_rx.recv() => on_peer(&node, m),
-            Some(new) = next_change(&mut changes) => {
+            new = fleetlink_relay::live::next_change(&mut changes) => {
                 tracing::info!("ros1: what crosses changed (runtime configuration)");
                 *node.live.write().unwrap_or_else(|p| p.into_inner()) = Arc::new(new);
                 follow_offers(&node).await;
@@ -152,20 +152,6 @@ pub async fn run(
     unregister_all(&node).await;
     router.disconnect(client);
     Ok(())
-}
-
-/// The next runtime change of the options, if the node has a source of them (pending
-/// forever otherwise, and once the source is gone).
-async fn next_change(
-    changes: &mut Option<tokio::sync::watch::Receiver<Ros1Options>>,
-) -> Option<Ros1Options> {
-    if let Some(rx) = changes {
-        if rx.changed().await.is_ok() {
-            return Some(rx.borrow_and_update().clone());
-        }
-        *changes = None;
-    }
-    std::future::pending().await
 }
 
 /// Watches the fleet services the options offer to local nodes, and withdraws from the
@@ -681,7 +667,10 @@ async fn follow_graph(node: &Arc<Node>) {
         register_service(node, &s).await;
     }
     let opts = node.live();
-    let following = !node.lock().subs.is_empty() || !node.lock().exposed.is_empty();
+    let following = {
+        let st = node.lock();
+        !st.subs.is_empty() || !st.exposed.is_empty()
+    };
     if opts.publish.is_empty() && opts.expose.is_empty() && !following {
         return;
     }

@@ -740,7 +740,7 @@ async fn run_participant(
                 discover(&bridge);
                 node_info.refresh(&bridge);
             }
-            Some(new) = next_change(&mut changes) => {
+            new = fleetlink_relay::live::next_change(&mut changes) => {
                 tracing::info!("ros2: what crosses changed (runtime configuration)");
                 *bridge.live.write().unwrap_or_else(|p| p.into_inner()) = Arc::new(new);
                 follow_offers(&bridge);
@@ -792,20 +792,6 @@ async fn run_participant(
         s.dropped_down.load(Relaxed)
     );
     Ok(end)
-}
-
-/// The next runtime change of the options, if the bridge has a source of them (pending
-/// forever otherwise, and once the source is gone).
-async fn next_change(
-    changes: &mut Option<tokio::sync::watch::Receiver<Ros2Options>>,
-) -> Option<Ros2Options> {
-    if let Some(rx) = changes {
-        if rx.changed().await.is_ok() {
-            return Some(rx.borrow_and_update().clone());
-        }
-        *changes = None;
-    }
-    std::future::pending().await
 }
 
 /// Watches the fleet services and actions the options offer to local nodes, and stops

@@ -52,17 +52,8 @@ interop_begin mirror
 run_id="$$"
 robot_ns="flmr-$run_id"
 cloud_ns="flmc-$run_id"
-made=()
 mirror_cleanup() {
     local rc=$?
-    set +e
-    trap - EXIT
-    for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null; done
-    for ns in "${made[@]}"; do
-        for _ in $(seq 50); do [ -z "$(ip netns pids "$ns" 2>/dev/null)" ] && break; sleep 0.1; done
-        for pid in $(ip netns pids "$ns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
-        ip netns del "$ns" 2>/dev/null || echo "warning: could not delete network namespace $ns" >&2
-    done
     if [ "$rc" -ne 0 ] && [ -f "$tmp/mirror.log" ]; then
         echo "--- last lines of the mirror's log" >&2; tail -n 30 "$tmp/mirror.log" >&2
     fi
@@ -70,12 +61,8 @@ mirror_cleanup() {
     interop_cleanup
 }
 trap mirror_cleanup EXIT
-for ns in "$robot_ns" "$cloud_ns"; do
-    ip netns add "$ns" || { echo "FAIL: cannot create network namespace $ns" >&2; exit 1; }
-    made+=("$ns")
-    ip netns exec "$ns" ip link set lo up multicast on
-    ip netns exec "$ns" ip route add 224.0.0.0/4 dev lo
-done
+interop_netns "$robot_ns"
+interop_netns "$cloud_ns"
 ip link add "flm${run_id}a" type veth peer name "flm${run_id}b"
 ip link set "flm${run_id}a" netns "$robot_ns"
 ip link set "flm${run_id}b" netns "$cloud_ns"

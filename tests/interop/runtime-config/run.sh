@@ -62,25 +62,7 @@ bin="$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")"
 interop_begin runtime-config
 
 ns="flrc-$$"
-made=""
-rc_cleanup() {
-    local rc=$?
-    set +e
-    trap - EXIT
-    for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null; done
-    if [ -n "$made" ]; then
-        for _ in $(seq 50); do [ -z "$(ip netns pids "$ns" 2>/dev/null)" ] && break; sleep 0.1; done
-        for pid in $(ip netns pids "$ns" 2>/dev/null); do kill -KILL "$pid" 2>/dev/null; done
-        ip netns del "$ns" 2>/dev/null || echo "warning: could not delete network namespace $ns" >&2
-    fi
-    (exit "$rc")
-    interop_cleanup
-}
-trap rc_cleanup EXIT
-ip netns add "$ns" || { echo "FAIL: cannot create network namespace $ns" >&2; exit 1; }
-made=1
-ip netns exec "$ns" ip link set lo up multicast on
-ip netns exec "$ns" ip route add 224.0.0.0/4 dev lo
+interop_netns "$ns"
 
 in_ns() { ip netns exec "$ns" timeout --kill-after=5 "$@"; }
 failed=()

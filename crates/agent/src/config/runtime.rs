@@ -60,7 +60,10 @@ pub fn change(
     let mut overlay = overlay.clone();
     for field in &fields {
         copy_field(&mut config, &parsed, field);
-        put(&mut overlay, field, field_value(&config, field));
+    }
+    let whole = serde_json::to_value(&config).unwrap_or(Value::Null);
+    for field in &fields {
+        put(&mut overlay, field, field_value(&whole, field));
     }
     validate::validate(&config).map_err(|problem| {
         if fields
@@ -175,40 +178,26 @@ fn starts_with(path: &FieldPath, prefix: &FieldPath) -> bool {
 /// Copies `field` of `from` into `to` (whose ROS sections exist: [`written_fields`]
 /// checked).
 fn copy_field(to: &mut AgentConfig, from: &AgentConfig, field: &str) {
-    let ros1 = |c: &AgentConfig| c.ros1.clone().unwrap_or_default();
-    let ros2 = |c: &AgentConfig| c.ros2.clone().unwrap_or_default();
-    match field {
-        "remap" => to.remap = from.remap.clone(),
-        "subscribe" => to.subscribe = from.subscribe.clone(),
-        "topics" => to.topics = from.topics.clone(),
-        _ => {
-            if let (Some(t), true) = (to.ros1.as_mut(), field.starts_with("ros1.")) {
-                let f = ros1(from);
-                match field {
-                    "ros1.publish" => t.publish = f.publish,
-                    "ros1.subscribe" => t.subscribe = f.subscribe,
-                    "ros1.services" => t.services = f.services,
-                    _ => {}
-                }
-            }
-            if let (Some(t), true) = (to.ros2.as_mut(), field.starts_with("ros2.")) {
-                let f = ros2(from);
-                match field {
-                    "ros2.publish" => t.publish = f.publish,
-                    "ros2.subscribe" => t.subscribe = f.subscribe,
-                    "ros2.read" => t.read = f.read,
-                    "ros2.services" => t.services = f.services,
-                    "ros2.actions" => t.actions = f.actions,
-                    _ => {}
-                }
-            }
-        }
+    let (to1, from1) = (to.ros1.as_mut(), from.ros1.as_ref());
+    let (to2, from2) = (to.ros2.as_mut(), from.ros2.as_ref());
+    match (field, to1.zip(from1), to2.zip(from2)) {
+        ("remap", ..) => to.remap = from.remap.clone(),
+        ("subscribe", ..) => to.subscribe = from.subscribe.clone(),
+        ("topics", ..) => to.topics = from.topics.clone(),
+        ("ros1.publish", Some((t, f)), _) => t.publish = f.publish.clone(),
+        ("ros1.subscribe", Some((t, f)), _) => t.subscribe = f.subscribe.clone(),
+        ("ros1.services", Some((t, f)), _) => t.services = f.services.clone(),
+        ("ros2.publish", _, Some((t, f))) => t.publish = f.publish.clone(),
+        ("ros2.subscribe", _, Some((t, f))) => t.subscribe = f.subscribe.clone(),
+        ("ros2.read", _, Some((t, f))) => t.read = f.read.clone(),
+        ("ros2.services", _, Some((t, f))) => t.services = f.services.clone(),
+        ("ros2.actions", _, Some((t, f))) => t.actions = f.actions.clone(),
+        _ => {}
     }
 }
 
-/// `field`'s value in `cfg`, as the change document writes it.
-fn field_value(cfg: &AgentConfig, field: &str) -> Value {
-    let whole = serde_json::to_value(cfg).unwrap_or(Value::Null);
+/// `field`'s value in `whole` (a configuration as JSON), as the change document writes it.
+fn field_value(whole: &Value, field: &str) -> Value {
     let pointer = format!("/{}", field.replace('.', "/"));
     let mut value = whole.pointer(&pointer).cloned().unwrap_or(Value::Null);
     drop_nulls(&mut value);

@@ -94,14 +94,7 @@ async fn a_mirror_presents_its_robot_under_local_names_and_asks_only_for_what_is
         assert!(m["msg"]["pose"]["pose"]["position"]["x"].is_number(), "{m}");
     }
     assert_eq!(at_hub(&hub, "/robot3/odom"), Some((base + 1, false)));
-    let odom = hub
-        .state
-        .router
-        .topic(&TopicName::parse("/robot3/odom").unwrap())
-        .unwrap();
-    let before = odom.stats.messages.load(Relaxed);
-    tokio::time::sleep(Duration::from_millis(1000)).await;
-    let per_sec = odom.stats.messages.load(Relaxed) - before;
+    let per_sec = messages_in(&hub, "/robot3/odom", Duration::from_secs(1)).await;
     // The simulator's 20 Hz cross the robot's link once, and the mirror is the hub's one
     // subscriber besides the robot: its two readers share one copy.
     assert!(

@@ -8,7 +8,6 @@ use std::time::Duration;
 
 use fleetlink_agent::AgentOptions;
 use fleetlink_agent::config::{AgentConfig, LocalRosbridgeConfig, SimConfig};
-use fleetlink_relay::TopicName;
 use serde_json::{Value, json};
 
 use crate::util::*;
@@ -53,19 +52,24 @@ async fn start(cfg: &AgentConfig) -> TestAgent {
     a
 }
 
-/// Messages of hub topic `name` the hub receives in `window`.
-async fn received(hub: &TestHub, name: &str, window: Duration) -> u64 {
-    let name = TopicName::parse(name).unwrap();
-    let mut topic = None;
-    eventually("the topic at the hub", || {
-        topic = hub.state.router.topic(&name);
-        topic.is_some()
+/// The robot's configuration from the hub at `addr`, once `holds` is true of it (read
+/// again while it is not, within the tests' bound).
+async fn config_once(
+    addr: std::net::SocketAddr,
+    path: &str,
+    token: &str,
+    holds: impl Fn(&Value) -> bool,
+) -> Value {
+    within("the robot's configuration to hold", async {
+        loop {
+            let (_, view) = http_json(addr, "GET", path, Some(token), None).await;
+            if holds(&view) {
+                return view;
+            }
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        }
     })
-    .await;
-    let topic = topic.unwrap();
-    let before = topic.stats.messages.load(Relaxed);
-    tokio::time::sleep(window).await;
-    topic.stats.messages.load(Relaxed) - before
+    .await
 }
 
 async fn put(hub: &TestHub, robot: &str, change: &Value) -> (u16, Value) {
@@ -91,7 +95,7 @@ async fn a_change_through_the_hub_applies_at_once_is_kept_and_applied_again() {
         .send(json!({"op": "subscribe", "topic": "/cfg1/odom", "id": "w"}))
         .await;
     within("odometry at the watcher", watcher.recv_op("publish")).await;
-    let before = received(&hub, "/cfg1/odom", Duration::from_secs(1)).await;
+    let before = messages_in(&hub, "/cfg1/odom", Duration::from_secs(1)).await;
     assert!(
         (12..=30).contains(&before),
         "{before} odometry messages a second"
@@ -125,8 +129,7 @@ async fn a_change_through_the_hub_applies_at_once_is_kept_and_applied_again() {
     assert_eq!(status, 200, "{answer}");
     assert_eq!(answer["changed"], json!(["topics"]));
     assert_eq!(answer["overlay"]["topics"]["/odom"]["rate_limit_hz"], 2.0);
-    tokio::time::sleep(Duration::from_millis(300)).await;
-    let limited = received(&hub, "/cfg1/odom", Duration::from_secs(2)).await;
+    let limited = messages_in(&hub, "/cfg1/odom", Duration::from_secs(2)).await;
     assert!(
         (2..=6).contains(&limited),
         "{limited} odometry messages in 2 s at 2 Hz"
@@ -174,22 +177,13 @@ async fn a_change_through_the_hub_applies_at_once_is_kept_and_applied_again() {
     agent.shutdown().await;
     std::fs::remove_file(&file).unwrap();
     let agent = start(&cfg).await;
-    let mut view = Value::Null;
-    for _ in 0..100 {
-        view = http_json(
-            hub.addr,
-            "GET",
-            "/api/v1/robots/cfg1/config",
-            Some(&hub.operator_token),
-            None,
-        )
-        .await
-        .1;
-        if view["overlay"]["topics"]["/odom"]["rate_limit_hz"] == 2.0 {
-            break;
-        }
-        tokio::time::sleep(Duration::from_millis(50)).await;
-    }
+    let view = config_once(
+        hub.addr,
+        "/api/v1/robots/cfg1/config",
+        &hub.operator_token,
+        |view| view["overlay"]["topics"]["/odom"]["rate_limit_hz"] == 2.0,
+    )
+    .await;
     assert_eq!(
         view["overlay"]["topics"]["/odom"]["rate_limit_hz"], 2.0,
         "{view}"
@@ -202,7 +196,7 @@ async fn a_change_through_the_hub_applies_at_once_is_kept_and_applied_again() {
         file.exists(),
         "applied again, the changes are kept on the robot again"
     );
-    let limited = received(&hub, "/cfg1/odom", Duration::from_secs(2)).await;
+    let limited = messages_in(&hub, "/cfg1/odom", Duration::from_secs(2)).await;
     assert!(
         (2..=6).contains(&limited),
         "{limited} odometry messages in 2 s after the return"
@@ -353,8 +347,7 @@ async fn a_site_hubs_robot_is_changed_through_the_cloud_hub() {
     )
     .await;
     assert_eq!(status, 200, "{answer}");
-    tokio::time::sleep(Duration::from_millis(300)).await;
-    let limited = received(&cloud, "/site7/robot7/odom", Duration::from_secs(2)).await;
+    let limited = messages_in(&cloud, "/site7/robot7/odom", Duration::from_secs(2)).await;
     assert!(
         (2..=6).contains(&limited),
         "{limited} odometry messages in 2 s at 2 Hz, upstream"
@@ -364,16 +357,10 @@ async fn a_site_hubs_robot_is_changed_through_the_cloud_hub() {
     agent.shutdown().await;
     std::fs::remove_file(&file).unwrap();
     let agent = start(&cfg).await;
-    let mut view = Value::Null;
-    for _ in 0..100 {
-        view = http_json(cloud.addr, "GET", path, Some(&cloud.operator_token), None)
-            .await
-            .1;
-        if view["overlay"]["topics"]["/odom"]["rate_limit_hz"] == 2.0 {
-            break;
-        }
-        tokio::time::sleep(Duration::from_millis(50)).await;
-    }
+    let view = config_once(cloud.addr, path, &cloud.operator_token, |view| {
+        view["overlay"]["topics"]["/odom"]["rate_limit_hz"] == 2.0
+    })
+    .await;
     assert_eq!(
         view["overlay"]["topics"]["/odom"]["rate_limit_hz"], 2.0,
         "{view}"
