@@ -78,6 +78,29 @@ fn check_robot_name(what: &'static str, raw: &str) -> Result<(), NameError> {
     Ok(())
 }
 
+fn check_hub_name(what: &'static str, raw: &str) -> Result<(), NameError> {
+    let err = |reason| NameError {
+        what,
+        name: echoed(raw),
+        reason,
+    };
+    if raw.is_empty() {
+        return Err(err("must not be empty (hub names are [A-Za-z0-9_.-]+)"));
+    }
+    if raw.len() > 128 {
+        return Err(err("longer than 128 bytes"));
+    }
+    if !raw
+        .chars()
+        .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.'))
+    {
+        return Err(err(
+            "only ASCII letters, digits, '_', '.' and '-' are allowed (hub names are [A-Za-z0-9_.-]+)",
+        ));
+    }
+    Ok(())
+}
+
 fn check_principal(what: &'static str, raw: &str) -> Result<(), NameError> {
     let err = |reason| NameError {
         what,
@@ -167,6 +190,14 @@ name_type!(
     check_principal
 );
 
+name_type!(
+    /// A hub's name in its federation: the `HUB` of its certificate's `HUB@FLEET`
+    /// ([`crate::tls::federation`]), which rules name as `{hub: NAME}`.
+    HubName,
+    "hub name",
+    check_hub_name
+);
+
 impl RobotName {
     /// `/<robot>`: the robot's own namespace.
     pub fn namespace(&self) -> String {
@@ -191,6 +222,9 @@ pub struct ConnInfo {
     /// The robot name from a verified TLS client certificate, if any
     /// (see [`crate::tls::client_cert_name`]).
     pub tls_client_name: Option<RobotName>,
+    /// The federated hub a request came through (a call another hub forwards for one of
+    /// its clients), named by that hub's certificate; `None` for this hub's own clients.
+    pub hub: Option<HubName>,
 }
 
 impl ConnInfo {
@@ -199,6 +233,7 @@ impl ConnInfo {
             peer_ip,
             forwarded_for: None,
             tls_client_name: None,
+            hub: None,
         }
     }
 
@@ -209,6 +244,11 @@ impl ConnInfo {
 
     pub fn with_tls_client_name(mut self, name: RobotName) -> ConnInfo {
         self.tls_client_name = Some(name);
+        self
+    }
+
+    pub fn with_hub(mut self, hub: HubName) -> ConnInfo {
+        self.hub = Some(hub);
         self
     }
 }
@@ -274,6 +314,11 @@ pub enum IdentityKind {
     },
     /// No credential; only possible when anonymous read access is enabled.
     Anonymous,
+    /// Another hub of the federation, acting for itself: the topics it forwards from its
+    /// clients, the subscriptions it holds for them.
+    Hub {
+        name: HubName,
+    },
 }
 
 /// An authenticated principal together with where it connected from.
@@ -287,12 +332,27 @@ pub struct Identity {
 }
 
 impl Identity {
-    /// A short principal label for logs and audit: `robot:r1`, `user:alice`, `anonymous`.
+    /// A short principal label for logs and audit: `robot:r1`, `user:alice`, `anonymous`,
+    /// `hub:eu1`; a principal another hub vouches for carries that hub in front
+    /// (`hub:eu1/user:alice`).
     pub fn principal(&self) -> String {
-        match &self.kind {
+        let own = match &self.kind {
             IdentityKind::Robot { name } => format!("robot:{name}"),
             IdentityKind::User { name, .. } => format!("user:{name}"),
             IdentityKind::Anonymous => "anonymous".to_owned(),
+            IdentityKind::Hub { name } => return format!("hub:{name}"),
+        };
+        match &self.source.hub {
+            Some(hub) => format!("hub:{hub}/{own}"),
+            None => own,
+        }
+    }
+
+    /// The federated hub this identity is or came through.
+    pub fn hub(&self) -> Option<&HubName> {
+        match &self.kind {
+            IdentityKind::Hub { name } => Some(name),
+            _ => self.source.hub.as_ref(),
         }
     }
 

@@ -38,7 +38,7 @@ pub use acl::{Access, AclDefaults, Authorizer, Decision, Operation, Rule, RuleId
 pub use audit::{AuditLog, AuditRecord};
 pub use authn::{AuthError, AuthPolicy, Authenticator, Credential, Session};
 pub use identity::{
-    ConnInfo, GroupName, Identity, IdentityKind, RobotName, TrustedProxies, UserName,
+    ConnInfo, GroupName, HubName, Identity, IdentityKind, RobotName, TrustedProxies, UserName,
 };
 pub use security::{Security, SecurityError};
 pub use store::{Store, StoreError};

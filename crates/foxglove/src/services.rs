@@ -195,11 +195,15 @@ impl Session {
             }
         };
         let size = json.len();
-        match self
-            .router
-            .calls
-            .call(self.client, &name, json, CallOptions::default())
-        {
+        let opts = CallOptions {
+            on_behalf_of: self
+                .gate
+                .as_ref()
+                .and_then(|g| g.caller())
+                .map(std::sync::Arc::new),
+            ..CallOptions::default()
+        };
+        match self.router.calls.call(self.client, &name, json, opts) {
             Ok(id) => {
                 self.services.calls.insert(
                     id,
@@ -326,7 +330,15 @@ impl Session {
             waiting: 0,
         };
         let mut at_robots = Vec::new();
-        for name in names {
+        for raw in names {
+            // Decided, read and answered under one spelling: the normalized name.
+            let name = match fleetlink_relay::params::param_name(&raw) {
+                Ok(n) => n,
+                Err(e) => {
+                    g.failed.push(e);
+                    continue;
+                }
+            };
             if let Some((provider, rest)) = self.robot_param(&name) {
                 at_robots.push((name, provider, rest));
                 continue;
@@ -355,12 +367,15 @@ impl Session {
                 continue;
             }
             let body = json!({ "name": rest }).to_string();
-            match self.router.calls.call(
-                self.client,
-                &provider,
-                Payload::json(body),
-                CallOptions::default(),
-            ) {
+            let opts = CallOptions {
+                on_behalf_of: gate.caller().map(std::sync::Arc::new),
+                ..CallOptions::default()
+            };
+            match self
+                .router
+                .calls
+                .call(self.client, &provider, Payload::json(body), opts)
+            {
                 Ok(call) => {
                     self.services.param_calls.insert(call, (key, name));
                     g.waiting += 1;
@@ -392,10 +407,11 @@ impl Session {
         )
     }
 
-    /// The robot that answers for parameter `name` (its `rosapi/get_param` service and
-    /// the name as the robot sees it), when there is one.
+    /// The robot that answers for parameter `name` (normalized: [`param_name`]) — its
+    /// `rosapi/get_param` service and the name as the robot sees it — when there is one.
+    ///
+    /// [`param_name`]: fleetlink_relay::params::param_name
     fn robot_param(&self, name: &str) -> Option<(TopicName, String)> {
-        let name = fleetlink_relay::params::param_name(name).ok()?;
         let (robot, rest) = match name[1..].find('/') {
             Some(i) => (&name[1..=i], &name[i + 1..]),
             None => return None,

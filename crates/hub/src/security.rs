@@ -17,10 +17,10 @@ use std::sync::Arc;
 
 use fleetlink_auth::audit::AuditAction;
 use fleetlink_auth::{
-    Access, AuditRecord, ConnInfo, Credential, Identity, IdentityKind, Operation, Security,
-    UnixTime,
+    Access, AuditRecord, ConnInfo, Credential, GroupName, HubName, Identity, IdentityKind,
+    Operation, RobotName, Security, UnixTime, UserName,
 };
-use fleetlink_relay::gate::{Gate, Guard, Op};
+use fleetlink_relay::gate::{Caller, Gate, Guard, Op};
 use serde_json::{Map, Value};
 
 use crate::registry::Registry;
@@ -64,9 +64,9 @@ pub struct HubGate {
     /// another, so this saves splitting the name and a registry lookup per message (the
     /// identity and `acting_as` never change for a gate).
     last_input: Option<(String, u64, bool)>,
-    /// Calls of robots' configuration services are let through (the gate of a site hub's
-    /// link upstream: the hub there changes its robots' configuration through them).
-    config_calls: bool,
+    /// Calls of robots' configuration and black-box services are let through (the gate
+    /// of a site hub's link upstream: the hub there answers its API through them).
+    hub_calls: bool,
     /// Decisions by router topic id, with the rules' generation they were made in: the
     /// publish and delivery paths ask once per message, and an id is cheaper to look up
     /// than a name.
@@ -85,21 +85,21 @@ impl HubGate {
             reported: Default::default(),
             acting_as: None,
             last_input: None,
-            config_calls: false,
+            hub_calls: false,
             by_topic: HashMap::default(),
         }
     }
 
     /// A gate for the link to a hub upstream (a site hub's): as [`HubGate::new`], and
-    /// the hub there may call the robots' configuration services (its API checks who may
-    /// change a robot's configuration).
+    /// the hub there may call the robots' configuration and black-box services (its API
+    /// checks who may change a robot's configuration or read its topics).
     pub fn for_upstream(
         security: Arc<Security>,
         registry: Arc<Registry>,
         identity: Identity,
     ) -> HubGate {
         HubGate {
-            config_calls: true,
+            hub_calls: true,
             ..HubGate::new(security, registry, identity)
         }
     }
@@ -119,6 +119,15 @@ impl HubGate {
 
     pub fn identity(&self) -> &Identity {
         self.access.identity()
+    }
+
+    /// Whether this gate speaks for the namespace `ns` (`robot1`, or `site7/robot1` of a
+    /// site hub's robot): the link of the agent (or site hub) that owns its first
+    /// segment, or that robot's own credential.
+    fn speaks_for(&self, ns: &str) -> bool {
+        let owner = ns.split('/').next().unwrap_or(ns);
+        self.acting_as.as_deref() == Some(owner)
+            || matches!(&self.identity().kind, IdentityKind::Robot { name } if name.as_str() == owner)
     }
 
     /// Whether `name` is an input of some online robot: a topic in its namespace that the
@@ -164,10 +173,37 @@ impl HubGate {
 /// Whether `name` is one of a robot's configuration services (`/<robot>/fleetlink/config/
 /// get` and `…/set`): only the hub calls them, for `/api/v1/robots/<robot>/config`.
 pub fn is_config_service(name: &str) -> bool {
-    use fleetlink_relay::names::{CONFIG_GET_SERVICE, CONFIG_SET_SERVICE};
-    name.strip_suffix(CONFIG_GET_SERVICE)
-        .or_else(|| name.strip_suffix(CONFIG_SET_SERVICE))
-        .is_some_and(|robot| robot.len() > 1 && robot.starts_with('/'))
+    use fleetlink_relay::names::{HubOnly, hub_only};
+    matches!(hub_only(name), Some((HubOnly::ConfigService, _)))
+}
+
+/// Why `op` on the hub-only name `name` is refused to this gate, if it is
+/// ([`fleetlink_relay::names::hub_only`]): the hub calls those services itself, and reads
+/// the black box's answers itself, for its API. A site hub's link upstream may call a
+/// robot's configuration and black-box services (the hub there answers for its API); a
+/// robot's own link publishes its black box's data.
+fn hub_only_refusal(gate: &HubGate, name: &str, op: Op) -> Option<&'static str> {
+    use fleetlink_relay::names::{HubOnly, hub_only};
+    let (kind, robot) = hub_only(name)?;
+    match (kind, op) {
+        (HubOnly::ConfigService, Op::CallService) if !gate.hub_calls => {
+            Some("a robot's configuration changes through the hub's API only")
+        }
+        (HubOnly::BlackboxService, Op::CallService) if !gate.hub_calls => Some(
+            "a robot's black box is fetched through the hub's API only \
+             (POST /api/v1/recordings/blackbox)",
+        ),
+        (HubOnly::ConfigService | HubOnly::BlackboxService, Op::AdvertiseService) => (!gate
+            .speaks_for(robot))
+        .then_some("only the robot itself provides its fleetlink services"),
+        (HubOnly::BlackboxData, Op::Subscribe) => Some(
+            "a robot's black-box data is read by the hub only; fetch a slice through \
+             the hub's API",
+        ),
+        (HubOnly::BlackboxData, Op::Publish) => (!gate.speaks_for(robot))
+            .then_some("only the robot itself publishes its black-box data"),
+        _ => None,
+    }
 }
 
 impl HubGate {
@@ -190,16 +226,24 @@ impl HubGate {
 }
 
 impl Gate for HubGate {
+    /// Decides on the name by the one name rule ([`fleetlink_relay::names::normalize`]):
+    /// `/r1/secret/` and `r1/secret` are `/r1/secret`, so no spelling gets round a rule;
+    /// a name that is no name is refused. Callers forward the normalized name.
     fn allows(&mut self, name: &str, op: Op) -> bool {
-        if op == Op::CallService && !self.config_calls && is_config_service(name) {
-            self.audit_refusal(name, op, || {
-                "a robot's configuration changes through the hub's API only".into()
-            });
+        let name = match fleetlink_relay::names::normalize(name) {
+            Ok(n) => n,
+            Err(e) => {
+                self.audit_refusal(name, op, || e.to_string());
+                return false;
+            }
+        };
+        if let Some(why) = hub_only_refusal(self, &name, op) {
+            self.audit_refusal(&name, op, || why.into());
             return false;
         }
-        let d = self.access.decide(name, operation(op));
+        let d = self.access.decide(&name, operation(op));
         if !d.allowed {
-            self.audit_refusal(name, op, || format!("{:?}", d.reason));
+            self.audit_refusal(&name, op, || format!("{:?}", d.reason));
         }
         d.allowed
     }
@@ -260,13 +304,69 @@ impl Gate for HubGate {
             reported: Default::default(),
             acting_as: self.acting_as.clone(),
             last_input: None,
-            config_calls: self.config_calls,
+            hub_calls: self.hub_calls,
             by_topic: HashMap::default(),
         })
     }
 
     fn principal(&self) -> String {
         self.identity().principal()
+    }
+
+    fn caller(&self) -> Option<Caller> {
+        let id = self.identity();
+        if id.source.hub.is_some() {
+            // Vouched for by another hub already: not forwarded a second time.
+            return None;
+        }
+        Some(match &id.kind {
+            IdentityKind::Robot { name } => Caller::Robot {
+                name: name.as_str().to_owned(),
+            },
+            IdentityKind::User { name, groups } => Caller::User {
+                name: name.as_str().to_owned(),
+                groups: groups.iter().map(|g| g.as_str().to_owned()).collect(),
+            },
+            IdentityKind::Anonymous => Caller::Anonymous,
+            IdentityKind::Hub { .. } => return None,
+        })
+    }
+}
+
+/// The identity a hub vouches for when it forwards a call `caller` made there: that
+/// caller, marked as coming through hub `hub` (rules naming the hub apply, and the audit
+/// log says so). `None` when a name in it breaks the rules for names.
+pub fn vouched_identity(
+    caller: &Caller,
+    hub: &HubName,
+    peer: std::net::IpAddr,
+) -> Option<Identity> {
+    let kind = match caller {
+        Caller::Robot { name } => IdentityKind::Robot {
+            name: RobotName::new(name).ok()?,
+        },
+        Caller::User { name, groups } => IdentityKind::User {
+            name: UserName::new(name).ok()?,
+            groups: groups
+                .iter()
+                .map(|g| GroupName::new(g).ok())
+                .collect::<Option<Vec<_>>>()?,
+        },
+        Caller::Anonymous => IdentityKind::Anonymous,
+    };
+    Some(Identity {
+        kind,
+        source: ConnInfo::new(peer).with_hub(hub.clone()),
+        client_ip: peer,
+    })
+}
+
+/// A federated hub acting for itself (the topics it forwards), as rules see it.
+pub fn hub_identity(hub: &HubName, peer: std::net::IpAddr) -> Identity {
+    Identity {
+        kind: IdentityKind::Hub { name: hub.clone() },
+        source: ConnInfo::new(peer).with_hub(hub.clone()),
+        client_ip: peer,
     }
 }
 
@@ -417,3 +517,7 @@ fn percent_decode(s: &str) -> String {
     }
     String::from_utf8_lossy(&out).into_owned()
 }
+
+#[cfg(test)]
+#[path = "security_tests.rs"]
+mod tests;

@@ -25,9 +25,9 @@ pub mod slice;
 use serde::{Deserialize, Serialize};
 
 /// The agent's fetch service, by its name on the robot.
-pub const FETCH_SERVICE: &str = "/fleetlink/blackbox/fetch";
+pub const FETCH_SERVICE: &str = fleetlink_relay::names::BLACKBOX_FETCH_SERVICE;
 /// The topic the pieces go up on, by its name on the robot.
-pub const DATA_TOPIC: &str = "/fleetlink/blackbox/data";
+pub const DATA_TOPIC: &str = fleetlink_relay::names::BLACKBOX_DATA_TOPIC;
 /// The pieces' message type and its definition.
 pub const PIECE_TYPE: &str = "fleetlink_msgs/msg/BlackBoxPiece";
 pub const PIECE_DEFINITION: &str = "\

@@ -54,6 +54,8 @@ pub struct CallRequest {
     pub deadline: Option<Instant>,
     /// For an action goal: the goal's UUID.
     pub goal_id: Option<[u8; 16]>,
+    /// Who made the call, when the caller's gate could say ([`CallOptions::on_behalf_of`]).
+    pub on_behalf_of: Option<Arc<crate::gate::Caller>>,
 }
 
 /// What comes back to a caller.
@@ -161,6 +163,9 @@ pub struct CallOptions {
     /// The goal's UUID when it already has one (a goal arriving over a link keeps the id
     /// its first table gave it); `None` makes a new one.
     pub goal_id: Option<[u8; 16]>,
+    /// Who the call is made for ([`crate::gate::Gate::caller`]): a provider that forwards
+    /// calls to another hub (the federation) tells it, so it decides on the same identity.
+    pub on_behalf_of: Option<Arc<crate::gate::Caller>>,
 }
 
 struct Pending {
@@ -502,6 +507,7 @@ impl Calls {
                 payload,
                 deadline,
                 goal_id: opts.goal.then(|| opts.goal_id.unwrap_or_else(new_goal_id)),
+                on_behalf_of: opts.on_behalf_of,
             };
             (provider, request)
         };

@@ -52,6 +52,22 @@ pub trait Gate: Send + Sync + 'static {
 
     /// Who this is, for messages (`user:alice`, `robot:r1`, `anonymous`).
     fn principal(&self) -> String;
+
+    /// Who this is, for a call this connection makes that another hub may serve: that
+    /// hub decides and audits the call on it. `None`: nobody a hub can vouch for (the
+    /// robot's local listener).
+    fn caller(&self) -> Option<Caller> {
+        None
+    }
+}
+
+/// The maker of a call, as the gate that let it through knows them: what a hub tells the
+/// hub it forwards the call to ([`Gate::caller`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Caller {
+    Robot { name: String },
+    User { name: String, groups: Vec<String> },
+    Anonymous,
 }
 
 /// No authorization: every operation is allowed (a robot's own local listener).

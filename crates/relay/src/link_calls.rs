@@ -520,6 +520,7 @@ impl LinkCalls {
             timeout: (deadline_ms > 0).then(|| Duration::from_millis(deadline_ms)),
             goal,
             goal_id,
+            on_behalf_of: gate.caller().map(std::sync::Arc::new),
         };
         match self
             .calls

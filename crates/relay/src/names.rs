@@ -14,33 +14,44 @@ pub struct NameError {
     pub reason: &'static str,
 }
 
+/// The one name rule every gate decides on: a ROS-style name with its leading `/` added
+/// (rosbridge clients often omit it) and trailing `/` dropped, so `scan`, `/scan` and
+/// `/scan/` are one name; empty names, empty segments (`//`), whitespace, control
+/// characters and names over 1024 bytes are refused. A name already in that form is
+/// borrowed as it is (the check on a per-message path allocates nothing).
+pub fn normalize(raw: &str) -> Result<std::borrow::Cow<'_, str>, NameError> {
+    let err = |reason| NameError {
+        name: raw.chars().take(200).collect(),
+        reason,
+    };
+    if raw.is_empty() || raw == "/" {
+        return Err(err("empty"));
+    }
+    if raw.len() > 1024 {
+        return Err(err("longer than 1024 bytes"));
+    }
+    if raw.chars().any(|c| c.is_whitespace() || c.is_control()) {
+        return Err(err("contains whitespace or control characters"));
+    }
+    if raw.contains("//") {
+        return Err(err("contains an empty segment"));
+    }
+    let trimmed = raw.trim_end_matches('/');
+    if trimmed.is_empty() {
+        return Err(err("empty"));
+    }
+    if raw.starts_with('/') {
+        Ok(std::borrow::Cow::Borrowed(trimmed))
+    } else {
+        Ok(std::borrow::Cow::Owned(format!("/{trimmed}")))
+    }
+}
+
 impl TopicName {
-    /// Accepts ROS-style names; a missing leading `/` is added (rosbridge clients often
-    /// omit it), so `scan` and `/scan` are the same topic.
+    /// Accepts ROS-style names by the one rule, [`normalize`]: `scan`, `/scan` and
+    /// `/scan/` are the same topic.
     pub fn parse(raw: &str) -> Result<TopicName, NameError> {
-        let err = |reason| NameError {
-            name: raw.to_owned(),
-            reason,
-        };
-        if raw.is_empty() || raw == "/" {
-            return Err(err("empty"));
-        }
-        if raw.len() > 1024 {
-            return Err(err("longer than 1024 bytes"));
-        }
-        if raw.chars().any(|c| c.is_whitespace() || c.is_control()) {
-            return Err(err("contains whitespace or control characters"));
-        }
-        if raw.contains("//") {
-            return Err(err("contains an empty segment"));
-        }
-        let name = if raw.starts_with('/') {
-            raw.to_owned()
-        } else {
-            format!("/{raw}")
-        };
-        let name = name.trim_end_matches('/').to_owned();
-        Ok(TopicName(name.into()))
+        Ok(TopicName(normalize(raw)?.as_ref().into()))
     }
 
     pub fn as_str(&self) -> &str {
@@ -136,10 +147,89 @@ pub const CONFIG_GET_SERVICE: &str = "/fleetlink/config/get";
 pub const CONFIG_SET_SERVICE: &str = "/fleetlink/config/set";
 /// The configuration services' type name (their requests and answers are JSON).
 pub const CONFIG_SERVICE_TYPE: &str = "fleetlink/RuntimeConfig";
+/// A robot's black-box service cutting a slice of its ring (the agent's local name).
+pub const BLACKBOX_FETCH_SERVICE: &str = "/fleetlink/blackbox/fetch";
+/// The topic a robot sends black-box slices on (the agent's local name).
+pub const BLACKBOX_DATA_TOPIC: &str = "/fleetlink/blackbox/data";
+
+/// A name of a robot's that only the hub itself uses: the services it calls for its API
+/// (configuration, black box) and the topic the black box answers on. No client calls,
+/// reads or lists them, whatever its rights; the hub's API decides who may ask for what
+/// they carry and filters it by the asker's rights.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HubOnly {
+    /// `/<robot>/fleetlink/config/get|set`.
+    ConfigService,
+    /// `/<robot>/fleetlink/blackbox/fetch`.
+    BlackboxService,
+    /// `/<robot>/fleetlink/blackbox/data`: only the robot publishes it.
+    BlackboxData,
+}
+
+/// Whether `name` (normalized, as the hub names it: `/<robot>/...`, or
+/// `/<site>/<robot>/...` for a site hub's robots) is one of a robot's hub-only names, and
+/// the namespace it lies in (`robot1`, `site7/robot1`).
+pub fn hub_only(name: &str) -> Option<(HubOnly, &str)> {
+    [
+        (CONFIG_GET_SERVICE, HubOnly::ConfigService),
+        (CONFIG_SET_SERVICE, HubOnly::ConfigService),
+        (BLACKBOX_FETCH_SERVICE, HubOnly::BlackboxService),
+        (BLACKBOX_DATA_TOPIC, HubOnly::BlackboxData),
+    ]
+    .into_iter()
+    .find_map(|(local, kind)| {
+        let ns = name.strip_suffix(local)?.strip_prefix('/')?;
+        (!ns.is_empty()).then_some((kind, ns))
+    })
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn hub_only_names_are_a_robots_fleetlink_services_and_black_box_topic() {
+        assert_eq!(
+            hub_only("/r1/fleetlink/config/set"),
+            Some((HubOnly::ConfigService, "r1"))
+        );
+        assert_eq!(
+            hub_only("/r1/fleetlink/blackbox/fetch"),
+            Some((HubOnly::BlackboxService, "r1"))
+        );
+        assert_eq!(
+            hub_only("/r1/fleetlink/blackbox/data"),
+            Some((HubOnly::BlackboxData, "r1"))
+        );
+        assert_eq!(
+            hub_only("/site7/r1/fleetlink/config/get"),
+            Some((HubOnly::ConfigService, "site7/r1"))
+        );
+        for other in [
+            "/fleetlink/blackbox/data",
+            "/r1/fleetlink/blackbox",
+            "/r1/odom",
+            "/r1/fleetlink/config/set/x",
+        ] {
+            assert_eq!(hub_only(other), None, "{other}");
+        }
+    }
+
+    #[test]
+    fn normalize_borrows_what_is_already_normal() {
+        assert!(matches!(
+            normalize("/a/b").unwrap(),
+            std::borrow::Cow::Borrowed("/a/b")
+        ));
+        assert!(matches!(
+            normalize("/a/b/").unwrap(),
+            std::borrow::Cow::Borrowed("/a/b")
+        ));
+        assert_eq!(normalize("a/b").unwrap(), "/a/b");
+        for bad in ["", "/", "//", "a//b", "/a b", "/a\n", "///"] {
+            assert!(normalize(bad).is_err(), "{bad:?}");
+        }
+    }
 
     #[test]
     fn leading_slash_is_added_and_trailing_removed() {

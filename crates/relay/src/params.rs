@@ -131,25 +131,23 @@ pub fn is_param_service(name: &str) -> bool {
     SERVICES.iter().any(|(n, _, _)| *n == name)
 }
 
-/// A parameter name as rosapi clients send it: leading `/` added, trailing `/` dropped.
+/// A parameter name as rosapi clients send it, by the one name rule
+/// ([`crate::names::normalize`]: leading `/` added, trailing `/` dropped) after the
+/// spaces around it are trimmed.
 pub fn param_name(raw: &str) -> Result<String, String> {
     let t = raw.trim();
     if t.is_empty() || t == "/" {
         return Err("missing parameter name".into());
     }
-    if t.len() > 1024 || t.chars().any(|c| c.is_whitespace() || c.is_control()) || t.contains("//")
-    {
-        return Err(format!(
-            "invalid parameter name {:?}",
-            t.chars().take(64).collect::<String>()
-        ));
-    }
-    let n = if t.starts_with('/') {
-        t.to_owned()
-    } else {
-        format!("/{t}")
-    };
-    Ok(n.trim_end_matches('/').to_owned())
+    crate::names::normalize(t)
+        .map(|n| n.into_owned())
+        .map_err(|e| {
+            format!(
+                "invalid parameter name {:?}: {}",
+                t.chars().take(64).collect::<String>(),
+                e.reason
+            )
+        })
 }
 
 /// [`param_name`], also taking `/` alone: the whole tree (a robot's namespace as its

@@ -229,6 +229,7 @@ fn send_goal(
         timeout: None,
         goal: true,
         goal_id: Some(uuid),
+        on_behalf_of: None,
     };
     let name = TopicName::parse(&action.name).map_err(|e| e.to_string())?;
     let accepted = match bridge.router.calls.call(

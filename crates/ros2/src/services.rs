@@ -856,6 +856,7 @@ async fn pump_requests(bridge: Arc<Bridge>, service: String, reader: RawReader) 
             timeout: Some(bridge.opts.call_timeout),
             goal: false,
             goal_id: None,
+            on_behalf_of: None,
         };
         match bridge
             .router

@@ -31,6 +31,11 @@ pub struct AclDefaults {
     /// Anonymous identities may subscribe to anything, call `/rosapi/*` (listings) and
     /// read [`METRICS`]. Only meaningful if the authenticator lets anonymous clients in.
     pub anonymous_read: bool,
+    /// What a federated hub may do acting for itself ([`IdentityKind::Hub`]): forward the
+    /// topics its clients publish (their rights were checked there) and subscribe for
+    /// them. `deny` rules naming the hub limit it. Calls it forwards are decided on the
+    /// identity of the client who made them.
+    pub federated_hub: OpSet,
 }
 
 /// The resource name of the hub's Prometheus metrics, checked with [`Operation::Admin`].
@@ -50,6 +55,7 @@ impl Default for AclDefaults {
             admin_group: GroupName::new("admin").ok(),
             metrics_group: GroupName::new("metrics").ok(),
             anonymous_read: false,
+            federated_hub: OpSet::of(&[Operation::Publish, Operation::Subscribe]),
         }
     }
 }
@@ -71,6 +77,8 @@ pub enum Reason {
     MetricsGroup,
     OwnNamespace,
     AnonymousRead,
+    /// A federated hub forwarding for its clients ([`AclDefaults::federated_hub`]).
+    FederatedHub,
     Rule(RuleId),
     /// Nothing granted it: deny by default.
     NoRule,
@@ -184,6 +192,29 @@ fn evaluate<'a>(
     name: &str,
     op: Operation,
 ) -> Decision {
+    // A hub named in a deny rule is limited whoever it vouches for, admins included.
+    if identity.hub().is_some() {
+        let rules: Vec<&StoredRule> = applicable.collect();
+        if let Some(denied) = rules.iter().find(|s| {
+            s.rule.effect == Effect::Deny
+                && s.rule.subject.is_hub()
+                && s.rule.ops.contains(op)
+                && s.rule.names.is_match(name)
+        }) {
+            return Decision::deny(Reason::Rule(denied.id));
+        }
+        return evaluate_rules(defaults, identity, rules.into_iter(), name, op);
+    }
+    evaluate_rules(defaults, identity, applicable, name, op)
+}
+
+fn evaluate_rules<'a>(
+    defaults: &AclDefaults,
+    identity: &Identity,
+    applicable: impl Iterator<Item = &'a StoredRule>,
+    name: &str,
+    op: Operation,
+) -> Decision {
     if let Some(admin) = &defaults.admin_group
         && identity.in_group(admin)
     {
@@ -210,6 +241,9 @@ fn evaluate<'a>(
             if defaults.robot_own_namespace.contains(op) && robot.owns(name) =>
         {
             Decision::allow(Reason::OwnNamespace)
+        }
+        IdentityKind::Hub { .. } if defaults.federated_hub.contains(op) => {
+            Decision::allow(Reason::FederatedHub)
         }
         IdentityKind::Anonymous
             if defaults.anonymous_read

@@ -14,7 +14,7 @@ use ipnet::IpNet;
 use regex::{Regex, RegexBuilder};
 use serde::{Deserialize, Serialize};
 
-use crate::identity::{GroupName, Identity, IdentityKind, RobotName, UserName};
+use crate::identity::{GroupName, HubName, Identity, IdentityKind, RobotName, UserName};
 
 /// Something a client can do with a named topic, service or action.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -146,8 +146,9 @@ pub enum Effect {
 /// Whom a rule applies to.
 ///
 /// In YAML: `{user: alice}`, `{group: operators}`, `{robot: r1}`, `{cidr: 10.8.0.0/16}`,
-/// or one of the words `any_robot`, `any_user`, `anonymous`, `anyone` (every identity,
-/// anonymous included).
+/// `{hub: eu1}` (a federated hub: what it forwards itself and every call it forwards for
+/// its clients), or one of the words `any_robot`, `any_user`, `any_hub`, `anonymous`,
+/// `anyone` (every identity, anonymous included).
 #[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Subject {
@@ -156,19 +157,31 @@ pub enum Subject {
     Robot(RobotName),
     /// Identities whose resolved client address lies in this network.
     Cidr(IpNet),
+    /// A hub of the federation, named by its certificate: the hub itself, and every
+    /// identity it vouches for.
+    Hub(HubName),
     AnyRobot,
     AnyUser,
+    AnyHub,
     Anonymous,
     Anyone,
 }
 
 impl Subject {
+    /// Whether the subject names hubs: a `deny` for one binds even the admins another hub
+    /// vouches for.
+    pub fn is_hub(&self) -> bool {
+        matches!(self, Subject::Hub(_) | Subject::AnyHub)
+    }
+
     pub fn matches(&self, id: &Identity) -> bool {
         match (self, &id.kind) {
             (Subject::User(u), IdentityKind::User { name, .. }) => u == name,
             (Subject::Group(g), IdentityKind::User { groups, .. }) => groups.contains(g),
             (Subject::Robot(r), IdentityKind::Robot { name }) => r == name,
             (Subject::Cidr(net), _) => net.contains(&id.client_ip),
+            (Subject::Hub(h), _) => id.hub() == Some(h),
+            (Subject::AnyHub, _) => id.hub().is_some(),
             (Subject::AnyRobot, IdentityKind::Robot { .. }) => true,
             (Subject::AnyUser, IdentityKind::User { .. }) => true,
             (Subject::Anonymous, IdentityKind::Anonymous) => true,

@@ -50,6 +50,7 @@ pub enum TlsError {
 }
 
 mod crypto;
+pub mod federation;
 mod verify;
 
 pub use crypto::provider;

@@ -51,6 +51,12 @@ fn namespace_visible(access: &mut Access, name: &str) -> bool {
         || access.allows(&format!("/{name}/"), Operation::Subscribe)
 }
 
+/// Whether a topic appears in listings: listed by its publishers, and not one of the
+/// names only the hub reads (a robot's black-box data).
+fn shown(t: &fleetlink_relay::router::TopicSnapshot) -> bool {
+    t.listed() && fleetlink_relay::names::hub_only(t.meta.name.as_str()).is_none()
+}
+
 /// The listed topics in robot `name`'s namespace that the caller may subscribe to.
 fn robot_topics<'t>(
     access: &mut Access,
@@ -61,7 +67,7 @@ fn robot_topics<'t>(
     access.visible(
         topics
             .iter()
-            .filter(|t| t.listed())
+            .filter(|t| shown(t))
             .map(|t| t.meta.name.as_str())
             .filter(|n| n.starts_with(&ns)),
         Operation::Subscribe,
@@ -196,7 +202,7 @@ async fn topics(
     }
     let list: Vec<Value> = snapshot
         .iter()
-        .filter(|t| t.listed() && access.allows(t.meta.name.as_str(), Operation::Subscribe))
+        .filter(|t| shown(t) && access.allows(t.meta.name.as_str(), Operation::Subscribe))
         .map(|t| {
             let p = predicted.get(t.meta.name.as_str());
             let (rate, bw) = t.stats.rates(now);

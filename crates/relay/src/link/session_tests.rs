@@ -104,6 +104,7 @@ impl Local {
             timeout: Some(Duration::from_secs(600)),
             goal,
             goal_id: None,
+            on_behalf_of: None,
         };
         match calls.call(self.id, &name(service), json("{}"), opts) {
             Ok(id) => {

@@ -8,6 +8,7 @@
 //! using the same id never collide at the provider.
 
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 use std::time::Duration;
 
 use bytes::Bytes;
@@ -268,6 +269,7 @@ impl Session {
             timeout: timeout_of(timeout),
             goal: false,
             goal_id: None,
+            on_behalf_of: None, // filled by `start`
         };
         let made = Made::service_call(service, id, how, size);
         if let Err(e) = self.start(&name, args, opts, made) {
@@ -289,6 +291,10 @@ impl Session {
             GateOp::SendActionGoal
         } else {
             GateOp::CallService
+        };
+        let opts = CallOptions {
+            on_behalf_of: self.gate.as_ref().and_then(|g| g.caller()).map(Arc::new),
+            ..opts
         };
         match self.router.calls.call(self.client, name, args, opts) {
             Ok(call) => {
@@ -530,6 +536,7 @@ impl Session {
             timeout: timeout_of(timeout),
             goal: true,
             goal_id: None,
+            on_behalf_of: None, // filled by `start`
         };
         let made = Made {
             goal: true,
@@ -894,6 +901,7 @@ impl Session {
             timeout: timeout_of(None),
             goal: false,
             goal_id: None,
+            on_behalf_of: None, // filled by `start`
         };
         Some(
             self.start(&provider, Payload::json(body), opts, made)
@@ -945,6 +953,7 @@ impl Session {
                 timeout: Some(ROBOT_NAMES_WAIT),
                 goal: false,
                 goal_id: None,
+                on_behalf_of: None, // filled by `start`
             };
             match self.start(&provider, Payload::json(&b"{}"[..]), opts, made) {
                 Ok(_) => pending += 1,
