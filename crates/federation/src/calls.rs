@@ -21,11 +21,13 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+use fleetlink_hub::security::HubGate;
 use fleetlink_proto::frame::CallStatus;
 use fleetlink_proto::{Encoding, Payload};
 use fleetlink_relay::calls::{
     CallEvent, CallId, CallOptions, CallRequest, ChannelPeer, PeerMsg, PeerReceiver, ServiceChange,
 };
+use fleetlink_relay::gate::{Caller, Gate, Op};
 use fleetlink_relay::{Router, TopicName};
 use serde_json::{Value, json};
 use tokio::sync::mpsc;
@@ -54,6 +56,40 @@ pub struct CallHeader {
     pub goal: bool,
     pub goal_id: Option<[u8; 16]>,
     pub timeout_ms: Option<u64>,
+    /// Who made the call at the calling hub, as that hub's gate knew them; `None`: the
+    /// hub itself. The robot's hub decides the call on it.
+    pub caller: Option<Caller>,
+}
+
+fn caller_json(c: &Caller) -> Value {
+    match c {
+        Caller::Robot { name } => json!({ "robot": name }),
+        Caller::User { name, groups } => json!({ "user": name, "groups": groups }),
+        Caller::Anonymous => json!({ "anonymous": true }),
+    }
+}
+
+fn caller_of(v: &Value) -> Result<Caller, String> {
+    let text = |k: &str| v.get(k).and_then(Value::as_str).map(str::to_owned);
+    if let Some(name) = text("robot") {
+        return Ok(Caller::Robot { name });
+    }
+    if let Some(name) = text("user") {
+        let groups = match v.get("groups") {
+            None => Vec::new(),
+            Some(Value::Array(a)) => a
+                .iter()
+                .map(|g| g.as_str().map(str::to_owned))
+                .collect::<Option<Vec<_>>>()
+                .ok_or("call header: caller groups must be strings")?,
+            Some(_) => return Err("call header: caller groups must be a list".into()),
+        };
+        return Ok(Caller::User { name, groups });
+    }
+    if v.get("anonymous").and_then(Value::as_bool) == Some(true) {
+        return Ok(Caller::Anonymous);
+    }
+    Err("call header: caller is not a robot, user or anonymous".into())
 }
 
 impl CallHeader {
@@ -65,6 +101,7 @@ impl CallHeader {
             "goal": self.goal,
             "goal_id": self.goal_id.map(|g| g.iter().map(|b| format!("{b:02x}")).collect::<String>()),
             "timeout_ms": self.timeout_ms,
+            "caller": self.caller.as_ref().map(caller_json),
         })
         .to_string()
         .into_bytes()
@@ -102,6 +139,10 @@ impl CallHeader {
             goal: v.get("goal").and_then(Value::as_bool).unwrap_or(false),
             goal_id,
             timeout_ms: v.get("timeout_ms").and_then(Value::as_u64),
+            caller: match v.get("caller") {
+                None | Some(Value::Null) => None,
+                Some(c) => Some(caller_of(c)?),
+            },
         })
     }
 }
@@ -171,6 +212,11 @@ impl ReplyHeader {
 struct Incoming {
     query: Query,
     from: (String, CallId),
+    /// The gate that let it through, for its audit record when it ends.
+    gate: HubGate,
+    name: TopicName,
+    op: Op,
+    size: usize,
 }
 
 enum Input {
@@ -294,6 +340,9 @@ impl CallBridge {
                 Some(input) = self.inputs.recv() => match input {
                     Input::Query(q) => self.on_query(q).await,
                     Input::Cancel { from, id } => {
+                        if !self.shared.admission.is_admitted(&from) {
+                            continue;
+                        }
                         if let Some(local) = self.incoming_ids.get(&(from, id)) {
                             self.router.calls.cancel(self.shared.client, *local);
                         }
@@ -360,6 +409,7 @@ impl CallBridge {
             goal: req.goal_id.is_some(),
             goal_id: req.goal_id,
             timeout_ms: remaining.map(|r| r.as_millis() as u64),
+            caller: req.on_behalf_of.as_deref().cloned(),
         };
         let limit = remaining.map_or(GOAL_QUERY_LIMIT, |r| r + DEADLINE_SLACK);
         self.shared.counters.calls_out.fetch_add(1, Relaxed);
@@ -450,6 +500,49 @@ impl CallBridge {
             (_, Err(e)) => return reply_done(&query, CallStatus::Failed, &e).await,
         };
         self.shared.counters.calls_in.fetch_add(1, Relaxed);
+        // Only a hub whose link showed a certificate of this fleet is answered.
+        if !self.shared.admission.is_admitted(&header.from) {
+            self.shared.counters.refused.fetch_add(1, Relaxed);
+            let why = self
+                .shared
+                .admission
+                .refusal(&header.from)
+                .unwrap_or_else(|| "no link from it has shown a certificate of this fleet".into());
+            let text = format!("hub {} is not admitted: {why}", header.from);
+            return reply_done(&query, CallStatus::Forbidden, &text).await;
+        }
+        // Decided as a local call would be: the caller's identity, vouched for by the
+        // calling hub (named by its certificate), through this hub's gate — hub-only
+        // services, rules naming the hub, and the audit log included.
+        let hub = self.shared.hub_name_of(&header.from);
+        let addr = self.shared.admission.address(&header.from);
+        let identity = match &header.caller {
+            None => Some(fleetlink_hub::security::hub_identity(&hub, addr)),
+            Some(c) => fleetlink_hub::security::vouched_identity(c, &hub, addr),
+        };
+        let Some(identity) = identity else {
+            return reply_done(
+                &query,
+                CallStatus::Failed,
+                "call header: a caller name is not valid",
+            )
+            .await;
+        };
+        let mut gate = HubGate::new(
+            self.shared.security.clone(),
+            self.shared.registry.clone(),
+            identity,
+        );
+        let op = if header.goal {
+            Op::SendActionGoal
+        } else {
+            Op::CallService
+        };
+        if !gate.allows(name.as_str(), op) {
+            self.shared.counters.refused.fetch_add(1, Relaxed);
+            let text = format!("{name}: not allowed for {}", gate.principal());
+            return reply_done(&query, CallStatus::Forbidden, &text).await;
+        }
         // The federation provides remote services here; a call for one of those must not
         // bounce to yet another hub.
         if self
@@ -465,10 +558,12 @@ impl CallBridge {
             .payload()
             .map(|p| bytes::Bytes::from(p.to_bytes().into_owned()))
             .unwrap_or_default();
+        let size = payload.len();
         let opts = CallOptions {
             timeout: header.timeout_ms.map(Duration::from_millis),
             goal: header.goal,
             goal_id: header.goal_id,
+            on_behalf_of: None,
         };
         match self
             .router
@@ -478,9 +573,27 @@ impl CallBridge {
             Ok(id) => {
                 let from = (header.from, header.id);
                 self.incoming_ids.insert(from.clone(), id);
-                self.incoming.insert(id, Incoming { query, from });
+                self.incoming.insert(
+                    id,
+                    Incoming {
+                        query,
+                        from,
+                        gate,
+                        name,
+                        op,
+                        size,
+                    },
+                );
             }
-            Err(refused) => reply_done(&query, refused.status, &refused.text).await,
+            Err(refused) => {
+                gate.finished(
+                    name.as_str(),
+                    op,
+                    size,
+                    &format!("{:?}: {}", refused.status, refused.text),
+                );
+                reply_done(&query, refused.status, &refused.text).await
+            }
         }
     }
 
@@ -509,10 +622,17 @@ impl CallBridge {
                 payload,
                 text,
             } => {
-                let Some(inc) = self.incoming.remove(&id) else {
+                let Some(mut inc) = self.incoming.remove(&id) else {
                     return;
                 };
                 self.incoming_ids.remove(&inc.from);
+                let outcome = if status == CallStatus::Ok {
+                    "ok".to_owned()
+                } else {
+                    format!("{status:?}: {text}")
+                };
+                inc.gate
+                    .finished(inc.name.as_str(), inc.op, inc.size, &outcome);
                 let header = ReplyHeader::Done {
                     status,
                     text,
@@ -533,9 +653,12 @@ impl CallBridge {
         }
     }
 
-    /// This hub's services and actions, offered to the fleet as they come and go.
+    /// This hub's services and actions, offered to the fleet as they come and go (a
+    /// robot's hub-only services stay here: only its own hub calls them).
     async fn offer(&mut self, change: ServiceChange) {
         match change {
+            ServiceChange::Added(info)
+                if fleetlink_relay::names::hub_only(info.name.as_str()).is_some() => {}
             ServiceChange::Added(info) => {
                 let offer = if info.action {
                     Offer::Action {
@@ -598,8 +721,28 @@ mod tests {
             goal: true,
             goal_id: Some([7; 16]),
             timeout_ms: Some(1500),
+            caller: Some(Caller::User {
+                name: "alice".into(),
+                groups: vec!["operators".into()],
+            }),
         };
-        assert_eq!(CallHeader::decode(&h.encode()), Ok(h));
+        assert_eq!(CallHeader::decode(&h.encode()), Ok(h.clone()));
+        for caller in [
+            None,
+            Some(Caller::Robot { name: "r2".into() }),
+            Some(Caller::Anonymous),
+        ] {
+            let h = CallHeader {
+                caller,
+                ..h.clone()
+            };
+            assert_eq!(CallHeader::decode(&h.encode()), Ok(h));
+        }
+        assert!(
+            CallHeader::decode(br#"{"from":"a","id":1,"enc":0,"caller":{"x":1}}"#)
+                .unwrap_err()
+                .contains("caller")
+        );
         assert!(CallHeader::decode(b"{}").unwrap_err().contains("from"));
         assert!(
             CallHeader::decode(b"nope")

@@ -5,7 +5,7 @@
 //!
 //! | key | what |
 //! |---|---|
-//! | `fleetlink/<f>/t/<topic>` | a topic's messages (put by the hub where it is published) |
+//! | `fleetlink/<f>/t/<hub>/<topic>` | a topic's messages, put by hub `<hub>` where it is published; a hub listens only to the hubs that offer the topic |
 //! | `fleetlink/<f>/cat/<hub>/<kind>/<flags>/<type>/<name>` | liveliness token: `<hub>` offers a topic (`t`), service (`s`), action (`a`), robot (`r`), wants a topic (`w`), or is itself named `<name>` (`h`) |
 //! | `fleetlink/<f>/schema/<hub>/<topic>` | queryable: the topic's full definition on `<hub>` |
 //! | `fleetlink/<f>/call/<hub>/<service>` | queryable: a service call or action goal to `<hub>` |
@@ -146,15 +146,9 @@ pub fn parse_offer(fleet: &str, key: &str) -> Option<(String, Offer)> {
     Some((hub, offer))
 }
 
-/// Key of a topic's messages.
-pub fn topic_key(fleet: &str, name: &str) -> Option<String> {
-    Some(format!("{}/t/{}", root(fleet), name_chunks(name)?))
-}
-
-/// The topic name a message key carries.
-pub fn topic_of_key(fleet: &str, key: &str) -> Option<String> {
-    let rest = key.strip_prefix(&root(fleet))?.strip_prefix("/t/")?;
-    Some(format!("/{rest}"))
+/// Key of a topic's messages as hub `hub` puts them.
+pub fn topic_key(fleet: &str, hub: &str, name: &str) -> Option<String> {
+    Some(format!("{}/t/{hub}/{}", root(fleet), name_chunks(name)?))
 }
 
 /// What travels beside a message's payload (the Zenoh attachment): its encoding, its
@@ -285,11 +279,11 @@ mod tests {
             assert_eq!(name_chunks(bad), None, "{bad}");
         }
         assert_eq!(name_chunks("/a/b_c/~d"), Some("a/b_c/~d"));
-        assert_eq!(topic_key("f", "/a/b").as_deref(), Some("fleetlink/f/t/a/b"));
         assert_eq!(
-            topic_of_key("f", "fleetlink/f/t/a/b").as_deref(),
-            Some("/a/b")
+            topic_key("f", "h1", "/a/b").as_deref(),
+            Some("fleetlink/f/t/h1/a/b")
         );
+        assert_eq!(topic_key("f", "h1", "/a/*"), None);
         assert_eq!(parse_offer("f", "fleetlink/g/cat/h/t/0/-/x"), None);
         assert_eq!(parse_offer("f", "fleetlink/f/cat/h/z/0/-/x"), None);
         assert_eq!(chunk("hub a/1"), "hub_a_1");

@@ -29,20 +29,26 @@
 //! its hub other than itself.
 
 pub mod calls;
+mod inlet;
 pub mod keys;
 pub mod topics;
+pub mod trust;
 
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex};
 
+use fleetlink_auth::{HubName, Security};
 use fleetlink_hub::federated::{Federated, RemoteRobot};
 use fleetlink_hub::registry::Registry;
+use fleetlink_hub::security::HubGate;
 use fleetlink_relay::router::ClientKind;
 use fleetlink_relay::{ClientId, Router};
 use serde_json::{Value, json};
 use tokio_util::sync::CancellationToken;
+
+pub use trust::{Admission, Trust};
 
 /// Why the federation could not start.
 #[derive(Debug, thiserror::Error)]
@@ -55,6 +61,17 @@ pub enum FederationError {
     Open(String),
     #[error("Zenoh: {0}")]
     Zenoh(String),
+    #[error(
+        "hubs must prove who they are before anything crosses between them: give this hub \
+         the fleet's CA and its own certificate (--zenoh-ca, --zenoh-cert, --zenoh-key; \
+         `fleetlink admin cert federation --fleet {fleet} --hub NAME --ip ADDRESS` makes \
+         them) and tls/ endpoints, e.g. --zenoh-listen tls/0.0.0.0:7447 (docs/scaling.md, \
+         \"Secure federation in five minutes\"); on a private network only, \
+         --zenoh-insecure-tcp federates over plain TCP"
+    )]
+    Unauthenticated { fleet: String },
+    #[error("federation certificate: {0}")]
+    Certificate(#[from] fleetlink_auth::tls::federation::FederationCertError),
 }
 
 fn zerr(e: impl std::fmt::Display) -> FederationError {
@@ -66,21 +83,38 @@ fn zerr(e: impl std::fmt::Display) -> FederationError {
 pub struct Settings {
     /// Hubs federate with the hubs of the same fleet name (the first chunk of every key).
     pub fleet: String,
-    /// This hub's name as the others list it.
+    /// This hub's name as the others list it (over TLS: its certificate's).
     pub hub_name: String,
     pub zenoh: zenoh::Config,
+    pub trust: Trust,
+}
+
+/// Where a hub's federation certificates come from, and whether it may go without.
+#[derive(Debug, Clone, Default)]
+pub struct TrustArgs {
+    /// The fleet's CA, this hub's certificate (chain) and key (`--zenoh-ca`, …); each
+    /// may instead come from the Zenoh file's `transport/link/tls` section.
+    pub ca: Option<std::path::PathBuf>,
+    pub cert: Option<std::path::PathBuf>,
+    pub key: Option<std::path::PathBuf>,
+    /// `--zenoh-insecure-tcp`: plain TCP, every peer believed.
+    pub insecure_tcp: bool,
 }
 
 /// A Zenoh configuration from a file (JSON5, Zenoh's own format) and/or flags: `mode`
-/// (`peer`, `router`, `client`), endpoints to connect to and listen on (`tcp/host:port`).
-/// Multicast scouting is off unless the file turns it on: hubs find each other through
-/// the endpoints given, not by whoever answers on the local network.
+/// (`peer`, `router`, `client`), endpoints to connect to and listen on, and how hubs
+/// authenticate each other ([`trust`]). Multicast scouting is off unless the file turns
+/// it on: hubs find each other through the endpoints given, not by whoever answers on the
+/// local network. A hub listens only on the endpoints it is given; with certificates
+/// every endpoint must be `tls/…` and links are mutual TLS with the fleet's CA.
 pub fn zenoh_config(
     file: Option<&Path>,
     mode: Option<&str>,
     connect: &[String],
     listen: &[String],
-) -> Result<zenoh::Config, FederationError> {
+    fleet: &str,
+    trust: &TrustArgs,
+) -> Result<(zenoh::Config, Trust), FederationError> {
     let cfg_err =
         |what: &str, e: &dyn std::fmt::Display| FederationError::Config(format!("{what}: {e}"));
     let mut cfg = match file {
@@ -109,7 +143,7 @@ pub fn zenoh_config(
         for ep in list {
             if !ep.contains('/') {
                 return Err(FederationError::Config(format!(
-                    "endpoint {ep:?}: expected PROTOCOL/ADDRESS, e.g. tcp/10.0.0.2:7447"
+                    "endpoint {ep:?}: expected PROTOCOL/ADDRESS, e.g. tls/10.0.0.2:7447"
                 )));
             }
         }
@@ -117,7 +151,76 @@ pub fn zenoh_config(
         cfg.insert_json5(key, &value)
             .map_err(|e| cfg_err(&format!("{key} {value}"), &e))?;
     }
-    Ok(cfg)
+    // Never Zenoh's default listener (`tcp/[::]:0`, every interface): only what is given.
+    let default = zenoh::Config::default();
+    if listen.is_empty()
+        && cfg.get_json("listen/endpoints").ok() == default.get_json("listen/endpoints").ok()
+    {
+        cfg.insert_json5("listen/endpoints", "[]")
+            .map_err(|e| cfg_err("listen/endpoints", &e))?;
+    }
+    // Room for bursts between hubs. Zenoh's default is two batches per priority and a
+    // best-effort message waiting 1 ms for one before it is dropped; on a busy machine two
+    // batches fill while one is being encrypted, and a burst of small messages lost some.
+    // What a configuration file sets stays.
+    for (key, value) in [
+        ("transport/link/tx/queue/size/data", "16"),
+        (
+            "transport/link/tx/queue/congestion_control/drop/wait_before_drop",
+            "10000",
+        ),
+    ] {
+        if cfg.get_json(key).ok() == default.get_json(key).ok() {
+            cfg.insert_json5(key, value).map_err(|e| cfg_err(key, &e))?;
+        }
+    }
+    let trust = trust::resolve(&mut cfg, fleet, trust)?;
+    let plain_ok = matches!(trust, Trust::PlainTcp);
+    for key in ["connect/endpoints", "listen/endpoints"] {
+        for ep in endpoints(&cfg, key) {
+            let protocol = ep.split('/').next().unwrap_or("");
+            match protocol {
+                "tls" => {}
+                "tcp" if plain_ok => {}
+                "tcp" => {
+                    return Err(FederationError::Config(format!(
+                        "endpoint {ep}: links between hubs use TLS (tls/{}); plain tcp/ needs \
+                         --zenoh-insecure-tcp, for a private network only",
+                        ep.split_once('/').map_or("", |(_, a)| a)
+                    )));
+                }
+                other => {
+                    return Err(FederationError::Config(format!(
+                        "endpoint {ep}: protocol {other:?} is not available (tls/ only, or tcp/ \
+                         with --zenoh-insecure-tcp)"
+                    )));
+                }
+            }
+        }
+    }
+    Ok((cfg, trust))
+}
+
+/// The endpoints under `key` (a list, or a list per mode).
+fn endpoints(cfg: &zenoh::Config, key: &str) -> Vec<String> {
+    let Some(v) = cfg
+        .get_json(key)
+        .ok()
+        .and_then(|j| serde_json::from_str::<Value>(&j).ok())
+    else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    let mut take = |list: &Value| {
+        if let Some(a) = list.as_array() {
+            out.extend(a.iter().filter_map(|e| e.as_str().map(str::to_owned)));
+        }
+    };
+    match &v {
+        Value::Object(by_mode) => by_mode.values().for_each(&mut take),
+        other => take(other),
+    }
+    out
 }
 
 /// Counters of what crossed between this hub and the others.
@@ -139,6 +242,8 @@ pub struct Counters {
     /// Calls and goals sent to other hubs, and received from them.
     pub calls_out: AtomicU64,
     pub calls_in: AtomicU64,
+    /// Messages and calls from other hubs that this hub's rules refused.
+    pub refused: AtomicU64,
 }
 
 /// One exported topic's figures.
@@ -177,9 +282,34 @@ pub struct Shared {
     pub exports: Mutex<BTreeMap<String, Arc<ExportFigures>>>,
     pub imports: Mutex<BTreeMap<String, Arc<ImportFigures>>>,
     pub peers: Mutex<BTreeMap<String, Peer>>,
+    /// Which hubs are admitted, by the certificates their links show.
+    pub admission: Arc<Admission>,
+    pub security: Arc<Security>,
+    pub registry: Arc<Registry>,
 }
 
 impl Shared {
+    /// Hub `zid`'s name for rules and the audit log: its certificate's (over TLS), else
+    /// the name it gave itself.
+    pub fn hub_name_of(&self, zid: &str) -> HubName {
+        let name = match self.admission.admitted(zid) {
+            Some(a) if !a.name.is_empty() => a.name,
+            _ => self.peer_name(zid),
+        };
+        HubName::new(&name)
+            .or_else(|_| HubName::new(&keys::chunk(&name)))
+            .unwrap_or_else(|_| HubName::new("unnamed").expect("a valid name"))
+    }
+
+    /// A gate for what hub `zid` does acting for itself (the topics it forwards here).
+    pub fn hub_gate(&self, zid: &str) -> HubGate {
+        let identity = fleetlink_hub::security::hub_identity(
+            &self.hub_name_of(zid),
+            self.admission.address(zid),
+        );
+        HubGate::new(self.security.clone(), self.registry.clone(), identity)
+    }
+
     /// The name of hub `id`, or its id while its name token has not arrived.
     pub fn peer_name(&self, id: &str) -> String {
         self.peers
@@ -204,13 +334,42 @@ impl Federation {
         settings: Settings,
         router: Arc<Router>,
         registry: Arc<Registry>,
+        security: Arc<Security>,
         shutdown: CancellationToken,
     ) -> Result<Federation, FederationError> {
+        let fleet = keys::chunk(&settings.fleet);
+        if matches!(settings.trust, Trust::PlainTcp) {
+            tracing::warn!(
+                "federation over PLAIN TCP (--zenoh-insecure-tcp): hubs do not authenticate \
+                 each other, and any process that reaches a Zenoh endpoint of this hub can list, \
+                 read and drive the fleet. Use it on a private network only; see docs/scaling.md, \
+                 \"Secure federation in five minutes\""
+            );
+        }
+        let admission = Admission::new(settings.trust.clone(), &fleet);
         let session = zenoh::open(settings.zenoh)
             .await
             .map_err(|e| FederationError::Open(e.to_string()))?;
         let me = session.zid().to_string();
-        let fleet = keys::chunk(&settings.fleet);
+        let links = admission.clone();
+        session
+            .info()
+            .link_events_listener()
+            .history(true)
+            .callback(move |event| {
+                let link = event.link();
+                let zid = link.zid().to_string();
+                match event.kind() {
+                    zenoh::sample::SampleKind::Put => {
+                        let remote = link.dst().to_string();
+                        let _ = links.link_up(&zid, link.auth_identifier(), &remote);
+                    }
+                    zenoh::sample::SampleKind::Delete => links.link_down(&zid),
+                }
+            })
+            .background()
+            .await
+            .map_err(zerr)?;
         let (client, outbox) = router.connect(
             ClientKind::Internal {
                 role: "federation".into(),
@@ -226,6 +385,9 @@ impl Federation {
             exports: Mutex::new(BTreeMap::new()),
             imports: Mutex::new(BTreeMap::new()),
             peers: Mutex::new(BTreeMap::new()),
+            admission,
+            security,
+            registry: registry.clone(),
         });
         // This hub's name token first, so the others can name it in their listings.
         let hub_key = keys::offer_key(
@@ -303,7 +465,20 @@ impl Federated for Federation {
             .lock()
             .unwrap_or_else(|p| p.into_inner())
             .iter()
-            .map(|(id, p)| json!({ "id": id, "name": p.name, "robots": p.robots }))
+            .map(|(id, p)| {
+                json!({
+                    "id": id,
+                    "name": p.name,
+                    "robots": p.robots,
+                    "admitted": s.admission.is_admitted(id),
+                })
+            })
+            .collect();
+        let refused: Vec<Value> = s
+            .admission
+            .refused()
+            .into_iter()
+            .map(|(id, why)| json!({ "id": id, "reason": why }))
             .collect();
         let exported: Vec<Value> = s
             .exports
@@ -336,7 +511,9 @@ impl Federated for Federation {
             "federated": true,
             "fleet": s.fleet,
             "hub": { "id": s.me, "name": s.hub_name },
+            "authenticated": !s.admission.is_plain_tcp(),
             "peers": peers,
+            "refused": refused,
             "exported": exported,
             "imported": imported,
             "counters": {
@@ -349,6 +526,7 @@ impl Federated for Federation {
                 "malformed": c.malformed.load(Relaxed),
                 "calls_out": c.calls_out.load(Relaxed),
                 "calls_in": c.calls_in.load(Relaxed),
+                "refused": c.refused.load(Relaxed),
             },
         })
     }
@@ -401,6 +579,15 @@ impl Federated for Federation {
                 "Service calls and action goals received from other hubs",
                 c.calls_in.load(Relaxed),
             ),
+            (
+                "fleetlink_federation_refused",
+                "Messages and calls from other hubs refused here (hub not admitted, or a rule)",
+                c.refused.load(Relaxed),
+            ),
         ]
     }
 }
+
+#[cfg(test)]
+#[path = "config_tests.rs"]
+mod config_tests;

@@ -13,7 +13,9 @@
 //! 3. **Want.** While someone here subscribes to a topic (a client other than the
 //!    federation that is not one of its publishers, [`Topic::demand_besides`]), the
 //!    federation holds one Zenoh subscriber for it — one per hub, however many subscribe
-//!    here — and a want token. Each message heard is published here unchanged.
+//!    here — and a want token. What is heard is taken only from admitted hubs that offer
+//!    the topic, through this hub's rules for each ([`crate::inlet`]), and published here
+//!    unchanged.
 //! 4. **Send.** While another hub wants a topic, the federation subscribes to it here
 //!    (quietly: the subscription does not list the topic) and puts each message into
 //!    Zenoh once. It subscribes even before anyone publishes the topic here, so a robot
@@ -29,7 +31,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use fleetlink_hub::registry::Registry;
-use fleetlink_proto::{Payload, Schema};
+use fleetlink_proto::Schema;
 use fleetlink_relay::outbox::Taken;
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicsWatch};
 use fleetlink_relay::{Outbox, Router, Topic, TopicId, TopicName};
@@ -41,11 +43,16 @@ use zenoh::pubsub::{Publisher, Subscriber};
 use zenoh::qos::CongestionControl;
 use zenoh::sample::{Locality, SampleKind};
 
-use crate::keys::{self, MessageHeader, Offer, StreamMark};
+use crate::inlet::Inlet;
+use crate::keys::{self, MessageHeader, Offer};
 use crate::{ExportFigures, FederationError, ImportFigures, Shared, zerr};
 
 /// How often the robots online are compared with what was offered.
 const ROBOTS_EVERY: Duration = Duration::from_millis(250);
+
+/// Tokens kept per hub not admitted yet (its links' certificates not seen yet): a hub
+/// joining offers its whole catalog at once; beyond this it is offering too much to be one.
+const PARKED_PER_HUB: usize = 100_000;
 
 /// Which hub provides each remote service or action this hub routes calls to.
 pub type Providers = Arc<Mutex<HashMap<TopicName, String>>>;
@@ -91,8 +98,10 @@ struct Entry {
     /// Advertised here by the federation (imported), and whether a definition was asked.
     imported: bool,
     asked_schema: bool,
-    /// Wanted here: the Zenoh subscriber and the want token.
-    listening: Option<(Subscriber<()>, LivelinessToken)>,
+    /// Wanted here: the want token (while someone here subscribes), and one Zenoh
+    /// subscriber per admitted hub that offers the topic — nothing is heard from a hub
+    /// that does not offer it.
+    listening: Option<Listening>,
     /// Wanted by other hubs (their ids).
     wanted_by: HashSet<String>,
     /// Sent from here: the federation's subscription and the outlet's topic id.
@@ -110,6 +119,14 @@ impl Entry {
             && self.wanted_by.is_empty()
             && self.sending.is_none()
     }
+}
+
+/// A topic wanted here: the want token, the Zenoh subscriber to every hub's key for it,
+/// and the intake that decides what of it is taken ([`Inlet`]).
+struct Listening {
+    _want: LivelinessToken,
+    _sub: Subscriber<()>,
+    inlet: Arc<Inlet>,
 }
 
 /// A remote service or action: the hubs offering it, with type and kind.
@@ -134,6 +151,8 @@ pub struct Topics {
     robots: HashMap<String, LivelinessToken>,
     services: HashMap<TopicName, RemoteService>,
     providers: Providers,
+    /// Tokens of hubs not admitted (yet), by hub: taken when the hub is admitted.
+    parked: HashMap<String, Vec<(Offer, bool)>>,
 }
 
 impl Topics {
@@ -178,6 +197,7 @@ impl Topics {
             robots: HashMap::new(),
             services: HashMap::new(),
             providers: Arc::default(),
+            parked: HashMap::new(),
         })
     }
 
@@ -193,6 +213,7 @@ impl Topics {
             self.shared.clone(),
             stop.clone(),
         );
+        let mut admitted = self.shared.admission.subscribe();
         let work = async {
             let mut robots_gen = u64::MAX;
             let mut tick = tokio::time::interval(ROBOTS_EVERY);
@@ -216,6 +237,13 @@ impl Topics {
                             self.evaluate(&name).await;
                         }
                     }
+                    Ok(()) = admitted.changed() => {
+                        let mut touched = HashSet::new();
+                        self.unpark(&mut touched);
+                        for name in touched {
+                            self.evaluate(&name).await;
+                        }
+                    }
                     _ = tick.tick() => {
                         let generation = registry.generation();
                         if generation != robots_gen {
@@ -234,7 +262,47 @@ impl Topics {
         tokio::join!(pump, work);
     }
 
+    /// Takes the parked tokens of hubs admitted since.
+    fn unpark(&mut self, touched: &mut HashSet<TopicName>) {
+        let now: Vec<String> = self
+            .parked
+            .keys()
+            .filter(|h| self.shared.admission.is_admitted(h))
+            .cloned()
+            .collect();
+        for hub in now {
+            for (offer, put) in self.parked.remove(&hub).unwrap_or_default() {
+                self.on_news(
+                    News::Token {
+                        hub: hub.clone(),
+                        offer,
+                        put,
+                    },
+                    touched,
+                );
+            }
+        }
+        // Hubs refused or gone for good keep nothing parked for long.
+        let admission = &self.shared.admission;
+        self.parked
+            .retain(|hub, _| admission.refusal(hub).is_none());
+    }
+
     fn on_news(&mut self, news: News, touched: &mut HashSet<TopicName>) {
+        if let News::Token { hub, offer, put } = &news
+            && !self.shared.admission.is_admitted(hub)
+        {
+            // Nothing a hub offers or wants counts before a link shows its certificate.
+            let tokens = self.parked.entry(hub.clone()).or_default();
+            if *put {
+                if tokens.len() < PARKED_PER_HUB {
+                    tokens.push((offer.clone(), true));
+                }
+            } else {
+                tokens.retain(|(o, _)| o != offer);
+            }
+            return;
+        }
         match news {
             News::Token { hub, offer, put } => match offer {
                 Offer::Topic {
@@ -281,6 +349,21 @@ impl Topics {
                     }
                 }
                 Offer::Hub { name } => {
+                    // Over TLS a hub is known by its certificate's name, not by this token.
+                    let certified = self
+                        .shared
+                        .admission
+                        .admitted(&hub)
+                        .map(|a| a.name)
+                        .filter(|n| !n.is_empty());
+                    if let Some(cert) = &certified
+                        && *cert != name
+                    {
+                        tracing::warn!(
+                            "federation: hub {hub} calls itself {name:?}, its certificate names it {cert:?}: known as {cert:?}"
+                        );
+                    }
+                    let name = certified.unwrap_or(name);
                     let mut peers = self.shared.peers.lock().unwrap_or_else(|p| p.into_inner());
                     if put {
                         tracing::info!("federation: hub {name} ({hub}) joined");
@@ -316,6 +399,9 @@ impl Topics {
         let offer_key = snap.as_ref().and_then(|s| {
             if !s.publishers.iter().any(|c| *c != me) {
                 return None;
+            }
+            if fleetlink_relay::names::hub_only(name.as_str()).is_some() {
+                return None; // read by this hub only (a robot's black box)
             }
             let offer = Offer::Topic {
                 name: name.as_str().to_owned(),
@@ -391,19 +477,21 @@ impl Topics {
         if demand && e.listening.is_none() {
             if let Some(t) = &topic {
                 let figures = e.import_figures.get_or_insert_with(Arc::default).clone();
-                match self.listen(name, t.clone(), figures.clone()).await {
-                    Ok(l) => {
-                        figures.subscribed.store(true, Relaxed);
-                        e.listening = Some(l);
-                    }
+                match self.want(name, t.clone(), figures).await {
+                    Ok(l) => e.listening = Some(l),
                     Err(err) => tracing::warn!("federation: cannot subscribe to {name}: {err}"),
                 }
             }
         } else if !demand && e.listening.is_some() {
             e.listening = None;
+        }
+        if let Some(l) = &e.listening {
+            l.inlet.set_offerers(e.offered_by.keys(), Instant::now());
             if let Some(f) = &e.import_figures {
-                f.subscribed.store(false, Relaxed);
+                f.subscribed.store(l.inlet.has_sources(), Relaxed);
             }
+        } else if let Some(f) = &e.import_figures {
+            f.subscribed.store(false, Relaxed);
         }
 
         // 4. Send while another hub wants it.
@@ -473,16 +561,16 @@ impl Topics {
         }
     }
 
-    /// A Zenoh subscriber publishing what it hears into `topic`, and the want token that
-    /// tells the hubs with publishers to send it.
-    async fn listen(
+    /// The want token that tells the hubs with publishers to send `name`, and one Zenoh
+    /// subscriber to what any hub puts of it, taken by an [`Inlet`] (declared while
+    /// someone here subscribes, whether or not a hub offers it yet).
+    async fn want(
         &self,
         name: &TopicName,
         topic: Arc<Topic>,
         figures: Arc<ImportFigures>,
-    ) -> Result<(Subscriber<()>, LivelinessToken), FederationError> {
-        let key = keys::topic_key(&self.shared.fleet, name.as_str())
-            .ok_or_else(|| FederationError::Zenoh(format!("{name} cannot be a Zenoh key")))?;
+    ) -> Result<Listening, FederationError> {
+        let not_a_key = || FederationError::Zenoh(format!("{name} cannot be a Zenoh key"));
         let want = keys::offer_key(
             &self.shared.fleet,
             &self.shared.me,
@@ -490,15 +578,27 @@ impl Topics {
                 name: name.as_str().to_owned(),
             },
         )
-        .expect("a name with a topic key has a want key");
+        .ok_or_else(not_a_key)?;
+        let key = keys::topic_key(&self.shared.fleet, "*", name.as_str()).ok_or_else(not_a_key)?;
+        let inlet = Inlet::new(topic, self.shared.clone(), figures);
+        let prefix = format!("{}/t/", keys::root(&self.shared.fleet));
         let shared = self.shared.clone();
-        let mark = Mutex::new(StreamMark::default());
+        let into = inlet.clone();
         let sub = self
             .session
             .declare_subscriber(key)
             .allowed_origin(Locality::Remote)
             .callback(move |sample| {
                 let counters = &shared.counters;
+                let Some(hub) = sample
+                    .key_expr()
+                    .as_str()
+                    .strip_prefix(&prefix)
+                    .and_then(|rest| rest.split('/').next())
+                else {
+                    counters.malformed.fetch_add(1, Relaxed);
+                    return;
+                };
                 let header = match sample
                     .attachment()
                     .map(|a| MessageHeader::decode(&a.to_bytes()))
@@ -514,28 +614,8 @@ impl Topics {
                         return;
                     }
                 };
-                if let Some(epoch) = header.reliable {
-                    let fresh = mark
-                        .lock()
-                        .unwrap_or_else(|p| p.into_inner())
-                        .admit(epoch, header.seq);
-                    if !fresh {
-                        counters.duplicates.fetch_add(1, Relaxed);
-                        return;
-                    }
-                }
                 let bytes = bytes::Bytes::from(sample.payload().to_bytes().into_owned());
-                counters.received.fetch_add(1, Relaxed);
-                counters
-                    .received_bytes
-                    .fetch_add(bytes.len() as u64, Relaxed);
-                figures.received.fetch_add(1, Relaxed);
-                topic.publish(
-                    shared.client,
-                    header.seq,
-                    header.stamp_ns,
-                    Payload::new(header.encoding, bytes),
-                );
+                into.take(hub, header, bytes, Instant::now());
             })
             .await
             .map_err(zerr)?;
@@ -545,7 +625,11 @@ impl Topics {
             .declare_token(want)
             .await
             .map_err(zerr)?;
-        Ok((sub, token))
+        Ok(Listening {
+            _want: token,
+            _sub: sub,
+            inlet,
+        })
     }
 
     /// Subscribes here on behalf of the hubs that want `name`, with a Zenoh publisher for
@@ -554,7 +638,7 @@ impl Topics {
         &self,
         name: &TopicName,
     ) -> Result<(SubscriptionId, TopicId, Arc<ExportFigures>), FederationError> {
-        let key = keys::topic_key(&self.shared.fleet, name.as_str())
+        let key = keys::topic_key(&self.shared.fleet, &self.shared.me, name.as_str())
             .ok_or_else(|| FederationError::Zenoh(format!("{name} cannot be a Zenoh key")))?;
         let sid = self
             .router

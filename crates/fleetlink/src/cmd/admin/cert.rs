@@ -43,6 +43,23 @@ pub enum CertCmd {
         #[arg(long = "ip", value_name = "IP")]
         ips: Vec<IpAddr>,
     },
+    /// A hub's federation certificate (HUB.pem, HUB.key, named HUB@FLEET), signed by the
+    /// fleet's own federation CA in DIR/federation-FLEET/ (made on first use): hubs of
+    /// the fleet accept each other's links with it and refuse everyone else.
+    Federation {
+        /// The fleet (the hubs' --fleet).
+        #[arg(long)]
+        fleet: String,
+        /// The hub's name in the federation (letters, digits, '_', '.', '-').
+        #[arg(long)]
+        hub: String,
+        /// A DNS name other hubs connect to this hub by; repeatable.
+        #[arg(long = "name", value_name = "DNS")]
+        names: Vec<String>,
+        /// An IP address other hubs connect to this hub at; repeatable.
+        #[arg(long = "ip", value_name = "IP")]
+        ips: Vec<IpAddr>,
+    },
     /// A client certificate (NAME.pem, NAME.key) naming robot NAME, for mutual TLS.
     Robot {
         /// The robot's name, as in its agent's `name:` (the rule: docs/config.md, "Robot
@@ -52,12 +69,22 @@ pub enum CertCmd {
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
+    if let CertCmd::Federation {
+        fleet,
+        hub,
+        names,
+        ips,
+    } = &args.what
+    {
+        return federation(&args.dir, args.days, fleet, hub, names, ips);
+    }
     std::fs::create_dir_all(&args.dir)
         .with_context(|| format!("creating {}", args.dir.display()))?;
     let dir = &args.dir;
-    let ca = load_or_make_ca(dir)?;
+    let ca = load_or_make_ca(dir, &CaKind::Hub)?;
     let ca_pem = dir.join("ca.pem");
     match args.what {
+        CertCmd::Federation { .. } => unreachable!("handled above"),
         CertCmd::Hub { names, ips } => {
             anyhow::ensure!(
                 !names.is_empty() || !ips.is_empty(),
@@ -144,8 +171,87 @@ pub fn run(args: Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// A hub's federation certificate, from the fleet's federation CA (a CA of its own, so
+/// that no robot or web certificate of the hub's other CA can pass for a hub).
+fn federation(
+    dir: &Path,
+    days: i64,
+    fleet: &str,
+    hub: &str,
+    names: &[String],
+    ips: &[IpAddr],
+) -> anyhow::Result<()> {
+    let cn = format!("{hub}@{fleet}");
+    fleetlink_auth::tls::federation::HubCertName::parse(&cn)
+        .with_context(|| format!("--hub {hub:?} --fleet {fleet:?}"))?;
+    anyhow::ensure!(
+        !names.is_empty() || !ips.is_empty(),
+        "give the names other hubs use to reach this hub (their tls/ endpoints): --name DNS \
+         and/or --ip IP"
+    );
+    let dir = dir.join(format!("federation-{fleet}"));
+    std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+    let ca = load_or_make_ca(&dir, &CaKind::Federation(fleet.to_owned()))?;
+    let mut params = leaf_params(days)?;
+    params.distinguished_name.push(DnType::CommonName, &cn);
+    for n in names {
+        params.subject_alt_names.push(SanType::DnsName(
+            n.as_str()
+                .try_into()
+                .with_context(|| format!("--name {n:?} is not a DNS name"))?,
+        ));
+    }
+    params
+        .subject_alt_names
+        .extend(ips.iter().map(|ip| SanType::IpAddress(*ip)));
+    // A hub both accepts links from other hubs and makes them.
+    params.extended_key_usages = vec![
+        ExtendedKeyUsagePurpose::ServerAuth,
+        ExtendedKeyUsagePurpose::ClientAuth,
+    ];
+    let (cert, key) = (
+        dir.join(format!("{hub}.pem")),
+        dir.join(format!("{hub}.key")),
+    );
+    issue(params, &ca, &cert, &key)?;
+    let ca_pem = dir.join("ca.pem");
+    println!(
+        "wrote {} and {} (hub {hub}'s federation certificate, {cn}, valid {days} days)",
+        cert.display(),
+        key.display()
+    );
+    println!();
+    println!(
+        "run the hub with (every hub of fleet {fleet} gets the same CA, and its own certificate):"
+    );
+    let at = names.first().cloned().unwrap_or_else(|| ips[0].to_string());
+    println!(
+        "  fleetlink hub --federate zenoh --fleet {fleet} --zenoh-ca {} --zenoh-cert {} \\",
+        ca_pem.display(),
+        cert.display()
+    );
+    println!(
+        "      --zenoh-key {} --zenoh-listen tls/{}:7447 [--zenoh-connect tls/OTHER-HUB:7447] ...",
+        key.display(),
+        if at.contains(':') {
+            format!("[{at}]")
+        } else {
+            at.clone()
+        }
+    );
+    Ok(())
+}
+
+/// Which CA a directory holds.
+enum CaKind {
+    /// The hub's CA: its web certificate and robots' client certificates.
+    Hub,
+    /// A fleet's federation CA: hub certificates only.
+    Federation(String),
+}
+
 /// The CA in `dir`, made (and announced) if `ca.pem` does not exist yet.
-fn load_or_make_ca(dir: &Path) -> anyhow::Result<Issuer<'static, KeyPair>> {
+fn load_or_make_ca(dir: &Path, kind: &CaKind) -> anyhow::Result<Issuer<'static, KeyPair>> {
     let (cert, key) = (dir.join("ca.pem"), dir.join("ca.key"));
     if cert.exists() {
         let key_pem = std::fs::read_to_string(&key)
@@ -159,9 +265,11 @@ fn load_or_make_ca(dir: &Path) -> anyhow::Result<Issuer<'static, KeyPair>> {
     }
     let key_pair = KeyPair::generate().context("generating the CA key")?;
     let mut params = CertificateParams::default();
-    params
-        .distinguished_name
-        .push(DnType::CommonName, "fleetlink CA");
+    let name = match kind {
+        CaKind::Hub => "fleetlink CA".to_owned(),
+        CaKind::Federation(fleet) => format!("fleetlink federation CA of fleet {fleet}"),
+    };
+    params.distinguished_name.push(DnType::CommonName, name);
     params.is_ca = IsCa::Ca(BasicConstraints::Constrained(0));
     params.key_usages = vec![
         KeyUsagePurpose::KeyCertSign,
@@ -174,12 +282,20 @@ fn load_or_make_ca(dir: &Path) -> anyhow::Result<Issuer<'static, KeyPair>> {
         .context("signing the CA certificate")?;
     write_private(&key, &key_pair.serialize_pem())?;
     std::fs::write(&cert, ca_cert.pem()).with_context(|| format!("writing {}", cert.display()))?;
-    println!(
-        "wrote {} (a new CA: agents trust it as tls.ca) and {} (its key: keep it private; \
-         it signs the hub's and robots' certificates)",
-        cert.display(),
-        key.display()
-    );
+    match kind {
+        CaKind::Hub => println!(
+            "wrote {} (a new CA: agents trust it as tls.ca) and {} (its key: keep it private; \
+             it signs the hub's and robots' certificates)",
+            cert.display(),
+            key.display()
+        ),
+        CaKind::Federation(fleet) => println!(
+            "wrote {} (a new federation CA: every hub of fleet {fleet} is given it as \
+             --zenoh-ca) and {} (its key: keep it private; it signs the hubs' certificates)",
+            cert.display(),
+            key.display()
+        ),
+    }
     Ok(Issuer::new(params, key_pair))
 }
 
