@@ -1,17 +1,21 @@
 #!/usr/bin/env bash
-# What a Zenoh hop between federated hubs costs (issue 38): three hubs on this machine,
-# joined by Zenoh on loopback, and `fleetlink bench fleet` beside them. For each fleet
-# size N, two runs in turn (A B A B ..., REPEAT pairs):
+# What a Zenoh hop between federated hubs costs (issues 38, 55): three hubs on this
+# machine, joined by Zenoh on loopback, and `fleetlink bench fleet` beside them. For each
+# fleet size N, three runs in turn (A B C A B C ..., REPEAT rounds):
 #
-#   one   robots and subscribers all on hub A (the other two hubs federated but idle):
-#         every message stays on one hub;
-#   three robot i on hub i mod 3, its pose subscriber on the next hub, the wildcard
-#         subscriber on hub A: every pose message crosses one Zenoh hop, and the
-#         wildcard's share of the other hubs' topics crosses to A.
+#   one        robots and subscribers all on hub A (the other two hubs federated over
+#              TLS but idle): every message stays on one hub;
+#   three-tls  robot i on hub i mod 3, its pose subscriber on the next hub, the wildcard
+#              subscriber on hub A: every pose message crosses one Zenoh hop, and the
+#              wildcard's share of the other hubs' topics crosses to A. The hubs' links
+#              are mutual TLS (certificates from `fleetlink admin cert federation`), as
+#              a hub runs by default;
+#   three-tcp  the same over plain TCP (--zenoh-insecure-tcp): what authentication costs.
 #
 # Latency is end to end (robot stamp to subscriber receipt, one clock); the Zenoh hop's
 # cost is the difference between the runs. Hub CPU is summed over the three processes
-# (from /proc) and divided by the messages delivered.
+# (from /proc) and divided by the messages delivered. At the defaults, 30 robots send
+# 3,000 msg/s.
 #
 #   cargo build --release -p fleetlink && scripts/bench-federation.sh [SIZES] [SECONDS]
 #
@@ -45,7 +49,12 @@ trap cleanup EXIT
 
 free_port() { python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])'; }
 declare -A addr pid
-start_hubs() {
+pki="$tmp/pki/federation-bench"
+for h in a b c; do
+    "$bin" admin cert --dir "$tmp/pki" federation --fleet bench --hub "bench-$h" --ip 127.0.0.1 >/dev/null
+done
+start_hubs() { # tls|tcp
+    local link=$1
     for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
     for p in "${pids[@]}"; do wait "$p" 2>/dev/null || true; done
     pids=()
@@ -54,14 +63,16 @@ start_hubs() {
     local za zb zc
     za="$(free_port)" zb="$(free_port)" zc="$(free_port)"
     declare -A listen=([a]=$za [b]=$zb [c]=$zc)
-    declare -A connect=([a]="" [b]="--zenoh-connect tcp/127.0.0.1:$za"
-        [c]="--zenoh-connect tcp/127.0.0.1:$za --zenoh-connect tcp/127.0.0.1:$zb")
+    declare -A connect=([a]="" [b]="--zenoh-connect $link/127.0.0.1:$za"
+        [c]="--zenoh-connect $link/127.0.0.1:$za --zenoh-connect $link/127.0.0.1:$zb")
     for h in a b c; do
         : >"$tmp/hub-$h.log"
+        local trust=(--zenoh-insecure-tcp --hub-name "bench-$h")
+        [ "$link" = tls ] && trust=(--zenoh-ca "$pki/ca.pem" --zenoh-cert "$pki/bench-$h.pem" --zenoh-key "$pki/bench-$h.key")
         # shellcheck disable=SC2086 # several words on purpose
         "$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/data" --robot-network 127.0.0.0/8 \
-            --federate zenoh --hub-name "bench-$h" --fleet bench \
-            --zenoh-listen "tcp/127.0.0.1:${listen[$h]}" ${connect[$h]} >"$tmp/hub-$h.log" 2>&1 &
+            --federate zenoh --fleet bench "${trust[@]}" \
+            --zenoh-listen "$link/127.0.0.1:${listen[$h]}" ${connect[$h]} >"$tmp/hub-$h.log" 2>&1 &
         pids+=($!)
         pid[$h]=$!
         addr[$h]=""
@@ -89,11 +100,13 @@ run() { # label robots hub-args...
 
 for n in $sizes; do
     for i in $(seq "$repeat"); do
-        echo "== $n robots, pair $i: one hub, then three" >&2
-        start_hubs
+        echo "== $n robots, round $i: one hub, then three over TLS, then three over plain TCP" >&2
+        start_hubs tls
         run one "$n" --hub "ws://${addr[a]}/"
-        start_hubs
-        run three "$n" --hub "ws://${addr[a]}/" --hub "ws://${addr[b]}/" --hub "ws://${addr[c]}/"
+        for link in tls tcp; do
+            start_hubs "$link"
+            run "three-$link" "$n" --hub "ws://${addr[a]}/" --hub "ws://${addr[b]}/" --hub "ws://${addr[c]}/"
+        done
     done
 done
 
@@ -113,12 +126,15 @@ for r in rows:
 by = {}
 for r in rows:
     by.setdefault((r["robots"], r["layout"]), []).append(r)
+med = lambda rs, f: statistics.median(f(r) for r in rs)
+p50 = lambda r: (r.get("latency_us") or {}).get("p50", 0) / 1000
 for n in sorted({k[0] for k in by}):
-    one, three = by.get((n, "one"), []), by.get((n, "three"), [])
-    if not one or not three:
+    one = by.get((n, "one"), [])
+    if not one:
         continue
-    med = lambda rs, f: statistics.median(f(r) for r in rs)
-    p50 = lambda r: (r.get("latency_us") or {}).get("p50", 0) / 1000
-    print(f"{n} robots: median p50 one hub {med(one, p50):.2f} ms, three hubs {med(three, p50):.2f} ms: "
-          f"Zenoh hop adds {med(three, p50) - med(one, p50):.2f} ms at p50")
+    for link in ("tls", "tcp"):
+        three = by.get((n, f"three-{link}"), [])
+        if three:
+            print(f"{n} robots: median p50 one hub {med(one, p50):.2f} ms, three hubs over {link} "
+                  f"{med(three, p50):.2f} ms: the Zenoh hop adds {med(three, p50) - med(one, p50):.2f} ms at p50")
 PY

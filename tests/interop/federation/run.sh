@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Federation interop suite (issue 38 item 3): three hubs as separate processes on
-# loopback, joined by Zenoh (each listens on its own endpoint; B connects to A, C to A and
-# B), one simulated robot whose agent lists hub A then hub B.
+# loopback, joined by Zenoh over mutual TLS (each hub's certificate from the fleet's CA,
+# made by `fleetlink admin cert federation`; each listens on its own tls/ endpoint; B
+# connects to A, C to A and B), one simulated robot whose agent lists hub A then hub B.
 #
 # federation_check.py, with roslibpy clients on hubs B and C and the hubs' REST API:
 #
@@ -57,16 +58,21 @@ PY
 )
 declare -A addr token pid zport=([a]=$za [b]=$zb [c]=$zc) connect
 connect[a]=""
-connect[b]="--zenoh-connect tcp/127.0.0.1:$za"
-connect[c]="--zenoh-connect tcp/127.0.0.1:$za --zenoh-connect tcp/127.0.0.1:$zb"
+connect[b]="--zenoh-connect tls/127.0.0.1:$za"
+connect[c]="--zenoh-connect tls/127.0.0.1:$za --zenoh-connect tls/127.0.0.1:$zb"
+certs="$tmp/certs/federation-interop"
+for h in a b c; do
+    "$bin" admin cert --dir "$tmp/certs" federation --fleet interop --hub "hub-$h" --ip 127.0.0.1 >/dev/null
+done
 
 start_hub() { # NAME LISTEN
     local log="$tmp/hub-$1.log"
     # shellcheck disable=SC2086 # connect[] holds several words on purpose
-    RUST_LOG=info,zenoh=warn "$bin" hub --listen "$2" --data-dir "$tmp/hub-$1" \
+    RUST_LOG="${HUB_RUST_LOG:-info,zenoh=warn}" "$bin" hub --listen "$2" --data-dir "$tmp/hub-$1" \
         --robot-network "127.0.0.0/8=$robot" \
-        --federate zenoh --hub-name "hub-$1" --fleet interop \
-        --zenoh-listen "tcp/127.0.0.1:${zport[$1]}" ${connect[$1]} >>"$log" 2>&1 &
+        --federate zenoh --fleet interop --zenoh-ca "$certs/ca.pem" \
+        --zenoh-cert "$certs/hub-$1.pem" --zenoh-key "$certs/hub-$1.key" \
+        --zenoh-listen "tls/127.0.0.1:${zport[$1]}" ${connect[$1]} >>"$log" 2>&1 &
     pids+=($!)
     pid[$1]=$!
     addr[$1]="$(wait_for_line "$log" '^fleetlink hub listening on ([0-9.:]+)$' "hub $1 start" "${pid[$1]}")"
@@ -75,7 +81,7 @@ for h in a b c; do
     token[$h]="$(timeout 30 "$bin" admin --data-dir "$tmp/hub-$h" token operator interop --group admin)"
     : >"$tmp/hub-$h.log"
     start_hub "$h" 127.0.0.1:0
-    echo "hub ${h^^}: ws://${addr[$h]}/ zenoh tcp/127.0.0.1:${zport[$h]} (pid ${pid[$h]})"
+    echo "hub ${h^^}: ws://${addr[$h]}/ zenoh tls/127.0.0.1:${zport[$h]} (pid ${pid[$h]})"
 done
 ln -s "$tmp/hub-a.log" "$tmp/hub.log"
 
