@@ -489,21 +489,24 @@ pub fn open(file: &AgentConfig, source: &ConfigSource, path: &Path) -> Opened {
             ),
         );
     }
-    if !settled.set_aside.is_empty() {
-        note(
+    match settled.set_aside.len() {
+        0 => {}
+        1 => note(
             Level::Warn,
             format!(
-                "{} kept change{} set aside; they stay in {shown} until the next change made \
-                 while the agent runs, which drops them (make one of them again to keep it, or \
-                 delete {shown} to drop them now)",
-                settled.set_aside.len(),
-                if settled.set_aside.len() == 1 {
-                    " is"
-                } else {
-                    "s are"
-                }
+                "1 kept change is set aside; it stays in {shown} until the next change made \
+                 while the agent runs, which drops it (make it again to keep it, or delete \
+                 {shown} to drop it now)"
             ),
-        );
+        ),
+        n => note(
+            Level::Warn,
+            format!(
+                "{n} kept changes are set aside; they stay in {shown} until the next change \
+                 made while the agent runs, which drops them (make one again to keep it, or \
+                 delete {shown} to drop them now)"
+            ),
+        ),
     }
     Opened {
         settled,
