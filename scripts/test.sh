@@ -17,10 +17,14 @@ stage() {
     return 0
 }
 report() {
+    local rc=$?
+    # Never leave the hostile state below on the machine, whatever happened.
+    if [ -n "${hostile_planted:-}" ]; then ./scripts/hostile-state.sh remove || rc=1; fi
     stage ""
     echo "== time per stage"
     printf '  %s\n' "${stages[@]}"
     echo "  total: $SECONDS s"
+    exit "$rc"
 }
 trap report EXIT
 
@@ -35,6 +39,16 @@ cargo clippy --workspace --all-targets --locked -- -D warnings
 # (Cargo.toml) is optimized with test-build assertions, so nothing is compiled twice.
 stage "cargo build (ci profile: the binary for interop suites)"
 cargo build --profile ci --locked -p fleetlink
+# Tests never read or write the user's state. A user's machine may hold changes kept by an
+# earlier agent called robot1 (a demo, a manual try, another suite) where agents keep them
+# by default (~/.local/state/fleetlink/robot1/runtime.json); one that would break the
+# suites' robot1 (the links suite's no_drop probe remapped away, its no_drop turned off) is
+# planted here, before the Rust tests and the interop suites, and checked untouched and
+# removed after them (scripts/hostile-state.sh). Every agent the suites start keeps its
+# state in its test's temporary directory, so they pass all the same.
+stage "plant a hostile user state (scripts/hostile-state.sh)"
+./scripts/hostile-state.sh plant
+hostile_planted=1
 stage "cargo test (nextest, ci profile)"
 cargo nextest run --workspace --locked --no-fail-fast --cargo-profile ci
 
@@ -46,6 +60,9 @@ for suite in tests/interop/*/run.sh; do
     stage "interop: $suite"
     if ! bash "$suite"; then failed+=("$suite"); fi
 done
+stage "the user's state untouched (scripts/hostile-state.sh)"
+hostile_planted=""
+./scripts/hostile-state.sh remove || failed+=("hostile state")
 if [ ${#failed[@]} -ne 0 ]; then
     echo "interop suites failed: ${failed[*]}" >&2
     exit 1

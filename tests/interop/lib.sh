@@ -4,12 +4,18 @@
 #
 # After `interop_begin NAME`: $tmp is the suite's directory; append background pids to
 # the `pids` array; logs named $tmp/hub.log and $tmp/agent.log are shown on failure.
+# Every agent a suite starts keeps its state in $tmp/state: XDG_STATE_HOME points there
+# (and STATE_DIRECTORY is unset), so an agent's default runtime_file is
+# $tmp/state/fleetlink/<robot>/runtime.json, never the user's (changes kept there by an
+# earlier agent of the same name, a demo or a manual try, would apply to the suite's).
 # INTEROP_KEEP=DIR copies the suite's directory (logs, records) there before it is removed.
 # `interop_netns NS` makes a network namespace that is deleted on exit too, with whatever
 # still runs in it.
 
 interop_begin() {
     tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-$1.XXXXXX")"
+    export XDG_STATE_HOME="$tmp/state"
+    unset STATE_DIRECTORY
     pids=()
     interop_namespaces=()
     trap interop_cleanup EXIT

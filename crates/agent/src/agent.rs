@@ -50,11 +50,16 @@ pub struct AgentOptions {
 }
 
 impl AgentOptions {
-    /// Options from a loaded configuration that may change while the agent runs: the
-    /// changes kept in `cfg.runtime_file_path()` are applied first (docs/runtime-config.md).
-    pub fn changeable(cfg: &AgentConfig) -> Result<AgentOptions, OptionsError> {
+    /// Options from a loaded configuration (read from `source`) that may change while the
+    /// agent runs: the changes kept in `cfg.runtime_file_path()` are merged in first
+    /// (docs/runtime-config.md).
+    pub fn changeable(
+        cfg: &AgentConfig,
+        source: &crate::config::ConfigSource,
+    ) -> Result<AgentOptions, OptionsError> {
         let runtime = Arc::new(crate::runtime::RuntimeConfig::open(
             cfg.clone(),
+            source.clone(),
             cfg.runtime_file_path(),
         ));
         let mut opts = Self::from_config(&runtime.current())?;

@@ -4,9 +4,10 @@
 //! running parts without restarting them: the uplink's per-topic QoS at once (and its topic
 //! names by reconnecting), what the ROS 1 and ROS 2 bridges carry through their change
 //! channels (each bridge starts and stops only the topics and services that changed). The
-//! changes in force (the overlay) are written to the robot's disk before they apply, and
-//! applied again when the agent starts. Every change is recorded in an audit log next to
-//! the overlay's file, and in the agent's log.
+//! changes in force are written to the robot's disk before they apply, with the file they
+//! were made against, and merged again with the file, entry by entry, when the agent
+//! starts ([`crate::config::runtime::kept`]). Every change is recorded in an audit log
+//! next to the kept changes' file, and in the agent's log.
 //!
 //! Two ways in: the services [`GET_SERVICE`] and [`SET_SERVICE`], which the agent offers to
 //! the fleet like any local service (the hub's `/api/v1/robots/<robot>/config` calls them,
@@ -19,13 +20,15 @@ use std::sync::{Arc, Mutex};
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::{CallStatus, ChannelPeer, PeerMsg};
 use fleetlink_relay::{ClientKind, Router, TopicName};
-use serde_json::{Map, Value, json};
+use serde_json::{Value, json};
 use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;
 
 use crate::agent::AgentOptions;
+use crate::config::origin::annotated_yaml;
+use crate::config::runtime::kept::{self, KeptEntry, Level, Record, SetAside};
 use crate::config::runtime::{self, CHANGEABLE};
-use crate::config::{AgentConfig, ConfigError};
+use crate::config::{AgentConfig, ConfigError, ConfigSource};
 use crate::uplink::UplinkControl;
 
 pub use fleetlink_relay::names::{
@@ -42,16 +45,31 @@ pub struct Parts {
 
 /// The configuration of a running agent and the changes made to it.
 pub struct RuntimeConfig {
-    /// Where the overlay is kept on disk; `None`: in memory only.
+    /// Where the changes in force are kept on disk; `None`: in memory only.
     file: Option<PathBuf>,
+    /// What the agent's configuration was read from (what kept changes are made against).
+    source: ConfigSource,
     state: Mutex<State>,
     parts: Mutex<Option<Parts>>,
 }
 
+/// What a change, or changes kept elsewhere, make of the configuration in force.
+struct Update {
+    config: AgentConfig,
+    kept: Vec<KeptEntry>,
+    /// Kept changes that were not applied.
+    set_aside: Vec<SetAside>,
+}
+
 struct State {
+    /// The configuration the agent started with: its file and flags.
+    started: AgentConfig,
+    /// The configuration in force: `started` with the changes `kept`.
     current: AgentConfig,
-    overlay: Map<String, Value>,
-    /// When the overlay last changed (Unix ms), and by whom.
+    kept: Vec<KeptEntry>,
+    /// Kept changes that were not applied (at start, or of the hub's), and why.
+    set_aside: Vec<SetAside>,
+    /// When the changes in force last changed (Unix ms), and by whom.
     changed: Option<(u64, String)>,
 }
 
@@ -96,45 +114,57 @@ impl std::fmt::Debug for RuntimeConfig {
 }
 
 impl RuntimeConfig {
-    /// The configuration the agent starts with (`started`: its file and flags), with the
-    /// overlay kept in `file` applied. An overlay that no longer fits the file (its ROS
-    /// section was removed, say) is set aside, said in the log, and the file's
-    /// configuration runs.
-    pub fn open(started: AgentConfig, file: Option<PathBuf>) -> RuntimeConfig {
-        let mut state = State {
-            current: started.clone(),
-            overlay: Map::new(),
-            changed: None,
-        };
-        if let Some(path) = &file {
-            match std::fs::read_to_string(path) {
-                Ok(text) => {
-                    let source = path.display().to_string();
-                    match runtime::change(&started, &Map::new(), &text, &source) {
-                        Ok(c) => {
-                            tracing::info!(
-                                "runtime configuration: the changes kept in {source} are in force ({})",
-                                c.fields.join(", ")
-                            );
-                            state.current = c.config;
-                            state.overlay = c.overlay;
-                        }
-                        Err(e) => tracing::error!(
-                            "runtime configuration: the changes kept in {source} no longer apply \
-                             to this configuration ({e}); running without them"
-                        ),
+    /// The configuration the agent starts with (`started`: its file and flags, read from
+    /// `source`), with the changes kept in `file` merged in entry by entry
+    /// ([`kept::open`]): what no longer merges is set aside and said in the log, which
+    /// also shows the configuration in force with each field's origin.
+    pub fn open(
+        started: AgentConfig,
+        source: ConfigSource,
+        file: Option<PathBuf>,
+    ) -> RuntimeConfig {
+        let opened = file
+            .as_deref()
+            .map(|path| kept::open(&started, &source, path));
+        let (settled, found) = match opened {
+            Some(o) => {
+                for n in &o.notes {
+                    match n.level {
+                        Level::Info => tracing::info!("runtime configuration: {}", n.text),
+                        Level::Warn => tracing::warn!("runtime configuration: {}", n.text),
+                        Level::Error => tracing::error!("runtime configuration: {}", n.text),
                     }
                 }
-                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-                Err(e) => tracing::error!(
-                    "runtime configuration: cannot read {}: {e}; running without the changes kept there",
-                    path.display()
-                ),
+                (o.settled, o.found)
             }
-        }
+            None => (
+                kept::Settled {
+                    config: started.clone(),
+                    in_force: Vec::new(),
+                    set_aside: Vec::new(),
+                },
+                false,
+            ),
+        };
+        tracing::info!(
+            "configuration in force (from {}{}):\n{}",
+            source.name(),
+            match (&file, found) {
+                (Some(f), true) => format!(" and the changes kept in {}", f.display()),
+                _ => String::new(),
+            },
+            annotated_yaml(&settled.config, &source, &settled.in_force).trim_end()
+        );
         RuntimeConfig {
             file,
-            state: Mutex::new(state),
+            source,
+            state: Mutex::new(State {
+                started,
+                current: settled.config,
+                kept: settled.in_force,
+                set_aside: settled.set_aside,
+                changed: None,
+            }),
             parts: Mutex::new(None),
         }
     }
@@ -162,13 +192,36 @@ impl RuntimeConfig {
         self.state.lock().unwrap_or_else(|p| p.into_inner())
     }
 
-    /// What the API shows: the configuration in force (as YAML, the token hidden), the
-    /// changes in force, what may change, and where the changes are kept.
+    /// The changes in force as they are kept (on disk, and by the hub).
+    fn record(&self, kept: &[KeptEntry]) -> Record {
+        Record {
+            made_against: Some(self.source.made_against()),
+            entries: kept.to_vec(),
+        }
+    }
+
+    /// What the API shows: the configuration in force (as YAML, each field with its
+    /// origin, the tokens hidden), the changes in force (as a change, and as kept), those
+    /// set aside, what may change, and where the changes are kept.
     pub fn view(&self) -> Value {
         let st = self.lock();
+        let set_aside: Vec<Value> = st
+            .set_aside
+            .iter()
+            .map(|a| {
+                json!({
+                    "entry": a.kept.entry.to_string(),
+                    "value": a.kept.value,
+                    "kept": a.kept.when_and_who(),
+                    "why": a.why,
+                })
+            })
+            .collect();
         json!({
-            "effective": st.current.effective_yaml(),
-            "overlay": st.overlay,
+            "effective": annotated_yaml(&st.current, &self.source, &st.kept),
+            "overlay": kept::change_doc(&st.kept),
+            "record": self.record(&st.kept).to_json(),
+            "set_aside": set_aside,
             "changeable": CHANGEABLE,
             "persisted": self.file.as_ref().map(|p| p.display().to_string()),
             "changed_at_ms": st.changed.as_ref().map(|c| c.0),
@@ -180,21 +233,91 @@ impl RuntimeConfig {
     /// names who asked (for the audit log). `Ok` tells which fields it wrote and whether
     /// anything changed.
     pub fn apply(&self, text: &str, by: &str) -> Result<Value, Refusal> {
-        let mut st = self.lock();
-        let changed = runtime::change(&st.current, &st.overlay, text, "change")
+        let st = self.lock();
+        let at = now_ms();
+        let changed = runtime::change(&st.started, &st.current, &st.kept, text, "change", by, at)
             .map_err(|e| Refusal::of(&e))?;
-        let opts =
-            AgentOptions::from_config(&changed.config).map_err(|e| Refusal::text(e.to_string()))?;
+        let update = Update {
+            config: changed.config,
+            kept: changed.kept,
+            set_aside: Vec::new(),
+        };
+        self.commit(st, update, &changed.fields, text, by, at)
+    }
+
+    /// Applies changes kept elsewhere (the hub's, `record` as [`Record::to_json`] writes
+    /// it) as the agent applies its own at start: each entry that still merges with the
+    /// file; the others are set aside and said. `by` names who sent them.
+    pub fn apply_kept(&self, record: &Value, by: &str) -> Result<Value, Refusal> {
+        let record =
+            Record::read(record, "the changes kept for the robot").map_err(|e| Refusal::of(&e))?;
+        let st = self.lock();
+        let mut candidates = st.kept.clone();
+        for k in &record.entries {
+            match candidates.iter_mut().find(|c| c.entry == k.entry) {
+                Some(c) => *c = k.clone(),
+                None => candidates.push(k.clone()),
+            }
+        }
+        let settled = kept::settle(&st.started, candidates);
+        for a in &settled.set_aside {
+            tracing::warn!(
+                "runtime configuration: {by}: the kept change {} = {} ({}) is set aside: {}",
+                a.kept.entry,
+                kept::show(&a.kept.entry, &a.kept.value),
+                a.kept.when_and_who(),
+                a.why
+            );
+        }
+        let mut fields: Vec<&'static str> =
+            record.entries.iter().map(|k| k.entry.field()).collect();
+        fields.sort_by_key(|f| CHANGEABLE.iter().position(|c| c == f));
+        fields.dedup();
+        let text = runtime::kept::change_doc(&record.entries);
+        let text = serde_json::to_string(&text).unwrap_or_default();
+        let set_aside_now: Vec<Value> = settled
+            .set_aside
+            .iter()
+            .map(|a| json!({"entry": a.kept.entry.to_string(), "why": a.why}))
+            .collect();
+        let update = Update {
+            config: settled.config,
+            kept: settled.in_force,
+            set_aside: settled.set_aside,
+        };
+        let mut view = self.commit(st, update, &fields, &text, by, now_ms())?;
+        view["set_aside_now"] = json!(set_aside_now);
+        Ok(view)
+    }
+
+    /// Keeps the update's changes on disk and applies its configuration to the running
+    /// parts, unless nothing changes; answers with the view, `changed` (`fields`) and
+    /// `unchanged`.
+    fn commit(
+        &self,
+        mut st: std::sync::MutexGuard<'_, State>,
+        update: Update,
+        fields: &[&'static str],
+        text: &str,
+        by: &str,
+        at: u64,
+    ) -> Result<Value, Refusal> {
+        let Update {
+            config,
+            kept,
+            set_aside,
+        } = update;
+        let opts = AgentOptions::from_config(&config).map_err(|e| Refusal::text(e.to_string()))?;
         let parts = self.parts.lock().unwrap_or_else(|p| p.into_inner());
         if let Some(p) = parts.as_ref() {
             p.uplink
                 .check_topic_qos(&opts.uplink.topic_qos)
                 .map_err(Refusal::text)?;
         }
-        let unchanged = changed.config == st.current && changed.overlay == st.overlay;
+        let unchanged = config == st.current && kept == st.kept;
         if !unchanged {
             if let Some(path) = &self.file {
-                persist(path, &changed.overlay).map_err(|e| {
+                persist(path, &self.record(&kept)).map_err(|e| {
                     Refusal::text(format!(
                         "the change was not applied: it cannot be kept in {} ({e}); fix the \
                          directory's permissions or set runtime_file",
@@ -212,33 +335,63 @@ impl RuntimeConfig {
                     tx.send_replace(o);
                 }
             }
-            let at = fleetlink_relay::unix_nanos() / 1_000_000;
-            self.audit(at, by, &changed.fields, text);
-            st.current = changed.config;
-            st.overlay = changed.overlay;
+            // Kept changes set aside at start were kept on disk until now; the file now
+            // holds the changes in force only.
+            let dropped: Vec<String> = std::mem::take(&mut st.set_aside)
+                .iter()
+                .filter(|a| !set_aside.iter().any(|n| n.kept.entry == a.kept.entry))
+                .map(|a| {
+                    let value = kept::show(&a.kept.entry, &a.kept.value);
+                    format!("{} = {value}", a.kept.entry)
+                })
+                .collect();
+            self.audit(at, by, fields, text, &dropped);
+            st.current = config;
+            st.kept = kept;
             st.changed = Some((at, by.to_owned()));
+        }
+        for a in set_aside {
+            match st
+                .set_aside
+                .iter_mut()
+                .find(|o| o.kept.entry == a.kept.entry)
+            {
+                Some(old) => *old = a,
+                None => st.set_aside.push(a),
+            }
         }
         drop(parts);
         drop(st);
         let mut view = self.view();
-        view["changed"] = json!(changed.fields);
+        view["changed"] = json!(fields);
         view["unchanged"] = json!(unchanged);
         Ok(view)
     }
 
     /// Records a change: a line in the agent's log, and one in the audit log beside the
-    /// overlay's file (JSON lines).
-    fn audit(&self, at_ms: u64, by: &str, fields: &[&str], text: &str) {
+    /// kept changes' file (JSON lines). `dropped`: kept changes set aside at start that
+    /// the file no longer holds after it.
+    fn audit(&self, at_ms: u64, by: &str, fields: &[&str], text: &str, dropped: &[String]) {
         tracing::info!(
             target: "fleetlink::audit",
             "runtime configuration changed by {by}: {}",
             fields.join(", ")
         );
+        if !dropped.is_empty() {
+            tracing::warn!(
+                "runtime configuration: the kept changes set aside at start are dropped with \
+                 this change: {}",
+                dropped.join("; ")
+            );
+        }
         let Some(path) = &self.file else {
             return;
         };
         let log = audit_path(path);
-        let line = json!({"at_ms": at_ms, "by": by, "fields": fields, "change": text});
+        let mut line = json!({"at_ms": at_ms, "by": by, "fields": fields, "change": text});
+        if !dropped.is_empty() {
+            line["dropped"] = json!(dropped);
+        }
         let written = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
@@ -256,16 +409,20 @@ impl RuntimeConfig {
     }
 }
 
-/// The audit log of the overlay kept in `file`: `<file>.audit.jsonl`.
+fn now_ms() -> u64 {
+    fleetlink_relay::unix_nanos() / 1_000_000
+}
+
+/// The audit log of the changes kept in `file`: `<file>.audit.jsonl`.
 pub fn audit_path(file: &std::path::Path) -> PathBuf {
     let mut name = file.as_os_str().to_owned();
     name.push(".audit.jsonl");
     PathBuf::from(name)
 }
 
-/// Writes the overlay to `path` whole or not at all (a temporary file renamed over it),
-/// synced, so a crash leaves the old or the new changes, never half of them.
-fn persist(path: &std::path::Path, overlay: &Map<String, Value>) -> std::io::Result<()> {
+/// Writes the kept changes to `path` whole or not at all (a temporary file renamed over
+/// it), synced, so a crash leaves the old or the new changes, never half of them.
+fn persist(path: &std::path::Path, record: &Record) -> std::io::Result<()> {
     use std::io::Write;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)?;
@@ -274,7 +431,8 @@ fn persist(path: &std::path::Path, overlay: &Map<String, Value>) -> std::io::Res
     tmp.push(".tmp");
     let tmp = PathBuf::from(tmp);
     let mut f = std::fs::File::create(&tmp)?;
-    f.write_all(runtime::overlay_text(overlay).as_bytes())?;
+    let text = serde_json::to_string_pretty(&record.to_json()).unwrap_or_default();
+    f.write_all(text.as_bytes())?;
     f.sync_all()?;
     std::fs::rename(&tmp, path)
 }
@@ -345,7 +503,11 @@ pub async fn serve(config: Arc<RuntimeConfig>, router: Arc<Router>, shutdown: Ca
 fn set_call(config: &RuntimeConfig, payload: &Payload) -> Value {
     #[derive(serde::Deserialize)]
     struct Request {
-        change: String,
+        #[serde(default)]
+        change: Option<String>,
+        /// Changes kept elsewhere (the hub's), applied as the agent applies its own.
+        #[serde(default)]
+        kept: Option<Value>,
         #[serde(default)]
         by: Option<String>,
     }
@@ -362,7 +524,14 @@ fn set_call(config: &RuntimeConfig, payload: &Payload) -> Value {
         Err(e) => return json!({"ok": false, "error": Refusal::text(e)}),
     };
     let by = request.by.unwrap_or_else(|| "a fleet caller".to_owned());
-    match config.apply(&request.change, &by) {
+    let outcome = match (&request.change, &request.kept) {
+        (_, Some(record)) => config.apply_kept(record, &by),
+        (Some(text), None) => config.apply(text, &by),
+        (None, None) => Err(Refusal::text(
+            "a change is asked for as JSON {\"change\": TEXT, \"by\": WHO}".to_owned(),
+        )),
+    };
+    match outcome {
         Ok(mut view) => {
             view["ok"] = json!(true);
             view

@@ -13,6 +13,7 @@ mod e2e {
     mod cli;
     mod interest;
     mod isolation;
+    mod kept_changes;
     mod link;
     mod mirror;
     mod no_drop;

@@ -50,6 +50,16 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     d
 }
 
+/// The `fleetlink` binary with its state in `dir`: what an agent keeps by default under
+/// the user's state directory (`$XDG_STATE_HOME/fleetlink/<robot>/runtime.json`: changes
+/// made while it ran) is `dir/state/...`, so a test never reads or writes the user's.
+pub fn fleetlink_in(dir: &std::path::Path) -> std::process::Command {
+    let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_fleetlink"));
+    c.env("XDG_STATE_HOME", dir.join("state"))
+        .env_remove("STATE_DIRECTORY");
+    c
+}
+
 fn fastrand_u64() -> u64 {
     use std::hash::{BuildHasher, RandomState};
     RandomState::new().hash_one(std::time::Instant::now())

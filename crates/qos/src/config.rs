@@ -356,6 +356,21 @@ fn age<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<std::time::Durat
 }
 
 impl TopicQosSpec {
+    /// Whether a topic with this spec is no-drop, when the defaults of its name and type
+    /// (`base_no_drop`) say so or not: `no_drop` when written; otherwise a dropping policy,
+    /// a pull topic or an age limit ends a no-drop default (`/map`, `/tf_static`,
+    /// `nav_msgs/OccupancyGrid`). [`TopicQosSpec::resolve`] decides it with this, so a
+    /// configuration can tell whether two specs agree on no-drop for a topic of any type.
+    pub fn no_drop_with(&self, base_no_drop: bool) -> bool {
+        if let Some(nd) = self.no_drop {
+            return nd;
+        }
+        let drops = self.policy.is_some_and(|p| p != Policy::Fifo)
+            || self.mode == Some(Mode::Pull)
+            || self.max_age.is_some();
+        base_no_drop && !drops
+    }
+
     /// Fills the gaps from `base` (usually [`TopicQos::default_for_topic`]) and validates.
     ///
     /// Two fields follow from others when left out: `no_drop: true` implies `policy: fifo`,
@@ -371,9 +386,6 @@ impl TopicQosSpec {
         }
         if let Some(policy) = self.policy {
             qos.policy = policy;
-            if policy != Policy::Fifo && self.no_drop.is_none() {
-                qos.no_drop = false;
-            }
             if self.queue.is_none() {
                 qos.queue = match policy {
                     Policy::Latest => 1,
@@ -397,18 +409,11 @@ impl TopicQosSpec {
         if let Some(age) = self.max_age {
             qos.max_age_ms = Some(age.as_millis().min(u128::from(u64::MAX)) as u64);
         }
-        // A pull topic or an age limit chosen for a topic that is no-drop only by default
-        // (`/map`, `/tf_static`) ends its no-drop default, as a dropping policy does.
-        if (self.mode == Some(Mode::Pull) || self.max_age.is_some()) && self.no_drop.is_none() {
-            qos.no_drop = false;
-        }
-        if let Some(nd) = self.no_drop {
-            qos.no_drop = nd;
-            if nd && self.policy.is_none() {
-                qos.policy = Policy::Fifo;
-                if self.queue.is_none() && base.policy == Policy::Latest {
-                    qos.queue = DEFAULT_QUEUE;
-                }
+        qos.no_drop = self.no_drop_with(base.no_drop);
+        if self.no_drop == Some(true) && self.policy.is_none() {
+            qos.policy = Policy::Fifo;
+            if self.queue.is_none() && base.policy == Policy::Latest {
+                qos.queue = DEFAULT_QUEUE;
             }
         }
         qos.validate()?;
@@ -439,6 +444,51 @@ mod tests {
         assert!(TopicQos::default_for_type("nav_msgs/msg/OccupancyGrid").no_drop);
         let estop = TopicQos::default_for_topic("/robot1/e_stop", "std_msgs/Bool");
         assert!(estop.priority > twist.priority);
+    }
+
+    #[test]
+    fn no_drop_with_is_what_resolve_decides() {
+        let specs = [
+            TopicQosSpec::default(),
+            TopicQosSpec {
+                no_drop: Some(true),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                no_drop: Some(false),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                policy: Some(Policy::Latest),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                policy: Some(Policy::Fifo),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                mode: Some(Mode::Pull),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                max_age: Some(std::time::Duration::from_millis(500)),
+                ..TopicQosSpec::default()
+            },
+            TopicQosSpec {
+                priority: Some(3.0),
+                ..TopicQosSpec::default()
+            },
+        ];
+        for base in [
+            TopicQos::default_for_type("nav_msgs/OccupancyGrid"),
+            TopicQos::default_for_type("std_msgs/String"),
+        ] {
+            for spec in &specs {
+                if let Ok(q) = spec.resolve(&base) {
+                    assert_eq!(q.no_drop, spec.no_drop_with(base.no_drop), "{spec:?}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -189,6 +189,7 @@ class Fleet:
     local_url: str = ""
     outbox: bool = False
     outbox_dir: str = ""
+    state_dir: str = ""
     agents: int = 0
     data_dir: str = ""
 
@@ -288,6 +289,9 @@ class Fleet:
             "heartbeat_ms: 1000",
             "local_rosbridge: { listen: 127.0.0.1:0 }",
         ]
+        # Its own kept runtime changes (none unless a scenario makes some), never the
+        # user's: a change kept by an earlier robot1 would apply here too.
+        lines.append(f"runtime_file: {self.state_dir}/runtime.json")
         if self.outbox:
             lines.append(f"outbox: {{ dir: {self.outbox_dir}, max_mb: 64, fsync: batch }}")
         lines += [
@@ -306,12 +310,13 @@ class Fleet:
         return "\n".join(lines) + "\n"
 
     def start_agent(self, sim=False, same_outbox=False, topics=None, link=None, extra=()):
-        """A fresh outbox directory per agent, unless this is a restart of the last one (a
-        fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`,
+        """A fresh outbox and state directory per agent, unless this is a restart of the
+        last one (a fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`,
         `extra`: see `agent_yaml`."""
         if not same_outbox:
             self.agents += 1
             self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
+            self.state_dir = os.path.join(self.tmp, f"state-{self.agents}")
         path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
         with open(path, "w") as f:
             f.write(self.agent_yaml(sim, topics, link, extra))

@@ -50,6 +50,10 @@ robot_ns="flr-$run_id"
 hub_ip=10.201.0.1
 robot_ip=10.201.0.2
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-links.XXXXXX")"
+# Agents keep their state in this run's directory, never the user's: each gets its own
+# runtime_file (harness.py), and the default one would be under $tmp/state too.
+export XDG_STATE_HOME="$tmp/state"
+unset STATE_DIRECTORY
 
 made=()     # namespaces this run created
 driver=""   # pid of the driver (its `timeout`)

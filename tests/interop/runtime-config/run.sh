@@ -4,15 +4,15 @@
 # Real `fleetlink hub` and `fleetlink agent` processes; the robot's graph is a Cyclone DDS
 # node (Python binding, ROS 2 names and CDR) writing std_msgs/String on /chatter_a,
 # /chatter_b and /chatter_c at 10 Hz each; the agent starts with `ros2.publish:
-# [/chatter_a, /chatter_b]`. All in a network namespace of its own (DDS discovery is
-# multicast on its loopback).
+# [/chatter_a, /chatter_b]` and a `topics:` section of its own (/chatter_a no_drop). All in
+# a network namespace of its own (DDS discovery is multicast on its loopback).
 #
 # Checks:
 #   1. before any change, roslibpy receives /robot1/chatter_a and _b at about 10 msg/s,
 #      and /robot1/chatter_c not at all;
-#   2. a change through the hub's API adds /chatter_c and removes /chatter_b: roslibpy
-#      then receives a and c at about 10 msg/s and b not at all; the agent did not
-#      reconnect;
+#   2. a change through the hub's API adds /chatter_c and removes /chatter_b (written
+#      under `remove:`): roslibpy then receives a and c at about 10 msg/s and b not at
+#      all; the agent did not reconnect;
 #   3. a second change gives /chatter_c a rate limit of 2 Hz: c arrives at about 2 msg/s,
 #      a still at about 10;
 #   3b. the node's service /add_two_ints, not exposed at first (a roslibpy call of
@@ -23,7 +23,13 @@
 #      gives for the same lines in its YAML file (`fleetlink agent --config`), and a
 #      caller without the right to change the robot's configuration gets 403;
 #   5. the agent restarted: it applies the changes it kept before it connects (said in
-#      its log), and 2-3 hold at roslibpy;
+#      its log, which shows the configuration in force with each field's origin: c's rate
+#      limit a kept change, a's no_drop the file's, merged per topic), and 2-3 hold at
+#      roslibpy;
+#   5b. the YAML edited (one more topic under `topics:`) and the agent restarted: it says
+#      the file changed since the changes were made and applies those that still merge
+#      (all of them here); `fleetlink agent --check` prints the same configuration; 2-3
+#      hold;
 #   6. then the hub restarted (same database, same port): it still keeps the changes
 #      (GET shows who made them), the robot reconnects, and 2-3 hold;
 #   7. the agent started again without its kept changes (their file deleted): the hub
@@ -93,7 +99,9 @@ ws="ws://127.0.0.1:$port/?token=$op_token"
 peer publish /chatter_a /chatter_b /chatter_c >"$tmp/graph.log" 2>&1 &
 pids+=($!)
 wait_for_line "$tmp/graph.log" '^(ready)$' "the Cyclone node" "${pids[-1]}" >/dev/null
-cat >"$tmp/robot.yaml" <<EOF
+# robot_yaml [MORE_TOPIC_LINES]: the agent's YAML.
+robot_yaml() {
+    cat >"$tmp/robot.yaml" <<EOF
 hub: ws://127.0.0.1:$port
 name: robot1
 token: $robot_token
@@ -103,7 +111,12 @@ local_rosbridge: null
 runtime_file: $tmp/robot-state/runtime.json
 ros2:
   publish: [/chatter_a, /chatter_b]
+topics:
+  /chatter_a: { no_drop: true }
+${1:-}
 EOF
+}
+robot_yaml
 agent_runs=0
 start_agent() {
     agent_runs=$((agent_runs + 1))
@@ -143,7 +156,7 @@ expect "before" "$(rates)" "7 13" "7 13" "0 0"
 
 step "2. add /chatter_c and remove /chatter_b through the hub"
 connects_before="$(grep -c 'connected to hub' "$tmp/agent-$agent_runs.log")"
-out="$(put "$op_token" '{"ros2": {"publish": {"include": ["/chatter_a", "/chatter_c"]}}}')"
+out="$(put "$op_token" '{"ros2": {"publish": ["/chatter_c"]}, "remove": {"ros2": {"publish": ["/chatter_b"]}}}')"
 [ "$(status_of "$out")" = 200 ] || fail "step 2: PUT answered $(status_of "$out"): $(tail -n1 <<<"$out")"
 expect "after adding c and removing b" "$(rates)" "7 13" "0 0" "7 13"
 
@@ -212,7 +225,27 @@ start_agent
 grep -q 'the changes kept in .* are in force' "$tmp/agent-$agent_runs.log" \
     && echo "ok: $(grep -o 'the changes kept in .* are in force.*' "$tmp/agent-$agent_runs.log" | head -n1)" \
     || fail "step 5: the restarted agent did not apply the changes it kept"
+# origin_says FILE WHAT PATTERN: the configuration shown in FILE has a line matching PATTERN.
+origin_says() {
+    if grep -qE "$3" "$1"; then echo "ok: $2: $(grep -E "$3" "$1" | head -n1 | sed 's/^ *//')"; else fail "$2: no line matching '$3' in $1"; fi
+}
+origin_says "$tmp/agent-$agent_runs.log" "step 5: c's rate limit, a kept change" '^ +rate_limit_hz: 2(\.0)?  # kept change, .* by user:interop'
+origin_says "$tmp/agent-$agent_runs.log" "step 5: a's no_drop, the file's, next to it" '^ +no_drop: true  # file$'
 expect "after the agent's restart" "$(rates)" "7 13" "0 0" "1.3 2.7"
+
+step "5b. the YAML edited since the changes were made: what still merges applies"
+stop "$agent_pid"
+robot_yaml "  /chatter_b: { priority: 3 }"
+start_agent
+grep -q 'robot.yaml has changed since the changes kept in' "$tmp/agent-$agent_runs.log" \
+    && echo "ok: $(grep -o 'robot.yaml has changed since.*' "$tmp/agent-$agent_runs.log" | head -n1)" \
+    || fail "step 5b: the agent did not say its file changed since the kept changes"
+grep -q 'set aside' "$tmp/agent-$agent_runs.log" && fail "step 5b: a kept change was set aside: $(grep 'set aside' "$tmp/agent-$agent_runs.log" | head -n1)"
+in_ns 10 "$bin" agent --config "$tmp/robot.yaml" --check >"$tmp/check.out" 2>&1 || fail "step 5b: --check failed: $(tail -n3 "$tmp/check.out")"
+origin_says "$tmp/check.out" "step 5b: --check: the kept rate limit" '^ +rate_limit_hz: 2(\.0)?  # kept change'
+origin_says "$tmp/check.out" "step 5b: --check: the file's new topic" '^ +priority: 3(\.0)?  # file$'
+origin_says "$tmp/check.out" "step 5b: --check: /chatter_b removed by a kept change" '^ +# - /chatter_b  \(removed by a kept change'
+expect "after the file changed" "$(rates)" "7 13" "0 0" "1.3 2.7"
 
 step "6. the hub restarted: it keeps the changes"
 stop "$hub_pid"
@@ -279,7 +312,7 @@ ros1_rates() {
 }
 expect "ROS 1 before the change (a, b)" "$(ros1_rates)" "7 13" "0 0" "0 0"
 api2="http://127.0.0.1:$port/api/v1/robots/robot2/config"
-printf '%s' '{"ros1": {"publish": ["/ros1_b"]}}' >"$tmp/change2.body"
+printf '%s' '{"ros1": {"publish": ["/ros1_b"]}, "remove": {"ros1": {"publish": ["/ros1_a"]}}}' >"$tmp/change2.body"
 out="$(peer api PUT "$api2" "$op_token" "$tmp/change2.body")"
 [ "$(status_of "$out")" = 200 ] || fail "step 8: PUT answered $(status_of "$out"): $(tail -n1 <<<"$out")"
 expect "ROS 1 after the change (a, b)" "$(ros1_rates)" "0 0" "7 13" "0 0"

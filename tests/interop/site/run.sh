@@ -50,6 +50,9 @@ site_ns="fls-$run_id"
 cloud_ip=10.202.0.1
 site_ip=10.202.0.2
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-site.XXXXXX")"
+# The agent's state (its default runtime_file) in this run's directory, never the user's.
+export XDG_STATE_HOME="$tmp/state"
+unset STATE_DIRECTORY
 made=()
 
 cleanup() {

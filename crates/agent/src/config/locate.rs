@@ -162,6 +162,35 @@ impl LocationTree {
         best
     }
 
+    /// Whether the document writes the field at `path`: the path is in it, or a shorthand
+    /// written in its place holds it (`publish: [/a]` writes `publish.include[0]`, not
+    /// `publish.exclude`).
+    pub(crate) fn written(&self, path: &FieldPath) -> bool {
+        let mut node = &self.root;
+        for segment in &path.0 {
+            node = match (&node.value, segment) {
+                (Node::Map(entries), Segment::Key(k)) => {
+                    match entries.iter().find(|(key, _)| key.value == *k) {
+                        Some((_, value)) => value,
+                        None => return false,
+                    }
+                }
+                (Node::Seq(items), Segment::Index(n)) => match items.get(*n) {
+                    Some(item) => item,
+                    None => return false,
+                },
+                // A list or a name written for a section: its main list.
+                (Node::Seq(_) | Node::Scalar, Segment::Key(k)) => {
+                    return k == "include" || k == "expose";
+                }
+                // One value written for a list (`hub: ws://…`).
+                (Node::Scalar, Segment::Index(0)) => return true,
+                _ => return false,
+            };
+        }
+        true
+    }
+
     /// The field at or just before `pos`: an exact key or value position wins; otherwise the
     /// last key or value that starts before `pos` (parser errors inside a value point past
     /// its start).

@@ -22,18 +22,20 @@
 //! field.
 
 mod locate;
+pub mod origin;
 mod ros1;
 mod ros2;
 mod rosbridge;
 mod rosgw;
 pub mod runtime;
 mod sim;
+mod source;
 mod validate;
 
 use std::collections::BTreeMap;
 use std::fmt;
 use std::net::SocketAddr;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Duration;
 
 use fleetlink_auth::RobotName;
@@ -47,6 +49,7 @@ pub use rosbridge::RosbridgeConfig;
 pub use sim::{
     ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
 };
+pub use source::ConfigSource;
 
 /// The agent's configuration. See `docs/config.md` for every field.
 #[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
@@ -354,13 +357,20 @@ impl Overrides {
 }
 
 impl AgentConfig {
-    /// The configuration as it runs, defaults filled in, as YAML (what `fleetlink agent
-    /// --check` prints). The token is not shown, only whether there is one.
+    /// The configuration as it runs, defaults filled in, as YAML. The tokens are not
+    /// shown, only whether there are some. ([`origin::annotated_yaml`] marks where each
+    /// field came from.)
     pub fn effective_yaml(&self) -> String {
-        let mut value = match serde_json::to_value(self) {
-            Ok(v) => v,
-            Err(e) => return format!("# cannot show the configuration: {e}\n"),
-        };
+        match self.effective_value() {
+            Ok(value) => serde_saphyr::to_string(&value)
+                .unwrap_or_else(|e| format!("# cannot show the configuration: {e}\n")),
+            Err(e) => format!("# cannot show the configuration: {e}\n"),
+        }
+    }
+
+    /// The configuration as JSON, the tokens replaced by whether there are some.
+    pub(crate) fn effective_value(&self) -> Result<serde_json::Value, serde_json::Error> {
+        let mut value = serde_json::to_value(self)?;
         if let Some(t) = value.get_mut("token") {
             *t = serde_json::Value::String(if self.token.is_empty() {
                 "(none)".to_owned()
@@ -386,59 +396,7 @@ impl AgentConfig {
                 format!("(set, {} characters)", l.config_token.chars().count())
             });
         }
-        serde_saphyr::to_string(&value)
-            .unwrap_or_else(|e| format!("# cannot show the configuration: {e}\n"))
-    }
-
-    /// Reads and checks a config file. Errors name the file, line, column and field.
-    pub fn load(path: &Path) -> Result<Self, ConfigError> {
-        Self::load_with(Some(path), &Overrides::default())
-    }
-
-    /// Reads a config file (or starts from the defaults), applies command-line
-    /// `overrides`, then checks the result once. A problem with an overridden value names
-    /// its flag; others name the file's line and field.
-    pub fn load_with(path: Option<&Path>, overrides: &Overrides) -> Result<Self, ConfigError> {
-        let Some(path) = path else {
-            let mut cfg = Self::default();
-            overrides.apply(&mut cfg, false);
-            validate::validate(&cfg).map_err(|problem| flag_or_field(problem, overrides))?;
-            return Ok(cfg);
-        };
-        let text = std::fs::read_to_string(path).map_err(|source| ConfigError::Read {
-            path: path.to_owned(),
-            source,
-        })?;
-        Self::parse_with(&text, &path.display().to_string(), overrides)
-    }
-
-    /// Parses and checks config text; `file_name` is only used in error messages.
-    pub fn from_str(text: &str, file_name: &str) -> Result<Self, ConfigError> {
-        Self::parse_with(text, file_name, &Overrides::default())
-    }
-
-    fn parse_with(text: &str, file_name: &str, overrides: &Overrides) -> Result<Self, ConfigError> {
-        // A ROS Gateway JSON file describes the same agent in rosgw's terms.
-        if let Some(converted) = rosgw::parse(text) {
-            let mut config = converted.map_err(|p| field_error(p, text, file_name))?;
-            overrides.apply(&mut config, false);
-            // What the conversion produced is checked like a YAML file's fields; a problem
-            // left (say with `--hub`) names the agent's field, as there is no line for it.
-            validate::validate(&config).map_err(|p| flag_or_field(p, overrides))?;
-            return Ok(config);
-        }
-        let mut config: Self =
-            serde_saphyr::from_str(text).map_err(|e| parse_error(&e, text, file_name))?;
-        let name_written = (config.mirror.is_some() || overrides.mirror.is_some())
-            && LocationTree::parse(text).is_ok_and(|t| t.has_top_key("name"));
-        overrides.apply(&mut config, name_written);
-        validate::validate(&config).map_err(|problem| {
-            if overrides.flag_for(&problem.path).is_some() {
-                return flag_or_field(problem, overrides);
-            }
-            field_error(problem, text, file_name)
-        })?;
-        Ok(config)
+        Ok(value)
     }
 
     /// Runs the semantic checks on a config built or changed in code (for example after
@@ -477,28 +435,6 @@ impl AgentConfig {
     /// Silence after which the hub link is declared dead: two heartbeats.
     pub fn link_timeout(&self) -> Duration {
         self.heartbeat() * 2
-    }
-
-    /// Where the runtime changes are kept: `runtime_file`, else `<name>/runtime.json` in
-    /// the service's state directory (systemd's `StateDirectory=`, `$STATE_DIRECTORY`),
-    /// the user's (`$XDG_STATE_HOME/fleetlink`, `~/.local/state/fleetlink`), or
-    /// `/var/lib/fleetlink` without a home.
-    pub fn runtime_file_path(&self) -> Option<PathBuf> {
-        if let Some(f) = &self.runtime_file {
-            return Some(f.clone());
-        }
-        let var = |k: &str| {
-            std::env::var_os(k)
-                .filter(|d| !d.is_empty())
-                .map(PathBuf::from)
-        };
-        let dir = var("STATE_DIRECTORY")
-            // systemd may list several, separated by colons: the first is the service's.
-            .map(|d| PathBuf::from(d.to_string_lossy().split(':').next().unwrap_or_default()))
-            .or_else(|| var("XDG_STATE_HOME").map(|d| d.join("fleetlink")))
-            .or_else(|| var("HOME").map(|h| h.join(".local/state/fleetlink")))
-            .unwrap_or_else(|| PathBuf::from("/var/lib/fleetlink"));
-        Some(dir.join(self.name.as_str()).join("runtime.json"))
     }
 
     /// The local listener's configuration API token (empty: the API is closed).
@@ -712,6 +648,7 @@ fn shape_example(path: &str) -> Option<&'static str> {
         "outbox" => "outbox: { dir: /var/lib/fleetlink/outbox, max_mb: 64 }",
         "link" => "link: { budget: { max_kbps: 500 } }",
         "link.budget" => "budget: { max_kbps: 500, mb_per_day: 200 }",
+        "remove" => "remove: { topics: [/scan], ros2: { publish: [/scan] } }",
         _ => return None,
     })
 }

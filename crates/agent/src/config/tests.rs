@@ -1,6 +1,7 @@
 //! Config parsing and error reporting: every error names file, line, column and field.
 
 use super::*;
+use std::path::Path;
 
 fn err(text: &str) -> ConfigError {
     match AgentConfig::from_str(text, "robot.yaml") {

@@ -4,7 +4,9 @@ use std::net::SocketAddr;
 use std::path::PathBuf;
 
 use anyhow::Context;
-use fleetlink_agent::config::{AgentConfig, Overrides};
+use fleetlink_agent::config::origin::annotated_yaml;
+use fleetlink_agent::config::runtime::kept::{self, Level};
+use fleetlink_agent::config::{AgentConfig, ConfigSource, Overrides};
 use fleetlink_agent::{Agent, AgentOptions};
 use fleetlink_auth::RobotName;
 use tokio_util::sync::CancellationToken;
@@ -45,20 +47,22 @@ pub struct Args {
     #[arg(long = "msg-path", value_name = "DIR")]
     pub msg_path: Vec<PathBuf>,
     /// Check the configuration and what it names (message definitions, TLS files, the
-    /// outbox directory), print the effective configuration with its defaults, and exit 0
-    /// if all is well, 1 if not — without connecting to the hub or the robot's ROS graph.
+    /// outbox directory), print the configuration that will run (the file with the changes
+    /// kept from earlier runs), each field with where it comes from, and exit 0 if all is
+    /// well, 1 if not — without connecting to the hub or the robot's ROS graph.
     #[arg(long)]
     pub check: bool,
 }
 
-/// Loads the file (if any) and applies the command-line overrides.
-pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
+/// Loads the file (if any) and applies the command-line overrides; with where the
+/// configuration came from.
+pub fn load(args: &Args) -> anyhow::Result<(AgentConfig, ConfigSource)> {
     let overrides = Overrides {
         hub: (!args.hub.is_empty()).then(|| args.hub.clone()),
         name: args.name.clone(),
         mirror: args.mirror.clone(),
     };
-    let mut cfg = AgentConfig::load_with(args.config.as_deref(), &overrides)?;
+    let (mut cfg, mut source) = AgentConfig::load_source(args.config.as_deref(), &overrides)?;
     if let Some(path) = &args.token_file {
         let text = std::fs::read_to_string(path)
             .map_err(|e| anyhow::anyhow!("--token-file {}: cannot read it: {e}", path.display()))?;
@@ -71,16 +75,19 @@ pub fn load(args: &Args) -> anyhow::Result<AgentConfig> {
             );
         }
         cfg.token = token.to_owned();
+        source = source.with_flag("token", "--token-file");
     }
     if let Some(addr) = args.local_listen {
         let l = cfg.local_rosbridge.get_or_insert_with(Default::default);
         l.enabled = true;
         l.listen = addr;
+        source = source.with_flag("local_rosbridge", "--local-listen");
     }
     if args.no_local {
         cfg.local_rosbridge = None;
+        source = source.with_flag("local_rosbridge", "--no-local");
     }
-    Ok(cfg)
+    Ok((cfg, source))
 }
 
 /// `fleetlink agent --check`: see [`Args::check`].
@@ -94,36 +101,31 @@ pub fn check(
         Some(p) => format!("configuration file {}", p.display()),
         None => "configuration: the defaults (no --config)".to_owned(),
     };
-    let Some(cfg) = r.step(what, load(args)) else {
+    let Some((file_cfg, source)) = r.step(what, load(args)) else {
         return r.finish("fleetlink agent", "");
+    };
+    // The changes made while it ran before, merged with the file as at start.
+    let runtime_file = file_cfg.runtime_file_path();
+    let opened = runtime_file
+        .as_deref()
+        .map(|path| kept::open(&file_cfg, &source, path));
+    let (cfg, in_force) = match &opened {
+        Some(o) => (o.settled.config.clone(), o.settled.in_force.clone()),
+        None => (file_cfg.clone(), Vec::new()),
     };
     r.step(
         "options the agent runs with",
         AgentOptions::from_config(&cfg),
     );
-    // The changes made while it ran before, which it applies at start.
-    if let Some(file) = cfg.runtime_file_path() {
-        match std::fs::read_to_string(&file) {
-            Ok(text) => match fleetlink_agent::config::runtime::change(
-                &cfg,
-                &Default::default(),
-                &text,
-                &file.display().to_string(),
-            ) {
-                Ok(c) => r.ok(format!(
-                    "changes kept in {}, applied at start: {}",
-                    file.display(),
-                    c.fields.join(", ")
-                )),
-                Err(e) => r.note(format!(
-                    "the changes kept in {} no longer apply ({e}); the agent will run without them",
-                    file.display()
-                )),
-            },
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                r.ok(format!("no changes kept in {} yet", file.display()))
+    if let (Some(o), Some(path)) = (&opened, &runtime_file) {
+        if !o.found && o.notes.is_empty() {
+            r.ok(format!("no changes kept in {} yet", path.display()));
+        }
+        for n in &o.notes {
+            match n.level {
+                Level::Info => r.ok(&n.text),
+                Level::Warn | Level::Error => r.note(&n.text),
             }
-            Err(e) => r.problem(format!("runtime_file {}: {e}", file.display())),
         }
     }
     r.definitions(&args.msg_path);
@@ -168,8 +170,17 @@ pub fn check(
         r.note("no hub: the agent serves its local rosbridge only");
     }
     let mut effective = super::check::options(command, matches);
-    effective.push_str("  # the configuration:\n");
-    for line in cfg.effective_yaml().lines() {
+    effective.push_str(&format!(
+        "  # the configuration that will run: {}{}, each field with where it comes from\n",
+        source.name(),
+        match (&opened, &runtime_file) {
+            (Some(o), Some(path)) if !o.settled.in_force.is_empty() => {
+                format!(" with the changes kept in {}", path.display())
+            }
+            _ => String::new(),
+        }
+    ));
+    for line in annotated_yaml(&cfg, &source, &in_force).lines() {
         effective.push_str("  ");
         effective.push_str(line);
         effective.push('\n');
@@ -179,9 +190,9 @@ pub fn check(
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
-    let cfg = load(&args)?;
-    // Changes made while it ran before are applied first (docs/runtime-config.md).
-    let opts = AgentOptions::changeable(&cfg).context("configuration")?;
+    let (cfg, source) = load(&args)?;
+    // Changes made while it ran before are merged in first (docs/runtime-config.md).
+    let opts = AgentOptions::changeable(&cfg, &source).context("configuration")?;
     let transcoder = crate::transcoder(&args.msg_path)?;
     // One thread. The agent's work is moving bytes between sockets; on a multi-threaded
     // runtime most of its CPU went to waking threads (an ACK read on one, the writer it

@@ -10,7 +10,7 @@ use std::net::SocketAddr;
 use std::path::PathBuf;
 
 use anyhow::Context;
-use fleetlink_agent::config::AgentConfig;
+use fleetlink_agent::config::{AgentConfig, ConfigSource};
 use fleetlink_agent::{Agent, AgentOptions};
 use fleetlink_hub::Hub;
 use tokio_util::sync::CancellationToken;
@@ -31,15 +31,20 @@ pub struct Args {
     pub robots: u32,
 }
 
-/// The configuration of demo robot `i` (1-based).
-pub fn robot_config(hub_url: &str, i: u32) -> anyhow::Result<AgentConfig> {
+/// The configuration of demo robot `i` (1-based), and where it comes from: its text but
+/// the hub (made from `--listen`), so that changes kept for it are made against the same
+/// text whatever port the demo listens on.
+pub fn robot_config(hub_url: &str, i: u32) -> anyhow::Result<(AgentConfig, ConfigSource)> {
     let yaml = format!(
-        "hub: {hub_url}\nname: robot{i}\nheartbeat_ms: 500\nlocal_rosbridge: null\n\
+        "name: robot{i}\nheartbeat_ms: 500\nlocal_rosbridge: null\n\
          sim:\n  seed: {i}\n  laser_scan: {{ rate_hz: 10 }}\n  odometry: {{ rate_hz: 20 }}\n  pose: {{ rate_hz: 10 }}\n  \
          point_cloud: {{ rate_hz: 5, points: 5000 }}\n  image: {{ rate_hz: 5 }}\n  \
          markers: {{ rate_hz: 1 }}\n"
     );
-    Ok(AgentConfig::from_str(&yaml, "<demo>")?)
+    let mut cfg = AgentConfig::from_str(&yaml, "<demo>")?;
+    cfg.hub = vec![hub_url.to_owned()];
+    cfg.validate()?;
+    Ok((cfg, ConfigSource::text(yaml).with_flag("hub", "--listen")))
 }
 
 pub fn run(args: Args) -> anyhow::Result<()> {
@@ -65,7 +70,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         let url = format!("ws://{addr}");
         let mut robots = Vec::new();
         for i in 1..=args.robots {
-            let mut cfg = robot_config(&url, i)?;
+            let (mut cfg, source) = robot_config(&url, i)?;
             let robot = cfg.name.clone();
             cfg.token = tokens.get_or_mint(&security, &format!("robot:{robot}"), |exp| {
                 Ok(security.store.add_robot_token(&robot, exp, now)?)
@@ -78,7 +83,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
                     .join("runtime.json"),
             );
             let agent =
-                Agent::bind(AgentOptions::changeable(&cfg)?, crate::transcoder(&[])?).await?;
+                Agent::bind(AgentOptions::changeable(&cfg, &source)?, crate::transcoder(&[])?).await?;
             robots.push(tokio::spawn(agent.run(stop.clone())));
         }
         println!("fleetlink demo: hub with {} simulated robots", args.robots);

@@ -28,7 +28,7 @@ async fn http_get(addr: &str, path: &str) -> String {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn demo_fleet_comes_up_and_stops_on_sigterm() {
     let dir = temp_dir("demo");
-    let mut child = Command::new(BIN)
+    let mut child = fleetlink_in(&dir)
         .args(["demo", "--listen", "127.0.0.1:0", "--data-dir"])
         .arg(&dir)
         .stdout(Stdio::piped())
@@ -145,7 +145,7 @@ fn agent_config_error_names_file_line_and_field() {
         "name: robot1\nsim:\n  point_cloud:\n    rate_hz: 0\n",
     )
     .unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--config"])
         .arg(&path)
         .output()
@@ -167,7 +167,7 @@ fn issue14_admin_refuses_a_missing_database_for_reading_commands() {
         &["users", "list"],
         &["audit", "--limit", "5"],
     ] {
-        let out = Command::new(BIN)
+        let out = fleetlink_in(&dir)
             .arg("admin")
             .arg("--data-dir")
             .arg(&typo)
@@ -187,7 +187,7 @@ fn issue14_admin_refuses_a_missing_database_for_reading_commands() {
         assert!(!typo.exists(), "admin {args:?} created {}", typo.display());
     }
     // Minting the first token creates the database, and says so.
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .arg("admin")
         .arg("--data-dir")
         .arg(&typo)
@@ -205,7 +205,7 @@ fn issue14_admin_refuses_a_missing_database_for_reading_commands() {
 
 /// Starts the demo on `dir` and returns the operator token it prints; then stops it.
 async fn demo_operator_token(dir: &std::path::Path) -> String {
-    let mut child = tokio::process::Command::new(BIN)
+    let mut child = tokio::process::Command::from(fleetlink_in(dir))
         .args([
             "demo",
             "--robots",
@@ -245,7 +245,7 @@ async fn issue14_demo_reuses_its_tokens_and_they_expire() {
         first, second,
         "a second demo run minted another operator token"
     );
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .arg("admin")
         .arg("--data-dir")
         .arg(&dir)
@@ -266,7 +266,7 @@ async fn issue14_demo_reuses_its_tokens_and_they_expire() {
 fn issue14_user_errors_are_one_line_without_backtrace_or_repeated_causes() {
     let dir = temp_dir("one-line-errors");
     let missing = dir.join("robot.yaml");
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--config"])
         .arg(&missing)
         .env("RUST_BACKTRACE", "full")
@@ -288,7 +288,7 @@ fn issue14_user_errors_are_one_line_without_backtrace_or_repeated_causes() {
     for pair in parts.windows(2) {
         assert_ne!(pair[0], pair[1], "a repeated cause in {line}");
     }
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--hub", "http://x"])
         .env("RUST_BACKTRACE", "1")
         .output()
@@ -360,7 +360,7 @@ fn issue36_cli_refuses_a_robot_name_breaking_the_rule() {
         ),
     ];
     for (args, name) in runs {
-        let out = Command::new(BIN).args(&args).output().unwrap();
+        let out = fleetlink_in(&dir).args(&args).output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(!out.status.success(), "{args:?} succeeded: {err}");
         assert!(
@@ -387,7 +387,7 @@ fn agent_check_validates_and_prints_the_effective_configuration() {
          ros1:\n  publish: [/chatter]\n",
     )
     .unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--check", "--config"])
         .arg(&good)
         .output()
@@ -411,7 +411,7 @@ fn agent_check_validates_and_prints_the_effective_configuration() {
 
     let bad = dir.join("bad.yaml");
     std::fs::write(&bad, "name: robot1\nros2:\n  actions: 3\n").unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--check", "--config"])
         .arg(&bad)
         .output()
@@ -421,6 +421,66 @@ fn agent_check_validates_and_prints_the_effective_configuration() {
     assert!(text.contains("bad.yaml:3:"), "{text}");
     assert!(text.contains("`actions: [/navigate]`"), "{text}");
     assert!(!text.contains("the configuration is valid"), "{text}");
+}
+
+/// Issue 57: `--check` prints the configuration that will run — the file with the changes
+/// kept from an earlier run (in the default place, the state directory) merged in — each
+/// field marked with where it comes from, and says which kept change it refuses and why.
+#[test]
+fn issue57_agent_check_prints_what_will_run_with_each_fields_origin() {
+    let dir = temp_dir("agentcheck-kept");
+    let file = dir.join("robot.yaml");
+    std::fs::write(
+        &file,
+        "hub: ws://127.0.0.1:1/\nname: robot1\ntopics:\n  /probe/reliable: { no_drop: true }\n  \
+         /pose: { priority: 8 }\n",
+    )
+    .unwrap();
+    let kept = dir.join("state/fleetlink/robot1/runtime.json");
+    std::fs::create_dir_all(kept.parent().unwrap()).unwrap();
+    std::fs::write(
+        &kept,
+        r#"{"topics": {"/pose": {"rate_limit_hz": 0.5}, "/probe/reliable": {"no_drop": false}}}"#,
+    )
+    .unwrap();
+    let out = fleetlink_in(&dir)
+        .args(["agent", "--check", "--config"])
+        .arg(&file)
+        .env("ROS_DOMAIN_ID", "7")
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = |needle: &str| {
+        text.lines()
+            .find(|l| l.contains(needle))
+            .unwrap_or_else(|| panic!("no {needle:?} in\n{text}"))
+            .to_owned()
+    };
+    assert!(
+        line("rate_limit_hz: 0.5").contains("# kept change"),
+        "{text}"
+    );
+    assert!(line("priority: 8").ends_with("# file"), "{text}");
+    assert!(line("no_drop: true").ends_with("# file"), "{text}");
+    assert!(line("heartbeat_ms: 1000").ends_with("# default"), "{text}");
+    assert!(
+        line("runtime_file:").ends_with("# environment: XDG_STATE_HOME"),
+        "{text}"
+    );
+    let refused = line("note: the kept change topics[\"/probe/reliable\"].no_drop");
+    assert!(
+        refused.contains("YAML file") && refused.contains("restart"),
+        "{refused}"
+    );
+    assert!(
+        line("do not record which configuration").contains("runtime.json"),
+        "{text}"
+    );
 }
 
 /// A ROS Gateway JSON file is checked like a YAML file: `--check` prints the agent it
@@ -439,7 +499,7 @@ fn agent_check_takes_a_rosgw_file_and_a_token_file() {
     .unwrap();
     let token = dir.join("robot.token");
     std::fs::write(&token, "  s3cret-token\n").unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--check", "--config"])
         .arg(&file)
         .arg("--token-file")
@@ -461,7 +521,7 @@ fn agent_check_takes_a_rosgw_file_and_a_token_file() {
     assert!(!text.contains("s3cret-token"), "{text}");
 
     std::fs::write(&token, "\n").unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--check", "--config"])
         .arg(&file)
         .arg("--token-file")
@@ -477,7 +537,7 @@ fn agent_check_takes_a_rosgw_file_and_a_token_file() {
         "[{\"address\": \"ws://127.0.0.1:1/\",\n  \"publish\": [{\"name\": \"/scan\", \"rate\": 5}]}]",
     )
     .unwrap();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["agent", "--check", "--config"])
         .arg(&file)
         .output()
@@ -496,7 +556,7 @@ fn hub_check_finds_bad_files_without_starting() {
     // Something already listens on the port: a check must not need it.
     let busy = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     let port = busy.local_addr().unwrap().to_string();
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args(["hub", "--check", "--listen", &port, "--data-dir"])
         .arg(dir.join("data"))
         .output()
@@ -514,7 +574,7 @@ fn hub_check_finds_bad_files_without_starting() {
     assert!(text.contains("--heartbeat-ms: 1000  # default"), "{text}");
     assert!(!dir.join("data").exists(), "a check creates nothing");
 
-    let out = Command::new(BIN)
+    let out = fleetlink_in(&dir)
         .args([
             "hub",
             "--check",

@@ -7,7 +7,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::Duration;
 
 use fleetlink_agent::AgentOptions;
-use fleetlink_agent::config::{AgentConfig, LocalRosbridgeConfig, SimConfig};
+use fleetlink_agent::config::{AgentConfig, ConfigSource, LocalRosbridgeConfig, SimConfig};
 use serde_json::{Value, json};
 
 use crate::util::*;
@@ -47,7 +47,8 @@ fn robot_config(
 }
 
 async fn start(cfg: &AgentConfig) -> TestAgent {
-    let a = start_agent_opts(AgentOptions::changeable(cfg).expect("options")).await;
+    let source = ConfigSource::default();
+    let a = start_agent_opts(AgentOptions::changeable(cfg, &source).expect("options")).await;
     a.wait_connected().await;
     a
 }
@@ -163,9 +164,18 @@ async fn a_change_through_the_hub_applies_at_once_is_kept_and_applied_again() {
         .await;
     assert_eq!(call["result"], false, "{call}");
 
-    // Kept on the robot: the file holds the changes in force.
+    // Kept on the robot: the file holds the changes in force, each entry with who made it.
     let kept: Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
-    assert_eq!(kept["topics"]["/odom"]["rate_limit_hz"], 2.0, "{kept}");
+    assert_eq!(
+        kept["change"]["topics"]["/odom"]["rate_limit_hz"], 2.0,
+        "{kept}"
+    );
+    assert!(
+        kept["entries"]["topics[\"/odom\"].rate_limit_hz"]["by"]
+            .as_str()
+            .is_some_and(|b| b.starts_with("user:")),
+        "{kept}"
+    );
     assert!(
         std::fs::read_to_string(fleetlink_agent::runtime::audit_path(&file))
             .unwrap()

@@ -289,7 +289,7 @@ async fn agent_says(dir: &Path, yaml: &str, needle: &str) -> String {
     use tokio::io::AsyncBufReadExt;
     let cfg = dir.join("robot.yaml");
     std::fs::write(&cfg, yaml).unwrap();
-    let mut child = tokio::process::Command::new(BIN)
+    let mut child = tokio::process::Command::from(fleetlink_in(dir))
         .arg("agent")
         .arg("--config")
         .arg(&cfg)

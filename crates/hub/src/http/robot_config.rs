@@ -9,10 +9,11 @@
 //!   administer `/robots/<name>/config` (the admin group, or a rule with `admin` on that
 //!   name). Audited (`config_change`) either way.
 //!
-//! The hub keeps the changes in force (the overlay the agent answers with) per robot, and
-//! applies them again whenever the robot's configuration service appears — the robot
-//! reconnected, restarted without its kept changes, or moved here from another hub sharing
-//! the database ([`keep_applied`]).
+//! The hub keeps the changes in force (the record the agent answers with: each entry with
+//! what the robot's file said when it was made) per robot, and applies them again whenever
+//! the robot's configuration service appears — the robot reconnected, restarted without
+//! its kept changes, or moved here from another hub sharing the database
+//! ([`keep_applied`]); the agent merges them with its file as it does its own.
 //!
 //! Both go through the robot's configuration services, which only the hub may call (the
 //! gate refuses every client: `crate::security::is_config_service`).
@@ -214,7 +215,13 @@ async fn change_robot(st: Arc<HubState>, me: Identity, robot: String, body: Byte
     }
     let fields = answer["changed"].clone();
     if answer["unchanged"] != json!(true) {
-        let overlay = answer["overlay"].to_string();
+        // The agent's record of the changes in force (each entry with what the robot's file
+        // said then, when and by whom), so that they merge with its file when applied again;
+        // an agent without one answers with the changes only.
+        let overlay = match answer.get("record") {
+            Some(record) if record.is_object() => record.to_string(),
+            _ => answer["overlay"].to_string(),
+        };
         let store = st.store.clone();
         let (robot_s, by_s) = (robot.to_string(), by.clone());
         let kept =
@@ -244,8 +251,15 @@ async fn kept(st: &HubState, robot: &str) -> Option<Value> {
         .await
         .ok()?
         .ok()??;
+    let kept_value = serde_json::from_str::<Value>(&kept.overlay).unwrap_or(Value::Null);
+    // An agent's record (`change` with `entries`), or the change alone (kept before records).
+    let (overlay, record) = match kept_value.get("change") {
+        Some(change) => (change.clone(), kept_value.clone()),
+        None => (kept_value.clone(), Value::Null),
+    };
     Some(json!({
-        "overlay": serde_json::from_str::<Value>(&kept.overlay).unwrap_or(Value::Null),
+        "overlay": overlay,
+        "record": record,
         "by": kept.by,
         "at_ms": kept.at_ms,
     }))
@@ -365,10 +379,23 @@ async fn reapply(st: Arc<HubState>, robot: String) {
     let Some(kept) = kept(&st, &robot).await else {
         return;
     };
-    let change = kept["overlay"].to_string();
-    let request = json!({ "change": change, "by": "the hub (changes it keeps, applied again)" });
+    let by = "the hub (changes it keeps, applied again)";
+    // A record merges with the robot's file as the agent's own kept changes do (what the
+    // file has changed since is set aside, not forced back).
+    let request = if kept["record"].is_object() {
+        json!({ "kept": kept["record"], "by": by })
+    } else {
+        json!({ "change": kept["overlay"].to_string(), "by": by })
+    };
     match call(&st.router, &robot, CONFIG_SET_SERVICE, request).await {
         Ok(a) if a["ok"] == json!(true) => {
+            if let Some(aside) = a["set_aside_now"].as_array().filter(|s| !s.is_empty()) {
+                tracing::warn!(
+                    %robot,
+                    "some configuration changes the hub keeps for it were set aside by the robot: {}",
+                    serde_json::Value::Array(aside.clone())
+                );
+            }
             if a["unchanged"] != json!(true) {
                 tracing::info!(%robot, "applied the configuration changes the hub keeps for it again");
                 st.security.audit.record(AuditRecord {
