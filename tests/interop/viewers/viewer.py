@@ -55,7 +55,10 @@ def run_websockets(a, log):
 
     from websockets.sync.client import connect
 
-    with connect(a.url, max_size=None, open_timeout=10) as ws:
+    # Its own keepalive off: the hub's answer to a client's ping waits behind what the
+    # hub queued before it too, and `websockets` would close a slow link itself after
+    # 20 s (browsers send no pings). Its background thread still answers the hub's.
+    with connect(a.url, max_size=None, open_timeout=10, ping_interval=None) as ws:
         ws.send(json.dumps({"op": "subscribe", "topic": a.topic, "type": a.type}))
         n = 0
         try:

@@ -128,13 +128,18 @@ class Suite:
             return None
         return next((t for t in topics if t["name"] == name), None)
 
+    def viewers(self, t):
+        """The topic's subscribers that are viewers (the robot's own link, which
+        subscribes to its namespace, is listed too)."""
+        return [s for s in t["subscribers"] if s.startswith(("/rosbridge_client_", "/foxglove_client_"))]
+
     def watched(self):
         t = self.topic(TOPIC)
-        return t is not None and t["state"] == "flowing" and len(t["subscribers"]) == 1
+        return t is not None and t["state"] == "flowing" and len(self.viewers(t)) == 1
 
     def idle(self):
         t = self.topic(TOPIC)
-        return t is not None and t["state"] == "idle" and not t["subscribers"]
+        return t is not None and t["state"] == "idle" and not self.viewers(t)
 
     def messages(self, log):
         with open(log, encoding="utf-8", errors="replace") as f:
@@ -153,12 +158,12 @@ class Suite:
                                      "--url", url, "--topic", TOPIC, "--log", log])
         return p, log
 
-    def watching(self, kind, name):
+    def watching(self, kind, name, clouds=3, within=20):
         """A viewer across the veth that gets the robot's cloud, with the hub listing it."""
         p, log = self.viewer(kind, name, self.a.viewer_ns, self.url())
         open(log, "a").close()
-        wait_until(lambda: len(self.messages(log)) >= 3, 20, f"{name}: three clouds")
-        wait_until(self.watched, 5, f"{TOPIC} flowing to one subscriber")
+        wait_until(lambda: len(self.messages(log)) >= clouds, within, f"{name}: {clouds} clouds")
+        wait_until(self.watched, 5, f"{TOPIC} flowing to one viewer ({self.topic(TOPIC)})")
         return p, log
 
     def time_to_idle(self, what):
@@ -196,7 +201,8 @@ class Suite:
         subprocess.run(["tc", "qdisc", "replace", "dev", dev, "root", "tbf", "rate", "256kbit",
                         "burst", "16000", "latency", "100ms"], check=True, timeout=10)
         try:
-            p, log = self.watching("websockets", "slow")
+            # A cloud is about 210 kB of JSON: some 7 s at this rate.
+            p, log = self.watching("websockets", "slow", clouds=1, within=60)
             end = time.monotonic() + minutes * 60
             last_count, last_at = len(self.messages(log)), time.monotonic()
             while time.monotonic() < end:
@@ -239,7 +245,9 @@ class Suite:
                 while True:
                     op = json.loads(ws.recv(timeout=5))
                     if op.get("op") == "service_response":
-                        return len(op["values"]["subscribers"])
+                        # Local programs only (the uplink subscribes to every topic).
+                        return len([n for n in op["values"]["subscribers"]
+                                    if n.startswith("/rosbridge_client_")])
 
         log = os.path.join(self.a.tmp, "local.log")
         p, _ = self.start("local", None, [self.a.python, os.path.join(HERE, "viewer.py"),
