@@ -481,13 +481,18 @@ impl Transcoder for RegistryTranscoder {
     }
 
     fn schema_for(&self, type_name: &str) -> Option<Schema> {
-        let text = self
-            .registry
-            .full_text(type_name, fleetlink_msg::Dialect::Ros2)
-            .ok()?;
+        // A type only ROS 1 has is given as ROS 1's, so that its topic is read in the ROS 1
+        // dialect (`dialect_of`) and its channel is a ROS 1 one.
+        let ros1 = fleetlink_msg::TypeName::parse(type_name).is_ok_and(|t| t.is_ros1_only());
+        let (dialect, encoding) = if ros1 {
+            (fleetlink_msg::Dialect::Ros1, "ros1msg")
+        } else {
+            (fleetlink_msg::Dialect::Ros2, "ros2msg")
+        };
+        let text = self.registry.full_text(type_name, dialect).ok()?;
         Some(Schema {
             type_name: type_name.to_owned(),
-            encoding: "ros2msg".into(),
+            encoding: encoding.into(),
             text,
         })
     }

@@ -81,3 +81,21 @@ fn a_ros1_time_keeps_its_value_in_cdr() {
     let back: Value = serde_json::from_slice(&back).unwrap();
     assert_eq!(back, json!({"stamp": {"sec": 7, "nanosec": 8}, "id": "g4"}));
 }
+
+/// A rosbridge client's `advertise` names the type only: the router fills in the
+/// registry's definition, a ROS 1 one for a type only ROS 1 has, so the topic is read
+/// with ROS 1's names.
+#[test]
+fn an_advertised_ros1_type_gets_a_ros1_schema() {
+    let t = RegistryTranscoder::bundled();
+    let filled = t.schema_for("actionlib_msgs/GoalID").expect("bundled");
+    assert_eq!(filled.encoding, "ros1msg");
+    assert_eq!(
+        normalized(&t, &filled, json!({"id": "g5"})),
+        json!({"stamp": {"secs": 0, "nsecs": 0}, "id": "g5"})
+    );
+    assert_eq!(
+        t.schema_for("std_msgs/msg/Header").unwrap().encoding,
+        "ros2msg"
+    );
+}
