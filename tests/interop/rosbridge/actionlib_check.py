@@ -57,8 +57,11 @@ def main():
         # The server: a goal runs until it is preempted (then says so) or 10 s pass.
         server = actionlib.SimpleActionServer(server_ros, a.name, ACTION)
         started, preempted = threading.Event(), threading.Event()
+        # What the server's cancel listener gets, seen by a listener of its own (on the
+        # client's connection, which publishes the cancels).
         cancels = []
-        server.cancel_listener.subscribe(cancels.append)
+        roslibpy.Topic(client_ros, a.name + "/cancel", "actionlib_msgs/GoalID").subscribe(
+            cancels.append)
 
         def execute(goal):
             started.set()
@@ -76,7 +79,8 @@ def main():
 
         client = actionlib.ActionClient(client_ros, a.name, ACTION)
         statuses = []
-        client.status_listener.subscribe(statuses.append)
+        roslibpy.Topic(server_ros, a.name + "/status", "actionlib_msgs/GoalStatusArray").subscribe(
+            statuses.append)
         goal = actionlib.Goal(client, roslibpy.Message({"order": 5}))
         results = []
         goal.on("result", results.append)
