@@ -5,6 +5,10 @@
 //! The same port answers plain HTTP requests with the configuration API
 //! (`GET`/`PUT /api/v1/config`, docs/runtime-config.md): a connection whose request asks
 //! for a WebSocket upgrade is a rosbridge client, any other is an HTTP client.
+//!
+//! A rosbridge client is pinged and closed after the silence limit without progress, as
+//! the hub's viewers are (`SessionConfig::liveness`, docs/security.md "Viewer liveness"):
+//! a local program that hangs does not keep the robot's topics flowing to the hub.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -14,6 +18,8 @@ use fleetlink_relay::Router;
 
 use crate::runtime::RuntimeConfig;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
+use fleetlink_relay::websocket::liveness::Peer;
+use fleetlink_relay::websocket::tcp_progress;
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
 use tokio_util::sync::CancellationToken;
@@ -75,12 +81,19 @@ pub async fn serve(
             }
             // tungstenite answers the handshake; the session then runs on the socket's
             // own halves (a client sends nothing more before the handshake's answer).
+            let local = tcp.local_addr().ok();
             match tokio_tungstenite::accept_async_with_config(tcp, Some(ws_config)).await {
                 Ok(ws) => {
                     let auth = fleetlink_relay::gate::SessionAuth::open();
                     let max = cfg.max_message_size;
                     let (sink, stream) = fleetlink_relay::websocket::server(ws.into_inner(), max);
-                    rosbridge::serve(sink, stream, router, Some(addr), cfg, shutdown, auth).await
+                    // Pinged and dropped when silent as the hub's viewers are
+                    // (`cfg.liveness`), its connection's draining counted as progress.
+                    let peer = Peer {
+                        addr: Some(addr),
+                        progress: local.map(|l| tcp_progress::probe(l, addr, sink.written())),
+                    };
+                    rosbridge::serve(sink, stream, router, peer, cfg, shutdown, auth).await
                 }
                 Err(e) => tracing::debug!("local client {addr}: WebSocket handshake failed: {e}"),
             }

@@ -26,4 +26,5 @@ mod e2e {
     mod shutdown;
     mod site;
     mod tls;
+    mod viewer_liveness;
 }

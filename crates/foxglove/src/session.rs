@@ -15,7 +15,6 @@
 //! publishes it, like any subscriber.
 
 use std::collections::{HashMap, HashSet};
-use std::net::SocketAddr;
 use std::sync::Arc;
 
 use bytes::Bytes;
@@ -24,6 +23,7 @@ use fleetlink_relay::calls::{ChannelPeer, PeerMsg};
 use fleetlink_relay::gate::{Gate, Op as GateOp, SessionAuth};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::transcode::NormalizeCache;
+use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer, Watch};
 use fleetlink_relay::websocket::{ClientMessage, PartsSink};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicId, TopicName};
 use futures_util::{Stream, StreamExt};
@@ -48,6 +48,9 @@ pub struct SessionConfig {
     pub session_id: String,
     /// Messages the writer sends per socket flush.
     pub batch: usize,
+    /// How often the client is pinged, and how long it may show no progress before it
+    /// is closed and what it held released (`fleetlink_relay::websocket::liveness`).
+    pub liveness: LivenessConfig,
 }
 
 impl Default for SessionConfig {
@@ -56,6 +59,7 @@ impl Default for SessionConfig {
             name: "fleetlink".into(),
             session_id: fleetlink_relay::unix_nanos().to_string(),
             batch: 256,
+            liveness: LivenessConfig::default(),
         }
     }
 }
@@ -69,7 +73,8 @@ const RULES_RECHECK: std::time::Duration = std::time::Duration::from_secs(5);
 /// without reading the answers is slowed down (its reader waits), nobody else is.
 const REPLY_QUEUE: usize = 256;
 
-/// Runs a session until the client leaves or `shutdown` is cancelled. `sink` and
+/// Runs a session until the client leaves, shows no progress for the silence limit
+/// (`cfg.liveness`; `conn` says how to sample its connection), or `shutdown` is cancelled. `sink` and
 /// `stream` are an accepted WebSocket's halves ([`fleetlink_relay::websocket`]), or
 /// channels in tests. `auth.gate` is what the client may do (`None`: it presented no
 /// credential where anonymous access is off, and sees and may do nothing; the protocol
@@ -78,7 +83,7 @@ pub async fn serve<K, S>(
     sink: K,
     mut stream: S,
     router: Arc<Router>,
-    addr: Option<SocketAddr>,
+    conn: impl Into<Peer>,
     cfg: Arc<SessionConfig>,
     shutdown: CancellationToken,
     auth: SessionAuth,
@@ -86,11 +91,14 @@ pub async fn serve<K, S>(
     K: PartsSink + Send + 'static,
     S: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
 {
+    let conn: Peer = conn.into();
+    let addr = conn.addr;
     let (client, outbox) = router.connect(ClientKind::Foxglove, addr);
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let watch = router.watch_topics();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
+    let mut live = Watch::new(cfg.liveness, conn.progress, reply_tx.clone());
     let deliveries: Deliveries = Arc::default();
     let writer = tokio::spawn(writer::write_loop(
         sink,
@@ -123,24 +131,38 @@ pub async fn serve<K, S>(
     let mut recheck = tokio::time::interval(RULES_RECHECK);
     recheck.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
     recheck.reset();
+    // Set when the client showed no progress for the silence limit: how long. Every step
+    // that may wait on the client (a full reply queue) is raced against that.
+    let mut gone = None;
     loop {
-        tokio::select! {
+        let step = tokio::select! {
             biased;
             _ = &mut cancelled => break,
+            silent = live.gone() => Err(silent),
             m = peer_rx.recv(), if calls_open => match m {
-                Some(m) => s.on_peer(m).await,
-                None => calls_open = false,
+                Some(m) => live.race(s.on_peer(m)).await.map(|()| true),
+                None => {
+                    calls_open = false;
+                    Ok(true)
+                }
             },
             _ = watch.changed() => {
                 let changed = watch.take();
-                s.sync_channels(changed).await;
+                live.race(s.sync_channels(changed)).await.map(|()| true)
             }
-            _ = recheck.tick() => s.recheck_rules().await,
+            _ = recheck.tick() => live.race(s.recheck_rules()).await.map(|()| true),
             f = stream.next() => {
                 let Some(f) = f else { break };
-                if !s.on_frame(f).await {
-                    break;
-                }
+                live.read();
+                live.race(s.on_frame(f)).await
+            }
+        };
+        match step {
+            Ok(true) => {}
+            Ok(false) => break,
+            Err(silent) => {
+                gone = Some(silent);
+                break;
             }
         }
     }
@@ -151,8 +173,21 @@ pub async fn serve<K, S>(
         };
         let _ = s.replies.try_send(Reply::Close(Some(away)));
     }
+    if let Some(silent) = gone {
+        tracing::info!(
+            "Foxglove client {}: no progress for {} ms (no bytes read, its connection not \
+             draining); closing it and releasing what it held",
+            addr.map_or_else(|| "?".into(), |a| a.to_string()),
+            silent.as_millis()
+        );
+    }
     router.disconnect(client);
     drop(s);
+    drop(live);
+    if gone.is_some() {
+        // Its socket may never drain: the writer is not waited for.
+        writer.abort();
+    }
     let _ = writer.await;
 }
 

@@ -32,11 +32,13 @@ use crate::limits::{ConnPermit, Limits, Refusal};
 /// The longest a refusal answer (TLS included) may take before the socket is dropped.
 const REFUSAL_BUDGET: Duration = Duration::from_secs(2);
 
-/// Per-connection facts handlers need: the peer, over mutual TLS the robot its verified
-/// certificate names, and the connection's place under the limits.
+/// Per-connection facts handlers need: the peer, this end's address (which with the
+/// peer's names the connection to the kernel, for a viewer's liveness), over mutual TLS
+/// the robot its verified certificate names, and the connection's place under the limits.
 #[derive(Clone)]
 pub struct ConnMeta {
     pub peer: SocketAddr,
+    pub local: Option<SocketAddr>,
     pub tls_name: Option<fleetlink_auth::RobotName>,
     pub open: Arc<OpenConn>,
 }
@@ -90,10 +92,12 @@ impl Door {
             _permit: permit,
             http_phase: http_phase.clone(),
         });
+        let local = tcp.local_addr().ok();
         let io = IdleIo::new(tcp, self.limits.cfg.idle_timeout, http_phase);
         let Some(tls) = self.tls.clone() else {
             let meta = ConnMeta {
                 peer,
+                local,
                 tls_name: None,
                 open,
             };
@@ -106,6 +110,7 @@ impl Door {
             fleetlink_auth::tls::client_cert_name(stream.get_ref().1.peer_certificates());
         let meta = ConnMeta {
             peer,
+            local,
             tls_name,
             open,
         };

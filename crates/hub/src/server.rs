@@ -26,6 +26,7 @@ use fleetlink_proto::SUBPROTOCOL;
 use fleetlink_relay::Router;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::transcode::Transcoder;
+use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer};
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
 use tokio_util::sync::CancellationToken;
@@ -72,6 +73,9 @@ pub struct HubConfig {
     pub calls: fleetlink_relay::calls::CallLimits,
     /// Where MCAP recordings go; `None`: `recordings` in `data_dir`.
     pub recordings_dir: Option<PathBuf>,
+    /// How often rosbridge and Foxglove clients are pinged, and how long one may show no
+    /// progress before it is closed and what it held released.
+    pub viewer_liveness: LivenessConfig,
 }
 
 impl Default for HubConfig {
@@ -92,6 +96,7 @@ impl Default for HubConfig {
             door: crate::limits::FrontDoor::default(),
             calls: fleetlink_relay::calls::CallLimits::default(),
             recordings_dir: None,
+            viewer_liveness: LivenessConfig::default(),
         }
     }
 }
@@ -163,6 +168,7 @@ impl Hub {
         let rosbridge = Arc::new(SessionConfig {
             node_name: "/fleetlink_hub".into(),
             max_message_size: cfg.max_message_size,
+            liveness: cfg.viewer_liveness,
             ..SessionConfig::default()
         });
         let recordings_dir = cfg
@@ -190,6 +196,7 @@ impl Hub {
             rosbridge,
             foxglove: Arc::new(fleetlink_foxglove::SessionConfig {
                 name: "fleetlink hub".into(),
+                liveness: cfg.viewer_liveness,
                 ..fleetlink_foxglove::SessionConfig::default()
             }),
             shutdown,
@@ -446,6 +453,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         Err(r) => return busy(&st, r),
     };
     let open = req.extensions().get::<ConnMeta>().map(|m| m.open.clone());
+    let local = req.extensions().get::<ConnMeta>().and_then(|m| m.local);
     // The offered subprotocols, read before any await: a borrow of the request (whose
     // body is not `Sync`) must not live across one.
     let (agent, foxglove) = {
@@ -514,6 +522,13 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 .await;
         } else {
             drop(slot);
+            // A viewer's liveness counts its connection draining, not only what it sends.
+            let peer = Peer {
+                addr: Some(addr),
+                progress: local.map(|local| {
+                    fleetlink_relay::websocket::tcp_progress::probe(local, addr, sink.written())
+                }),
+            };
             let gate = identity.map(|id| {
                 Box::new(crate::security::HubGate::new(
                     st.security.clone(),
@@ -536,7 +551,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                     sink,
                     stream,
                     st.router.clone(),
-                    Some(addr),
+                    peer,
                     st.foxglove.clone(),
                     st.shutdown.clone(),
                     auth,
@@ -547,7 +562,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 sink,
                 stream,
                 st.router.clone(),
-                Some(addr),
+                peer,
                 st.rosbridge.clone(),
                 st.shutdown.clone(),
                 auth,

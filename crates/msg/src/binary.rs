@@ -492,10 +492,16 @@ fn write_struct(w: &mut Writer, layout: &MsgLayout, s: &Struct) -> Result<(), Co
         w.out.push(0);
         return Ok(());
     }
+    let is_time = layout.name.package() == "builtin_interfaces";
     for (i, f) in layout.fields.iter().enumerate() {
         let found = match s.fields.get(i) {
             Some((n, v)) if *n == f.name => Some(v),
-            _ => s.get(&f.name),
+            // A ROS 1 time (`{secs, nsecs}`) written as a ROS 2 one.
+            _ => s.get(&f.name).or_else(|| match (&*f.name, is_time) {
+                ("sec", true) => s.get("secs"),
+                ("nanosec", true) => s.get("nsecs"),
+                _ => None,
+            }),
         };
         let r = match found {
             Some(v) => write_field(w, f, v),
@@ -711,9 +717,9 @@ fn write_elem(
             }
         }
         Scalar::Time | Scalar::Duration => {
-            let st = v.as_struct().ok_or_else(|| {
-                mismatch(format!("expected {{sec, nanosec}}, got {}", kind_of(v)))
-            })?;
+            let st = v
+                .as_struct()
+                .ok_or_else(|| mismatch(format!("expected {{secs, nsecs}}, got {}", kind_of(v))))?;
             let part = |names: [&str; 2]| {
                 names
                     .iter()

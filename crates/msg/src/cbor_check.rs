@@ -169,11 +169,11 @@ impl<'a> Cursor<'a> {
                 } else {
                     (i32::MIN.into(), i32::MAX.into())
                 };
-                if self.len_of(5)? != 2 || self.text()? != "sec" {
+                if self.len_of(5)? != 2 || self.text()? != "secs" {
                     return None;
                 }
                 int(self, lo, hi)?;
-                if self.text()? != "nanosec" {
+                if self.text()? != "nsecs" {
                     return None;
                 }
                 int(self, lo, hi)

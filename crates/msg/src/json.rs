@@ -1,8 +1,9 @@
 //! rosbridge JSON output: a [`Value`] as the JSON object rosbridge would send.
 //!
 //! Conventions: `uint8[]`/`char[]` (and ROS 2 `byte[]`) are base64 strings, NaN and
-//! infinities are `null`, time is `{sec, nanosec}`, `float32` is printed in its shortest
-//! form that reads back to the same `float32`. Design choice: besides building a
+//! infinities are `null`, a ROS 1 time is `{secs, nsecs}` (a ROS 2 one is the message
+//! `{sec, nanosec}`), `float32` is printed in its shortest form that reads back to the
+//! same `float32`. Design choice: besides building a
 //! `serde_json::Value`, [`write_json`] prints straight into a byte buffer with `itoa`/
 //! `ryu`, which is what the hub uses to turn one CDR message into one JSON text.
 

@@ -159,7 +159,7 @@ fn elem_is_normal(elem: &Elem, node: &Node<'_>) -> bool {
                     |(_, v)| matches!(v, Node::Int(i) if (range.0..=range.1).contains(i)),
                 )
             };
-            fields.len() == 2 && part("sec") && part("nanosec")
+            fields.len() == 2 && part("secs") && part("nsecs")
         }
         (s, Node::Int(i)) => int_range(s).is_some_and(|(lo, hi)| (lo..=hi).contains(i)),
         _ => false,
@@ -723,11 +723,11 @@ impl<'a> Check<'a> {
                 if !self.eat(b'{') {
                     return false;
                 }
-                let (mut sec, mut nanosec) = (false, false);
+                let (mut secs, mut nsecs) = (false, false);
                 for i in 0..2 {
                     let slot = match self.plain_bytes() {
-                        Some(b"sec") if !sec => &mut sec,
-                        Some(b"nanosec") if !nanosec => &mut nanosec,
+                        Some(b"secs") if !secs => &mut secs,
+                        Some(b"nsecs") if !nsecs => &mut nsecs,
                         _ => return false,
                     };
                     if !self.eat(b':') || !part(self) {
@@ -949,18 +949,22 @@ mod tests {
         let s = layout("std_msgs/msg/String", ros2);
         assert!(!is_normal_text(&s, br#"{"data":"a\nb"}"#));
         assert!(parse(br#"{"data":"a\nb"}"#).is_ok_and(|n| is_normal(&s, &n)));
-        // ROS 1 time, written as rosbridge writes it.
+        // ROS 1 time, written as rosbridge on ROS 1 writes it; ROS 2's names are not
+        // its normal form (they are rewritten).
         let h1 = layout("std_msgs/Header", crate::Dialect::Ros1);
-        let text = br#"{"seq":3,"stamp":{"sec":1,"nanosec":2},"frame_id":""}"#;
+        let text = br#"{"seq":3,"stamp":{"secs":1,"nsecs":2},"frame_id":""}"#;
         assert!(is_normal_text(&h1, text));
         assert!(parse(text).is_ok_and(|n| is_normal(&h1, &n)));
+        let ros2_names = br#"{"seq":3,"stamp":{"sec":1,"nanosec":2},"frame_id":""}"#;
+        assert!(!is_normal_text(&h1, ros2_names));
+        assert!(!parse(ros2_names).is_ok_and(|n| is_normal(&h1, &n)));
         assert!(!is_normal_text(
             &h1,
-            br#"{"seq":3,"stamp":{"sec":1},"frame_id":""}"#
+            br#"{"seq":3,"stamp":{"secs":1},"frame_id":""}"#
         ));
         assert!(!is_normal_text(
             &h1,
-            br#"{"seq":3,"stamp":{"sec":1,"sec":2},"frame_id":""}"#
+            br#"{"seq":3,"stamp":{"secs":1,"secs":2},"frame_id":""}"#
         ));
     }
 

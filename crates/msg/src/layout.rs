@@ -312,13 +312,16 @@ pub(crate) fn pack(s: Scalar, items: Vec<Value>) -> Array {
     }
 }
 
-static SEC: std::sync::LazyLock<Arc<str>> = std::sync::LazyLock::new(|| Arc::from("sec"));
-static NANOSEC: std::sync::LazyLock<Arc<str>> = std::sync::LazyLock::new(|| Arc::from("nanosec"));
+static SECS: std::sync::LazyLock<Arc<str>> = std::sync::LazyLock::new(|| Arc::from("secs"));
+static NSECS: std::sync::LazyLock<Arc<str>> = std::sync::LazyLock::new(|| Arc::from("nsecs"));
 
-/// A ROS 1 time or duration as the `{sec, nanosec}` struct the codecs use.
-pub(crate) fn time_value(sec: Value, nanosec: Value) -> Value {
+/// A ROS 1 time or duration as the codecs hold it: `{secs, nsecs}`, ROS 1's names, which
+/// rosbridge on ROS 1 writes and ROS 1 clients read (roslibpy's actionlib reads
+/// `stamp.secs`). Only the ROS 1 dialect has these primitives; a ROS 2 time is the
+/// message `builtin_interfaces/Time`, `{sec, nanosec}`.
+pub(crate) fn time_value(secs: Value, nsecs: Value) -> Value {
     Value::Struct(Struct {
-        fields: vec![(SEC.clone(), sec), (NANOSEC.clone(), nanosec)],
+        fields: vec![(SECS.clone(), secs), (NSECS.clone(), nsecs)],
     })
 }
 

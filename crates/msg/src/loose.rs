@@ -491,7 +491,7 @@ fn to_elem<T: Loose>(elem: &Elem, node: &T) -> Result<Value, CodecError> {
         Scalar::Time | Scalar::Duration => {
             if !matches!(view, View::Map | View::Null) {
                 return Err(mismatch(format!(
-                    "expected {{sec, nanosec}}, got {}",
+                    "expected {{secs, nsecs}}, got {}",
                     describe(&view)
                 )));
             }

@@ -28,6 +28,23 @@ impl InterfaceKind {
     }
 }
 
+/// Packages whose types only ROS 1 programs exchange ([`TypeName::is_ros1_only`]):
+/// actionlib's, whose clients and servers talk over topics (`actionlib_msgs` also ships
+/// in ROS 2's common interfaces, for bridges, but ROS 2's own actions do not use it),
+/// and other ROS 1 tools' messages.
+pub const ROS1_PACKAGES: &[&str] = &[
+    "actionlib",
+    "actionlib_msgs",
+    "actionlib_tutorials",
+    "dynamic_reconfigure",
+    "move_base_msgs",
+    "roscpp",
+    "rospy_tutorials",
+    "smach_msgs",
+    "tf",
+    "topic_tools",
+];
+
 /// A fully qualified ROS type name, e.g. `sensor_msgs/msg/PointCloud2`.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct TypeName {
@@ -120,6 +137,19 @@ impl TypeName {
             kind: self.kind,
             name,
         }
+    }
+
+    /// Whether only ROS 1 has this type, so that rosbridge clients meet it with ROS 1's
+    /// field names (time as `{secs, nsecs}`, a header with `seq`): a type of a package
+    /// only ROS 1's tools use ([`ROS1_PACKAGES`]), or one that ROS 1's actionlib
+    /// generates for an action (`FooActionGoal`, `FooActionResult`, `FooActionFeedback`;
+    /// ROS 2 actions have no such messages).
+    pub fn is_ros1_only(&self) -> bool {
+        ROS1_PACKAGES.contains(&self.package.as_str())
+            || (self.kind == InterfaceKind::Msg
+                && ["ActionGoal", "ActionResult", "ActionFeedback"]
+                    .iter()
+                    .any(|s| self.name.len() > s.len() && self.name.ends_with(s)))
     }
 
     /// `pkg/T`, the ROS 1 and rosbridge form.

@@ -141,9 +141,10 @@ fn json_conventions_of_rosbridge_are_accepted() {
         &json!({"seq": 9, "stamp": {"secs": 3, "nsecs": 4}}),
     )
     .expect("ROS 1");
+    // Read in the ROS 1 dialect, a time has ROS 1's names (issue 56).
     assert_eq!(
         to_json(&v),
-        json!({"seq": 9, "stamp": {"sec": 3, "nanosec": 4}, "frame_id": ""})
+        json!({"seq": 9, "stamp": {"secs": 3, "nsecs": 4}, "frame_id": ""})
     );
     let v = from_json(
         &reg,
@@ -267,4 +268,29 @@ fn registry_can_be_shared_across_threads() {
     });
     assert!(handle.join().unwrap_or(false));
     assert!(reg.contains("thread_msgs/T"), "clones share one table");
+}
+
+/// Issue 56: the types only ROS 1 has, whose rosbridge clients expect ROS 1's names.
+#[test]
+fn types_only_ros1_has_are_told_apart() {
+    let ros1_only = |n: &str| fleetlink_msg::TypeName::parse(n).unwrap().is_ros1_only();
+    for n in [
+        "actionlib_msgs/GoalID",
+        "actionlib_msgs/msg/GoalStatusArray",
+        "actionlib_tutorials/FibonacciActionGoal",
+        "my_robot/DockActionResult",
+        "my_robot/msg/DockActionFeedback",
+        "dynamic_reconfigure/Config",
+    ] {
+        assert!(ros1_only(n), "{n}");
+    }
+    for n in [
+        "std_msgs/msg/Header",
+        "sensor_msgs/PointCloud2",
+        "example_interfaces/action/Fibonacci_Goal",
+        "nav2_msgs/action/NavigateToPose_FeedbackMessage",
+        "my_robot/ActionGoal",
+    ] {
+        assert!(!ros1_only(n), "{n}");
+    }
 }

@@ -50,7 +50,10 @@ impl ChannelForm {
             && let Some(known) = tc.schema_for(&schema.type_name)
             && !known.text.is_empty()
         {
-            return with_text(Encoding::Cdr, "ros2msg", &known.text);
+            return match known.encoding.as_str() {
+                "ros1msg" => with_text(Encoding::Ros1, "ros1msg", &known.text),
+                _ => with_text(Encoding::Cdr, "ros2msg", &known.text),
+            };
         }
         ChannelForm {
             encoding: Encoding::Json,

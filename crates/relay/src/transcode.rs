@@ -225,8 +225,17 @@ struct ResolvedTopic {
     resolved: fleetlink_msg::Resolved,
 }
 
+/// The dialect a topic's messages are read in, and so the names their times and headers
+/// take: ROS 1's for a ROS 1 robot's topic (its definition came as `ros1msg`, or its
+/// payload is ROS 1 serialization), and for a type only ROS 1 has
+/// (`TypeName::is_ros1_only`: actionlib's) when no robot said otherwise — rosbridge
+/// clients of such a type are ROS 1 programs (docs/msg.md, "ROS 1 names").
 fn dialect_of(schema: &Schema, payload: Encoding) -> fleetlink_msg::Dialect {
-    if payload == Encoding::Ros1 || schema.encoding == "ros1msg" {
+    let ros1_type = || {
+        schema.encoding != "ros2msg"
+            && fleetlink_msg::TypeName::parse(&schema.type_name).is_ok_and(|t| t.is_ros1_only())
+    };
+    if payload == Encoding::Ros1 || schema.encoding == "ros1msg" || ros1_type() {
         fleetlink_msg::Dialect::Ros1
     } else {
         fleetlink_msg::Dialect::Ros2
@@ -472,13 +481,18 @@ impl Transcoder for RegistryTranscoder {
     }
 
     fn schema_for(&self, type_name: &str) -> Option<Schema> {
-        let text = self
-            .registry
-            .full_text(type_name, fleetlink_msg::Dialect::Ros2)
-            .ok()?;
+        // A type only ROS 1 has is given as ROS 1's, so that its topic is read in the ROS 1
+        // dialect (`dialect_of`) and its channel is a ROS 1 one.
+        let ros1 = fleetlink_msg::TypeName::parse(type_name).is_ok_and(|t| t.is_ros1_only());
+        let (dialect, encoding) = if ros1 {
+            (fleetlink_msg::Dialect::Ros1, "ros1msg")
+        } else {
+            (fleetlink_msg::Dialect::Ros2, "ros2msg")
+        };
+        let text = self.registry.full_text(type_name, dialect).ok()?;
         Some(Schema {
             type_name: type_name.to_owned(),
-            encoding: "ros2msg".into(),
+            encoding: encoding.into(),
             text,
         })
     }

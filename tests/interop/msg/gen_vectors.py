@@ -283,7 +283,7 @@ def gen_ros1_field(typ, rng, mode, depth):
         else:
             secs = rand_int(rng, mode, "int32")
             v = genpy.Duration(secs, 0 if mode == "zero" else rng.randint(0, 999_999_999))
-        return v, {"sec": v.secs, "nanosec": v.nsecs}
+        return v, {"secs": v.secs, "nsecs": v.nsecs}
     return gen_ros1(get_message_class(typ), rng, mode, depth + 1)
 
 

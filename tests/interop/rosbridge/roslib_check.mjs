@@ -342,8 +342,8 @@ async function checkPartialMessages(ros) {
       name: "/interop_js/goal_id",
       type: "actionlib_msgs/GoalID",
       msg: { id: nonce },
-      pred: (m) => isDeepStrictEqual(m, { stamp: ZERO_TIME, id: nonce }),
-      what: "GoalID with only its id: zero stamp",
+      pred: (m) => isDeepStrictEqual(m, { stamp: { secs: 0, nsecs: 0 }, id: nonce }),
+      what: "GoalID with only its id: zero stamp, named as ROS 1 names it (a type only ROS 1 has)",
     },
     {
       name: "/interop_js/trajectory",

@@ -402,8 +402,8 @@ def partial_cases(prefix, nonce):
     """(topic, type, partial message, predicate on what a subscriber gets, what) per case."""
     return [
         (f"{prefix}/goal_id", "actionlib_msgs/GoalID", {"id": nonce},
-         lambda m: m == {"stamp": ZERO_TIME, "id": nonce},
-         "GoalID with only its id: zero stamp"),
+         lambda m: m == {"stamp": {"secs": 0, "nsecs": 0}, "id": nonce},
+         "GoalID with only its id: zero stamp, named as ROS 1 names it (a type only ROS 1 has)"),
         (f"{prefix}/markers", "visualization_msgs/msg/MarkerArray",
          {"markers": [{"ns": nonce, "id": 3, "pose": {"position": {"x": 1.5}}}]},
          lambda m: len(m["markers"]) == 1 and m["markers"][0]["ns"] == nonce

@@ -4,7 +4,8 @@
 #
 # Starts a hub and one agent (robot1, simulated laser/odometry/point cloud, local
 # listener), waits until robot1 is online with its topics, then runs
-#   roslibpy_check.py and roslib_check.mjs  x  (hub URL, agent's local URL)
+#   roslibpy_check.py and roslib_check.mjs  x  (hub URL, agent's local URL),
+#   foxglove_check.mjs, and actionlib_check.py (roslibpy 1.8's actionlib, on the hub)
 # and exits non-zero if any of them failed. Every process started here is stopped on
 # exit (trap), also on failure. Bounded: each step has a timeout, the whole suite
 # stays under 5 minutes.
@@ -15,6 +16,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
 bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
 python="${PYTHON:-$root/.venv/bin/python}"
+python1="$root/.venv-roslibpy1/bin/python"
 robot=robot1
 scan_ranges=720
 points=2000
@@ -22,6 +24,7 @@ started=$SECONDS
 
 [ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
 [ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
+[ -x "$python1" ] || { echo "FAIL: $python1 missing; run scripts/setup.d/12-roslibpy-1.sh" >&2; exit 1; }
 [ -d "$here/node_modules/roslib" ] || { echo "FAIL: roslib missing; run scripts/setup.d/20-node-packages.sh" >&2; exit 1; }
 
 # shellcheck source=../lib.sh
@@ -102,13 +105,15 @@ run_check "roslibpy local" "$python" "$here/roslibpy_check.py" --url "$local_url
 run_check "roslib hub" node "$here/roslib_check.mjs" --url "$hub_url" --mode hub --peer-url "$local_url" "${common[@]}"
 run_check "roslib local" node "$here/roslib_check.mjs" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
 run_check "foxglove parsers" node "$here/foxglove_check.mjs" --url "$hub_url" --bin "$bin" --robot "$robot"
+# ROS 1 actions over topics, roslibpy 1.8's client and server on the hub (issue 56).
+run_check "roslibpy 1.8 actionlib hub" "$python1" "$here/actionlib_check.py" --url "$hub_url"
 
 # Both servers must have survived everything the clients did.
 for pid in "${pids[@]}"; do
     kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
 done
 
-echo "rosbridge interop: ${#failed[@]} failure(s) in 5 client runs, $((SECONDS - started)) s"
+echo "rosbridge interop: ${#failed[@]} failure(s) in 6 client runs, $((SECONDS - started)) s"
 if [ ${#failed[@]} -ne 0 ]; then
     echo "FAIL: ${failed[*]}" >&2
     exit 1

@@ -112,6 +112,15 @@ pub struct Args {
     /// 503 with a Retry-After of a few seconds.
     #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..))]
     pub max_handshakes: u32,
+    /// Seconds between the WebSocket pings the hub sends every rosbridge and Foxglove
+    /// client.
+    #[arg(long, default_value_t = 10.0, value_parser = positive_secs)]
+    pub viewer_ping_secs: f64,
+    /// Seconds a rosbridge or Foxglove client may show no progress (nothing read from
+    /// it, its connection not draining) before it is closed and its subscriptions,
+    /// advertisements, calls and goals released. Must exceed --viewer-ping-secs.
+    #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
+    pub viewer_silence_secs: f64,
     /// Seconds a service call waits for its answer when the caller gives no `timeout`.
     #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
     pub call_timeout_secs: f64,
@@ -172,6 +181,10 @@ impl Args {
                 max_connections_per_ip: self.max_connections_per_ip as usize,
                 max_handshakes: self.max_handshakes as usize,
             },
+            viewer_liveness: fleetlink_relay::websocket::liveness::LivenessConfig {
+                ping_every: Duration::from_secs_f64(self.viewer_ping_secs),
+                silence: Duration::from_secs_f64(self.viewer_silence_secs),
+            },
             calls: fleetlink_relay::calls::CallLimits {
                 default_timeout: Duration::from_secs_f64(self.call_timeout_secs),
                 max_pending_per_caller: self.max_pending_calls_per_caller as usize,
@@ -197,6 +210,19 @@ impl Args {
                     }
                 }),
         }
+    }
+}
+
+impl Args {
+    /// A silence limit that does not leave a client time to answer a ping.
+    fn liveness_problem(&self) -> Option<String> {
+        (self.viewer_silence_secs <= self.viewer_ping_secs).then(|| {
+            format!(
+                "--viewer-silence-secs {} must exceed --viewer-ping-secs {}: a client answers \
+                 a ping only after it was sent",
+                self.viewer_silence_secs, self.viewer_ping_secs
+            )
+        })
     }
 }
 
@@ -264,6 +290,9 @@ pub fn check(
             super::upstream::config(&args.upstream, &args.data_dir),
         );
     }
+    if let Some(problem) = args.liveness_problem() {
+        r.problem(problem);
+    }
     let files = u64::from(args.max_connections) + 256;
     match super::open_files_limit() {
         Some(hard) if hard < files => r.note(format!(
@@ -319,6 +348,9 @@ fn check_data_dir(r: &mut super::check::Report, dir: &std::path::Path) {
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     super::init_logging("info");
+    if let Some(problem) = args.liveness_problem() {
+        anyhow::bail!(problem);
+    }
     // Every connection is a file: room for the front door's whole admission plus the
     // store, logs and listeners; a hard limit below that is reported, not fatal.
     let files = u64::from(args.max_connections) + 256;

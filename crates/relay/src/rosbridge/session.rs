@@ -7,7 +7,6 @@
 //! limit, answered with close code 1009) ends the session.
 
 use std::collections::HashMap;
-use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -39,6 +38,7 @@ use crate::router::{
 };
 use crate::stats::StatsBatch;
 use crate::transcode::NormalizeCache;
+use crate::websocket::liveness::{LivenessConfig, Peer, Watch};
 use crate::websocket::replies::{Reply, close_with, wait_for_work};
 use crate::websocket::{ClientMessage, PartsSink};
 
@@ -51,6 +51,9 @@ pub struct SessionConfig {
     pub max_message_size: usize,
     /// Messages the writer sends per socket flush.
     pub batch: usize,
+    /// How often the client is pinged, and how long it may show no progress before it
+    /// is closed and what it held released ([`crate::websocket::liveness`]).
+    pub liveness: LivenessConfig,
 }
 
 impl Default for SessionConfig {
@@ -59,6 +62,7 @@ impl Default for SessionConfig {
             node_name: "/fleetlink".into(),
             max_message_size: 16 << 20,
             batch: 256,
+            liveness: LivenessConfig::default(),
         }
     }
 }
@@ -69,7 +73,9 @@ const REPLY_QUEUE: usize = 256;
 
 /// Runs a session until the client leaves: `stream` gives the client's messages, `sink`
 /// takes what is sent to it (an accepted WebSocket's halves, see [`crate::websocket`]).
-/// Ends when the client leaves or `shutdown` is cancelled.
+/// Ends when the client leaves, when it shows no progress for the silence limit
+/// (`cfg.liveness`; `conn` says how to sample its connection), or when `shutdown` is
+/// cancelled.
 ///
 /// Control frames are answered here: a `Ping` with a `Pong`, a `Close` with a `Close`
 /// echoing its code; a frame that breaks the protocol closes the connection with the
@@ -78,7 +84,7 @@ pub async fn serve<K, S>(
     sink: K,
     stream: S,
     router: Arc<Router>,
-    addr: Option<SocketAddr>,
+    conn: impl Into<Peer>,
     cfg: Arc<SessionConfig>,
     shutdown: CancellationToken,
     auth: SessionAuth,
@@ -86,6 +92,8 @@ pub async fn serve<K, S>(
     K: PartsSink + Send + 'static,
     S: Stream<Item = Result<ClientMessage, WsError>> + Unpin + Send,
 {
+    let conn: Peer = conn.into();
+    let addr = conn.addr;
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
@@ -94,6 +102,7 @@ pub async fn serve<K, S>(
     // frame that is read with them borrows them while the session publishes).
     let mut shapes = fleetlink_proto::rosbridge::EnvelopeShapes::default();
     let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
+    let mut watch = Watch::new(cfg.liveness, conn.progress, reply_tx.clone());
     let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
     let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
     let writer = tokio::spawn(write_loop(
@@ -131,6 +140,8 @@ pub async fn serve<K, S>(
     // sees its call replies and a shutdown, both are looked at every `LOOK_AROUND` frames
     // without waiting.
     let mut frames = 0u32;
+    // Set when the client showed no progress for the silence limit: how long.
+    let mut gone = None;
     loop {
         frames += 1;
         if frames.is_multiple_of(LOOK_AROUND) {
@@ -138,8 +149,21 @@ pub async fn serve<K, S>(
                 break;
             }
             session.flush_counts();
+            // A client sending without pause is read without waiting: it is alive, and
+            // its pings fall due here.
+            watch.read();
+            if let Some(silent) = watch.check() {
+                gone = Some(silent);
+                break;
+            }
             while let Ok(Some(m)) = peer_rx.try_recv() {
-                session.on_peer(m).await;
+                if let Err(silent) = watch.race(session.on_peer(m)).await {
+                    gone = Some(silent);
+                    break;
+                }
+            }
+            if gone.is_some() {
+                break;
             }
         }
         let frame = match stream.next().now_or_never() {
@@ -152,14 +176,22 @@ pub async fn serve<K, S>(
                     biased;
                     f = stream.next() => f,
                     m = peer_rx.recv() => {
-                        if let Some(m) = m {
-                            session.on_peer(m).await;
+                        if let Some(m) = m
+                            && let Err(silent) = watch.race(session.on_peer(m)).await
+                        {
+                            gone = Some(silent);
+                            break;
                         }
                         continue;
                     }
                     _ = &mut cancelled => break,
+                    silent = watch.gone() => {
+                        gone = Some(silent);
+                        break;
+                    }
                 };
                 session.clock.waited();
+                watch.read();
                 f
             }
         };
@@ -286,6 +318,10 @@ pub async fn serve<K, S>(
             biased;
             _ = step => {}
             _ = &mut cancelled => break,
+            silent = watch.gone() => {
+                gone = Some(silent);
+                break;
+            }
         }
         // One socket read can hold thousands of small operations; counting each against
         // the task's budget makes a flooding client give way to the writers that deliver
@@ -303,8 +339,23 @@ pub async fn serve<K, S>(
         };
         let _ = session.replies.try_send(Reply::Close(Some(away)));
     }
+    if let Some(silent) = gone {
+        tracing::info!(
+            "rosbridge client {}: no progress for {} ms (no bytes read, its connection not \
+             draining); closing it and releasing what it held",
+            addr.map_or_else(|| "?".into(), |a| a.to_string()),
+            silent.as_millis()
+        );
+    }
+    // What the client held goes now: its subscriptions (and the demand they made), its
+    // advertisements, its calls and goals, their callers and providers told.
     router.disconnect(client);
     drop(session);
+    drop(watch);
+    if gone.is_some() {
+        // Its socket may never drain: the writer is not waited for.
+        writer.abort();
+    }
     let _ = writer.await;
 }
 

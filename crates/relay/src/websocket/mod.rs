@@ -21,15 +21,21 @@
 //! - Control frames are not answered here: a `Ping` comes out of the reader for the
 //!   session to answer, and so does a `Close`. After a `Close` or an error the reader
 //!   ends; after sending a `Close` the writer refuses further messages.
+//! - The writer counts the bytes the socket took ([`Writer::written`]): progress of a
+//!   client's connection where the kernel's own count cannot be read ([`liveness`]).
 //! - Text comes out unchecked ([`ClientMessage::Text`]): its reader checks the UTF-8, most
 //!   often while reading the text anyway, instead of in a pass of its own.
 
 pub mod frames;
+pub mod liveness;
 pub mod replies;
+pub mod tcp_progress;
 
 use std::collections::VecDeque;
 use std::io::IoSlice;
 use std::pin::Pin;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::task::{Context, Poll, ready};
 
 use bytes::{Buf, BufMut, Bytes, BytesMut};
@@ -196,6 +202,9 @@ pub struct Writer<W> {
     /// Bytes in `queue` and `tail`.
     pending: usize,
     close_sent: bool,
+    /// Bytes the socket took so far, shared with whoever watches the connection's
+    /// progress.
+    written: Arc<AtomicU64>,
 }
 
 impl<W> Writer<W> {
@@ -206,7 +215,13 @@ impl<W> Writer<W> {
             tail: BytesMut::new(),
             pending: 0,
             close_sent: false,
+            written: Arc::default(),
         }
+    }
+
+    /// The count of bytes the socket took, as the writer keeps it.
+    pub fn written(&self) -> Arc<AtomicU64> {
+        self.written.clone()
     }
 
     /// Queues one frame. The payload is copied behind the frames before it, unless it is
@@ -248,6 +263,7 @@ impl<W: AsyncWrite + Unpin> Writer<W> {
                 return Poll::Ready(Err(WsError::Io(std::io::ErrorKind::WriteZero.into())));
             }
             self.pending -= n;
+            self.written.fetch_add(n as u64, Ordering::Relaxed);
             let mut left = n;
             while left > 0 {
                 match self.queue.front_mut() {
