@@ -38,6 +38,8 @@ run_id="$$-$(od -An -N2 -tx2 /dev/urandom | tr -d ' ')"
 hub_ns="flvh-$run_id"
 viewer_ns="flvv-$run_id"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/fleetlink-interop-viewers.XXXXXX")"
+# The agent keeps its state in the suite's directory, never the user's (as lib.sh does).
+export XDG_STATE_HOME="$tmp/state"
 made=()
 driver=""
 

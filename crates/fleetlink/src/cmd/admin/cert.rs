@@ -93,16 +93,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
             let mut params = leaf_params(args.days)?;
             let first = names.first().cloned().unwrap_or_else(|| ips[0].to_string());
             params.distinguished_name.push(DnType::CommonName, first);
-            for n in &names {
-                params.subject_alt_names.push(SanType::DnsName(
-                    n.as_str()
-                        .try_into()
-                        .with_context(|| format!("--name {n:?} is not a DNS name"))?,
-                ));
-            }
-            params
-                .subject_alt_names
-                .extend(ips.iter().map(|ip| SanType::IpAddress(*ip)));
+            add_sans(&mut params, &names, &ips)?;
             params.extended_key_usages = vec![ExtendedKeyUsagePurpose::ServerAuth];
             let (cert, key) = (dir.join("hub.pem"), dir.join("hub.key"));
             issue(params, &ca, &cert, &key)?;
@@ -194,16 +185,7 @@ fn federation(
     let ca = load_or_make_ca(&dir, &CaKind::Federation(fleet.to_owned()))?;
     let mut params = leaf_params(days)?;
     params.distinguished_name.push(DnType::CommonName, &cn);
-    for n in names {
-        params.subject_alt_names.push(SanType::DnsName(
-            n.as_str()
-                .try_into()
-                .with_context(|| format!("--name {n:?} is not a DNS name"))?,
-        ));
-    }
-    params
-        .subject_alt_names
-        .extend(ips.iter().map(|ip| SanType::IpAddress(*ip)));
+    add_sans(&mut params, names, ips)?;
     // A hub both accepts links from other hubs and makes them.
     params.extended_key_usages = vec![
         ExtendedKeyUsagePurpose::ServerAuth,
@@ -239,6 +221,25 @@ fn federation(
             at.clone()
         }
     );
+    Ok(())
+}
+
+/// The names a certificate is valid for: each `--name` as a DNS name, each `--ip`.
+fn add_sans(
+    params: &mut CertificateParams,
+    names: &[String],
+    ips: &[IpAddr],
+) -> anyhow::Result<()> {
+    for n in names {
+        params.subject_alt_names.push(SanType::DnsName(
+            n.as_str()
+                .try_into()
+                .with_context(|| format!("--name {n:?} is not a DNS name"))?,
+        ));
+    }
+    params
+        .subject_alt_names
+        .extend(ips.iter().map(|ip| SanType::IpAddress(*ip)));
     Ok(())
 }
 
