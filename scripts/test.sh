@@ -5,6 +5,7 @@
 #
 #   ./scripts/test.sh                    everything (CI runs this)
 #   ./scripts/test.sh --rust             formatting, lints and the Rust tests only
+#   ./scripts/test.sh --interop          the binary and every interop suite only
 #   ./scripts/test.sh --only links:7     one interop suite, or some of its scenarios
 #                                        (links:1,7 viewers:cut federation:check; several
 #                                        --only add up), after building the binary
@@ -20,6 +21,7 @@ only=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --rust) mode=rust ;;
+        --interop) mode=only ;;
         --only) [ $# -ge 2 ] || { echo "--only needs SUITE[:SCENARIOS], e.g. --only links:7" >&2; exit 2; }
                 mode=only; only+=("$2"); shift ;;
         --only=*) mode=only; only+=("${1#--only=}") ;;
@@ -63,7 +65,7 @@ interop_plan() {
     echo "links-b tests/interop/links/run.sh LINKS_SCENARIOS=6_7_8_9_10_11"
     echo "viewers tests/interop/viewers/run.sh -"
     local known=" links viewers "
-    for order in ros2 runtime-config ros1 mirror site dashboard postgres msg docs record \
+    for order in runtime-config ros2 msg ros1 dashboard mirror site postgres docs record \
         rosbridge federation security failover foxglove calls websocket rosbridge-client tls; do
         [ -e "tests/interop/$order/run.sh" ] && echo "$order tests/interop/$order/run.sh -"
         known+="$order "
@@ -168,9 +170,11 @@ if [ "$mode" != rust ]; then
 fi
 if [ "$mode" = only ]; then
     export FLEETLINK_BIN="$PWD/target/ci/fleetlink"
-    plan="$(only_plan)"
-    stage "interop: ${only[*]}"
+    if [ ${#only[@]} -eq 0 ]; then plan="$(interop_plan)"; else plan="$(only_plan)"; fi
+    stage "interop: ${only[*]:-every suite} (${INTEROP_JOBS:-3} at once)"
     run_interop <<<"$plan"
+    stage ""
+    stages+=("${interop_times[@]}")
     [ ${#interop_failed[@]} -eq 0 ] || { echo "interop failed: ${interop_failed[*]}" >&2; exit 1; }
     echo "all chosen interop suites passed"
     exit 0

@@ -325,16 +325,23 @@ def check_late(args):
 def check_resume(args):
     """A viewer at the hub opens /<robot>/idle_points, which the agent stopped reading:
     a fresh message arrives within a few seconds (the agent makes its reader again and
-    the next 10 Hz message comes up)."""
+    the next 10 Hz message comes up). The hub may hand the viewer the topic's last message
+    at once (its latest-message cache), however old: what counts is the first one
+    published after the subscribe."""
     ros = connect(args.hub_url)
     t0 = time.time()
-    m = first(ros, f"/{args.robot}/idle_points", "sensor_msgs/msg/PointCloud2", wait=10)
+
+    def stamp_of(m):
+        st = m["header"]["stamp"]
+        return st.get("sec", st.get("secs", 0)) + st.get("nanosec", st.get("nsecs", 0)) / 1e9
+
+    # Fresh: published after the subscribe (half a second of slack for the two clocks' reads).
+    m = first(ros, f"/{args.robot}/idle_points", "sensor_msgs/msg/PointCloud2", wait=10,
+              want=lambda m: stamp_of(m) >= t0 - 0.5)
     took = time.time() - t0
-    check(m is not None and m["width"] == 10_000, f"/{args.robot}/idle_points arrived {took:.2f} s after the subscribe")
-    if m is not None:
-        stamp = m["header"]["stamp"]
-        age = t0 - (stamp.get("sec", stamp.get("secs", 0)) + stamp.get("nanosec", stamp.get("nsecs", 0)) / 1e9)
-        check(age < 3.0, f"the first message was published {age:.2f} s before the subscribe (< 3 s: read afresh)")
+    check(m is not None and m["width"] == 10_000,
+          f"/{args.robot}/idle_points: a message published after the subscribe arrived {took:.2f} s "
+          f"after it (within 10 s: the agent reads the topic afresh)")
 
 
 def check_gone(args):
