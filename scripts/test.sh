@@ -162,13 +162,16 @@ if [ "$mode" != only ]; then
     stage "cargo clippy"
     cargo clippy --workspace --all-targets --locked -- -D warnings
 fi
-if [ "$mode" != rust ]; then
-    # One build for both the Rust tests and the interop suites' binary: the `ci` profile
-    # (Cargo.toml) is optimized with test-build assertions, so nothing is compiled twice.
-    stage "cargo build (ci profile: the binary for interop suites)"
-    cargo build --profile ci --locked -p fleetlink
-fi
+# One build for the Rust tests and the interop suites' binary: the `ci` profile (Cargo.toml)
+# is optimized, with test-build assertions. The binary the suites run is the one the Rust
+# tests' build makes for the integration tests (target/ci/fleetlink): built on its own
+# (`cargo build -p fleetlink`) its dependencies would have other features than with the
+# tests' dev-dependencies (tokio's among them, and with it most of the tree), and half the
+# workspace would compile twice.
+build_tests() { cargo test --workspace --locked --profile ci --no-run; }
 if [ "$mode" = only ]; then
+    stage "cargo build (ci profile: the tests, and the binary for interop suites)"
+    build_tests
     export FLEETLINK_BIN="$PWD/target/ci/fleetlink"
     if [ ${#only[@]} -eq 0 ]; then plan="$(interop_plan)"; else plan="$(only_plan)"; fi
     stage "interop: ${only[*]:-every suite} (${INTEROP_JOBS:-3} at once)"
@@ -189,8 +192,9 @@ fi
 stage "plant a hostile user state (scripts/hostile-state.sh)"
 ./scripts/hostile-state.sh plant
 hostile_planted=1
-stage "cargo test (nextest, ci profile)"
+stage "cargo test (nextest, ci profile; builds the binary for interop suites too)"
 cargo nextest run --workspace --locked --no-fail-fast --cargo-profile ci
+[ -x target/ci/fleetlink ] || { echo "the test build made no target/ci/fleetlink" >&2; exit 1; }
 
 if [ "$mode" = rust ]; then
     stage ""
