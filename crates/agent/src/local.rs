@@ -88,6 +88,9 @@ pub async fn serve(
             let local = tcp.local_addr().ok();
             // permessage-deflate for a client that offers it, as on the hub.
             let mut agreed = None;
+            // The shape tungstenite's handshake callback must have (its error is a whole
+            // HTTP response).
+            #[allow(clippy::result_large_err)]
             let answer = |req: &Request, mut res: Response| {
                 agreed = cfg.deflate.and_then(|c| {
                     let offers = req
