@@ -14,6 +14,10 @@
 #   cargo build --release -p fleetlink && scripts/bench-delivery.sh [ROUNDS] [RATES] [SECONDS]
 #   e.g. scripts/bench-delivery.sh 3 "100000 300000" 5
 #
+# BASELINE_BIN=PATH also starts a hub from another build (e.g. the commit before a change)
+# and runs the rosbridge JSON and CBOR paths against it in the same rounds, alternating
+# with this build's hub: before/after in one run ("baseline" rows).
+#
 # nats-server and mosquitto come from Debian (installed here when missing; needs root).
 set -euo pipefail
 . "$(dirname "$0")/bench-lib.sh"
@@ -51,17 +55,32 @@ tung_port="$(free_port)"
 "${server_cpu[@]}" "$bin" bench ws-floor --websocket tungstenite --listen "127.0.0.1:$tung_port" \
     >"$tmp/floor-tungstenite.log" 2>&1 &
 tung_pid=$!; pids+=($tung_pid)
+base_pid=""
+if [ -n "${BASELINE_BIN:-}" ]; then
+    base_port="$(free_port)"
+    "$BASELINE_BIN" admin --data-dir "$tmp/base" token operator bench --group admin >"$tmp/base.token"
+    "${server_cpu[@]}" "$BASELINE_BIN" hub --listen "127.0.0.1:$base_port" --data-dir "$tmp/base" \
+        >"$tmp/base.log" 2>&1 &
+    base_pid=$!; pids+=($base_pid)
+    wait_port "$base_port"
+fi
 wait_port "$hub_port"; wait_port "$nats_port"; wait_port "$mqtt_port"; wait_port "$floor_port"
 wait_port "$tung_port"
 
-run() { # protocol server pid rate
-    "${gen_cpu[@]}" "$bin" bench delivery --protocol "$1" --server "$2" --token "$token" \
+run() { # protocol server pid rate [token]
+    "${gen_cpu[@]}" "$bin" bench delivery --protocol "$1" --server "$2" --token "${5:-$token}" \
         --server-pid "$3" --rate "$4" --duration "$seconds" --warmup 2 --json
 }
 for round in $(seq "$rounds"); do
     for rate in $rates; do
         run rosbridge-json "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
         run rosbridge-cbor "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
+        if [ -n "$base_pid" ]; then
+            run rosbridge-json "ws://127.0.0.1:$base_port" "$base_pid" "$rate" "$(cat "$tmp/base.token")" |
+                sed 's/"protocol":"RosbridgeJson"/"protocol":"BaselineJson"/'
+            run rosbridge-cbor "ws://127.0.0.1:$base_port" "$base_pid" "$rate" "$(cat "$tmp/base.token")" |
+                sed 's/"protocol":"RosbridgeCbor"/"protocol":"BaselineCbor"/'
+        fi
         run native "ws://127.0.0.1:$hub_port" "$hub_pid" "$rate"
         run rosbridge-json "ws://127.0.0.1:$floor_port" "$floor_pid" "$rate" |
             sed 's/"protocol":"RosbridgeJson"/"protocol":"WsFloor"/'
@@ -79,6 +98,7 @@ python3 - "$tmp/results.jsonl" <<'EOF'
 import json, statistics, sys
 rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 names = {"RosbridgeJson": "fleetlink rosbridge JSON", "RosbridgeCbor": "fleetlink rosbridge CBOR",
+         "BaselineJson": "baseline build, JSON", "BaselineCbor": "baseline build, CBOR",
          "Native": "fleetlink native", "WsFloor": "floor: bare WebSocket relay",
          "WsFloorTungstenite": "floor on tokio-tungstenite",
          "Nats": "nats-server", "Mqtt": "mosquitto (MQTT QoS 0)"}

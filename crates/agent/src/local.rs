@@ -18,9 +18,13 @@ use fleetlink_relay::Router;
 
 use crate::runtime::RuntimeConfig;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
+use fleetlink_relay::websocket::deflate;
 use fleetlink_relay::websocket::liveness::Peer;
 use fleetlink_relay::websocket::tcp_progress;
 use tokio::net::TcpListener;
+use tokio_tungstenite::tungstenite::handshake::server::{Request, Response};
+use tokio_tungstenite::tungstenite::http::HeaderValue;
+use tokio_tungstenite::tungstenite::http::header::SEC_WEBSOCKET_EXTENSIONS;
 use tokio_tungstenite::tungstenite::protocol::WebSocketConfig;
 use tokio_util::sync::CancellationToken;
 use tokio_util::task::TaskTracker;
@@ -82,11 +86,36 @@ pub async fn serve(
             // tungstenite answers the handshake; the session then runs on the socket's
             // own halves (a client sends nothing more before the handshake's answer).
             let local = tcp.local_addr().ok();
-            match tokio_tungstenite::accept_async_with_config(tcp, Some(ws_config)).await {
+            // permessage-deflate for a client that offers it, as on the hub.
+            let mut agreed = None;
+            // The shape tungstenite's handshake callback must have (its error is a whole
+            // HTTP response).
+            #[allow(clippy::result_large_err)]
+            let answer = |req: &Request, mut res: Response| {
+                agreed = cfg.deflate.and_then(|c| {
+                    let offers = req
+                        .headers()
+                        .get_all(SEC_WEBSOCKET_EXTENSIONS)
+                        .iter()
+                        .filter_map(|v| v.to_str().ok());
+                    let a = deflate::negotiate(offers)?;
+                    let v = HeaderValue::from_str(&a.response()).ok()?;
+                    res.headers_mut().insert(SEC_WEBSOCKET_EXTENSIONS, v);
+                    Some(c)
+                });
+                Ok(res)
+            };
+            let accepted =
+                tokio_tungstenite::accept_hdr_async_with_config(tcp, answer, Some(ws_config)).await;
+            match accepted {
                 Ok(ws) => {
                     let auth = fleetlink_relay::gate::SessionAuth::open();
                     let max = cfg.max_message_size;
-                    let (sink, stream) = fleetlink_relay::websocket::server(ws.into_inner(), max);
+                    let (mut sink, mut stream) =
+                        fleetlink_relay::websocket::server(ws.into_inner(), max);
+                    if let Some(c) = agreed {
+                        (sink, stream) = (sink.deflating(c), stream.inflating());
+                    }
                     // Pinged and dropped when silent as the hub's viewers are
                     // (`cfg.liveness`), its connection's draining counted as progress.
                     let peer = Peer {

@@ -26,5 +26,6 @@ mod e2e {
     mod shutdown;
     mod site;
     mod tls;
+    mod viewer_deflate;
     mod viewer_liveness;
 }

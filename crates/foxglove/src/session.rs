@@ -23,6 +23,7 @@ use fleetlink_relay::calls::{ChannelPeer, PeerMsg};
 use fleetlink_relay::gate::{Gate, Op as GateOp, SessionAuth};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::transcode::NormalizeCache;
+use fleetlink_relay::websocket::deflate::DeflateConfig;
 use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer, Watch};
 use fleetlink_relay::websocket::{ClientMessage, PartsSink};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicId, TopicName};
@@ -51,6 +52,9 @@ pub struct SessionConfig {
     /// How often the client is pinged, and how long it may show no progress before it
     /// is closed and what it held released (`fleetlink_relay::websocket::liveness`).
     pub liveness: LivenessConfig,
+    /// permessage-deflate for clients that offer it (`None`: never negotiated), read by
+    /// the server answering the handshake.
+    pub deflate: Option<DeflateConfig>,
 }
 
 impl Default for SessionConfig {
@@ -60,6 +64,7 @@ impl Default for SessionConfig {
             session_id: fleetlink_relay::unix_nanos().to_string(),
             batch: 256,
             liveness: LivenessConfig::default(),
+            deflate: Some(DeflateConfig::default()),
         }
     }
 }
@@ -94,6 +99,9 @@ pub async fn serve<K, S>(
     let conn: Peer = conn.into();
     let addr = conn.addr;
     let (client, outbox) = router.connect(ClientKind::Foxglove, addr);
+    if sink.deflate().is_some() {
+        router.note_deflate(client);
+    }
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let watch = router.watch_topics();
@@ -323,6 +331,10 @@ impl Session {
                     WsError::Capacity(e) => (CloseCode::Size, format!("message too large: {e}")),
                     WsError::Protocol(e) => (CloseCode::Protocol, e.to_string()),
                     WsError::Utf8(e) => (CloseCode::Invalid, e.clone()),
+                    // A compressed message that does not inflate.
+                    WsError::Io(e) if e.kind() == std::io::ErrorKind::InvalidData => {
+                        (CloseCode::Protocol, e.to_string())
+                    }
                     _ => return false,
                 };
                 self.error(&reason).await;

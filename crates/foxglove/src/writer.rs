@@ -7,6 +7,10 @@
 //! subscription id, receive time), written in front of the shared payload as one
 //! WebSocket message ([`feed_binary_parts`]): a large payload is written from where it
 //! lies, never copied per subscriber.
+//!
+//! A client that negotiated permessage-deflate gets a large payload compressed once for
+//! all such subscribers ([`Message::deflated_payload`]); its 13 bytes go in front as a
+//! stored deflate block, so the shared compressed bytes need no per-subscriber work.
 
 use std::collections::{HashMap, HashSet};
 use std::sync::{Arc, Mutex};
@@ -15,8 +19,9 @@ use std::time::Instant;
 use fleetlink_proto::Encoding;
 use fleetlink_relay::gate::{Gate, Op as GateOp};
 use fleetlink_relay::outbox::Taken;
+use fleetlink_relay::websocket::deflate::stored_block;
 use fleetlink_relay::websocket::replies::{close_with, wait_for_work};
-use fleetlink_relay::websocket::{PartsSink, feed_binary_parts};
+use fleetlink_relay::websocket::{PartsSink, feed_binary_parts, feed_deflated};
 use fleetlink_relay::{DropReason, Outbox, Router, TopicId};
 use futures_util::SinkExt;
 use tokio::sync::mpsc;
@@ -55,6 +60,9 @@ pub(crate) async fn write_loop<K: PartsSink>(
     // Topics whose messages could not be given in their channel's encoding: the client
     // hears it once per topic, each message is counted as dropped.
     let mut warned: HashSet<TopicId> = HashSet::new();
+    // Negotiated at the handshake; a client without it costs one check per message.
+    let deflate = sink.deflate();
+    let mut stored = bytes::BytesMut::new();
     loop {
         let mut wrote = false;
         while let Ok(r) = replies.try_recv() {
@@ -116,9 +124,24 @@ pub(crate) async fn write_loop<K: PartsSink>(
                     continue;
                 }
             };
+            let deflated = match deflate {
+                Some(cfg) => msg
+                    .deflated_payload(to.encoding, router.transcoder(), cfg)
+                    .ok()
+                    .flatten(),
+                None => None,
+            };
             for sub in to.subs.iter() {
                 let head = protocol::message_data_header(*sub, msg.received_unix_ns());
-                if feed_binary_parts(&mut sink, &head, &payload).await.is_err() {
+                let sent = match &deflated {
+                    Some(z) => {
+                        stored.clear();
+                        stored_block(&mut stored, &head);
+                        feed_deflated(&mut sink, false, &stored, z).await
+                    }
+                    None => feed_binary_parts(&mut sink, &head, &payload).await,
+                };
+                if sent.is_err() {
                     return;
                 }
             }

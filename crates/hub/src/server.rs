@@ -26,6 +26,7 @@ use fleetlink_proto::SUBPROTOCOL;
 use fleetlink_relay::Router;
 use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::transcode::Transcoder;
+use fleetlink_relay::websocket::deflate::{self, DeflateConfig};
 use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer};
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
@@ -76,6 +77,8 @@ pub struct HubConfig {
     /// How often rosbridge and Foxglove clients are pinged, and how long one may show no
     /// progress before it is closed and what it held released.
     pub viewer_liveness: LivenessConfig,
+    /// permessage-deflate for rosbridge and Foxglove clients that offer it; `None`: never.
+    pub viewer_deflate: Option<DeflateConfig>,
 }
 
 impl Default for HubConfig {
@@ -97,6 +100,7 @@ impl Default for HubConfig {
             calls: fleetlink_relay::calls::CallLimits::default(),
             recordings_dir: None,
             viewer_liveness: LivenessConfig::default(),
+            viewer_deflate: Some(DeflateConfig::default()),
         }
     }
 }
@@ -169,6 +173,7 @@ impl Hub {
             node_name: "/fleetlink_hub".into(),
             max_message_size: cfg.max_message_size,
             liveness: cfg.viewer_liveness,
+            deflate: cfg.viewer_deflate,
             ..SessionConfig::default()
         });
         let recordings_dir = cfg
@@ -197,6 +202,7 @@ impl Hub {
             foxglove: Arc::new(fleetlink_foxglove::SessionConfig {
                 name: "fleetlink hub".into(),
                 liveness: cfg.viewer_liveness,
+                deflate: cfg.viewer_deflate,
                 ..fleetlink_foxglove::SessionConfig::default()
             }),
             shutdown,
@@ -474,6 +480,23 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         };
         (agent, foxglove)
     };
+    // Compression for a viewer that offers it and a hub that allows it (never on a
+    // robot's link, which compresses its own way).
+    let deflate = if agent {
+        None
+    } else if foxglove.is_some() {
+        st.foxglove.deflate
+    } else {
+        st.rosbridge.deflate
+    }
+    .and_then(|cfg| {
+        let offers = req
+            .headers()
+            .get_all(header::SEC_WEBSOCKET_EXTENSIONS)
+            .iter()
+            .filter_map(|v| v.to_str().ok());
+        deflate::negotiate(offers).map(|agreed| (cfg, agreed.response()))
+    });
     // Authenticate before switching protocols: a bad credential gets a plain 401 the
     // client can show; no credential means the client authenticates in-band (agents in
     // HELLO, rosbridge clients with an `auth` operation) or reads anonymously where that
@@ -501,6 +524,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         }
     };
     let on_upgrade = hyper::upgrade::on(&mut req);
+    let deflate_cfg = deflate.as_ref().map(|(cfg, _)| *cfg);
     st.tasks.clone().spawn(async move {
         let upgraded = match on_upgrade.await {
             Ok(u) => u,
@@ -516,7 +540,10 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         let _open = open;
         let max = st.rosbridge.max_message_size;
         let (r, w, read) = crate::upgraded::split(upgraded);
-        let (sink, stream) = fleetlink_relay::websocket::server_halves(r, w, read, max);
+        let (mut sink, mut stream) = fleetlink_relay::websocket::server_halves(r, w, read, max);
+        if let Some(cfg) = deflate_cfg {
+            (sink, stream) = (sink.deflating(cfg), stream.inflating());
+        }
         if agent {
             crate::agents::serve_agent(stream, sink, st.agents.clone(), Some(addr), conn, slot)
                 .await;
@@ -585,6 +612,11 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         );
     } else if let Some(p) = foxglove {
         h.insert(header::SEC_WEBSOCKET_PROTOCOL, HeaderValue::from_static(p));
+    }
+    if let Some((_, answer)) = deflate
+        && let Ok(v) = HeaderValue::from_str(&answer)
+    {
+        h.insert(header::SEC_WEBSOCKET_EXTENSIONS, v);
     }
     res
 }

@@ -5,6 +5,11 @@
 //! needs it and kept in a [`OnceLock`], so a message fanned out to a hundred subscribers
 //! is converted and framed at most once per kind, and every subscriber sends the same
 //! [`Bytes`].
+//!
+//! The same holds for the compressed forms sent to clients that negotiated
+//! permessage-deflate ([`Message::deflated_frame`], [`Message::deflated_payload`]): made
+//! by the first such subscriber, kept beside the frame they compress, shared by the rest.
+//! A message no such client receives never makes or holds one.
 
 use std::sync::{Arc, OnceLock};
 use std::time::Instant;
@@ -17,6 +22,7 @@ use tokio_tungstenite::tungstenite::{Message as WsMessage, Utf8Bytes};
 
 use crate::names::{ClientId, TopicId, TopicName};
 use crate::transcode::{TranscodeError, Transcoder};
+use crate::websocket::deflate::{self, DeflateConfig};
 
 /// What a topic is, as of the moment a message was published on it.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -36,12 +42,17 @@ pub struct TopicMeta {
     /// What a rosbridge JSON `publish` of this topic starts with (see
     /// [`outbound::publish_json_head`]): made once per topic, not per message.
     json_head: Box<str>,
+    /// Its type's content may shrink under compression (not JPEG, video...; see
+    /// [`deflate::type_pays`]): judged once per topic.
+    deflate_pays: bool,
 }
 
 impl TopicMeta {
     pub fn new(id: TopicId, name: TopicName, schema: Schema, latched: bool) -> TopicMeta {
         let json_head = outbound::publish_json_head(name.as_str()).into();
+        let deflate_pays = deflate::type_pays(&schema.type_name);
         TopicMeta {
+            deflate_pays,
             id,
             name,
             schema,
@@ -138,6 +149,30 @@ struct Frames {
     /// The message object in another encoding, by `Encoding as usize` (a Foxglove
     /// channel's encoding, when the message arrived in a different one).
     converted: [OnceLock<Result<Bytes, TranscodeError>>; 4],
+    /// Compressed forms, made for the first subscriber that negotiated permessage-deflate;
+    /// boxed apart so that messages no such subscriber receives stay as small as before.
+    deflated: OnceLock<Box<Deflated>>,
+}
+
+/// A message's compressed forms: `None` where compression does not pay (it is sent as it
+/// is then, the judgement kept like the bytes).
+#[derive(Debug, Default)]
+struct Deflated {
+    /// rosbridge frames, by [`FrameKind`] (as [`Frames::cell`] orders them).
+    frames: [OnceLock<Option<Bytes>>; 4],
+    /// The message object in each encoding, by `Encoding as usize` (Foxglove).
+    payloads: [OnceLock<Option<Bytes>>; 4],
+}
+
+impl FrameKind {
+    fn index(self) -> usize {
+        match self {
+            FrameKind::RosbridgeJson => 0,
+            FrameKind::RosbridgeCbor => 1,
+            FrameKind::RosbridgeCborRaw => 2,
+            FrameKind::RosbridgePng => 3,
+        }
+    }
 }
 
 impl Frames {
@@ -366,6 +401,67 @@ impl Message {
             .clone()
     }
 
+    /// The compressed form of the rosbridge `publish` frame of `kind` for a client that
+    /// negotiated permessage-deflate, with whether it is text; `None` when the frame goes
+    /// as it is: under `cfg.min_bytes`, a PNG frame or a type whose content is compressed
+    /// already, or one that does not shrink. Compressed once, for every subscriber.
+    pub fn deflated_frame(
+        &self,
+        kind: FrameKind,
+        tc: &dyn Transcoder,
+        cfg: DeflateConfig,
+    ) -> Result<Option<(bool, Bytes)>, TranscodeError> {
+        if kind == FrameKind::RosbridgePng || !self.topic.deflate_pays {
+            return Ok(None);
+        }
+        let text = kind == FrameKind::RosbridgeJson;
+        // A JSON text message is judged and compressed from its pieces: its whole frame
+        // is never needed.
+        if text && let Some(parts) = self.json_parts() {
+            if parts.iter().map(|p| p.len()).sum::<usize>() < cfg.min_bytes {
+                return Ok(None);
+            }
+            let z = self.deflated().frames[kind.index()].get_or_init(|| deflate::compress(&parts));
+            return Ok(z.clone().map(|z| (text, z)));
+        }
+        let frame = self.rosbridge_frame(kind, tc)?;
+        let bytes: &[u8] = match &frame {
+            WsMessage::Text(t) => t.as_bytes(),
+            WsMessage::Binary(b) => b,
+            _ => return Ok(None),
+        };
+        if bytes.len() < cfg.min_bytes {
+            return Ok(None);
+        }
+        let z = self.deflated().frames[kind.index()].get_or_init(|| deflate::compress(&[bytes]));
+        Ok(z.clone().map(|z| (text, z)))
+    }
+
+    /// The compressed form of the message object in encoding `to` ([`Message::payload_in`])
+    /// for a Foxglove client that negotiated permessage-deflate; `None` as for
+    /// [`Message::deflated_frame`]. Compressed once, for every subscriber.
+    pub fn deflated_payload(
+        &self,
+        to: Encoding,
+        tc: &dyn Transcoder,
+        cfg: DeflateConfig,
+    ) -> Result<Option<Bytes>, TranscodeError> {
+        if !self.topic.deflate_pays {
+            return Ok(None);
+        }
+        let payload = self.payload_in(to, tc)?;
+        if payload.len() < cfg.min_bytes {
+            return Ok(None);
+        }
+        Ok(self.deflated().payloads[to as usize]
+            .get_or_init(|| deflate::compress(&[&payload]))
+            .clone())
+    }
+
+    fn deflated(&self) -> &Deflated {
+        self.frames().deflated.get_or_init(Box::default)
+    }
+
     /// The message object in encoding `to`: the bytes as they arrived when that is their
     /// encoding (shared, not copied), otherwise converted once for every subscriber that
     /// wants `to` (a Foxglove channel carries one encoding per topic; its `MessageData`
@@ -497,6 +593,91 @@ mod tests {
             a,
             tc.convert(&m.topic.schema, &m.payload, Encoding::Cdr)
                 .expect("converts")
+        );
+    }
+
+    fn big(type_name: &str, json_text: bool) -> Message {
+        let topic = Arc::new(TopicMeta::new(
+            TopicId(4),
+            TopicName::parse("/big").expect("valid name"),
+            Schema::named(type_name),
+            false,
+        ));
+        let body = format!(r#"{{"data":"{}"}}"#, "ros ".repeat(2000));
+        let payload = Payload::json(body);
+        Message::framed(topic, 1, 7, ClientId(1), payload, Instant::now(), json_text)
+    }
+
+    #[test]
+    fn a_large_frame_is_compressed_once_and_shared() {
+        let cfg = DeflateConfig::default();
+        let inflate = |z: &Bytes| {
+            crate::websocket::deflate::Inflater::new(1 << 20)
+                .inflate(z)
+                .expect("inflates")
+        };
+        for json_text in [true, false] {
+            let m = big("std_msgs/msg/String", json_text);
+            let (text, a) = m
+                .deflated_frame(FrameKind::RosbridgeJson, &GenericTranscoder, cfg)
+                .expect("converts")
+                .expect("compressed");
+            assert!(text);
+            let (_, b) = m
+                .deflated_frame(FrameKind::RosbridgeJson, &GenericTranscoder, cfg)
+                .expect("converts")
+                .expect("compressed");
+            assert_eq!(a.as_ptr(), b.as_ptr(), "made once");
+            let plain = m
+                .rosbridge_frame(FrameKind::RosbridgeJson, &GenericTranscoder)
+                .expect("converts");
+            assert_eq!(inflate(&a), plain.into_data());
+            assert!(a.len() * 10 < m.payload.len());
+            // CBOR is compressed apart, and binary.
+            let (text, _) = m
+                .deflated_frame(FrameKind::RosbridgeCbor, &GenericTranscoder, cfg)
+                .expect("converts")
+                .expect("compressed");
+            assert!(!text);
+        }
+        // The object for Foxglove, in its own encoding: compressed once too.
+        let m = big("std_msgs/msg/String", false);
+        let z = m
+            .deflated_payload(Encoding::Json, &GenericTranscoder, cfg)
+            .expect("as is")
+            .expect("compressed");
+        assert_eq!(inflate(&z), m.payload.bytes);
+    }
+
+    #[test]
+    fn small_frames_and_compressed_content_go_as_they_are() {
+        let cfg = DeflateConfig::default();
+        let tc = &GenericTranscoder;
+        // Under the threshold: nothing is built for it.
+        let small = message(true);
+        assert_eq!(
+            small.deflated_frame(FrameKind::RosbridgeJson, tc, cfg),
+            Ok(None)
+        );
+        assert!(small.frames.get().is_none());
+        let large = big("std_msgs/msg/String", true);
+        let high = DeflateConfig {
+            min_bytes: large.payload.len() + 100,
+        };
+        assert_eq!(
+            large.deflated_frame(FrameKind::RosbridgeJson, tc, high),
+            Ok(None)
+        );
+        // JPEG, PNG, video: not worth the hub's time.
+        let jpeg = big("sensor_msgs/msg/CompressedImage", true);
+        assert_eq!(
+            jpeg.deflated_frame(FrameKind::RosbridgeJson, tc, cfg),
+            Ok(None)
+        );
+        assert_eq!(jpeg.deflated_payload(Encoding::Json, tc, cfg), Ok(None));
+        assert_eq!(
+            large.deflated_frame(FrameKind::RosbridgePng, tc, cfg),
+            Ok(None)
         );
     }
 

@@ -62,6 +62,8 @@ pub struct ClientInfo {
     pub kind: ClientKind,
     pub addr: Option<SocketAddr>,
     pub connected_at: SystemTime,
+    /// The client negotiated permessage-deflate: large messages go to it compressed.
+    pub deflate: bool,
 }
 
 /// What a publisher says of its publication when it advertises a topic.
@@ -660,6 +662,7 @@ impl Router {
             kind,
             addr,
             connected_at: SystemTime::now(),
+            deflate: false,
         };
         let entry = ClientEntry {
             info,
@@ -1079,6 +1082,13 @@ impl Router {
                 st.demand_changed(t);
             }
             gc_topic(st, &name);
+        }
+    }
+
+    /// Notes that client `id` negotiated permessage-deflate (shown in listings).
+    pub fn note_deflate(&self, id: ClientId) {
+        if let Some(c) = self.lock().clients.get_mut(&id) {
+            c.info.deflate = true;
         }
     }
 

@@ -128,6 +128,13 @@ try {
     const d = (f2[k] ?? 0) - (f1[k] ?? 0);
     check(d > 0, `robot view: ${k} panel updating (${d} frames in 2 s)`);
   }
+  // Chromium offers permessage-deflate: the hub negotiated it with the page's rosbridge
+  // connection (issue 56), so the panels above were fed compressed messages.
+  const deflated = await page.evaluate(async (t) => {
+    const r = await fetch("/api/v1/clients", { headers: { Authorization: `Bearer ${t}` } });
+    return (await r.json()).clients.filter((c) => c.kind === "rosbridge").map((c) => c.deflate);
+  }, session);
+  check(deflated.includes(true), `robot view: the page's rosbridge connection negotiated permessage-deflate (${JSON.stringify(deflated)})`);
   const insp = await page.$eval(".inspector .tree", (e) => e.textContent);
   check(insp.length > 20 && !/waiting/.test(insp), "inspector shows a message tree");
   // robot1's mirror in the link panel, with the offload rule it applies.

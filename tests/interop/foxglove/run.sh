@@ -8,7 +8,8 @@
 # foxglove_client_check.mjs once per subprotocol (foxglove.websocket.v1 as Lichtblick
 # offers it, foxglove.sdk.v1 as the current Foxglove app does), with client publishing
 # and service calls in CDR on one run and JSON on the other, and a token without rights
-# on each. Every process started here is stopped on exit (trap), also on failure.
+# on each; then deflate_check.mjs (permessage-deflate, two compressing clients and one
+# plain). Every process started here is stopped on exit (trap), also on failure.
 # Bounded: each step has a timeout; the suite takes well under 2 minutes.
 #
 # Env: FLEETLINK_BIN (default: target/release/fleetlink).
@@ -90,11 +91,15 @@ run_check "foxglove.sdk.v1" node "$here/foxglove_client_check.mjs" "${common[@]}
     --param '/fleetlink_interop/mode="patrol"'
 
 # Both processes must have survived everything the clients did.
+# permessage-deflate (issue 56): FoxgloveClient over ws with perMessageDeflate.
+run_check "foxglove deflate" node "$here/deflate_check.mjs" --url "$hub_url" \
+    --api "http://$hub_addr" --token "$op_token" --robot "$robot" --points "$points"
+
 for pid in "${pids[@]}"; do
     kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
 done
 
-echo "foxglove interop: ${#failed[@]} failure(s) in 2 client runs, $((SECONDS - started)) s"
+echo "foxglove interop: ${#failed[@]} failure(s) in 3 client runs, $((SECONDS - started)) s"
 if [ ${#failed[@]} -ne 0 ]; then
     echo "FAIL: ${failed[*]}" >&2
     exit 1

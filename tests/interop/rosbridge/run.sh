@@ -5,7 +5,8 @@
 # Starts a hub and one agent (robot1, simulated laser/odometry/point cloud, local
 # listener), waits until robot1 is online with its topics, then runs
 #   roslibpy_check.py and roslib_check.mjs  x  (hub URL, agent's local URL),
-#   foxglove_check.mjs, and actionlib_check.py (roslibpy 1.8's actionlib, on the hub)
+#   foxglove_check.mjs, deflate_check.py and deflate_roslib_check.mjs (permessage-deflate,
+#   hub and local), and actionlib_check.py (roslibpy 1.8's actionlib, on the hub)
 # and exits non-zero if any of them failed. Every process started here is stopped on
 # exit (trap), also on failure. Bounded: each step has a timeout, the whole suite
 # stays under 5 minutes.
@@ -105,6 +106,11 @@ run_check "roslibpy local" "$python" "$here/roslibpy_check.py" --url "$local_url
 run_check "roslib hub" node "$here/roslib_check.mjs" --url "$hub_url" --mode hub --peer-url "$local_url" "${common[@]}"
 run_check "roslib local" node "$here/roslib_check.mjs" --url "$local_url" --mode local --peer-url "$hub_url" "${common[@]}"
 run_check "foxglove parsers" node "$here/foxglove_check.mjs" --url "$hub_url" --bin "$bin" --robot "$robot"
+# permessage-deflate (issue 56): Python websockets and roslib over ws negotiate it; large
+# messages arrive compressed, compressed publishes are read, a zip bomb gets 1009.
+deflate_urls=(--url "$hub_url=/$robot/points" --url "$local_url=/points")
+run_check "websockets deflate" "$python" "$here/deflate_check.py" "${deflate_urls[@]}" --points "$points"
+run_check "roslib deflate" node "$here/deflate_roslib_check.mjs" "${deflate_urls[@]}" --points "$points"
 # ROS 1 actions over topics, roslibpy 1.8's client and server on the hub (issue 56).
 run_check "roslibpy 1.8 actionlib hub" "$python1" "$here/actionlib_check.py" --url "$hub_url"
 
@@ -113,7 +119,7 @@ for pid in "${pids[@]}"; do
     kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
 done
 
-echo "rosbridge interop: ${#failed[@]} failure(s) in 6 client runs, $((SECONDS - started)) s"
+echo "rosbridge interop: ${#failed[@]} failure(s) in 8 client runs, $((SECONDS - started)) s"
 if [ ${#failed[@]} -ne 0 ]; then
     echo "FAIL: ${failed[*]}" >&2
     exit 1

@@ -121,6 +121,14 @@ pub struct Args {
     /// advertisements, calls and goals released. Must exceed --viewer-ping-secs.
     #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
     pub viewer_silence_secs: f64,
+    /// Messages at least this large (as framed for the client) go compressed to rosbridge
+    /// and Foxglove clients that negotiated permessage-deflate; smaller ones go as they
+    /// are.
+    #[arg(long, default_value_t = 1024)]
+    pub viewer_deflate_min_bytes: usize,
+    /// Never negotiate permessage-deflate with rosbridge and Foxglove clients.
+    #[arg(long)]
+    pub no_viewer_deflate: bool,
     /// Seconds a service call waits for its answer when the caller gives no `timeout`.
     #[arg(long, default_value_t = 30.0, value_parser = positive_secs)]
     pub call_timeout_secs: f64,
@@ -185,6 +193,11 @@ impl Args {
                 ping_every: Duration::from_secs_f64(self.viewer_ping_secs),
                 silence: Duration::from_secs_f64(self.viewer_silence_secs),
             },
+            viewer_deflate: (!self.no_viewer_deflate).then_some(
+                fleetlink_relay::websocket::deflate::DeflateConfig {
+                    min_bytes: self.viewer_deflate_min_bytes,
+                },
+            ),
             calls: fleetlink_relay::calls::CallLimits {
                 default_timeout: Duration::from_secs_f64(self.call_timeout_secs),
                 max_pending_per_caller: self.max_pending_calls_per_caller as usize,

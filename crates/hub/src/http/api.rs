@@ -283,6 +283,7 @@ async fn clients(
                 "kind": kind,
                 "addr": info.addr.map(|a| a.to_string()),
                 "connected_at_ms": ms(info.connected_at),
+                "deflate": info.deflate,
                 "subscriptions": subs,
                 "queue_depth": outbox.depth(),
                 "lag_ms": outbox.lag(now).as_secs_f64() * 1e3,

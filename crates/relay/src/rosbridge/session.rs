@@ -38,6 +38,7 @@ use crate::router::{
 };
 use crate::stats::StatsBatch;
 use crate::transcode::NormalizeCache;
+use crate::websocket::deflate::DeflateConfig;
 use crate::websocket::liveness::{LivenessConfig, Peer, Watch};
 use crate::websocket::replies::{Reply, close_with, wait_for_work};
 use crate::websocket::{ClientMessage, PartsSink};
@@ -54,6 +55,9 @@ pub struct SessionConfig {
     /// How often the client is pinged, and how long it may show no progress before it
     /// is closed and what it held released ([`crate::websocket::liveness`]).
     pub liveness: LivenessConfig,
+    /// permessage-deflate for clients that offer it (`None`: never negotiated). The
+    /// server answering the handshake reads it ([`crate::websocket::deflate::negotiate`]).
+    pub deflate: Option<DeflateConfig>,
 }
 
 impl Default for SessionConfig {
@@ -63,6 +67,7 @@ impl Default for SessionConfig {
             max_message_size: 16 << 20,
             batch: 256,
             liveness: LivenessConfig::default(),
+            deflate: Some(DeflateConfig::default()),
         }
     }
 }
@@ -95,6 +100,9 @@ pub async fn serve<K, S>(
     let conn: Peer = conn.into();
     let addr = conn.addr;
     let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
+    if sink.deflate().is_some() {
+        router.note_deflate(client);
+    }
     let (peer, peer_rx) = ChannelPeer::new();
     router.calls.attach(client, peer);
     let mut stream = stream;
@@ -283,6 +291,10 @@ pub async fn serve<K, S>(
                     WsError::Capacity(e) => (CloseCode::Size, format!("frame too large: {e}")),
                     WsError::Protocol(e) => (CloseCode::Protocol, e.to_string()),
                     WsError::Utf8(e) => (CloseCode::Invalid, e.clone()),
+                    // A compressed message that does not inflate.
+                    WsError::Io(e) if e.kind() == std::io::ErrorKind::InvalidData => {
+                        (CloseCode::Protocol, e.to_string())
+                    }
                     _ => break,
                 };
                 let close = CloseFrame {
@@ -1220,6 +1232,8 @@ async fn write_loop<K: PartsSink>(
     level: Arc<std::sync::atomic::AtomicU8>,
 ) {
     let mut warned: HashMap<TopicName, ()> = HashMap::new();
+    // Negotiated at the handshake; a client without it costs this one check per message.
+    let deflate = sink.deflate();
     // Frames written since the last flush, and the turns this task has given the others
     // since (see below).
     let (mut unflushed, mut turns) = (false, 0u32);
@@ -1275,6 +1289,22 @@ async fn write_loop<K: PartsSink>(
                 .fragment_size
                 .map(|s| s as usize)
                 .filter(|s| *s > 0);
+            // A client that negotiated permessage-deflate gets a large message compressed:
+            // once per message and kind, the same bytes for every such subscriber. The
+            // rest (small, not worth it, or cut in rosbridge fragments) goes as below.
+            if let Some(cfg) = deflate
+                && fragment.is_none()
+                && let Ok(Some((text, z))) = msg.deflated_frame(kind, router.transcoder(), cfg)
+            {
+                if crate::websocket::feed_deflated(&mut sink, text, &[], &z)
+                    .await
+                    .is_err()
+                {
+                    return;
+                }
+                wrote = true;
+                continue;
+            }
             // Most messages: JSON text as its publisher sent it, framed into the socket
             // buffer; or a frame already built, sent whole. A large message is framed
             // once for all its subscribers instead (below), and each writes that frame

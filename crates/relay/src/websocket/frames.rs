@@ -12,6 +12,10 @@
 //!  [2 or 8 bytes of length, big-endian] [4 bytes of mask key when MASK] payload
 //! ```
 //!
+//! When permessage-deflate was negotiated ([`Decoder::inflating`]), RSV1 on the first
+//! frame of a data message marks it compressed: its frames are put together as they are
+//! and inflated once whole, the result held to the same size limit ([`super::deflate`]).
+//!
 //! A frame is refused when it breaks the protocol (reserved bits or opcodes, a client
 //! frame without a mask, a control frame that is fragmented or over 125 bytes, a
 //! continuation without a start), when its message would exceed the limit — before any
@@ -25,6 +29,7 @@ use tokio_tungstenite::tungstenite::protocol::frame::coding::{CloseCode, Data};
 use tokio_tungstenite::tungstenite::{Error as WsError, Utf8Bytes};
 
 use super::ClientMessage;
+use super::deflate::{InflateError, Inflater};
 
 /// Longest control frame payload (RFC 6455, 5.5).
 const MAX_CONTROL: usize = 125;
@@ -35,11 +40,17 @@ pub struct Decoder {
     max_message: usize,
     /// A fragmented message being put together: whether it is text, and its bytes so far.
     partial: Option<(bool, BytesMut)>,
+    /// The fragmented message being put together is compressed.
+    partial_compressed: bool,
+    /// permessage-deflate was negotiated: RSV1 marks a compressed message.
+    inflater: Option<Inflater>,
 }
 
 /// What a frame header says, once checked.
 struct Header {
     fin: bool,
+    /// RSV1: the message this frame starts is compressed.
+    compressed: bool,
     opcode: u8,
     /// Bytes the header takes, mask key included.
     len: usize,
@@ -53,13 +64,22 @@ impl Decoder {
         Decoder {
             max_message,
             partial: None,
+            partial_compressed: false,
+            inflater: None,
         }
+    }
+
+    /// The same decoder for a connection that negotiated permessage-deflate: compressed
+    /// messages are inflated, and refused when they inflate past the size limit.
+    pub fn inflating(mut self) -> Decoder {
+        self.inflater = Some(Inflater::new(self.max_message));
+        self
     }
 
     /// Bytes the next frame needs in all (header and payload) when `buf` holds less, so
     /// the reader can make room for it in one go.
     pub fn wanted(&self, buf: &[u8]) -> Option<usize> {
-        match parse_header(buf) {
+        match parse_header(buf, self.inflater.is_some()) {
             Ok(Some(h)) => Some(h.len.saturating_add(h.payload)),
             _ => None,
         }
@@ -75,7 +95,7 @@ impl Decoder {
     /// Control frames come out as they arrive, also between the fragments of a message.
     pub fn decode(&mut self, buf: &mut BytesMut) -> Result<Option<ClientMessage>, WsError> {
         loop {
-            let Some(h) = parse_header(buf)? else {
+            let Some(h) = parse_header(buf, self.inflater.is_some())? else {
                 return Ok(None);
             };
             let so_far = match (&self.partial, h.opcode) {
@@ -106,7 +126,8 @@ impl Decoder {
                         self.partial = Some((text, whole));
                         continue;
                     }
-                    return data(text, whole).map(Some);
+                    let compressed = std::mem::take(&mut self.partial_compressed);
+                    return self.data(text, compressed, whole).map(Some);
                 }
                 0x8 => return close(payload).map(|c| Some(ClientMessage::Close(c))),
                 0x9 => return Ok(Some(ClientMessage::Ping(payload.freeze()))),
@@ -119,21 +140,41 @@ impl Decoder {
             }
             if !h.fin {
                 self.partial = Some((text, payload));
+                self.partial_compressed = h.compressed;
                 continue;
             }
-            return data(text, payload).map(Some);
+            return self.data(text, h.compressed, payload).map(Some);
         }
     }
-}
 
-/// A whole data message.
-fn data(text: bool, payload: BytesMut) -> Result<ClientMessage, WsError> {
-    let payload = payload.freeze();
-    Ok(if text {
-        ClientMessage::Text(payload)
-    } else {
-        ClientMessage::Binary(payload)
-    })
+    /// A whole data message, inflated when it came compressed.
+    fn data(
+        &mut self,
+        text: bool,
+        compressed: bool,
+        payload: BytesMut,
+    ) -> Result<ClientMessage, WsError> {
+        let payload = match (compressed, &mut self.inflater) {
+            (true, Some(inflater)) => inflater.inflate(&payload).map_err(|e| match e {
+                InflateError::TooLong { limit } => {
+                    WsError::Capacity(CapacityError::MessageTooLong {
+                        size: limit.saturating_add(1),
+                        max_size: limit,
+                    })
+                }
+                InflateError::Invalid(cause) => WsError::Io(std::io::Error::new(
+                    std::io::ErrorKind::InvalidData,
+                    format!("a compressed message does not inflate: {cause}"),
+                )),
+            })?,
+            _ => payload.freeze(),
+        };
+        Ok(if text {
+            ClientMessage::Text(payload)
+        } else {
+            ClientMessage::Binary(payload)
+        })
+    }
 }
 
 /// A close frame's code and reason (RFC 6455, 5.5.1 and 7.4).
@@ -156,14 +197,16 @@ fn close(payload: BytesMut) -> Result<Option<CloseFrame>, WsError> {
     }
 }
 
-/// The header at the front of `buf`, checked; `None` while it is incomplete.
+/// The header at the front of `buf`, checked; `None` while it is incomplete. `deflate`:
+/// RSV1 may mark the first frame of a data message as compressed.
 #[inline]
-fn parse_header(buf: &[u8]) -> Result<Option<Header>, WsError> {
+fn parse_header(buf: &[u8], deflate: bool) -> Result<Option<Header>, WsError> {
     let [b0, b1, ..] = *buf else {
         return Ok(None);
     };
     let (fin, opcode) = (b0 & 0x80 != 0, b0 & 0x0F);
-    if b0 & 0x70 != 0 {
+    let compressed = b0 & 0x70 != 0;
+    if compressed && !(deflate && b0 & 0x70 == 0x40 && matches!(opcode, 0x1 | 0x2)) {
         return Err(WsError::Protocol(ProtocolError::NonZeroReservedBits));
     }
     match opcode {
@@ -211,6 +254,7 @@ fn parse_header(buf: &[u8]) -> Result<Option<Header>, WsError> {
     };
     Ok(Some(Header {
         fin,
+        compressed,
         opcode,
         len: 6 + extra,
         payload,
@@ -236,7 +280,16 @@ fn unmask(payload: &mut [u8], key: [u8; 4]) {
 /// Writes the header of an unmasked (server) frame: `opcode` with FIN set.
 #[inline]
 pub fn encode_header(out: &mut BytesMut, opcode: u8, len: usize) {
-    let b0 = 0x80 | opcode;
+    encode_first(out, 0x80 | opcode, len);
+}
+
+/// Writes the header of a server frame holding a compressed message: RSV1 and FIN set.
+pub fn encode_compressed_header(out: &mut BytesMut, opcode: u8, len: usize) {
+    encode_first(out, 0x80 | 0x40 | opcode, len);
+}
+
+#[inline]
+fn encode_first(out: &mut BytesMut, b0: u8, len: usize) {
     if len <= 125 {
         out.put_slice(&[b0, len as u8]);
     } else if let Ok(n) = u16::try_from(len) {
@@ -458,7 +511,7 @@ mod tests {
             let mut masked = out.to_vec();
             masked[1] |= 0x80;
             masked.extend_from_slice(&[0; 4]);
-            let h = parse_header(&masked).expect("valid").expect("whole");
+            let h = parse_header(&masked, false).expect("valid").expect("whole");
             assert_eq!((h.payload, h.len), (len, out.len() + 4), "length {len}");
             assert!(h.fin);
             assert_eq!(h.opcode, 0x2);

@@ -23,9 +23,14 @@
 //!   ends; after sending a `Close` the writer refuses further messages.
 //! - The writer counts the bytes the socket took ([`Writer::written`]): progress of a
 //!   client's connection where the kernel's own count cannot be read ([`liveness`]).
+//! - permessage-deflate, when the handshake agreed it ([`deflate`]): the reader inflates
+//!   compressed client messages ([`Reader::inflating`]); the writer marks the messages it
+//!   is given compressed ([`PartsSink::start_send_deflated`]) and never compresses on its
+//!   own, as the bytes are made once per message for every subscriber.
 //! - Text comes out unchecked ([`ClientMessage::Text`]): its reader checks the UTF-8, most
 //!   often while reading the text anyway, instead of in a pass of its own.
 
+pub mod deflate;
 pub mod frames;
 pub mod liveness;
 pub mod replies;
@@ -138,6 +143,12 @@ impl<R> Reader<R> {
             done: false,
         }
     }
+
+    /// The same reader on a connection that negotiated permessage-deflate.
+    pub fn inflating(mut self) -> Reader<R> {
+        self.decoder = self.decoder.inflating();
+        self
+    }
 }
 
 impl<R: AsyncRead + Unpin> Stream for Reader<R> {
@@ -205,6 +216,8 @@ pub struct Writer<W> {
     /// Bytes the socket took so far, shared with whoever watches the connection's
     /// progress.
     written: Arc<AtomicU64>,
+    /// permessage-deflate was negotiated: what the writer's users compress.
+    deflate: Option<deflate::DeflateConfig>,
 }
 
 impl<W> Writer<W> {
@@ -216,7 +229,15 @@ impl<W> Writer<W> {
             pending: 0,
             close_sent: false,
             written: Arc::default(),
+            deflate: None,
         }
+    }
+
+    /// The same writer on a connection that negotiated permessage-deflate: its users may
+    /// send messages compressed as `cfg` says.
+    pub fn deflating(mut self, cfg: deflate::DeflateConfig) -> Writer<W> {
+        self.deflate = Some(cfg);
+        self
     }
 
     /// The count of bytes the socket took, as the writer keeps it.
@@ -375,6 +396,29 @@ pub trait PartsSink: Sink<WsMessage, Error = WsError> + Unpin {
         whole.extend_from_slice(body);
         Pin::new(self).start_send(WsMessage::Binary(whole.freeze()))
     }
+
+    /// The compression the client negotiated (permessage-deflate), if any. Sinks that
+    /// cannot send compressed messages say `None`.
+    fn deflate(&self) -> Option<deflate::DeflateConfig> {
+        None
+    }
+
+    /// Queues one compressed message (RSV1 set): `text` or binary, its payload `head`
+    /// followed by `body`, both compressed bytes ([`deflate::compress`],
+    /// [`deflate::stored_block`]); only when [`PartsSink::deflate`] says so and after
+    /// `poll_ready`.
+    fn start_send_deflated(
+        &mut self,
+        text: bool,
+        head: &[u8],
+        body: &Bytes,
+    ) -> Result<(), WsError> {
+        let _ = (text, head, body);
+        Err(WsError::Io(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "this sink did not negotiate permessage-deflate",
+        )))
+    }
 }
 
 impl<W: AsyncWrite + Unpin> PartsSink for Writer<W> {
@@ -410,6 +454,35 @@ impl<W: AsyncWrite + Unpin> PartsSink for Writer<W> {
         }
         Ok(())
     }
+
+    fn deflate(&self) -> Option<deflate::DeflateConfig> {
+        self.deflate
+    }
+
+    fn start_send_deflated(
+        &mut self,
+        text: bool,
+        head: &[u8],
+        body: &Bytes,
+    ) -> Result<(), WsError> {
+        if self.close_sent {
+            return Err(WsError::Protocol(ProtocolError::SendAfterClosing));
+        }
+        let before = self.tail.len();
+        let opcode = if text { 0x1 } else { 0x2 };
+        frames::encode_compressed_header(&mut self.tail, opcode, head.len() + body.len());
+        self.tail.extend_from_slice(head);
+        self.pending += self.tail.len() - before + body.len();
+        // As `push`: a large body, shared by every subscriber, is written from where it
+        // lies.
+        if body.len() > COPY_UP_TO {
+            self.queue.push_back(self.tail.split().freeze());
+            self.queue.push_back(body.clone());
+        } else {
+            self.tail.extend_from_slice(body);
+        }
+        Ok(())
+    }
 }
 
 /// Sinks over channels and tungstenite (tests, benches) take the pieces put together.
@@ -425,6 +498,18 @@ pub async fn feed_parts<K: PartsSink>(sink: &mut K, parts: &[&[u8]]) -> Result<(
     sink.start_send_parts(parts)
 }
 
+/// Waits until `sink` takes a message, then queues the compressed message `head` + `body`
+/// (see [`PartsSink::start_send_deflated`]).
+pub async fn feed_deflated<K: PartsSink>(
+    sink: &mut K,
+    text: bool,
+    head: &[u8],
+    body: &Bytes,
+) -> Result<(), WsError> {
+    std::future::poll_fn(|cx| Pin::new(&mut *sink).poll_ready(cx)).await?;
+    sink.start_send_deflated(text, head, body)
+}
+
 /// Waits until `sink` takes a message, then queues the binary message `head` + `body`
 /// (see [`PartsSink::start_send_binary_parts`]).
 pub async fn feed_binary_parts<K: PartsSink>(
@@ -436,5 +521,7 @@ pub async fn feed_binary_parts<K: PartsSink>(
     sink.start_send_binary_parts(head, body)
 }
 
+#[cfg(test)]
+mod deflate_tests;
 #[cfg(test)]
 mod tests;
