@@ -96,7 +96,9 @@ api="http://127.0.0.1:$port/api/v1/robots/robot1/config"
 ws="ws://127.0.0.1:$port/?token=$op_token"
 
 # --- the robot's graph and its agent
-peer publish /chatter_a /chatter_b /chatter_c >"$tmp/graph.log" 2>&1 &
+# The graph lives as long as the suite (peer's 60 s bound is for one-shot checks: a graph
+# stopped by it left every later step with nothing to count once the suite ran slower).
+in_ns 900 "$python" "$here/runtime_peer.py" publish /chatter_a /chatter_b /chatter_c >"$tmp/graph.log" 2>&1 &
 pids+=($!)
 wait_for_line "$tmp/graph.log" '^(ready)$' "the Cyclone node" "${pids[-1]}" >/dev/null
 # robot_yaml [MORE_TOPIC_LINES]: the agent's YAML.
