@@ -218,7 +218,8 @@ fi
 export FLEETLINK_BIN="$PWD/target/ci/fleetlink"
 failed=()
 stage "interop suites (${INTEROP_JOBS:-3} at once)"
-run_interop < <(interop_plan)
+plan="$(interop_plan)"
+run_interop <<<"$plan"
 failed+=("${interop_failed[@]}")
 stage "the user's state untouched (scripts/hostile-state.sh)"
 stages+=("${interop_times[@]}")
