@@ -15,6 +15,7 @@ import foxglove from "@foxglove/ws-protocol";
 import { parse } from "@foxglove/rosmsg";
 import { MessageReader } from "@foxglove/rosmsg2-serialization";
 import WebSocket from "ws";
+import { CheckFailed, check, ok, sleep, until as waitUntil } from "./checks.mjs";
 
 const { FoxgloveClient } = foxglove;
 const require = createRequire(import.meta.url);
@@ -43,21 +44,7 @@ if (!args.url || !args.api || !args.token) {
 }
 const points = Number(args.points);
 
-class CheckFailed extends Error {}
-function check(cond, what) {
-  if (!cond) throw new CheckFailed(what);
-}
-const ok = (what) => console.log(`  ok: ${what}`);
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
-async function until(get, what, ms = TIMEOUT_MS) {
-  const end = Date.now() + ms;
-  for (;;) {
-    const v = get();
-    if (v) return v;
-    if (Date.now() > end) throw new CheckFailed(`timed out waiting for ${what}`);
-    await sleep(20);
-  }
-}
+const until = (get, what, ms = TIMEOUT_MS) => waitUntil(get, what, ms);
 
 async function connect(perMessageDeflate) {
   const ws = new WebSocket(args.url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL], { perMessageDeflate });

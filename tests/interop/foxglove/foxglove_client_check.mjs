@@ -24,6 +24,7 @@ import foxglove from "@foxglove/ws-protocol";
 import { parse } from "@foxglove/rosmsg";
 import { MessageReader, MessageWriter } from "@foxglove/rosmsg2-serialization";
 import WebSocket from "ws";
+import { CheckFailed, check, ok, sleep, until as waitUntil } from "./checks.mjs";
 
 // A CommonJS package: its named exports come through the default one.
 const { FoxgloveClient } = foxglove;
@@ -51,23 +52,9 @@ const robot = args.robot;
 const scanRanges = Number(args["scan-ranges"]);
 const points = Number(args.points);
 
-class CheckFailed extends Error {}
-function check(cond, what) {
-  if (!cond) throw new CheckFailed(what);
-}
-const ok = (what) => console.log(`  ok: ${what}`);
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
 /** Resolves with `get()` once it is truthy; fails naming `what` after `ms`. */
-async function until(get, what, ms = TIMEOUT_MS) {
-  const end = Date.now() + ms;
-  for (;;) {
-    const v = get();
-    if (v) return v;
-    if (Date.now() > end) throw new CheckFailed(`timed out waiting for ${what}`);
-    await sleep(20);
-  }
-}
+const until = (get, what, ms = TIMEOUT_MS) => waitUntil(get, what, ms);
 
 /** A FoxgloveClient over `ws` with everything it hears kept for the checks. */
 async function connect(url, subprotocol) {
