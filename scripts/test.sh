@@ -33,6 +33,7 @@ done
 
 # Time per stage, reported at the end (also when a stage fails).
 stages=()
+interop_failed=()
 stage_start=$SECONDS
 stage_name=""
 stage() {
@@ -47,6 +48,12 @@ report() {
     # Never leave the hostile state below on the machine, whatever happened.
     if [ -n "${hostile_planted:-}" ]; then ./scripts/hostile-state.sh remove || rc=1; fi
     stage ""
+    # The lines that name what failed, last, where a truncated log still shows them.
+    local name
+    for name in "${interop_failed[@]}"; do
+        echo "== what failed in $name (its log: ${INTEROP_LOGS:-target/interop-logs}/$name.log)"
+        grep -E '^(FAIL|not ok)' "${INTEROP_LOGS:-$PWD/target/interop-logs}/$name.log" | head -n 20 || true
+    done
     echo "== time per stage"
     printf '  %s\n' "${stages[@]}"
     echo "  total: $SECONDS s"

@@ -1,7 +1,7 @@
 //! QoS on the uplink, end to end: when a 2 MB point cloud and a small high-priority pose
 //! wait together, the pose reaches the hub's subscribers first. (That a small message also
 //! overtakes a large one whose chunks are already on the wire is tested deterministically
-//! at the link level, `crates/relay/tests/link_writer.rs`.)
+//! at the link level, `crates/relay/tests/relay/link_writer.rs`.)
 //!
 //! One thread runs hub, agent and test, so both messages are queued before the uplink's
 //! writer can run: the order is decided by the scheduler, not by how the OS interleaves

@@ -8,6 +8,7 @@
 mod credentials;
 mod front_door;
 mod listings;
+mod malformed_inputs;
 mod names;
 mod transport;
 
