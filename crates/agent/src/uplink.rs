@@ -64,8 +64,32 @@ use failover::{Backoff, Failover};
 /// outbox (with one, only its byte bound counts).
 const INHERITED_NO_DROP_QUEUE: usize = 100_000;
 
-/// How often the agent reports its demand and link figures to the hub.
+/// How often the agent looks whether its demand and link figures changed enough to tell
+/// the hub ([`link_figures_moved`]).
 const LINK_REPORT_INTERVAL: Duration = Duration::from_secs(1);
+
+/// What the periodic reports last told the hub on this connection: an idle robot's
+/// figures do not change, and what did not change is not sent again.
+#[derive(Default)]
+struct Told {
+    /// Each topic's drop counts.
+    drops: HashMap<TopicId, [u64; DropReason::ALL.len()]>,
+    /// `LINK_REPORT`'s demand, rate, latency and capacity.
+    link: Option<[u64; 4]>,
+    budget: Option<Frame>,
+}
+
+/// Whether link figures (`[demand_bps, rate_bps, latency_ns, capacity_bps]`) moved
+/// enough to tell the hub: a figure that became or stopped being zero, or one that
+/// changed by more than a quarter and by more than the noise of an idle link (2 kB/s of a
+/// rate, whose heartbeats alone wobble it; 5 ms of latency). The hub keeps the last
+/// figures it was told, and shares a site's capacity by them.
+fn link_figures_moved(told: &[u64; 4], now: &[u64; 4]) -> bool {
+    told.iter().zip(now).enumerate().any(|(i, (&a, &b))| {
+        let noise = if i == 2 { 5_000_000 } else { 2_000 };
+        (a == 0) != (b == 0) || (a.abs_diff(b) > noise && a.abs_diff(b) * 4 > a.max(b))
+    })
+}
 
 /// How long connecting plus the `HELLO`/`WELCOME` exchange may take.
 const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
@@ -877,7 +901,8 @@ impl Uplink {
         // Local topics carried up that have lost their last publisher (a ROS node gone).
         let mut unpublished: HashSet<TopicId> = HashSet::new();
         // Each topic's drop counts as last told to the hub on this connection.
-        let mut drops_told: HashMap<TopicId, [u64; DropReason::ALL.len()]> = HashMap::new();
+        // What the reports told the hub on this connection (only changes are sent again).
+        let mut told = Told::default();
         let mut timer = drive::Timer::default();
         let reason = 'serve: loop {
             while let Some(ev) = session.poll_event() {
@@ -892,11 +917,14 @@ impl Uplink {
                     } => {
                         if id < fleetlink_relay::link::HEARTBEAT_ID_BASE {
                             self.outbox.on_echo(id, responder_ns, Instant::now());
+                        } else {
+                            self.outbox
+                                .on_heartbeat_echo(rtt, responder_ns, Instant::now());
                         }
                         self.stats.rtt_ns.store(rtt.as_nanos() as u64, Relaxed);
                     }
                     Event::ReportDue => {
-                        self.report(&mut session, &ctrl_tx, &mut unpublished, &mut drops_told)
+                        self.report(&mut session, &ctrl_tx, &mut unpublished, &mut told)
                     }
                     Event::Hello { .. } | Event::Opened { .. } => {}
                 }
@@ -971,7 +999,7 @@ impl Uplink {
         session: &mut LinkSession,
         writer: &mpsc::Sender<Control>,
         unpublished: &mut HashSet<TopicId>,
-        drops_told: &mut HashMap<TopicId, [u64; DropReason::ALL.len()]>,
+        told: &mut Told,
     ) {
         let me = self.client;
         let mut drops = Vec::new();
@@ -988,8 +1016,8 @@ impl Uplink {
                 loads.push(load);
             }
             let counts = DropReason::ALL.map(|r| t.stats.drops(r));
-            if counts.iter().any(|n| *n > 0) && drops_told.get(&id) != Some(&counts) {
-                drops_told.insert(id, counts);
+            if counts.iter().any(|n| *n > 0) && told.drops.get(&id) != Some(&counts) {
+                told.drops.insert(id, counts);
                 let by_reason = DropReason::ALL
                     .iter()
                     .zip(counts)
@@ -1013,12 +1041,22 @@ impl Uplink {
             }
         }
         if let Some(f) = self.outbox.link_figures(Instant::now()) {
-            session.send(Frame::LinkReport {
-                demand_bps: f.demand_bps as u64,
-                rate_bps: f.rate_bps as u64,
-                latency_ns: f.latency.map_or(0, |l| l.as_nanos() as u64),
-                capacity_bps: f.capacity_bps.map_or(0, |c| c.round() as u64),
-            });
+            let figures = [
+                f.demand_bps as u64,
+                f.rate_bps as u64,
+                f.latency.map_or(0, |l| l.as_nanos() as u64),
+                f.capacity_bps.map_or(0, |c| c.round() as u64),
+            ];
+            if told.link.is_none_or(|t| link_figures_moved(&t, &figures)) {
+                told.link = Some(figures);
+                let [demand_bps, rate_bps, latency_ns, capacity_bps] = figures;
+                session.send(Frame::LinkReport {
+                    demand_bps,
+                    rate_bps,
+                    latency_ns,
+                    capacity_bps,
+                });
+            }
         }
         if !drops.is_empty() {
             session.send(Frame::TopicDrops { topics: drops });
@@ -1027,12 +1065,16 @@ impl Uplink {
             session.send(Frame::TopicLoad { topics: loads });
         }
         if let Some(b) = self.outbox.budget_figures(Instant::now()) {
-            session.send(Frame::Budget {
+            let budget = Frame::Budget {
                 max_bps: b.max_bytes_per_sec.map_or(0, |r| r.round() as u64),
                 day_bytes: b.bytes_per_day.map_or(0, |d| d.round() as u64),
                 used_bytes: b.used_bytes,
                 thinned: b.thinned,
-            });
+            };
+            if told.budget.as_ref() != Some(&budget) {
+                told.budget = Some(budget.clone());
+                session.send(budget);
+            }
         }
     }
 
@@ -1668,5 +1710,37 @@ mod connect_tests {
             runs.push(r.cleared);
         }
         panic!("the test's own 1.1 s sleep overran every time: cleared at {runs:?}");
+    }
+}
+
+/// Issue 61: an idle robot's reports are not sent again when nothing changed.
+#[cfg(test)]
+mod report_tests {
+    use super::link_figures_moved;
+
+    #[test]
+    fn link_figures_are_told_again_only_when_they_moved() {
+        // Idle: demand 0, heartbeats wobbling the rate, latency jitter of a few ms.
+        let idle = [0, 96, 20_000_000, 50_000];
+        assert!(!link_figures_moved(&idle, &[0, 64, 23_000_000, 52_000]));
+        assert!(!link_figures_moved(&idle, &idle));
+        // Demand appears (a viewer came), or the latency doubles: told.
+        assert!(link_figures_moved(&idle, &[1_500, 96, 20_000_000, 50_000]));
+        assert!(link_figures_moved(&idle, &[0, 96, 40_000_000, 50_000]));
+        // A rate that moved by more than a quarter, and one that stopped: told.
+        let busy = [400_000, 390_000, 20_000_000, 1_000_000];
+        assert!(link_figures_moved(
+            &busy,
+            &[400_000, 250_000, 20_000_000, 1_000_000]
+        ));
+        assert!(link_figures_moved(
+            &busy,
+            &[0, 390_000, 20_000_000, 1_000_000]
+        ));
+        // Within a quarter: not told.
+        assert!(!link_figures_moved(
+            &busy,
+            &[420_000, 380_000, 21_000_000, 950_000]
+        ));
     }
 }

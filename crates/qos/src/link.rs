@@ -1,15 +1,19 @@
 //! Link estimation (Cloudroid Swarm, Algorithm 1, plus passive measurement): how fast and
 //! how late the link to the hub is, the clock offset to the hub, and a pacing rate.
 //!
-//! Active part: every `probe_interval` (T = 200 ms) a fixed-size echo probe is emitted
-//! ([`LinkEstimator::poll_probe`]); the hub echoes it with its own clock reading
-//! ([`LinkEstimator::handle_echo`]). Passive part: every acknowledged data frame reports
-//! its size and send time ([`LinkEstimator::handle_ack`]). Both feed a sliding window W,
-//! giving the rate R(t) (bytes delivered per second in the window, probes included, so an
-//! idle link is still measured), the latency lat(t) (half the mean echo round trip; from
-//! acknowledged frames when no echo came back) and the clock offset (NTP-style, from the
-//! echo with the smallest round trip in the window: the least queued one is the least
-//! skewed).
+//! Active part: while data waits or is unacknowledged, and until the first answer after
+//! the estimator starts, a fixed-size echo probe is emitted every `probe_interval` (T =
+//! 200 ms; [`LinkEstimator::poll_probe`]); the hub echoes it with its own clock reading
+//! ([`LinkEstimator::handle_echo`]). An idle link is not probed: the heartbeat's own echoes
+//! ([`LinkEstimator::handle_heartbeat_echo`]) keep its round trip and clock offset
+//! current, and [`LinkEstimator::measured_at`] tells how old the rest of the estimate is.
+//! Passive part: every acknowledged data frame reports its size and send time
+//! ([`LinkEstimator::handle_ack`]). All feed a sliding window W, giving the rate R(t)
+//! (bytes delivered per second in the window, probes included), the latency lat(t) (half
+//! the mean echo round trip; from acknowledged frames when no echo came back; the last
+//! echo's when the window holds none) and the clock offset (NTP-style, from the echo with
+//! the smallest round trip in the window: the least queued one is the least skewed; the
+//! last echo's when the window holds none).
 //!
 //! Pacing: a delay-based controller turns the passive samples into a sending rate that
 //! keeps the link's queue short ([`LinkEstimator::pacing_rate`]): slow start (×1.25 per
@@ -120,6 +124,10 @@ pub struct LinkEstimator {
     started: Option<Nanos>,
     /// Send time of the oldest probe with no answer (echo or ack) heard since.
     unanswered_since: Option<Nanos>,
+    /// The latest echo (probe or heartbeat), kept when the window no longer holds it.
+    last_echo: Option<Echo>,
+    /// When the latest sample (an echo or an acknowledged frame) came in.
+    last_sample: Option<Nanos>,
     /// Frames sent before this instant crossed a stall; their round trips are not used.
     stall_ended: Nanos,
 }
@@ -143,15 +151,19 @@ impl LinkEstimator {
             now: Nanos::ZERO,
             started: None,
             unanswered_since: None,
+            last_echo: None,
+            last_sample: None,
             stall_ended: Nanos::ZERO,
             config,
         }
     }
 
-    /// A probe to send now, every `probe_interval`.
-    pub fn poll_probe(&mut self, now: Nanos) -> Option<Probe> {
+    /// A probe to send now: every `probe_interval` while the link is `busy` (data waits
+    /// or is unacknowledged) and until the first echo; never on an idle link that has been
+    /// measured (see the module docs).
+    pub fn poll_probe(&mut self, now: Nanos, busy: bool) -> Option<Probe> {
         self.advance(now);
-        if self.next_probe.is_some_and(|t| now < t) {
+        if !self.wants_probes(busy) || self.next_probe.is_some_and(|t| now < t) {
             return None;
         }
         let interval = self.config.probe_interval;
@@ -172,9 +184,14 @@ impl LinkEstimator {
         })
     }
 
-    /// When the next probe is due.
-    pub fn poll_timeout(&self) -> Option<Nanos> {
-        self.next_probe
+    /// When the next probe is due (see [`Self::poll_probe`]); `None` while none will be.
+    pub fn poll_timeout(&self, busy: bool) -> Option<Nanos> {
+        self.wants_probes(busy)
+            .then(|| self.next_probe.unwrap_or(self.now))
+    }
+
+    fn wants_probes(&self, busy: bool) -> bool {
+        busy || self.last_echo.is_none()
     }
 
     /// The echo of probe `id` came back at `now`, stamped `remote_ts` by the hub's clock.
@@ -185,6 +202,18 @@ impl LinkEstimator {
             return;
         };
         let (_, sent) = self.outstanding.remove(pos).unwrap_or((id, now));
+        self.echo(sent, remote_ts, now);
+    }
+
+    /// The echo of a heartbeat `PING` (which the session sends and times itself) came
+    /// back at `now` after `rtt`, stamped `remote_ts` by the hub's clock: a sample like a
+    /// probe's, which is what keeps an idle link's round trip and clock offset current.
+    pub fn handle_heartbeat_echo(&mut self, rtt: Nanos, remote_ts: Nanos, now: Nanos) {
+        self.advance(now);
+        self.echo(now.saturating_sub(rtt), remote_ts, now);
+    }
+
+    fn echo(&mut self, sent: Nanos, remote_ts: Nanos, now: Nanos) {
         let rtt = now.saturating_sub(sent);
         let midpoint = sent.0 as i128 + rtt.0 as i128 / 2;
         let offset =
@@ -192,13 +221,21 @@ impl LinkEstimator {
         if self.echoes.len() == self.echoes.capacity() {
             self.echoes.pop_front();
         }
-        self.echoes.push_back(Echo {
+        let echo = Echo {
             at: now,
             rtt,
             offset,
-        });
+        };
+        self.echoes.push_back(echo);
+        self.last_echo = Some(echo);
         let rtt = self.heard(sent, now).then_some(rtt);
         self.record(self.config.probe_size as u64, rtt, now);
+    }
+
+    /// When the latest sample (an echo or an acknowledged frame) came in: how old the
+    /// estimate is on a link that has been idle. `None` before the first.
+    pub fn measured_at(&self) -> Option<Nanos> {
+        self.last_sample
     }
 
     /// A data frame of `bytes`, sent at `sent_at`, was acknowledged at `now`.
@@ -228,6 +265,7 @@ impl LinkEstimator {
     }
 
     fn record(&mut self, bytes: u64, rtt: Option<Nanos>, now: Nanos) {
+        self.last_sample = Some(now);
         if let Some(rtt) = rtt {
             self.on_rtt_sample(bytes, rtt, now);
         }
@@ -378,7 +416,7 @@ impl LinkEstimator {
     }
 
     /// lat(t): one-way latency, half the mean echo round trip in the window; from
-    /// acknowledged frames when no echo is in the window.
+    /// acknowledged frames when no echo is in the window; the last echo's when neither is.
     pub fn latency(&self) -> Option<Nanos> {
         self.rtt().map(|r| Nanos(r.0 / 2))
     }
@@ -392,7 +430,10 @@ impl LinkEstimator {
         let (sum, count) = self.slots.iter().fold((0u64, 0u64), |(s, c), x| {
             (s + x.rtt_sum, c + u64::from(x.rtt_count))
         });
-        (count > 0).then(|| Nanos(sum / count))
+        if count > 0 {
+            return Some(Nanos(sum / count));
+        }
+        self.last_echo.map(|e| e.rtt)
     }
 
     /// Smallest round trip seen over the base horizon (10 s by default).
@@ -401,9 +442,13 @@ impl LinkEstimator {
     }
 
     /// Hub clock minus robot clock, in nanoseconds, from the least-delayed echo in the
-    /// window; `None` before the first echo.
+    /// window (the last echo's when the window holds none); `None` before the first echo.
     pub fn clock_offset(&self) -> Option<i64> {
-        self.echoes.iter().min_by_key(|e| e.rtt).map(|e| e.offset)
+        self.echoes
+            .iter()
+            .min_by_key(|e| e.rtt)
+            .or(self.last_echo.as_ref())
+            .map(|e| e.offset)
     }
 
     /// A local clock reading expressed on the hub's clock (to stamp messages so the hub
@@ -433,7 +478,7 @@ mod tests {
         let mut est = LinkEstimator::new(LinkConfig::default());
         let mut sent = Vec::new();
         for ms in (0..1000).step_by(10) {
-            if let Some(p) = est.poll_probe(Nanos::from_millis(ms)) {
+            if let Some(p) = est.poll_probe(Nanos::from_millis(ms), true) {
                 sent.push((ms, p));
             }
         }
@@ -444,13 +489,48 @@ mod tests {
     }
 
     #[test]
+    fn an_idle_measured_link_is_not_probed_and_heartbeats_keep_its_estimate() {
+        let mut est = LinkEstimator::new(LinkConfig::default());
+        // Until the first echo, probes go out even on an idle link: the first estimate.
+        let first = est.poll_probe(Nanos::ZERO, false).expect("first probe");
+        assert_eq!(est.poll_timeout(false), Some(Nanos::from_millis(200)));
+        est.handle_echo(first.id, Nanos::from_secs(100), Nanos::from_millis(40));
+        // Measured and idle: no probe, no timer, for as long as it stays idle.
+        for ms in (200..10_000).step_by(100) {
+            assert_eq!(
+                est.poll_probe(Nanos::from_millis(ms), false),
+                None,
+                "at {ms} ms"
+            );
+        }
+        assert_eq!(est.poll_timeout(false), None);
+        // The window (2 s) holds no echo now; the last one still answers, and says how old.
+        assert_eq!(est.rtt(), Some(Nanos::from_millis(40)));
+        assert!(est.clock_offset().is_some());
+        assert_eq!(est.measured_at(), Some(Nanos::from_millis(40)));
+        // A heartbeat echo (50 ms round trip, hub 7 s ahead) is a sample like a probe's.
+        let now = Nanos::from_secs(10);
+        let remote = now.saturating_sub(Nanos::from_millis(25)) + Nanos::from_secs(7);
+        est.handle_heartbeat_echo(Nanos::from_millis(50), remote, now);
+        assert_eq!(est.rtt(), Some(Nanos::from_millis(50)));
+        assert_eq!(est.clock_offset(), Some(7_000_000_000));
+        assert_eq!(est.measured_at(), Some(now));
+        // Data waits: probing resumes at once, every interval while it stays busy.
+        let t = now + Nanos::from_millis(10);
+        assert!(est.poll_probe(t, true).is_some());
+        assert_eq!(est.poll_timeout(true), Some(t + Nanos::from_millis(200)));
+        assert_eq!(est.poll_probe(t + Nanos::from_millis(100), true), None);
+        assert!(est.poll_probe(t + Nanos::from_millis(200), true).is_some());
+    }
+
+    #[test]
     fn idle_link_latency_and_clock_offset_come_from_echoes() {
         // One-way 30 ms each way; the hub's clock is 5 s ahead.
         let mut est = LinkEstimator::new(LinkConfig::default());
         let skew = Nanos::from_secs(5);
         for k in 0..20u64 {
             let t = Nanos::from_millis(k * 200);
-            let p = est.poll_probe(t).expect("probe due");
+            let p = est.poll_probe(t, true).expect("probe due");
             let remote = t + Nanos::from_millis(30) + skew;
             est.handle_echo(p.id, remote, t + Nanos::from_millis(60));
         }
@@ -484,13 +564,13 @@ mod tests {
     fn stale_and_unknown_echoes_are_ignored() {
         let mut est = LinkEstimator::new(LinkConfig::default());
         let p = est
-            .poll_probe(Nanos::ZERO)
+            .poll_probe(Nanos::ZERO, true)
             .expect("first probe is due at once");
         est.handle_echo(p.id + 100, Nanos::ZERO, Nanos::from_millis(10));
         assert_eq!(est.latency(), None);
         // Echo arriving after the window: the probe was written off as lost.
         for ms in (0..5000).step_by(200) {
-            let _ = est.poll_probe(Nanos::from_millis(ms));
+            let _ = est.poll_probe(Nanos::from_millis(ms), true);
         }
         est.handle_echo(p.id, Nanos::ZERO, Nanos::from_secs(5));
         assert_eq!(est.latency(), None);

@@ -96,7 +96,7 @@ fn link_estimator_per_frame_work_does_not_allocate_once_warm() {
     let mut run = |ms: u64| {
         for _ in 0..ms {
             now += Nanos::from_millis(1);
-            if let Some(p) = est.poll_probe(now) {
+            if let Some(p) = est.poll_probe(now, true) {
                 est.handle_echo(p.id, now, now + Nanos::from_millis(1));
             }
             est.handle_ack(1000, now.saturating_sub(Nanos::from_millis(30)), now);

@@ -170,8 +170,9 @@ impl Sim {
                 Push::Backpressure(item) => p.held = Some(item),
             }
         }
-        // Agent: probe, pace, send.
-        if let Some(probe) = self.est.poll_probe(now) {
+        // Agent: probe while data waits or is unacknowledged, pace, send.
+        let busy = self.sched.has_queued() || self.sched.in_flight() > 0;
+        if let Some(probe) = self.est.poll_probe(now, busy) {
             self.wire.push_back(Frame::Probe { id: probe.id });
         }
         self.sched

@@ -84,6 +84,16 @@ enum Service {
     },
 }
 
+/// Whether an uplink has something to measure its link with: data waiting (queued, or
+/// pulled for the peer) or sent and not yet acknowledged.
+fn link_busy(
+    sched: &Scheduler<Arc<Message>>,
+    link: &LinkControl,
+    pulled: &VecDeque<Arc<Message>>,
+) -> bool {
+    sched.has_queued() || link.unacked_bytes() > 0 || !pulled.is_empty()
+}
+
 /// Pull requests waiting for the writer at most (more are dropped: the peer asks again).
 const MAX_PULLED: usize = 64;
 
@@ -993,27 +1003,74 @@ impl Outbox {
     }
 
     /// An echo probe due now, if any (scheduled outboxes only): its id goes out in a PING.
+    /// Probes go out while data waits or is unacknowledged (and until the first echo); an
+    /// idle link is measured by its heartbeat alone ([`Self::on_heartbeat_echo`]).
     pub fn poll_probe(&self, now: Instant) -> Option<u64> {
         let mut st = self.lock();
         match &mut st.service {
-            Service::Scheduled { origin, link, .. } => link
-                .est
-                .poll_probe(Nanos::since(*origin, now))
-                .map(|p| p.id),
+            Service::Scheduled {
+                origin,
+                link,
+                sched,
+                pulled,
+                ..
+            } => {
+                let busy = link_busy(sched, link, pulled);
+                link.est
+                    .poll_probe(Nanos::since(*origin, now), busy)
+                    .map(|p| p.id)
+            }
+            Service::RoundRobin { .. } => None,
+        }
+    }
+
+    /// When the writer should look for a probe next ([`Self::poll_probe`]); `None` while
+    /// the link is idle (new data wakes the writer through [`Self::ready`]).
+    pub fn probe_timeout(&self) -> Option<Instant> {
+        let st = self.lock();
+        match &st.service {
+            Service::Scheduled {
+                origin,
+                link,
+                sched,
+                pulled,
+                ..
+            } => {
+                let busy = link_busy(sched, link, pulled);
+                let at = link.est.poll_timeout(busy)?;
+                Some(*origin + Duration::from_nanos(at.0))
+            }
             Service::RoundRobin { .. } => None,
         }
     }
 
     /// The hub echoed probe `id`, reading `hub_ns` (Unix ns) on its clock.
     pub fn on_echo(&self, id: u64, hub_ns: u64, now: Instant) {
+        self.echoed(now, hub_ns, |est, t, hub| est.handle_echo(id, hub, t));
+    }
+
+    /// The hub answered a heartbeat `PING` after `rtt`, reading `hub_ns` on its clock: on
+    /// an idle link, the sample that keeps the round trip and clock offset current.
+    pub fn on_heartbeat_echo(&self, rtt: Duration, hub_ns: u64, now: Instant) {
+        let rtt = Nanos(rtt.as_nanos().min(u128::from(u64::MAX)) as u64);
+        self.echoed(now, hub_ns, |est, t, hub| {
+            est.handle_heartbeat_echo(rtt, hub, t)
+        });
+    }
+
+    fn echoed(
+        &self,
+        now: Instant,
+        hub_ns: u64,
+        f: impl FnOnce(&mut fleetlink_qos::LinkEstimator, Nanos, Nanos),
+    ) {
         let mut st = self.lock();
         if let Service::Scheduled { origin, link, .. } = &mut st.service {
             let t = Nanos::since(*origin, now);
             // The estimator runs on this outbox's clock (ns since `origin`); the hub's
             // reading is put on the same scale, so the offset it finds is hub − robot.
             let origin_unix = crate::instant_to_unix_nanos(*origin);
-            link.est
-                .handle_echo(id, Nanos(hub_ns.saturating_sub(origin_unix)), t);
+            f(&mut link.est, t, Nanos(hub_ns.saturating_sub(origin_unix)));
         }
     }
 

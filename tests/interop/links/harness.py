@@ -85,6 +85,10 @@ class Net:
         """Bytes the robot's interface has sent (the uplink's cost, headers included)."""
         return int(self.run(self.robot_ns, "cat", f"/sys/class/net/{self.robot_dev}/statistics/tx_bytes"))
 
+    def robot_rx_bytes(self):
+        """Bytes the robot's interface has received (the downlink's cost, headers included)."""
+        return int(self.run(self.robot_ns, "cat", f"/sys/class/net/{self.robot_dev}/statistics/rx_bytes"))
+
     def shape(self, mbit):
         """Robot egress (the uplink) through a token bucket; None removes it.
 
@@ -276,7 +280,7 @@ class Fleet:
         return f"ws://{host}:{self.hub_port}/?token={self.op_token}"
 
     # --- agent
-    def agent_yaml(self, sim, topics=None, link=None, extra=()):
+    def agent_yaml(self, sim, topics=None, link=None, extra=(), heartbeat_ms=1000):
         """`sim`: False (no simulator), True (the point cloud only) or the `sim:` map as
         YAML text. `topics`: more entries of the `topics:` map, local name -> QoS as YAML
         text (`{ compression: none }`). `link`: the `link:` map as YAML text
@@ -286,7 +290,7 @@ class Fleet:
             f"hub: ws://{self.net.hub_ip}:{self.hub_port}/",
             "name: robot1",
             f"token: {self.robot_token}",
-            "heartbeat_ms: 1000",
+            f"heartbeat_ms: {heartbeat_ms}",
             "local_rosbridge: { listen: 127.0.0.1:0 }",
         ]
         # Its own kept runtime changes (none unless a scenario makes some), never the
@@ -309,17 +313,18 @@ class Fleet:
             lines.append("sim: { point_cloud: { rate_hz: 5, points: 13300 } }")
         return "\n".join(lines) + "\n"
 
-    def start_agent(self, sim=False, same_outbox=False, topics=None, link=None, extra=()):
+    def start_agent(self, sim=False, same_outbox=False, topics=None, link=None, extra=(),
+                    heartbeat_ms=1000):
         """A fresh outbox and state directory per agent, unless this is a restart of the
         last one (a fresh agent must not replay an earlier scenario's leftovers). `topics`, `link`,
-        `extra`: see `agent_yaml`."""
+        `extra`, `heartbeat_ms`: see `agent_yaml`."""
         if not same_outbox:
             self.agents += 1
             self.outbox_dir = os.path.join(self.tmp, f"outbox-{self.agents}")
             self.state_dir = os.path.join(self.tmp, f"state-{self.agents}")
         path = os.path.join(self.tmp, "agent-sim.yaml" if sim else "agent.yaml")
         with open(path, "w") as f:
-            f.write(self.agent_yaml(sim, topics, link, extra))
+            f.write(self.agent_yaml(sim, topics, link, extra, heartbeat_ms))
         self.agent = self.procs.start("agent", self.net.robot_ns, [self.bin, "agent", "--config", path])
         m = self.procs.wait_line(self.agent, r"^  local rosbridge: (ws://[0-9.:]+/)$", 15, "agent start")
         self.local_url = m.group(1)

@@ -851,16 +851,23 @@ def scenario_calls_dead_link(fleet, nominal):
     return rows
 
 
-IDLE_TARGET_BPS = 2048   # the robot's link with nobody subscribed: heartbeats and reports
+IDLE_TARGET_BPS = 400    # the robot's uplink with nobody subscribed: the heartbeat (issue 61)
+IDLE_WINDOW_S = 10.0     # ten heartbeats, so one more or less moves the rate by a tenth
 INTEREST_STOP_S = 1.0    # unsubscribing stops a topic within this
 ONE_COPY_RATIO = 1.3     # three subscribers at the hub cost at most this x one
 
 
 def uplink_rate(fleet, secs):
     """Bytes per second the robot's interface sends over `secs`."""
-    b0, t0 = fleet.net.robot_tx_bytes(), time.monotonic()
+    return link_rates(fleet, secs)[0]
+
+
+def link_rates(fleet, secs):
+    """Bytes per second the robot's interface sends and receives over `secs`."""
+    tx0, rx0, t0 = fleet.net.robot_tx_bytes(), fleet.net.robot_rx_bytes(), time.monotonic()
     time.sleep(secs)
-    return (fleet.net.robot_tx_bytes() - b0) / (time.monotonic() - t0)
+    dt = time.monotonic() - t0
+    return (fleet.net.robot_tx_bytes() - tx0) / dt, (fleet.net.robot_rx_bytes() - rx0) / dt
 
 
 class Viewer:
@@ -894,10 +901,11 @@ class Viewer:
 
 
 def scenario_interest(fleet, _nominal):
-    """The demo sensors on the robot, nobody subscribed: the robot's link carries
-    heartbeats and reports only. One viewer at the hub makes its topic (and only it) flow;
-    three viewers cost one copy on the link; when they leave, the topic stops within a
-    second."""
+    """The demo sensors on the robot, nobody subscribed: the robot's link carries its
+    heartbeat only (no estimator probes, no unchanged reports), at most IDLE_TARGET_BPS.
+    One viewer at the hub makes its topic (and only it) flow; three viewers cost one copy
+    on the link; when they leave, the topic stops within a second. Then the same idle
+    robot with a 5 s heartbeat, which must cost less."""
     rows = []
     fleet.start_agent(sim="{}")
     viewers = []
@@ -906,9 +914,10 @@ def scenario_interest(fleet, _nominal):
                                if t["name"].startswith("/robot1/") and t.get("state") == "idle") >= 5,
                    15, "the simulated robot's five topics listed idle at the hub")
         time.sleep(1.0)  # the connection's first announcements are behind
-        idle = uplink_rate(fleet, 5.0)
-        rows.append(("idle uplink, demo sensors, nobody subscribed", f"{idle:.0f} B/s",
+        idle, idle_rx = link_rates(fleet, IDLE_WINDOW_S)
+        rows.append(("idle uplink, demo sensors, nobody subscribed (heartbeat 1 s)", f"{idle:.0f} B/s",
                      f"<= {IDLE_TARGET_BPS} B/s", idle <= IDLE_TARGET_BPS))
+        rows.append(("idle downlink, same", f"{idle_rx:.0f} B/s", "info", None))
         listed = {t["name"]: t for t in fleet.hub_topics()}
         scan = next((n for n in listed if n.endswith("/scan")), None)
         if scan is None:
@@ -941,6 +950,20 @@ def scenario_interest(fleet, _nominal):
                      f"<= {IDLE_TARGET_BPS} B/s", after <= IDLE_TARGET_BPS))
         state = next((t.get("state") for t in fleet.hub_topics() if t["name"] == scan), None)
         rows.append((f"{scan} listed", f"{state} ({time.monotonic() - t_close:.1f} s after)", "idle", state == "idle"))
+
+        # The heartbeat sets an idle link's cost (docs/config.md): the same robot at 5 s.
+        before = (fleet.robot_status() or {}).get("connected_at_ms")
+        fleet.stop_agent()
+        fleet.start_agent(sim="{}", heartbeat_ms=5000)
+
+        def reconnected():
+            st = fleet.robot_status() or {}
+            return st.get("online") and st.get("connected_at_ms") != before
+        wait_until(reconnected, 15, "robot1 connected again (heartbeat 5 s)")
+        time.sleep(2.0)  # the connection's first announcements are behind
+        tx5, rx5 = link_rates(fleet, 2 * IDLE_WINDOW_S)
+        rows.append(("idle uplink, heartbeat 5 s", f"{tx5:.0f} B/s (downlink {rx5:.0f} B/s)",
+                     f"< the 1 s heartbeat's {idle:.0f} B/s", tx5 < idle))
     finally:
         for v in viewers:
             v.close()

@@ -30,8 +30,6 @@ const MAX_ROUND_BYTES: usize = 1 << 20;
 const ENCODE_IN_PLACE: usize = 1024;
 /// How long a writer whose outbox was closed waits for its owner's close frame.
 const CLOSE_REASON_WAIT: std::time::Duration = std::time::Duration::from_millis(500);
-/// How often an idle writer looks whether an estimator probe is due.
-const PROBE_TICK: std::time::Duration = std::time::Duration::from_millis(50);
 
 /// A large message being sent one chunk per round, and messages of the same topic
 /// waiting behind it.
@@ -417,12 +415,14 @@ pub async fn write_link<K>(
             }
             return finish(&mut sink, &mut buf, None).await;
         }
-        // A scheduled outbox looks for a due probe now and then; a plain one (the hub's)
-        // sleeps until there is something to write.
-        let mut wake = outbox
-            .is_scheduled()
-            .then(|| tokio::time::Instant::now() + PROBE_TICK);
-        for at in [gated.flatten(), budget_wake].into_iter().flatten() {
+        // A scheduled outbox wakes when its next probe is due (none while its link is idle:
+        // new data wakes it); a plain one (the hub's) sleeps until there is something to
+        // write.
+        let mut wake: Option<tokio::time::Instant> = None;
+        for at in [outbox.probe_timeout(), gated.flatten(), budget_wake]
+            .into_iter()
+            .flatten()
+        {
             let at = tokio::time::Instant::from_std(at);
             wake = Some(wake.map_or(at, |w| w.min(at)));
         }
