@@ -13,7 +13,8 @@
 # LOADED_MAX (default 1000): sizes above it are measured idle only, with a loaded run at
 # LOADED_RATE_BIG Hz (default 1) instead, since N x TOPICS x RATE is more than two cores
 # can generate and relay beyond about 100k msg/s; HEARTBEAT_MS (default: the hub's 1000);
-# PROBE_MS (default 200, as the agent's link estimator probes; 0: heartbeat pings only).
+# PROBE_MS (default 200, as the agent's link estimator probes while data waits: robots ping
+# this often while they publish, at their heartbeat when idle; 0: heartbeat pings only).
 # Pose subscribers: one per robot up to 1,000 (the first 1,000 robots' beyond that: two
 # connections per robot would pass the open-files limit of 20,000 at 10,000 robots).
 # SERVER=floor runs each size against `fleetlink bench fleet-floor` instead of a hub: the

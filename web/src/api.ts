@@ -46,6 +46,10 @@ export interface RobotInfo {
   budget?: { max_bps: number | null; day_bytes: number | null; used_bytes: number; use_bps: number; thinned: string[] } | null;
   /** What the robot may send now, bytes/s, as its agent last reported it. */
   capacity_bps?: number | null;
+  /** When the robot's link rate was last measured with data on it (Unix ms, hub clock),
+   * and how many seconds ago: an idle link is not probed, so its estimate ages. */
+  link_measured_at_ms?: number | null;
+  link_estimate_age_s?: number | null;
   /** Mirrors of the robot beside offloaded nodes (docs/mirror.md): the robot topics each
    * reads now, their bytes/s over the robot's link, and the offload signal (`fits`: the
    * link carries them; null while the capacity is not known). */

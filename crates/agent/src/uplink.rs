@@ -1050,11 +1050,18 @@ impl Uplink {
             if told.link.is_none_or(|t| link_figures_moved(&t, &figures)) {
                 told.link = Some(figures);
                 let [demand_bps, rate_bps, latency_ns, capacity_bps] = figures;
+                // On the hub's clock, so the hub can tell its age at any later time.
+                let measured_at_ms = f.measured_at.map_or(0, |at| {
+                    let unix = fleetlink_relay::instant_to_unix_nanos(at) as i128;
+                    let hub = unix + i128::from(f.clock_offset_ns.unwrap_or(0));
+                    (hub.max(1_000_000) / 1_000_000) as u64
+                });
                 session.send(Frame::LinkReport {
                     demand_bps,
                     rate_bps,
                     latency_ns,
                     capacity_bps,
+                    measured_at_ms,
                 });
             }
         }

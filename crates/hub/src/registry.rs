@@ -42,6 +42,9 @@ pub struct LiveRobot {
     pub latency_ns: AtomicU64,
     /// What the robot may send now, bytes/s, from the same report (0 = not known).
     pub capacity_bps: AtomicU64,
+    /// When the robot's link rate was last measured with data on it, Unix ms on this
+    /// hub's clock (0 = never): an idle link is not probed, so the figure ages.
+    pub measured_at_ms: AtomicU64,
     /// The capacity share last sent to it (bytes/s; 0 = none).
     pub share_bps: AtomicU64,
     /// Hub clock minus robot clock, from the least-delayed of the recent heartbeats.
@@ -130,6 +133,7 @@ impl LiveRobot {
             rate_bps: AtomicU64::new(0),
             latency_ns: AtomicU64::new(0),
             capacity_bps: AtomicU64::new(0),
+            measured_at_ms: AtomicU64::new(0),
             share_bps: AtomicU64::new(0),
             clock: Mutex::new(ClockSync::default()),
             clock_offset: AtomicI64::new(i64::MIN),

@@ -310,17 +310,20 @@ pub enum Frame {
     /// Hub → agent: the robot's share of its site's access link, bytes per second
     /// (0 = no cap). `bytes_per_sec u64le`
     Share { bytes_per_sec: u64 },
-    /// Agent → hub, about once a second: what the robot would send if it could, what its
-    /// link delivered, its measured one-way latency, and what it may send now (the
-    /// smallest of its capacity share, its data budget's rate and the link's best
-    /// measured rate; 0 = not known).
-    /// `demand_bps u64le | rate_bps u64le | latency_ns u64le | capacity_bps u64le`
-    /// (`capacity_bps` absent in older senders: read as 0)
+    /// Agent → hub, when its figures moved (looked at once a second): what the robot
+    /// would send if it could, what its link delivered, its measured one-way latency, what
+    /// it may send now (the smallest of its capacity share, its data budget's rate and the
+    /// link's best measured rate; 0 = not known), and when the link's rate was last
+    /// measured with data on it, Unix ms on the hub's clock (0 = never: an idle link is
+    /// not probed, so its figure is as old as its last traffic).
+    /// `demand_bps u64le | rate_bps u64le | latency_ns u64le | capacity_bps u64le |
+    /// measured_at_ms u64le` (the last two absent in older senders: read as 0)
     LinkReport {
         demand_bps: u64,
         rate_bps: u64,
         latency_ns: u64,
         capacity_bps: u64,
+        measured_at_ms: u64,
     },
     /// Receiver → sender of a reliable topic (`ADVERTISE_RELIABLE`): every message of
     /// `alias` up to and including `seq` has been delivered (and recorded, so it is never
@@ -654,11 +657,13 @@ impl Frame {
                 rate_bps,
                 latency_ns,
                 capacity_bps,
+                measured_at_ms,
             } => {
                 b.put_u64_le(*demand_bps);
                 b.put_u64_le(*rate_bps);
                 b.put_u64_le(*latency_ns);
                 b.put_u64_le(*capacity_bps);
+                b.put_u64_le(*measured_at_ms);
             }
             Frame::Delivered { alias, seq } => {
                 put_varint(b, u64::from(*alias));
@@ -958,6 +963,11 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             latency_ns: r.u64_le("LINK_REPORT.latency_ns")?,
             capacity_bps: if r.remaining() >= 8 {
                 r.u64_le("LINK_REPORT.capacity_bps")?
+            } else {
+                0
+            },
+            measured_at_ms: if r.remaining() >= 8 {
+                r.u64_le("LINK_REPORT.measured_at_ms")?
             } else {
                 0
             },

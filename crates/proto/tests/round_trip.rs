@@ -388,6 +388,7 @@ fn a_link_report_from_an_older_agent_reads_with_no_capacity() {
             rate_bps: 480_000,
             latency_ns: 41_000_000,
             capacity_bps: 0,
+            measured_at_ms: 0,
         }
     );
 }

@@ -280,14 +280,22 @@ pub fn share() -> impl Strategy<Value = Frame> {
 }
 
 pub fn link_report() -> impl Strategy<Value = Frame> {
-    (any::<u64>(), any::<u64>(), any::<u64>(), any::<u64>()).prop_map(
-        |(demand_bps, rate_bps, latency_ns, capacity_bps)| Frame::LinkReport {
-            demand_bps,
-            rate_bps,
-            latency_ns,
-            capacity_bps,
-        },
+    (
+        any::<u64>(),
+        any::<u64>(),
+        any::<u64>(),
+        any::<u64>(),
+        any::<u64>(),
     )
+        .prop_map(
+            |(demand_bps, rate_bps, latency_ns, capacity_bps, measured_at_ms)| Frame::LinkReport {
+                demand_bps,
+                rate_bps,
+                latency_ns,
+                capacity_bps,
+                measured_at_ms,
+            },
+        )
 }
 
 pub fn delivered() -> impl Strategy<Value = Frame> {
@@ -582,6 +590,7 @@ pub fn one_of_each_kind() -> Vec<Frame> {
             rate_bps: 480_000,
             latency_ns: 41_000_000,
             capacity_bps: 500_000,
+            measured_at_ms: 1_796_000_000_000,
         },
         Frame::Delivered {
             alias: 300,

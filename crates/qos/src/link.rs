@@ -430,10 +430,9 @@ impl LinkEstimator {
         let (sum, count) = self.slots.iter().fold((0u64, 0u64), |(s, c), x| {
             (s + x.rtt_sum, c + u64::from(x.rtt_count))
         });
-        if count > 0 {
-            return Some(Nanos(sum / count));
-        }
-        self.last_echo.map(|e| e.rtt)
+        sum.checked_div(count)
+            .map(Nanos)
+            .or(self.last_echo.map(|e| e.rtt))
     }
 
     /// Smallest round trip seen over the base horizon (10 s by default).

@@ -122,6 +122,11 @@ pub struct LinkControl {
     /// Bytes offered by publishers since the last link report (the robot's demand).
     pub offered: u64,
     pub offered_since: Nanos,
+    /// Data was acknowledged since the last link report: its rate measures the link.
+    pub acked_since_report: bool,
+    /// The link's best measured rate when data last flowed, and when (an idle link is
+    /// not probed, so this is what the robot knows of its link then, and how old it is).
+    pub measured: Option<(f64, Nanos)>,
 }
 
 impl LinkControl {
@@ -135,6 +140,8 @@ impl LinkControl {
             bucket: None,
             offered: 0,
             offered_since: now,
+            acked_since_report: false,
+            measured: None,
         }
     }
 
@@ -152,6 +159,7 @@ impl LinkControl {
 
     /// The peer acknowledged `bytes` more payload bytes, oldest first.
     pub fn on_acked_bytes(&mut self, bytes: u64, now: Nanos) {
+        self.acked_since_report |= bytes > 0;
         let mut left = bytes;
         while left > 0 {
             let Some((len, at)) = self.written.front_mut() else {

@@ -228,9 +228,12 @@ pub struct LinkFigures {
     pub in_flight_bytes: usize,
     /// What the robot may send now, bytes/s: the smallest of its capacity share, its data
     /// budget's rate and the link's best measured rate (the rate over the estimator's
-    /// window or the best 50 ms of the last half second, whichever is higher); `None`
-    /// until something was measured.
+    /// window or the best 50 ms of the last half second, whichever is higher, when data
+    /// last flowed); `None` until something was measured.
     pub capacity_bps: Option<f64>,
+    /// When the link's rate was last measured with data on it (`None`: never). An idle
+    /// link is not probed: its capacity figure is the one measured then.
+    pub measured_at: Option<Instant>,
 }
 
 struct State {
@@ -1088,9 +1091,12 @@ impl Outbox {
             return None;
         };
         let t = Nanos::since(*origin, now);
-        let measured = link.est.rate().max(link.delivered_rate(t));
+        // Measured only while data flows; an idle link keeps its last figure, and its age.
+        if std::mem::take(&mut link.acked_since_report) {
+            link.measured = Some((link.est.rate().max(link.delivered_rate(t)), t));
+        }
         let capacity = [
-            (measured > 0.0).then_some(measured),
+            link.measured.map(|(r, _)| r).filter(|r| *r > 0.0),
             link.share,
             sched
                 .data_budget()
@@ -1117,6 +1123,7 @@ impl Outbox {
             share_bps: link.share,
             in_flight_bytes: link.unacked_bytes(),
             capacity_bps: capacity,
+            measured_at: link.measured.map(|(_, at)| *origin + d(at)),
         })
     }
 

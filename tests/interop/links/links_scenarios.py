@@ -950,6 +950,13 @@ def scenario_interest(fleet, _nominal):
                      f"<= {IDLE_TARGET_BPS} B/s", after <= IDLE_TARGET_BPS))
         state = next((t.get("state") for t in fleet.hub_topics() if t["name"] == scan), None)
         rows.append((f"{scan} listed", f"{state} ({time.monotonic() - t_close:.1f} s after)", "idle", state == "idle"))
+        # Idle again, the link is not probed: the hub shows the estimate measured while
+        # the scan flowed, and its age.
+        st = fleet.robot_status() or {}
+        age = st.get("link_estimate_age_s")
+        rows.append(("link estimate once idle (GET /api/v1/robots)",
+                     f"capacity {st.get('capacity_bps')} B/s, measured {age} s ago",
+                     "measured while the scan flowed (< 30 s ago)", age is not None and 0 <= age < 30))
 
         # The heartbeat sets an idle link's cost (docs/config.md): the same robot at 5 s.
         before = (fleet.robot_status() or {}).get("connected_at_ms")
@@ -964,6 +971,10 @@ def scenario_interest(fleet, _nominal):
         tx5, rx5 = link_rates(fleet, 2 * IDLE_WINDOW_S)
         rows.append(("idle uplink, heartbeat 5 s", f"{tx5:.0f} B/s (downlink {rx5:.0f} B/s)",
                      f"< the 1 s heartbeat's {idle:.0f} B/s", tx5 < idle))
+        st = fleet.robot_status() or {}
+        rows.append(("link estimate of a robot idle since it connected",
+                     f"measured at {st.get('link_measured_at_ms')}", "never (null)",
+                     st.get("online") is True and st.get("link_measured_at_ms") is None))
     finally:
         for v in viewers:
             v.close()

@@ -14,7 +14,7 @@ import type { Rosbridge } from "../rosbridge";
 import { Chart, Series, Sparkline } from "./charts";
 import { CloudView } from "./cloud3d";
 import { configPanel } from "./config";
-import { bps, button, el, jsonTree, num } from "./dom";
+import { ago, bps, button, el, jsonTree, num } from "./dom";
 import { poseTopic } from "./fleet";
 import { MapView } from "./map2d";
 import { taskingPanel } from "./tasking";
@@ -314,6 +314,13 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     linkP.info.textContent = b
       ? ` · budget ${limits.join(" and ")}: using ${bps(b.use_bps)}${b.thinned.length ? `, thinning ${b.thinned.length} topic${b.thinned.length > 1 ? "s" : ""}` : ""}`
       : "";
+    // An idle link is not probed: say how old its capacity estimate is.
+    const age = me?.link_estimate_age_s;
+    if (me?.online && age != null && age >= 10) {
+      linkP.info.textContent += ` · capacity ${me.capacity_bps ? bps(me.capacity_bps) : "not known"}, measured ${ago(Date.now() - age * 1000)} (idle since)`;
+    } else if (me?.online && age == null) {
+      linkP.info.textContent += " · link capacity not measured with data yet";
+    }
     // Its mirrors in the cloud, and whether the link carries what their nodes read.
     const mirrors = me?.mirrors ?? [];
     linkP.info.textContent += mirrors

@@ -346,11 +346,13 @@ impl RobotLink {
                 rate_bps,
                 latency_ns,
                 capacity_bps,
+                measured_at_ms,
             }) => {
                 self.live.demand_bps.store(demand_bps, Relaxed);
                 self.live.rate_bps.store(rate_bps, Relaxed);
                 self.live.latency_ns.store(latency_ns, Relaxed);
                 self.live.capacity_bps.store(capacity_bps, Relaxed);
+                self.live.measured_at_ms.store(measured_at_ms, Relaxed);
             }
             LinkEvent::Control(Frame::TopicLoad { topics }) => {
                 let at_ns = fleetlink_relay::unix_nanos();

@@ -89,11 +89,13 @@ async fn robots(
     let live = st.registry.list();
     let topics = st.router.topics();
     let mut out: Vec<Value> = Vec::new();
+    let now_ms = fleetlink_relay::unix_nanos() / 1_000_000;
     for r in &live {
         let own = robot_topics(&mut access, &topics, &r.name);
         if own.is_empty() && !namespace_visible(&mut access, &r.name) {
             continue;
         }
+        let measured_at = r.measured_at_ms.load(std::sync::atomic::Ordering::Relaxed);
         out.push(json!({
                 "name": r.name,
                 "online": true,
@@ -111,6 +113,11 @@ async fn robots(
                 "latency_ms": r.latency_ns.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6,
                 // What the robot may send now (share, budget and the link's measured rate).
                 "capacity_bps": nonzero(r.capacity_bps.load(std::sync::atomic::Ordering::Relaxed)),
+                // When the link's rate was last measured with data on it, and how long ago:
+                // an idle link is not probed, so its estimate is as old as its traffic.
+                "link_measured_at_ms": nonzero(measured_at),
+                "link_estimate_age_s": (measured_at > 0)
+                    .then(|| now_ms.saturating_sub(measured_at) as f64 / 1e3),
                 "clock_offset_ms": r.clock_offset_ns().map(|o| o as f64 / 1e6),
                 // The robot's data budget, as its agent last reported it.
                 "budget": r.budget.lock().unwrap_or_else(|p| p.into_inner()).as_ref().map(|b| json!({

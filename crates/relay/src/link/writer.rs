@@ -171,14 +171,25 @@ pub async fn write_link<K>(
     // The outbox batch, kept across rounds so a busy writer does not allocate one per round.
     let mut items: Vec<crate::outbox::Taken> = Vec::new();
     let mut held: Vec<Arc<crate::Message>> = Vec::new();
+    // What the wait at the end of a round received from `control` (`Some(None)`: closed),
+    // handled first in the next round like everything else `control` holds.
+    let mut received: Option<Option<Control>> = None;
     loop {
         // 1. Control frames first: they are small and often answers the peer waits for.
         loop {
-            match control.try_recv() {
-                Ok(Control::Frame(f)) => f.encode(&mut buf),
-                Ok(Control::Sequence(s)) => sequences.push_back(s),
-                Ok(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
-                Ok(Control::Announce { meta, encoding }) => {
+            let c = match received.take() {
+                Some(c) => c,
+                None => match control.try_recv() {
+                    Ok(c) => Some(c),
+                    Err(mpsc::error::TryRecvError::Disconnected) => None,
+                    Err(mpsc::error::TryRecvError::Empty) => break,
+                },
+            };
+            match c {
+                Some(Control::Frame(f)) => f.encode(&mut buf),
+                Some(Control::Sequence(s)) => sequences.push_back(s),
+                Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
+                Some(Control::Announce { meta, encoding }) => {
                     announce_before_messages(
                         &mut buf,
                         &mut advertised,
@@ -190,16 +201,13 @@ pub async fn write_link<K>(
                         &mut via,
                     );
                 }
-                Ok(Control::Pong(p)) => {
+                Some(Control::Pong(p)) => {
                     if pong(&mut sink, &mut buf, p).await.is_err() {
                         return;
                     }
                 }
-                Ok(Control::Close(frame)) => return finish(&mut sink, &mut buf, frame).await,
-                Err(mpsc::error::TryRecvError::Disconnected) => {
-                    return finish(&mut sink, &mut buf, None).await;
-                }
-                Err(mpsc::error::TryRecvError::Empty) => break,
+                Some(Control::Close(frame)) => return finish(&mut sink, &mut buf, frame).await,
+                None => return finish(&mut sink, &mut buf, None).await,
             }
         }
         // Echo probes of a scheduled outbox's link estimator.
@@ -427,30 +435,7 @@ pub async fn write_link<K>(
             wake = Some(wake.map_or(at, |w| w.min(at)));
         }
         tokio::select! {
-            c = control.recv() => match c {
-                Some(Control::Frame(f)) => f.encode(&mut buf),
-                Some(Control::Sequence(s)) => sequences.push_back(s),
-                Some(Control::Unadvertise { topic, since }) => unadvertise.push((topic, since)),
-                Some(Control::Announce { meta, encoding }) => {
-                    announce_before_messages(
-                        &mut buf,
-                        &mut advertised,
-                        &mut gate,
-                        &meta,
-                        encoding,
-                        &namer,
-                        &outbox,
-                        &mut via,
-                    );
-                }
-                Some(Control::Pong(p)) => {
-                    if pong(&mut sink, &mut buf, p).await.is_err() {
-                        return;
-                    }
-                }
-                Some(Control::Close(frame)) => return finish(&mut sink, &mut buf, frame).await,
-                None => return finish(&mut sink, &mut buf, None).await,
-            },
+            c = control.recv() => received = Some(c),
             _ = outbox.ready() => {}
             _ = sleep_until(wake) => {}
         }

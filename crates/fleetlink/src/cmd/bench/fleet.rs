@@ -105,9 +105,11 @@ pub struct Args {
     /// answers the rest 503; those retry with backoff).
     #[arg(long, default_value_t = 1024)]
     pub connect_concurrency: usize,
-    /// Milliseconds between a robot's pings: the agent's link estimator sends an echo
-    /// probe every 200 ms besides its heartbeat ping, and so do these robots by default.
-    /// 0: heartbeat pings only.
+    /// Milliseconds between a robot's pings while it publishes: the agent's link
+    /// estimator sends an echo probe every 200 ms besides its heartbeat ping while data
+    /// waits or is unacknowledged, and so do these robots while their schedule runs. An
+    /// idle agent pings at its heartbeat only, and so do these robots before and after
+    /// their schedule (and throughout with `--rate 0`). 0: heartbeat pings only.
     #[arg(long, default_value_t = 200)]
     pub probe_ms: u64,
     /// Queue length the subscribers ask the hub for (0: the hub's default).
@@ -599,7 +601,9 @@ async fn robot(
             return;
         }
     };
-    let heartbeat = heartbeat_of(&c).min(plan.probe.unwrap_or(Duration::MAX));
+    let heartbeat = heartbeat_of(&c);
+    // While it publishes, a robot pings as often as the agent's estimator probes.
+    let busy_ping = heartbeat.min(plan.probe.unwrap_or(Duration::MAX));
     let mut r = Robot {
         ws: c.ws,
         link: c.link,
@@ -645,6 +649,11 @@ async fn robot(
             Phase::Publish(s) => next_msg.is_none() || Instant::now() >= s.end,
             Phase::Done => true,
             Phase::Wait => false,
+        };
+        r.keepalive = if next_msg.is_some() {
+            busy_ping
+        } else {
+            heartbeat
         };
         if !reported && over {
             // The schedule is over (or there was none): report, keep the link up.
