@@ -13,6 +13,7 @@
 # LOADED_MAX (default 1000): sizes above it are measured idle only, with a loaded run at
 # LOADED_RATE_BIG Hz (default 1) instead, since N x TOPICS x RATE is more than two cores
 # can generate and relay beyond about 100k msg/s; HEARTBEAT_MS (default: the hub's 1000);
+# IDLE_S (default 5): seconds the connected fleet is measured idle before the load;
 # PROBE_MS (default 200, as the agent's link estimator probes while data waits: robots ping
 # this often while they publish, at their heartbeat when idle; 0: heartbeat pings only).
 # Pose subscribers: one per robot up to 1,000 (the first 1,000 robots' beyond that: two
@@ -88,7 +89,7 @@ run() { # robots rate subscribers wildcard(0|1)
     FLEETLINK_SUBSCRIBER_TOKEN="$token" "$bin" bench fleet --hub "$addr" --hub-pid "$hub_pid" \
         --robots "$1" --topics "$topics" --rate "$2" --size "$size" --subscribers "$3" \
         --probe-ms "${PROBE_MS:-200}" \
-        "${wild[@]}" --duration "$seconds" --idle 5 --json 2>"$tmp/bench.err" | tee -a "$out" ||
+        "${wild[@]}" --duration "$seconds" --idle "${IDLE_S:-5}" --json 2>"$tmp/bench.err" | tee -a "$out" ||
         { tail -5 "$tmp/bench.err" >&2; return 1; }
 }
 

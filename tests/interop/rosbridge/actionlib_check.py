@@ -102,6 +102,11 @@ def main():
         while not ended() and time.monotonic() < deadline:
             time.sleep(0.05)
         check(ended(), f"the client saw the goal PREEMPTED (status {goal.status})")
+        # The status listener is a subscription of its own: its first array may come after
+        # the client's (bounded wait, not a sleep).
+        deadline = time.monotonic() + TIMEOUT
+        while not statuses and time.monotonic() < deadline:
+            time.sleep(0.05)
         header = statuses[-1]["header"] if statuses else {}
         check("seq" in header and set(header.get("stamp", {})) == {"secs", "nsecs"},
               f"the status array's header as ROS 1 has it ({header})")
