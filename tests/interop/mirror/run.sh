@@ -146,7 +146,15 @@ for _ in $(seq 100); do [ "$(scan_field 't["state"]')" = flowing ] && break; sle
 m0="$(scan_field 't["messages"]')"; t0=$(date +%s.%N)
 sleep 2
 m1="$(scan_field 't["messages"]')"; t1=$(date +%s.%N)
-subs="$(scan_field 'sorted(t["subscribers"])')"
+# The listing is read until it shows the robot's link and the mirror (bounded, 5 s): in two
+# full runs of the test command it once lacked one of them right after the rate was
+# measured, while the scan flowed to the mirror (not understood yet, docs/testing.md).
+for _ in $(seq 50); do
+    subs="$(scan_field 'sorted(t["subscribers"])')"
+    [ "$subs" = "['/robot1', '/robot1_mirror']" ] && break
+    echo "note: /robot1/scan's subscribers at the hub: $subs; $(hub_topic /robot1/scan | head -c 600)"
+    sleep 0.1
+done
 wait "$cloud_pid" || fail "the cloud nodes ended with an error: $(tail -n 5 "$tmp/cloud.log")"
 touch "$tmp/robot_got.json.stop"
 wait "$listen_pid" || fail "the robot's /map reader ended with an error: $(tail -n 5 "$tmp/robot-listen.log")"
