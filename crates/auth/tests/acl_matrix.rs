@@ -151,6 +151,8 @@ fn rule_edit_by_another_process_is_picked_up_by_polling() {
     .unwrap();
     let mut alice = hub.access(user_id("alice", &[], "203.0.113.5"));
     assert!(!alice.allows("/r1/scan", Subscribe));
+    let mut told = alice.watch_rules();
+    assert!(!told.has_changed().unwrap());
 
     // `fleetlink admin` writes the same file through its own connection.
     let cli = fleetlink_auth::Store::open(&path).unwrap();
@@ -159,7 +161,17 @@ fn rule_edit_by_another_process_is_picked_up_by_polling() {
     cli.add_rule(&rules[0], T0).unwrap();
 
     assert!(hub.reload_rules_if_changed().unwrap());
+    // Sessions that show what is allowed are told (a viewer's channel list).
+    assert!(
+        told.has_changed().unwrap(),
+        "a reload wakes the rules' watchers"
+    );
+    told.mark_unchanged();
     assert!(!hub.reload_rules_if_changed().unwrap());
+    assert!(
+        !told.has_changed().unwrap(),
+        "nothing changed, nobody woken"
+    );
     assert!(alice.allows("/r1/scan", Subscribe));
 }
 

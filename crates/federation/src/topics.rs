@@ -47,9 +47,6 @@ use crate::inlet::Inlet;
 use crate::keys::{self, MessageHeader, Offer};
 use crate::{ExportFigures, FederationError, ImportFigures, Shared, zerr};
 
-/// How often the robots online are compared with what was offered.
-const ROBOTS_EVERY: Duration = Duration::from_millis(250);
-
 /// Tokens kept per hub not admitted yet (its links' certificates not seen yet): a hub
 /// joining offers its whole catalog at once; beyond this it is offering too much to be one.
 const PARKED_PER_HUB: usize = 100_000;
@@ -215,9 +212,10 @@ impl Topics {
         );
         let mut admitted = self.shared.admission.subscribe();
         let work = async {
-            let mut robots_gen = u64::MAX;
-            let mut tick = tokio::time::interval(ROBOTS_EVERY);
-            tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+            // The robots online are compared with what was offered whenever they change
+            // (and once at the start).
+            let mut robots = registry.watch();
+            robots.mark_changed();
             loop {
                 tokio::select! {
                     _ = stop.cancelled() => break,
@@ -244,12 +242,8 @@ impl Topics {
                             self.evaluate(&name).await;
                         }
                     }
-                    _ = tick.tick() => {
-                        let generation = registry.generation();
-                        if generation != robots_gen {
-                            robots_gen = generation;
-                            self.sync_robots(&registry).await;
-                        }
+                    Ok(()) = robots.changed() => {
+                        self.sync_robots(&registry).await;
                     }
                 }
             }

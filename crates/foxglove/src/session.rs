@@ -69,10 +69,16 @@ impl Default for SessionConfig {
     }
 }
 
-/// How often a session looks at every topic again, so that a change of the access rules
-/// shows in its channels (a topic newly allowed appears, one no longer allowed goes);
-/// deliveries follow a rule change at once anyway, as the writer asks for every message.
-const RULES_RECHECK: std::time::Duration = std::time::Duration::from_secs(5);
+/// The next change of the rules, if they can change; a closed watch (the hub going
+/// away) is never ready again.
+async fn rules_changed(rules: &mut Option<tokio::sync::watch::Receiver<u64>>) -> Option<()> {
+    if let Some(r) = rules
+        && r.changed().await.is_ok()
+    {
+        return Some(());
+    }
+    std::future::pending().await
+}
 
 /// Replies the reader hands to the writer. Bounded: a client that floods bad requests
 /// without reading the answers is slowed down (its reader waits), nobody else is.
@@ -136,9 +142,10 @@ pub async fn serve<K, S>(
     let cancelled = shutdown.cancelled();
     tokio::pin!(cancelled);
     let mut calls_open = true;
-    let mut recheck = tokio::time::interval(RULES_RECHECK);
-    recheck.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
-    recheck.reset();
+    // A change of the access rules shows in the channels as soon as it is made (a topic
+    // newly allowed appears, one no longer allowed goes); deliveries follow it anyway, as
+    // the writer asks for every message.
+    let mut rules = s.gate.as_ref().and_then(|g| g.rules_changed());
     // Set when the client showed no progress for the silence limit: how long. Every step
     // that may wait on the client (a full reply queue) is raced against that.
     let mut gone = None;
@@ -158,7 +165,7 @@ pub async fn serve<K, S>(
                 let changed = watch.take();
                 live.race(s.sync_channels(changed)).await.map(|()| true)
             }
-            _ = recheck.tick() => live.race(s.recheck_rules()).await.map(|()| true),
+            Some(()) = rules_changed(&mut rules) => live.race(s.recheck_rules()).await.map(|()| true),
             f = stream.next() => {
                 let Some(f) = f else { break };
                 live.read();

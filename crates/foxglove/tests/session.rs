@@ -309,15 +309,31 @@ async fn a_robot_s_parameter_is_read_from_the_robot_and_a_hub_parameter_from_the
     shutdown.cancel();
 }
 
-/// A gate whose one rule (may the client see `/r1/secret`?) a test flips.
-struct Switch(Arc<std::sync::atomic::AtomicBool>);
+/// A gate whose one rule (may the client see `/r1/secret`?) a test flips, telling its
+/// sessions as the hub's rules do.
+#[derive(Clone)]
+struct Switch {
+    allowed: Arc<std::sync::atomic::AtomicBool>,
+    changed: Arc<tokio::sync::watch::Sender<u64>>,
+}
+
+impl Switch {
+    fn set(&self, allowed: bool) {
+        self.allowed
+            .store(allowed, std::sync::atomic::Ordering::Relaxed);
+        self.changed.send_modify(|g| *g += 1);
+    }
+}
 
 impl fleetlink_relay::gate::Gate for Switch {
     fn allows(&mut self, name: &str, _op: fleetlink_relay::gate::Op) -> bool {
-        name != "/r1/secret" || self.0.load(std::sync::atomic::Ordering::Relaxed)
+        name != "/r1/secret" || self.allowed.load(std::sync::atomic::Ordering::Relaxed)
     }
     fn fork(&self) -> Box<dyn fleetlink_relay::gate::Gate> {
-        Box::new(Switch(self.0.clone()))
+        Box::new(self.clone())
+    }
+    fn rules_changed(&self) -> Option<tokio::sync::watch::Receiver<u64>> {
+        Some(self.changed.subscribe())
     }
     fn principal(&self) -> String {
         "user:test".into()
@@ -335,11 +351,14 @@ async fn a_rule_change_shows_in_the_channels() {
             .advertise(robot, &name, Schema::named("std_msgs/msg/String"), false)
             .unwrap();
     }
-    let allowed = Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let switch = Switch {
+        allowed: Arc::default(),
+        changed: Arc::new(tokio::sync::watch::Sender::new(0)),
+    };
     let (cs, ss) = tokio::io::duplex(1 << 20);
     let (sink, stream) = websocket::server(ss, 1 << 20);
     let auth = SessionAuth {
-        gate: Some(Box::new(Switch(allowed.clone()))),
+        gate: Some(Box::new(switch.clone())),
         guard: None,
     };
     tokio::spawn(serve(
@@ -362,14 +381,18 @@ async fn a_rule_change_shows_in_the_channels() {
     };
     let first = next_op(&mut c, "advertise").await;
     assert_eq!(topics(&first), vec!["/r1/open"]);
-    // Allowed now: the channel appears at the next look at the rules.
-    allowed.store(true, std::sync::atomic::Ordering::Relaxed);
-    let more = next_op(&mut c, "advertise").await;
+    // Allowed now: the channel appears as the rules change, without a timer.
+    switch.set(true);
+    let more = tokio::time::timeout(Duration::from_millis(100), next_op(&mut c, "advertise"))
+        .await
+        .expect("the channel appears at once");
     assert_eq!(topics(&more), vec!["/r1/secret"]);
     let id = more["channels"][0]["id"].clone();
     // Refused again: it goes.
-    allowed.store(false, std::sync::atomic::Ordering::Relaxed);
-    let gone = next_op(&mut c, "unadvertise").await;
+    switch.set(false);
+    let gone = tokio::time::timeout(Duration::from_millis(100), next_op(&mut c, "unadvertise"))
+        .await
+        .expect("the channel goes at once");
     assert_eq!(gone["channelIds"], json!([id]));
     shutdown.cancel();
 }

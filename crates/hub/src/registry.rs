@@ -187,9 +187,9 @@ pub struct Registry {
     /// Mirrors online, by their own names (a robot's list and checks do not see them).
     mirrors: Mutex<HashMap<String, Arc<LiveRobot>>>,
     next_session: AtomicU64,
-    /// Bumped whenever a robot comes or goes, so callers can cache [`Registry::is_online`]
-    /// answers between changes.
-    changes: AtomicU64,
+    /// Bumped whenever a robot comes or goes; watchers ([`Registry::watch`]) are woken by
+    /// it instead of polling the list.
+    changes: tokio::sync::watch::Sender<u64>,
 }
 
 impl Registry {
@@ -214,8 +214,10 @@ impl Registry {
     /// The caller ends that entry's session.
     pub fn insert(&self, robot: Arc<LiveRobot>) -> Option<Arc<LiveRobot>> {
         let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
-        self.changes.fetch_add(1, Relaxed);
-        m.insert(robot.name.clone(), robot)
+        let old = m.insert(robot.name.clone(), robot);
+        drop(m);
+        self.changed();
+        old
     }
 
     /// Lists a mirror as online; returns the entry of the same name it replaces.
@@ -246,7 +248,17 @@ impl Registry {
 
     /// Changes whenever the set of robots online changes.
     pub fn generation(&self) -> u64 {
-        self.changes.load(Relaxed)
+        *self.changes.borrow()
+    }
+
+    /// Wakes its holder whenever the set of robots online changes (several changes in a
+    /// row may wake it once).
+    pub fn watch(&self) -> tokio::sync::watch::Receiver<u64> {
+        self.changes.subscribe()
+    }
+
+    fn changed(&self) {
+        self.changes.send_modify(|g| *g += 1);
     }
 
     /// Whether a robot of this name is connected now.
@@ -262,7 +274,8 @@ impl Registry {
         let mut m = self.robots.lock().unwrap_or_else(|p| p.into_inner());
         if m.get(name).is_some_and(|r| r.session == session) {
             m.remove(name);
-            self.changes.fetch_add(1, Relaxed);
+            drop(m);
+            self.changed();
         }
     }
 }

@@ -296,6 +296,10 @@ impl Gate for HubGate {
         self.security.audit.record(rec);
     }
 
+    fn rules_changed(&self) -> Option<tokio::sync::watch::Receiver<u64>> {
+        Some(self.access.watch_rules())
+    }
+
     fn fork(&self) -> Box<dyn Gate> {
         Box::new(HubGate {
             access: self.access.clone(),

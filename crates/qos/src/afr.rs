@@ -15,7 +15,8 @@
 //! O(L) moves. Here the queue is two rings — `thinned` holds positions `0..p` (already
 //! thinned in this pass), `rest` holds positions `p..` — so position `p` is always
 //! `rest.front()` and every step is O(1): one pop, one move, or an O(1) swap when a pass
-//! ends. Items are moved, never cloned, and both rings keep their capacity.
+//! ends. Items are moved, never cloned; the rings grow as messages wait and let a large
+//! buffer go once drained (as [`crate::TopicQueue`] does).
 
 use std::collections::VecDeque;
 
@@ -45,8 +46,8 @@ impl<T> Afr<T> {
     pub fn new(capacity: usize) -> Self {
         let capacity = capacity.max(1);
         Afr {
-            thinned: VecDeque::with_capacity(capacity),
-            rest: VecDeque::with_capacity(capacity),
+            thinned: VecDeque::new(),
+            rest: VecDeque::new(),
             capacity,
             rate: 1,
             counter: 0,
@@ -118,7 +119,15 @@ impl<T> Afr<T> {
 
     /// Takes the head (oldest) message; moves `p` back by one as the queue shifts.
     pub fn pop(&mut self) -> Option<T> {
-        self.thinned.pop_front().or_else(|| self.rest.pop_front())
+        let item = self.thinned.pop_front().or_else(|| self.rest.pop_front());
+        crate::queue::release_if_drained(&mut self.thinned);
+        crate::queue::release_if_drained(&mut self.rest);
+        item
+    }
+
+    /// Room held for items now (both rings), not the bound.
+    pub fn reserved(&self) -> usize {
+        self.thinned.capacity() + self.rest.capacity()
     }
 
     /// Queued messages, head first.

@@ -6,6 +6,12 @@
 //! item that did not make it, so the caller counts it by [`DropReason`] and no message
 //! disappears silently. Items are moved, never cloned (the hub queues `Arc<Message>`).
 //! The policies are an enum, not trait objects: one predictable branch per message.
+//!
+//! Memory follows what is queued, not the bound: a queue starts empty and grows as items
+//! wait, and once a backlog has drained it lets a large buffer go
+//! ([`KEEP_EMPTY_CAPACITY`]). A hub holds one queue per subscriber and topic, most of
+//! them empty most of the time: with the default bound of 1,000 messages, reserving the
+//! bound up front cost 8 kB per subscription before anything was sent.
 
 use std::collections::VecDeque;
 
@@ -75,6 +81,17 @@ pub struct TopicQueue<T> {
     limiter: Option<RateLimiter>,
 }
 
+/// Items an empty queue keeps room for; a larger buffer, left by a backlog, is let go
+/// when the backlog has drained, so an idle subscription holds little.
+pub const KEEP_EMPTY_CAPACITY: usize = 32;
+
+/// Lets a drained ring's large buffer go.
+pub(crate) fn release_if_drained<T>(ring: &mut VecDeque<T>) {
+    if ring.is_empty() && ring.capacity() > KEEP_EMPTY_CAPACITY {
+        *ring = VecDeque::new();
+    }
+}
+
 /// Seed of the `random` policy when the caller does not choose one.
 pub const DEFAULT_RANDOM_SEED: u64 = 0x5EED_F1EE_71A2_0001;
 
@@ -93,12 +110,10 @@ impl<T> TopicQueue<T> {
             qos.queue.max(1)
         };
         let store = match qos.policy {
-            Policy::Fifo | Policy::DropOldest | Policy::DropNewest => {
-                Store::Ring(VecDeque::with_capacity(capacity))
-            }
+            Policy::Fifo | Policy::DropOldest | Policy::DropNewest => Store::Ring(VecDeque::new()),
             Policy::Latest => Store::Latest(None),
             Policy::Random => Store::Random {
-                ring: VecDeque::with_capacity(capacity),
+                ring: VecDeque::new(),
                 rng: SplitMix64::new(seed),
             },
             Policy::Afr => Store::Afr(Afr::new(capacity)),
@@ -200,9 +215,22 @@ impl<T> TopicQueue<T> {
     /// future time-based policies; no policy here depends on it.
     pub fn pop(&mut self, _now: Nanos) -> Option<T> {
         match &mut self.store {
-            Store::Ring(r) | Store::Random { ring: r, .. } => r.pop_front(),
+            Store::Ring(r) | Store::Random { ring: r, .. } => {
+                let item = r.pop_front();
+                release_if_drained(r);
+                item
+            }
             Store::Latest(slot) => slot.take(),
             Store::Afr(a) => a.pop(),
+        }
+    }
+
+    /// Room held for items now (not the bound): what the queue costs in memory.
+    pub fn reserved(&self) -> usize {
+        match &self.store {
+            Store::Ring(r) | Store::Random { ring: r, .. } => r.capacity(),
+            Store::Latest(_) => 1,
+            Store::Afr(a) => a.reserved(),
         }
     }
 }
@@ -210,6 +238,36 @@ impl<T> TopicQueue<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn memory_follows_what_waits_not_the_bound() {
+        for policy in [
+            Policy::DropOldest,
+            Policy::Fifo,
+            Policy::Random,
+            Policy::Afr,
+        ] {
+            let mut q = q(policy, 1000);
+            assert_eq!(
+                q.reserved(),
+                0,
+                "{policy:?}: nothing reserved before a push"
+            );
+            for m in 0..600 {
+                let _ = q.push(m, Nanos::ZERO);
+            }
+            assert!(q.reserved() >= 600, "{policy:?}: a backlog has its room");
+            while q.pop(Nanos::ZERO).is_some() {}
+            assert!(
+                q.reserved() <= KEEP_EMPTY_CAPACITY,
+                "{policy:?}: a drained queue keeps {} slots",
+                q.reserved()
+            );
+            // It still works after letting go.
+            assert_eq!(q.push(7, Nanos::ZERO), Push::Queued);
+            assert_eq!(q.pop(Nanos::ZERO), Some(7));
+        }
+    }
 
     fn q(policy: Policy, queue: usize) -> TopicQueue<u32> {
         TopicQueue::new(&TopicQos {

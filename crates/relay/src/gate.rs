@@ -49,6 +49,11 @@ pub trait Gate: Send + Sync + 'static {
 
     /// A second gate for the same identity (the session's writer task gets one).
     fn fork(&self) -> Box<dyn Gate>;
+    /// Wakes when the rules behind this gate's answers may have changed, for sessions
+    /// that show what is allowed (a viewer's channel list). `None`: they never change.
+    fn rules_changed(&self) -> Option<tokio::sync::watch::Receiver<u64>> {
+        None
+    }
 
     /// Who this is, for messages (`user:alice`, `robot:r1`, `anonymous`).
     fn principal(&self) -> String;

@@ -118,6 +118,9 @@ pub struct Authorizer {
     rules: ArcSwap<RuleSet>,
     generation: AtomicU64,
     defaults: AclDefaults,
+    /// The generation installed last, for sessions that act on a change (a viewer's
+    /// channel list) instead of asking again on a timer.
+    changed: tokio::sync::watch::Sender<u64>,
     // std Mutex: serialises the rare writers so generations are installed in order;
     // never held across an await (there is none) and never taken by readers.
     writer: Mutex<()>,
@@ -132,6 +135,7 @@ impl Authorizer {
             }),
             generation: AtomicU64::new(0),
             defaults,
+            changed: tokio::sync::watch::Sender::new(0),
             writer: Mutex::new(()),
         }
     }
@@ -147,6 +151,12 @@ impl Authorizer {
             rules: rules.into(),
         }));
         self.generation.store(generation, Ordering::Release);
+        self.changed.send_replace(generation);
+    }
+
+    /// Wakes its holder whenever a new rule set is installed.
+    pub fn watch(&self) -> tokio::sync::watch::Receiver<u64> {
+        self.changed.subscribe()
     }
 
     pub fn generation(&self) -> u64 {
@@ -293,6 +303,11 @@ pub struct Access {
 impl Access {
     pub fn identity(&self) -> &Identity {
         &self.identity
+    }
+
+    /// Wakes its holder whenever the rules change ([`Authorizer::watch`]).
+    pub fn watch_rules(&self) -> tokio::sync::watch::Receiver<u64> {
+        self.authz.watch()
     }
 
     /// The rules' generation now: a decision cached by a caller stays true while this

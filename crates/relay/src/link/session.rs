@@ -625,7 +625,7 @@ impl LinkSession {
         match self.phase {
             Phase::AwaitHello(d) | Phase::Authenticating(d) | Phase::AwaitWelcome(d) => Some(d),
             Phase::Open => {
-                let mut t = (self.last_rx + self.dead_after()).min(self.next_ping);
+                let mut t = (self.last_rx + self.dead_after()).min(self.heartbeat_due());
                 if let Some(r) = self.next_report {
                     t = t.min(r);
                 }
@@ -666,6 +666,13 @@ impl LinkSession {
                     // An acknowledgement still waiting goes with the heartbeat at the
                     // latest (or on its own, when the hub leaves out its ping).
                     self.tx.ack_since = None;
+                    // Heartbeats that passed while the hub slept through them
+                    // (`heartbeat_due`) were each one it could leave out.
+                    let hb = self.heartbeat.as_nanos().max(1);
+                    let slept = (now - self.next_ping).as_nanos() / hb;
+                    self.pings_skipped = self
+                        .pings_skipped
+                        .saturating_add(u32::try_from(slept).unwrap_or(u32::MAX));
                     if self.skip_ping(now) {
                         self.pings_skipped += 1;
                     } else {
@@ -779,6 +786,26 @@ impl LinkSession {
             && self
                 .peer_pinged
                 .is_some_and(|at| now.saturating_duration_since(at) < self.heartbeat)
+    }
+
+    /// When the heartbeat timer must next run. The agent pings every heartbeat. The hub,
+    /// while the peer pings ([`LinkSession::skip_ping`]) and no acknowledgement waits to go
+    /// with a heartbeat, would only leave its pings out: it sleeps through them until its
+    /// every-[`HUB_PING_EVERY`]th ping or until the peer has been quiet a heartbeat,
+    /// whichever comes first. Each ping the peer sends wakes the hub anyway (it answers
+    /// it), and this is asked again then; so an idle robot's link wakes the hub once a
+    /// heartbeat, not twice.
+    fn heartbeat_due(&self) -> Instant {
+        let Some(pinged) = self.peer_pinged else {
+            return self.next_ping;
+        };
+        if self.role != Role::Hub || self.tx.ack_since.is_some() {
+            return self.next_ping;
+        }
+        let skips_left = HUB_PING_EVERY.saturating_sub(self.pings_skipped + 1);
+        let own_ping = self.next_ping + self.heartbeat * skips_left;
+        let peer_quiet = pinged + self.heartbeat;
+        self.next_ping.max(own_ping.min(peer_quiet))
     }
 
     fn open(

@@ -136,6 +136,8 @@ struct Side {
     /// Hub-side accounting of statuses received from the peer, etc.
     statuses_in: Vec<String>,
     messages_in: u64,
+    /// Times the session's timer came due and ran.
+    timer_runs: u64,
 }
 
 impl Side {
@@ -156,6 +158,7 @@ impl Side {
             last_rx: None,
             statuses_in: Vec::new(),
             messages_in: 0,
+            timer_runs: 0,
         }
     }
 
@@ -171,6 +174,7 @@ impl Side {
             }
         }
         if self.session.poll_timeout().is_some_and(|t| now >= t) {
+            self.timer_runs += 1;
             self.session.handle_timeout(now);
         }
         while let Some(ev) = self.session.poll_event() {
@@ -660,6 +664,7 @@ fn a_slow_lossy_link_under_load_is_never_declared_dead() {
 fn an_idle_link_stays_up_on_heartbeats_alone() {
     let mut p = Pair::new(Duration::from_millis(300));
     p.open();
+    let hub_timer_before = p.hub.timer_runs;
     let end = p.now + Duration::from_secs(60);
     p.run_until(end, |_| {});
     assert!(p.hub.closed.is_none() && p.agent.closed.is_none());
@@ -676,6 +681,13 @@ fn an_idle_link_stays_up_on_heartbeats_alone() {
     assert!(
         (60 / every - 1..=60 / every + 1).contains(&hub_pings),
         "hub pinged {hub_pings} times in 60 s"
+    );
+    // The hub's timer runs for its own pings only, not at every heartbeat it leaves out
+    // (the agent's pings wake it to answer them anyway).
+    let hub_timer = p.hub.timer_runs - hub_timer_before;
+    assert!(
+        hub_timer <= 60 / every + 2,
+        "the hub's timer ran {hub_timer} times in 60 s"
     );
     // And a cut of an idle link is found the same way.
     p.cut = true;

@@ -15,7 +15,10 @@
 //!
 //! - The reader reads up to [`READ_CHUNK`] bytes per system call and returns every whole
 //!   message already in its buffer without touching the socket; payloads are slices of
-//!   that buffer, unmasked in place ([`frames::Decoder`]).
+//!   that buffer, unmasked in place ([`frames::Decoder`]). Its reads grow from
+//!   [`FIRST_READ`] while they fill the room given and shrink back while they come small,
+//!   so a busy connection reads in large chunks and an idle one (a robot's heartbeats)
+//!   holds a page instead of 64 kB.
 //! - The writer gathers frames in one buffer and writes them with one (vectored) call per
 //!   flush. Payloads over [`COPY_UP_TO`] bytes are not copied but queued as they are.
 //! - Control frames are not answered here: a `Ping` comes out of the reader for the
@@ -55,9 +58,8 @@ use frames::Decoder;
 /// Bytes the reader asks the socket for at most per read, and the writer's fill level at
 /// which it writes before taking more.
 pub const READ_CHUNK: usize = 64 << 10;
-/// The reader reads again into the free part of its buffer while that is at least this
-/// large; below it, it makes room for a whole [`READ_CHUNK`].
-const MIN_SPARE: usize = 16 << 10;
+/// Room a new reader's first read is given, and the least it comes down to.
+pub const FIRST_READ: usize = 4 << 10;
 /// Payloads up to this size are copied into the writer's buffer; larger ones are queued
 /// as they are and written from where they lie.
 pub const COPY_UP_TO: usize = 16 << 10;
@@ -128,6 +130,9 @@ where
 pub struct Reader<R> {
     io: R,
     buf: BytesMut,
+    /// Room given to the next read: doubled (up to [`READ_CHUNK`]) when a read filled it,
+    /// halved (down to [`FIRST_READ`]) when one used under an eighth of it.
+    chunk: usize,
     decoder: Decoder,
     /// A `Close`, an error or the end of the stream was returned: nothing more comes.
     done: bool,
@@ -139,6 +144,7 @@ impl<R> Reader<R> {
         Reader {
             io,
             buf: BytesMut::new(),
+            chunk: FIRST_READ,
             decoder: Decoder::new(max_message),
             done: false,
         }
@@ -171,19 +177,31 @@ impl<R: AsyncRead + Unpin> Stream for Reader<R> {
                     return Poll::Ready(Some(Err(e)));
                 }
             }
-            // Room for the rest of the next frame, and for a good read.
+            // Room for the rest of the next frame, and for a good read. A large buffer
+            // left by a burst is let go once everything in it was taken.
+            if this.buf.is_empty() && this.buf.capacity() > 2 * this.chunk {
+                this.buf = BytesMut::new();
+            }
             let rest = this
                 .decoder
                 .wanted(&this.buf)
                 .map_or(0, |w| w.saturating_sub(this.buf.len()));
-            if this.buf.capacity() - this.buf.len() < rest.max(MIN_SPARE) {
-                this.buf.reserve(rest.max(READ_CHUNK));
+            if this.buf.capacity() - this.buf.len() < rest.max(this.chunk / 4) {
+                this.buf.reserve(rest.max(this.chunk));
             }
+            let room = this.buf.capacity() - this.buf.len();
             let read = ready!(tokio_util::io::poll_read_buf(
                 Pin::new(&mut this.io),
                 cx,
                 &mut this.buf
             ));
+            if let Ok(n) = read {
+                if n >= room {
+                    this.chunk = (this.chunk * 2).min(READ_CHUNK);
+                } else if n < this.chunk / 8 {
+                    this.chunk = (this.chunk / 2).max(FIRST_READ);
+                }
+            }
             match read {
                 Ok(0) => {
                     this.done = true;

@@ -236,3 +236,46 @@ async fn a_binary_message_in_two_parts_arrives_as_one_whether_its_body_is_copied
         );
     }
 }
+
+#[tokio::test]
+async fn an_idle_reader_holds_a_page_and_a_busy_one_reads_large() {
+    let (mut client, (_w, mut reader)) = pair(4 << 20).await;
+    client.send(WsMessage::binary(vec![1u8; 20])).await.unwrap();
+    assert!(matches!(
+        next(&mut reader).await,
+        Ok(ClientMessage::Binary(_))
+    ));
+    assert!(
+        reader.buf.capacity() <= 2 * FIRST_READ,
+        "a heartbeat-sized read holds {} bytes",
+        reader.buf.capacity()
+    );
+    // A burst (inside the pipe's 1 MB): reads grow while they fill the room given.
+    for _ in 0..20 {
+        client
+            .feed(WsMessage::binary(vec![2u8; 30_000]))
+            .await
+            .unwrap();
+    }
+    client.flush().await.unwrap();
+    for _ in 0..20 {
+        assert!(
+            matches!(next(&mut reader).await, Ok(ClientMessage::Binary(b)) if b.len() == 30_000)
+        );
+    }
+    assert!(reader.chunk > FIRST_READ, "reads grew in a burst");
+    // Small messages again: the reads shrink back and the burst's buffer is let go.
+    for _ in 0..8 {
+        client.send(WsMessage::binary(vec![3u8; 20])).await.unwrap();
+        assert!(matches!(
+            next(&mut reader).await,
+            Ok(ClientMessage::Binary(_))
+        ));
+    }
+    assert_eq!(reader.chunk, FIRST_READ);
+    assert!(
+        reader.buf.capacity() <= 2 * FIRST_READ,
+        "after the burst the reader holds {} bytes",
+        reader.buf.capacity()
+    );
+}
