@@ -21,6 +21,7 @@ use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::websocket::deflate;
 use fleetlink_relay::websocket::liveness::Peer;
 use fleetlink_relay::websocket::tcp_progress;
+use tokio::io::AsyncReadExt;
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::server::{Request, Response};
 use tokio_tungstenite::tungstenite::http::HeaderValue;
@@ -78,14 +79,19 @@ pub async fn serve(
         let (router, cfg, shutdown) = (router.clone(), cfg.clone(), shutdown.clone());
         let runtime = runtime.clone();
         sessions.spawn(async move {
-            match sniff(&tcp).await {
+            let local = tcp.local_addr().ok();
+            let mut tcp = tcp;
+            let (kind, head) = sniff(&mut tcp).await;
+            // What was read to tell the two apart is read again by whoever serves it.
+            let (r, w) = tcp.into_split();
+            let tcp = tokio::io::join(std::io::Cursor::new(head).chain(r), w);
+            match kind {
                 Sniffed::WebSocket => {}
                 Sniffed::Http => return serve_api(tcp, runtime, shutdown).await,
                 Sniffed::Gone => return,
             }
             // tungstenite answers the handshake; the session then runs on the socket's
             // own halves (a client sends nothing more before the handshake's answer).
-            let local = tcp.local_addr().ok();
             // permessage-deflate for a client that offers it, as on the hub.
             let mut agreed = None;
             // The shape tungstenite's handshake callback must have (its error is a whole
@@ -111,8 +117,9 @@ pub async fn serve(
                 Ok(ws) => {
                     let auth = fleetlink_relay::gate::SessionAuth::open();
                     let max = cfg.max_message_size;
+                    let (r, w) = ws.into_inner().into_inner();
                     let (mut sink, mut stream) =
-                        fleetlink_relay::websocket::server(ws.into_inner(), max);
+                        fleetlink_relay::websocket::server_halves(r, w, bytes::Bytes::new(), max);
                     if let Some(c) = agreed {
                         (sink, stream) = (sink.deflating(c), stream.inflating());
                     }
@@ -144,18 +151,21 @@ const SNIFF_TIMEOUT: Duration = Duration::from_secs(10);
 /// handshake, which refuses it.
 const SNIFF_MAX: usize = 8192;
 
-/// Looks at (without taking) the request head: a WebSocket upgrade, or not.
-async fn sniff(tcp: &tokio::net::TcpStream) -> Sniffed {
-    let mut buf = vec![0u8; SNIFF_MAX];
+/// Reads the request head (and whatever came with it, at most [`SNIFF_MAX`] bytes): a
+/// WebSocket upgrade, or not. The bytes read are handed back to be read again.
+async fn sniff(tcp: &mut tokio::net::TcpStream) -> (Sniffed, Vec<u8>) {
+    let mut buf = Vec::with_capacity(1024);
     let look = async {
+        let mut chunk = [0u8; 2048];
         loop {
-            let n = match tcp.peek(&mut buf).await {
+            let room = (SNIFF_MAX - buf.len()).min(chunk.len());
+            let n = match tcp.read(&mut chunk[..room]).await {
                 Ok(0) | Err(_) => return Sniffed::Gone,
                 Ok(n) => n,
             };
-            let head = &buf[..n];
-            if let Some(end) = head.windows(4).position(|w| w == b"\r\n\r\n") {
-                let text = String::from_utf8_lossy(&head[..end]).to_ascii_lowercase();
+            buf.extend_from_slice(&chunk[..n]);
+            if let Some(end) = buf.windows(4).position(|w| w == b"\r\n\r\n") {
+                let text = String::from_utf8_lossy(&buf[..end]).to_ascii_lowercase();
                 let upgrade = text.lines().any(|l| {
                     l.strip_prefix("upgrade:")
                         .is_some_and(|v| v.contains("websocket"))
@@ -166,16 +176,15 @@ async fn sniff(tcp: &tokio::net::TcpStream) -> Sniffed {
                     Sniffed::Http
                 };
             }
-            if n == buf.len() {
+            if buf.len() == SNIFF_MAX {
                 return Sniffed::WebSocket;
             }
-            // More of the head is on its way.
-            tokio::time::sleep(Duration::from_millis(5)).await;
         }
     };
-    tokio::time::timeout(SNIFF_TIMEOUT, look)
+    let kind = tokio::time::timeout(SNIFF_TIMEOUT, look)
         .await
-        .unwrap_or(Sniffed::Gone)
+        .unwrap_or(Sniffed::Gone);
+    (kind, buf)
 }
 
 /// Largest change accepted by the configuration API.
@@ -183,7 +192,7 @@ const MAX_CHANGE_BYTES: usize = 1 << 20;
 
 /// Serves HTTP/1.1 on `tcp`: the configuration API.
 async fn serve_api(
-    tcp: tokio::net::TcpStream,
+    tcp: impl tokio::io::AsyncRead + tokio::io::AsyncWrite + Unpin + Send + 'static,
     runtime: Option<Arc<RuntimeConfig>>,
     shutdown: CancellationToken,
 ) {

@@ -544,9 +544,19 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
         if let Some(cfg) = deflate_cfg {
             (sink, stream) = (sink.deflating(cfg), stream.inflating());
         }
+        // Each kind of session boxed on its own: the task holds the one it runs, not
+        // room for the largest of the three (10,000 idle robots' links each paid for a
+        // viewer's session).
         if agent {
-            crate::agents::serve_agent(stream, sink, st.agents.clone(), Some(addr), conn, slot)
-                .await;
+            Box::pin(crate::agents::serve_agent(
+                stream,
+                sink,
+                st.agents.clone(),
+                Some(addr),
+                conn,
+                slot,
+            ))
+            .await;
         } else {
             drop(slot);
             // A viewer's liveness counts its connection draining, not only what it sends.
@@ -574,7 +584,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
             };
             if foxglove.is_some() {
                 // The same gate as a rosbridge client's: rules and audit apply alike.
-                return fleetlink_foxglove::serve(
+                return Box::pin(fleetlink_foxglove::serve(
                     sink,
                     stream,
                     st.router.clone(),
@@ -582,10 +592,10 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                     st.foxglove.clone(),
                     st.shutdown.clone(),
                     auth,
-                )
+                ))
                 .await;
             }
-            rosbridge::serve(
+            Box::pin(rosbridge::serve(
                 sink,
                 stream,
                 st.router.clone(),
@@ -593,7 +603,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 st.rosbridge.clone(),
                 st.shutdown.clone(),
                 auth,
-            )
+            ))
             .await;
         }
     });

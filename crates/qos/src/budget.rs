@@ -21,6 +21,7 @@
 //! are left for them, paused when none are. Protected traffic is never held back, even
 //! when it alone exceeds the budget (the budget report says so).
 
+use crate::bucket::TokenBucket;
 use crate::time::Nanos;
 
 /// Seconds in the day a `mb_per_day` allowance is spread over.
@@ -60,56 +61,18 @@ pub struct BudgetConfig {
 /// stops (100) keep flowing (docs/qos.md, defaults by type).
 pub const DEFAULT_PROTECT_PRIORITY: f32 = 10.0;
 
-#[derive(Debug, Clone, Copy)]
-struct Bucket {
-    bytes_per_sec: f64,
-    depth: f64,
-    tokens: f64,
-    at: Nanos,
-}
-
-impl Bucket {
-    fn new(bytes_per_sec: f64, depth: f64, now: Nanos) -> Bucket {
-        Bucket {
-            bytes_per_sec,
-            depth,
-            tokens: depth,
-            at: now,
-        }
-    }
-
-    /// Deepens the bucket (not its tokens) so a message costing `cost` fits, within
-    /// `max_depth`.
-    fn fit(&mut self, cost: f64, max_depth: f64) {
-        if cost > self.depth {
-            self.depth = (cost * 1.25).min(max_depth).max(self.depth);
-        }
-    }
-
-    fn refill(&mut self, now: Nanos) {
-        let dt = now.saturating_sub(self.at).as_secs_f64();
-        self.tokens = (self.tokens + dt * self.bytes_per_sec).min(self.depth);
-        self.at = self.at.max(now);
-    }
-
-    /// What a message costing `cost` needs in the bucket: all of it, or a full bucket
-    /// for one larger than the bucket (it then overdraws, and the bucket pays it back).
-    fn need(&self, cost: f64) -> f64 {
-        cost.min(self.depth).max(f64::MIN_POSITIVE)
-    }
-
-    /// When the bucket holds `need` (it holds less now).
-    fn holds_at(&self, need: f64) -> Nanos {
-        self.at + Nanos::from_secs_f64((need - self.tokens) / self.bytes_per_sec) + Nanos(1)
-    }
+/// What a message costing `cost` needs in `b`: all of it, or a full bucket for one
+/// larger than the bucket (it then overdraws, and the bucket pays it back).
+fn need(b: &TokenBucket, cost: f64) -> f64 {
+    cost.min(b.depth()).max(f64::MIN_POSITIVE)
 }
 
 /// A data budget in force (see the module docs).
 #[derive(Debug, Clone)]
 pub struct DataBudget {
     config: BudgetConfig,
-    rate: Option<Bucket>,
-    day: Option<Bucket>,
+    rate: Option<TokenBucket>,
+    day: Option<TokenBucket>,
     /// Bytes taken from the budget in all.
     used: u64,
     /// The cost of the message the last refusal was for.
@@ -120,10 +83,10 @@ impl DataBudget {
     pub fn new(config: BudgetConfig, now: Nanos) -> DataBudget {
         let rate = config
             .max_bytes_per_sec
-            .map(|r| Bucket::new(r, (r * RATE_BURST_SECS).max(RATE_BURST_MIN), now));
+            .map(|r| TokenBucket::new(r, (r * RATE_BURST_SECS).max(RATE_BURST_MIN), now));
         let day = config.bytes_per_day.map(|d| {
             let pace = d / DAY_SECS;
-            Bucket::new(pace, pace * DAY_BURST_SECS, now)
+            TokenBucket::new(pace, pace * DAY_BURST_SECS, now)
         });
         DataBudget {
             config,
@@ -142,8 +105,7 @@ impl DataBudget {
     pub fn debit(&mut self, bytes: usize, now: Nanos) {
         self.used += bytes as u64;
         for b in [&mut self.rate, &mut self.day].into_iter().flatten() {
-            b.refill(now);
-            b.tokens -= bytes as f64;
+            b.spend(bytes as f64, now);
         }
     }
 
@@ -152,7 +114,7 @@ impl DataBudget {
     pub fn credit(&mut self, bytes: usize) {
         self.used = self.used.saturating_sub(bytes as u64);
         for b in [&mut self.rate, &mut self.day].into_iter().flatten() {
-            b.tokens = (b.tokens + bytes as f64).min(b.depth);
+            b.give_back(bytes as f64);
         }
     }
 
@@ -162,14 +124,14 @@ impl DataBudget {
     pub fn admits(&mut self, cost: usize, now: Nanos) -> bool {
         let cost = cost as f64;
         if let Some(r) = &mut self.rate {
-            r.fit(cost, r.bytes_per_sec * RATE_BURST_MAX_SECS);
+            r.deepen_for(cost, r.bytes_per_sec() * RATE_BURST_MAX_SECS);
         }
         let ok = [&mut self.rate, &mut self.day]
             .into_iter()
             .flatten()
             .all(|b| {
                 b.refill(now);
-                b.tokens >= b.need(cost)
+                b.tokens() >= need(b, cost)
             });
         if !ok {
             self.want = cost;
@@ -187,8 +149,8 @@ impl DataBudget {
         [&self.rate, &self.day]
             .into_iter()
             .flatten()
-            .filter(|b| b.tokens < b.need(self.want))
-            .map(|b| b.holds_at(b.need(self.want)))
+            .filter(|b| b.tokens() < need(b, self.want))
+            .map(|b| b.holds_at(need(b, self.want)))
             .max()
     }
 
@@ -208,7 +170,7 @@ impl DataBudget {
         [&self.rate, &self.day]
             .into_iter()
             .flatten()
-            .map(|b| b.bytes_per_sec)
+            .map(|b| b.bytes_per_sec())
             .fold(f64::INFINITY, f64::min)
     }
 }

@@ -32,6 +32,7 @@
 //! The configuration reference and the algorithms' conventions are in `docs/qos.md`.
 
 pub mod afr;
+pub mod bucket;
 pub mod budget;
 pub mod capacity;
 pub mod config;
@@ -47,6 +48,7 @@ pub mod rng;
 pub mod scheduler;
 pub mod time;
 
+pub use bucket::TokenBucket;
 pub use budget::{BudgetConfig, DataBudget};
 pub use capacity::{CapacityAllocator, CapacityConfig, OffloadParams, RobotLinkReport, Share};
 pub use config::{Compression, Mode, Policy, TopicQos, TopicQosSpec};

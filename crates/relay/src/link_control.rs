@@ -34,7 +34,7 @@
 use std::collections::VecDeque;
 
 use fleetlink_proto::frame::DEFAULT_CHUNK_SIZE;
-use fleetlink_qos::{LinkEstimator, Nanos};
+use fleetlink_qos::{LinkEstimator, Nanos, TokenBucket};
 
 /// Queueing delay the window allows in the network.
 pub const QUEUE_TARGET: Nanos = Nanos::from_millis(5);
@@ -54,44 +54,27 @@ const DEFAULT_BASE_RTT: Nanos = Nanos::from_millis(1);
 
 /// A token bucket for bulk frames (the capacity share).
 #[derive(Debug, Clone)]
-pub struct ShareBucket {
-    rate: f64,
-    tokens: f64,
-    at: Nanos,
-}
+pub struct ShareBucket(TokenBucket);
 
 impl ShareBucket {
     pub fn new(rate: f64, now: Nanos) -> ShareBucket {
-        ShareBucket {
-            rate,
-            tokens: burst(rate),
-            at: now,
-        }
-    }
-
-    fn refill(&mut self, now: Nanos) {
-        let dt = now.saturating_sub(self.at).as_secs_f64();
-        self.tokens = (self.tokens + dt * self.rate).min(burst(self.rate));
-        self.at = self.at.max(now);
+        ShareBucket(TokenBucket::new(rate, burst(rate), now))
     }
 
     /// `Ok` if a bulk frame may go now, else when it may (`None`: never at rate 0).
     pub fn check(&mut self, now: Nanos) -> Result<(), Option<Nanos>> {
-        self.refill(now);
-        if self.tokens > 0.0 {
+        self.0.refill(now);
+        if self.0.tokens() > 0.0 {
             return Ok(());
         }
-        if self.rate <= 0.0 {
+        if self.0.bytes_per_sec() <= 0.0 {
             return Err(None);
         }
-        Err(Some(
-            now + Nanos::from_secs_f64(-self.tokens / self.rate) + Nanos(1),
-        ))
+        Err(Some(self.0.holds_at(0.0)))
     }
 
     pub fn spend(&mut self, bytes: usize, now: Nanos) {
-        self.refill(now);
-        self.tokens -= bytes as f64;
+        self.0.spend(bytes as f64, now);
     }
 }
 
@@ -244,8 +227,8 @@ impl LinkControl {
         self.share = share;
         self.bucket = match (share, self.bucket.take()) {
             (Some(rate), Some(mut b)) => {
-                b.refill(now);
-                b.rate = rate.max(0.0);
+                let rate = rate.max(0.0);
+                b.0.set_rate(rate, burst(rate), now);
                 Some(b)
             }
             (Some(rate), None) => Some(ShareBucket::new(rate.max(0.0), now)),

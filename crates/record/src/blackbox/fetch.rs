@@ -284,6 +284,17 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
                 }
             }
         }
+        // Nothing to wait for but the clock: a retry, a stall's deadline, the give-up.
+        let mut wake = got.last + GIVE_UP;
+        if pending.is_none() {
+            match retry_at {
+                Some(t) => wake = wake.min(t),
+                None if reply.is_some() && got.received < asked_to => {
+                    wake = wake.min(asked_at.max(got.last) + STALL);
+                }
+                None => {}
+            }
+        }
         tokio::select! {
             m = calls.recv() => match m {
                 Some(PeerMsg::Event(CallEvent::Done { id: call, status, payload, text }))
@@ -337,7 +348,7 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
                     (job.persist)(&job.shared.info());
                 }
             }
-            _ = tokio::time::sleep(Duration::from_millis(250)) => {}
+            _ = tokio::time::sleep_until(wake.into()) => {}
             _ = job.shared.stop.cancelled() => {}
         }
     }
