@@ -278,10 +278,16 @@ async fn config_api(
                     json!({"error": "a change is YAML or JSON text, in UTF-8"}),
                 );
             };
-            // A short write and sync of a small file, on this thread.
-            match runtime.apply(text, "the local API") {
-                Ok(view) => answer(200, view),
-                Err(refusal) => answer(400, serde_json::to_value(refusal).unwrap_or_default()),
+            // Kept on disk (written and synced) off the runtime's thread.
+            let text = text.to_owned();
+            let applied =
+                tokio::task::spawn_blocking(move || runtime.apply(&text, "the local API")).await;
+            match applied {
+                Ok(Ok(view)) => answer(200, view),
+                Ok(Err(refusal)) => {
+                    answer(400, serde_json::to_value(refusal).unwrap_or_default())
+                }
+                Err(e) => answer(500, json!({"error": format!("the change failed: {e}")})),
             }
         }
         _ => answer(405, json!({"error": "use GET or PUT"})),

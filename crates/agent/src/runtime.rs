@@ -478,7 +478,16 @@ pub async fn serve(config: Arc<RuntimeConfig>, router: Arc<Router>, shutdown: Ca
                     }
                     let answer = match req.service.name.as_str() {
                         GET_SERVICE => config.view(),
-                        _ => set_call(&config, &req.payload),
+                        // Kept on disk (written and synced, the audit line appended) off
+                        // the runtime's thread; calls are still taken one at a time.
+                        _ => {
+                            let (config, payload) = (config.clone(), req.payload.clone());
+                            tokio::task::spawn_blocking(move || set_call(&config, &payload))
+                                .await
+                                .unwrap_or_else(|e| {
+                                    json!({"ok": false, "error": Refusal::text(format!("the change failed: {e}"))})
+                                })
+                        }
                     };
                     let body = serde_json::to_vec(&answer).unwrap_or_default();
                     router.calls.respond(

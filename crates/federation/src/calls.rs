@@ -45,6 +45,10 @@ const GOAL_QUERY_LIMIT: Duration = Duration::from_secs(24 * 3600);
 /// Beyond the caller's deadline, how long the query waits for the far hub's own timeout
 /// answer (which says why better than silence).
 const DEADLINE_SLACK: Duration = Duration::from_secs(2);
+/// Calls and cancels from other hubs waiting for the bridge's loop. Zenoh's callbacks
+/// cannot wait for room: a call that finds the queue full is answered `Busy` at once (its
+/// caller may try again), a cancel is dropped (the call's own deadline still ends it).
+const INPUT_QUEUE: usize = 4096;
 
 /// A call's attachment: who calls and how.
 #[derive(Debug, Clone, PartialEq)]
@@ -232,7 +236,7 @@ pub struct CallBridge {
     receiver: PeerReceiver,
     /// Kept so the table can reach the federation (it holds the peer too).
     _peer: Arc<ChannelPeer>,
-    inputs: mpsc::UnboundedReceiver<Input>,
+    inputs: mpsc::Receiver<Input>,
     _queryables: Vec<Queryable<()>>,
     _cancels: zenoh::pubsub::Subscriber<()>,
     /// Calls made here by other hubs, by this table's id.
@@ -253,16 +257,25 @@ impl CallBridge {
         providers: Providers,
     ) -> Result<CallBridge, FederationError> {
         let root = keys::root(&shared.fleet);
-        let (tx, inputs) = mpsc::unbounded_channel();
+        let (tx, inputs) = mpsc::channel(INPUT_QUEUE);
         let calls_tx = tx.clone();
+        let rt = tokio::runtime::Handle::current();
+        let busy_rt = rt.clone();
         let calls_q = session
             .declare_queryable(format!("{root}/call/{}/**", shared.me))
             .callback(move |q| {
-                let _ = calls_tx.send(Input::Query(q));
+                if let Err(mpsc::error::TrySendError::Full(Input::Query(q))) =
+                    calls_tx.try_send(Input::Query(q))
+                {
+                    busy_rt.spawn(async move {
+                        let text = "the hub is busy: too many calls from other hubs wait; \
+                                    try again";
+                        reply_done(&q, CallStatus::Busy, text).await;
+                    });
+                }
             })
             .await
             .map_err(zerr)?;
-        let rt = tokio::runtime::Handle::current();
         let schema_router = router.clone();
         let schema_prefix = format!("{root}/schema/{}/", shared.me);
         let schema_q = session
@@ -298,7 +311,7 @@ impl CallBridge {
                     v.get("from").and_then(Value::as_str),
                     v.get("id").and_then(Value::as_u64),
                 ) {
-                    let _ = tx.send(Input::Cancel {
+                    let _ = tx.try_send(Input::Cancel {
                         from: from.to_owned(),
                         id,
                     });

@@ -908,27 +908,24 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
         0x06 => Frame::Unsubscribe {
             id: r.varint_u32("UNSUBSCRIBE.id")?,
         },
-        0x07 => Frame::Message {
-            alias: r.varint_u32("MESSAGE.alias")?,
-            seq: r.varint("MESSAGE.seq")?,
-            stamp_ns: r.u64_le("MESSAGE.stamp_ns")?,
-            payload: r.rest(),
-        },
-        0x08 => {
-            let alias = r.varint_u32("CHUNK.alias")?;
-            let seq = r.varint("CHUNK.seq")?;
-            let stamp_ns = r.u64_le("CHUNK.stamp_ns")?;
-            let total_len = r.varint("CHUNK.total_len")?;
-            let offset = r.varint("CHUNK.offset")?;
-            let data = r.rest();
-            check_piece_fits(total_len, offset, &data, "CHUNK.offset")?;
-            Frame::Chunk {
+        0x07 => {
+            let (alias, seq, stamp_ns, payload) = read_message(r, &MESSAGE_FIELDS)?;
+            Frame::Message {
                 alias,
                 seq,
                 stamp_ns,
-                total_len,
-                offset,
-                data,
+                payload,
+            }
+        }
+        0x08 => {
+            let p = read_chunk(r, &CHUNK_FIELDS)?;
+            Frame::Chunk {
+                alias: p.alias,
+                seq: p.seq,
+                stamp_ns: p.stamp_ns,
+                total_len: p.total_len,
+                offset: p.offset,
+                data: p.data,
             }
         }
         0x09 => Frame::Ping {
@@ -1081,27 +1078,24 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
             }
             Frame::TopicLoad { topics }
         }
-        0x1a => Frame::ZMessage {
-            alias: r.varint_u32("ZMESSAGE.alias")?,
-            seq: r.varint("ZMESSAGE.seq")?,
-            stamp_ns: r.u64_le("ZMESSAGE.stamp_ns")?,
-            payload: r.rest(),
-        },
-        0x1b => {
-            let alias = r.varint_u32("ZCHUNK.alias")?;
-            let seq = r.varint("ZCHUNK.seq")?;
-            let stamp_ns = r.u64_le("ZCHUNK.stamp_ns")?;
-            let total_len = r.varint("ZCHUNK.total_len")?;
-            let offset = r.varint("ZCHUNK.offset")?;
-            let data = r.rest();
-            check_piece_fits(total_len, offset, &data, "ZCHUNK.offset")?;
-            Frame::ZChunk {
+        0x1a => {
+            let (alias, seq, stamp_ns, payload) = read_message(r, &ZMESSAGE_FIELDS)?;
+            Frame::ZMessage {
                 alias,
                 seq,
                 stamp_ns,
-                total_len,
-                offset,
-                data,
+                payload,
+            }
+        }
+        0x1b => {
+            let p = read_chunk(r, &ZCHUNK_FIELDS)?;
+            Frame::ZChunk {
+                alias: p.alias,
+                seq: p.seq,
+                stamp_ns: p.stamp_ns,
+                total_len: p.total_len,
+                offset: p.offset,
+                data: p.data,
             }
         }
         other => Frame::Unknown { kind: other },
@@ -1115,6 +1109,92 @@ fn read_encoding(r: &mut Reader<'_>, ctx: &'static str) -> Result<Encoding, Deco
     let enc = r.u8(ctx)?;
     Encoding::from_u8(enc)
         .ok_or_else(|| DecodeError::invalid(ctx, format!("unknown encoding {enc}")))
+}
+
+/// The names a decoding error gives a message's fields: `MESSAGE` and `ZMESSAGE` share
+/// one layout, as do `CHUNK` and `ZCHUNK` (a message's head, then the piece's place),
+/// read by one function each ([`read_message`], [`read_chunk`]).
+struct MessageFields {
+    alias: &'static str,
+    seq: &'static str,
+    stamp_ns: &'static str,
+}
+
+struct ChunkFields {
+    head: MessageFields,
+    total_len: &'static str,
+    offset: &'static str,
+}
+
+const MESSAGE_FIELDS: MessageFields = MessageFields {
+    alias: "MESSAGE.alias",
+    seq: "MESSAGE.seq",
+    stamp_ns: "MESSAGE.stamp_ns",
+};
+const ZMESSAGE_FIELDS: MessageFields = MessageFields {
+    alias: "ZMESSAGE.alias",
+    seq: "ZMESSAGE.seq",
+    stamp_ns: "ZMESSAGE.stamp_ns",
+};
+const CHUNK_FIELDS: ChunkFields = ChunkFields {
+    head: MessageFields {
+        alias: "CHUNK.alias",
+        seq: "CHUNK.seq",
+        stamp_ns: "CHUNK.stamp_ns",
+    },
+    total_len: "CHUNK.total_len",
+    offset: "CHUNK.offset",
+};
+const ZCHUNK_FIELDS: ChunkFields = ChunkFields {
+    head: MessageFields {
+        alias: "ZCHUNK.alias",
+        seq: "ZCHUNK.seq",
+        stamp_ns: "ZCHUNK.stamp_ns",
+    },
+    total_len: "ZCHUNK.total_len",
+    offset: "ZCHUNK.offset",
+};
+
+/// A `MESSAGE`'s (or `ZMESSAGE`'s) alias, seq, stamp and payload.
+fn read_message(
+    r: &mut Reader<'_>,
+    f: &MessageFields,
+) -> Result<(u32, u64, u64, Bytes), DecodeError> {
+    Ok((
+        r.varint_u32(f.alias)?,
+        r.varint(f.seq)?,
+        r.u64_le(f.stamp_ns)?,
+        r.rest(),
+    ))
+}
+
+/// A `CHUNK`'s (or `ZCHUNK`'s) fields.
+struct Piece {
+    alias: u32,
+    seq: u64,
+    stamp_ns: u64,
+    total_len: u64,
+    offset: u64,
+    data: Bytes,
+}
+
+/// A `CHUNK` (or `ZCHUNK`), its piece checked to lie inside the whole.
+fn read_chunk(r: &mut Reader<'_>, f: &ChunkFields) -> Result<Piece, DecodeError> {
+    let alias = r.varint_u32(f.head.alias)?;
+    let seq = r.varint(f.head.seq)?;
+    let stamp_ns = r.u64_le(f.head.stamp_ns)?;
+    let total_len = r.varint(f.total_len)?;
+    let offset = r.varint(f.offset)?;
+    let data = r.rest();
+    check_piece_fits(total_len, offset, &data, f.offset)?;
+    Ok(Piece {
+        alias,
+        seq,
+        stamp_ns,
+        total_len,
+        offset,
+        data,
+    })
 }
 
 /// Checks that a piece of `data` at `offset` lies inside a body of `total_len` bytes,

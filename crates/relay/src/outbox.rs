@@ -1009,6 +1009,29 @@ impl Outbox {
     /// Probes go out while data waits or is unacknowledged (and until the first echo); an
     /// idle link is measured by its heartbeat alone ([`Self::on_heartbeat_echo`]).
     pub fn poll_probe(&self, now: Instant) -> Option<u64> {
+        self.with_estimator(|est, origin, busy| {
+            est.poll_probe(Nanos::since(origin, now), busy).map(|p| p.id)
+        })
+        .flatten()
+    }
+
+    /// When the writer should look for a probe next ([`Self::poll_probe`]); `None` while
+    /// the link is idle (new data wakes the writer through [`Self::ready`]).
+    pub fn probe_timeout(&self) -> Option<Instant> {
+        self.with_estimator(|est, origin, busy| {
+            let at = est.poll_timeout(busy)?;
+            Some(origin + Duration::from_nanos(at.0))
+        })
+        .flatten()
+    }
+
+    /// Runs `f` on the uplink's estimator with the outbox's clock origin and whether the
+    /// link is busy (data queued, pulled or unacknowledged); `None` for a round-robin
+    /// outbox, which has no link.
+    fn with_estimator<R>(
+        &self,
+        f: impl FnOnce(&mut fleetlink_qos::LinkEstimator, Instant, bool) -> R,
+    ) -> Option<R> {
         let mut st = self.lock();
         match &mut st.service {
             Service::Scheduled {
@@ -1019,29 +1042,7 @@ impl Outbox {
                 ..
             } => {
                 let busy = link_busy(sched, link, pulled);
-                link.est
-                    .poll_probe(Nanos::since(*origin, now), busy)
-                    .map(|p| p.id)
-            }
-            Service::RoundRobin { .. } => None,
-        }
-    }
-
-    /// When the writer should look for a probe next ([`Self::poll_probe`]); `None` while
-    /// the link is idle (new data wakes the writer through [`Self::ready`]).
-    pub fn probe_timeout(&self) -> Option<Instant> {
-        let st = self.lock();
-        match &st.service {
-            Service::Scheduled {
-                origin,
-                link,
-                sched,
-                pulled,
-                ..
-            } => {
-                let busy = link_busy(sched, link, pulled);
-                let at = link.est.poll_timeout(busy)?;
-                Some(*origin + Duration::from_nanos(at.0))
+                Some(f(&mut link.est, *origin, busy))
             }
             Service::RoundRobin { .. } => None,
         }
@@ -1067,14 +1068,13 @@ impl Outbox {
         hub_ns: u64,
         f: impl FnOnce(&mut fleetlink_qos::LinkEstimator, Nanos, Nanos),
     ) {
-        let mut st = self.lock();
-        if let Service::Scheduled { origin, link, .. } = &mut st.service {
-            let t = Nanos::since(*origin, now);
+        self.with_estimator(|est, origin, _| {
+            let t = Nanos::since(origin, now);
             // The estimator runs on this outbox's clock (ns since `origin`); the hub's
             // reading is put on the same scale, so the offset it finds is hub − robot.
-            let origin_unix = crate::instant_to_unix_nanos(*origin);
-            f(&mut link.est, t, Nanos(hub_ns.saturating_sub(origin_unix)));
-        }
+            let origin_unix = crate::instant_to_unix_nanos(origin);
+            f(est, t, Nanos(hub_ns.saturating_sub(origin_unix)));
+        });
     }
 
     /// What the link looks like now; restarts the demand measurement (call about once a

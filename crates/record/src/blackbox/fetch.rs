@@ -334,9 +334,20 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
             },
             _ = outbox.ready() => {
                 outbox.take_into(&mut items, 256, 16 << 20, Instant::now());
-                for (_, _, msg) in items.drain(..) {
-                    accept(&msg.payload, &id, &mut got).map_err(|e| format!("writing {}: {e}", part.display()))?;
-                }
+                // The file is written off the runtime: a slow disk holds this fetch,
+                // not the hub's other tasks.
+                let pieces: Vec<Arc<fleetlink_relay::Message>> = items.drain(..).map(|(_, _, m)| m).collect();
+                let mut writing = got;
+                let slice = id.clone();
+                got = tokio::task::spawn_blocking(move || {
+                    for m in &pieces {
+                        accept(&m.payload, &slice, &mut writing)?;
+                    }
+                    Ok::<_, std::io::Error>(writing)
+                })
+                .await
+                .map_err(|e| format!("writing {}: {e}", part.display()))?
+                .map_err(|e| format!("writing {}: {e}", part.display()))?;
                 job.shared.update(|i| {
                     if let Some(b) = &mut i.blackbox {
                         b.received = got.received;
@@ -353,9 +364,14 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
         }
     }
     let r = reply.expect("the loop ends with a reply");
-    got.file.flush().map_err(|e| e.to_string())?;
-    got.file.sync_data().map_err(|e| e.to_string())?;
-    drop(got.file);
+    let mut file = got.file;
+    tokio::task::spawn_blocking(move || {
+        file.flush()?;
+        file.sync_data()
+    })
+    .await
+    .map_err(|e| e.to_string())?
+    .map_err(|e| e.to_string())?;
     let sha = super::hex(&got.hash.finalize());
     if sha != r.sha256 {
         return Err(format!(
