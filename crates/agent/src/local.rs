@@ -284,9 +284,7 @@ async fn config_api(
                 tokio::task::spawn_blocking(move || runtime.apply(&text, "the local API")).await;
             match applied {
                 Ok(Ok(view)) => answer(200, view),
-                Ok(Err(refusal)) => {
-                    answer(400, serde_json::to_value(refusal).unwrap_or_default())
-                }
+                Ok(Err(refusal)) => answer(400, serde_json::to_value(refusal).unwrap_or_default()),
                 Err(e) => answer(500, json!({"error": format!("the change failed: {e}")})),
             }
         }

@@ -41,7 +41,9 @@ use fleetlink_relay::calls::{ChannelPeer, PeerMsg, PeerReceiver, ServiceChange};
 use fleetlink_relay::link::session::{
     AgentHello, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
 };
-use fleetlink_relay::link::{Control, LinkEvent, LinkNamer, ViaOut, drive, write_link};
+use fleetlink_relay::link::{
+    Control, ControlSender, LinkEvent, LinkNamer, ViaOut, drive, write_link,
+};
 use fleetlink_relay::link_calls::{LinkCalls, LinkNames};
 use fleetlink_relay::message::TopicMeta;
 use fleetlink_relay::outbox::QosFor;
@@ -854,7 +856,7 @@ impl Uplink {
                 queue_length: 0,
             });
         }
-        let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
+        let (ctrl_tx, ctrl_rx) = mpsc::channel::<Box<Control>>(WRITER_QUEUE);
         let via = self.cfg.hub_id.map(|me| ViaOut {
             me,
             peer: session.link_in().peer_hub.clone(),
@@ -935,7 +937,7 @@ impl Uplink {
                 m = stream.next() => {
                     let m = m.map(|r| r.map(ClientMessage::from));
                     if let Some(ping) = drive::feed(&mut session, m, Instant::now()) {
-                        let _ = ctrl_tx.try_send(Control::Pong(ping));
+                        let _ = ctrl_tx.try_send(Box::new(Control::Pong(ping)));
                     }
                 }
                 m = self.calls_rx.recv(), if session.wants_peer_events() => {
@@ -945,7 +947,7 @@ impl Uplink {
                 }
                 permit = ctrl_tx.reserve(), if session.has_transmit() => {
                     if let (Ok(p), Some(c)) = (permit, session.poll_transmit()) {
-                        p.send(c);
+                        p.send(Box::new(c));
                     }
                 }
                 _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
@@ -997,7 +999,7 @@ impl Uplink {
     fn report(
         &self,
         session: &mut LinkSession,
-        writer: &mpsc::Sender<Control>,
+        writer: &ControlSender,
         unpublished: &mut HashSet<TopicId>,
         told: &mut Told,
     ) {
@@ -1035,7 +1037,7 @@ impl Uplink {
                     topic: id,
                     since: Instant::now(),
                 };
-                if writer.try_send(gone).is_ok() {
+                if writer.try_send(Box::new(gone)).is_ok() {
                     unpublished.insert(id);
                 }
             }

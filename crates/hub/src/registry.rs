@@ -17,8 +17,7 @@ use std::time::SystemTime;
 
 use fleetlink_proto::frame::Frame;
 use fleetlink_relay::ClientId;
-use fleetlink_relay::link::Control;
-use tokio::sync::mpsc;
+use fleetlink_relay::link::{Control, ControlSender};
 use tokio_util::sync::CancellationToken;
 
 /// A robot that is online now.
@@ -53,7 +52,7 @@ pub struct LiveRobot {
     /// without the lock.
     clock_offset: AtomicI64,
     /// The link's writer, for frames that do not go through the session (`SHARE`).
-    control: mpsc::Sender<Control>,
+    control: ControlSender,
     /// Cancelled when a newer connection of the robot replaces this one.
     replaced: CancellationToken,
     /// From the agent's last `BUDGET`, if the robot has a data budget.
@@ -113,7 +112,7 @@ pub struct LiveLink {
     pub session: u64,
     pub addr: Option<SocketAddr>,
     pub heartbeat_ms: u32,
-    pub control: mpsc::Sender<Control>,
+    pub control: ControlSender,
     pub replaced: CancellationToken,
 }
 
@@ -170,7 +169,7 @@ impl LiveRobot {
         self.share_bps.store(bytes_per_sec, Relaxed);
         let _ = self
             .control
-            .try_send(Control::Frame(Frame::Share { bytes_per_sec }));
+            .try_send(Box::new(Control::Frame(Frame::Share { bytes_per_sec })));
     }
 
     /// Ends this connection's session: a newer one of the same robot took its place.

@@ -130,6 +130,8 @@ impl RosOut {
 struct Watch {
     degraded: HashSet<String>,
     drops: HashMap<(TopicName, DropReason), u64>,
+    /// [`fleetlink_relay::stats::drops_anywhere`] at the last walk of the topics.
+    drops_seen: u64,
 }
 
 impl Watch {
@@ -161,6 +163,12 @@ impl Watch {
         }
         let online: HashSet<String> = registry.list().iter().map(|r| r.name.clone()).collect();
         self.degraded.retain(|n| online.contains(n));
+        // The topics are walked only when some topic lost a message since the last look.
+        let drops = fleetlink_relay::stats::drops_anywhere();
+        if drops == self.drops_seen {
+            return;
+        }
+        self.drops_seen = drops;
         let topics = out.router.topics();
         let names: HashSet<&TopicName> = topics.iter().map(|t| &t.meta.name).collect();
         self.drops.retain(|(n, _), _| names.contains(n));
@@ -170,6 +178,10 @@ impl Watch {
             }
             for reason in DropReason::ALL {
                 let now = t.stats.drops(reason);
+                if now == 0 {
+                    // Nothing lost, nothing to remember: most topics of a large fleet.
+                    continue;
+                }
                 let before = self
                     .drops
                     .insert((t.meta.name.clone(), reason), now)
@@ -190,5 +202,65 @@ impl Watch {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fleetlink_relay::transcode::RegistryTranscoder;
+
+    /// The `/rosout` lines about drops published since the last call.
+    fn drop_lines(outbox: &fleetlink_relay::Outbox) -> Vec<String> {
+        let mut items = Vec::new();
+        outbox.take_into(&mut items, 1000, usize::MAX, Instant::now());
+        items
+            .iter()
+            .map(|(_, _, m)| String::from_utf8_lossy(&m.payload.bytes).into_owned())
+            .filter(|t| t.contains("dropped"))
+            .collect()
+    }
+
+    #[test]
+    fn drops_are_told_once_and_topics_are_walked_only_after_some() {
+        let router = Arc::new(Router::new(Arc::new(RegistryTranscoder::bundled())));
+        let out = RosOut::start(router.clone());
+        let (reader, outbox) = router.connect(
+            ClientKind::Internal {
+                role: "test".into(),
+            },
+            None,
+        );
+        let rosout = TopicName::parse("/rosout").unwrap();
+        router
+            .subscribe(reader, Target::Exact(rosout), SubOptions::default())
+            .unwrap();
+        let (robot, _) = router.connect(ClientKind::Internal { role: "sim".into() }, None);
+        let name = TopicName::parse("/r1/scan").unwrap();
+        let topic = router
+            .advertise(robot, &name, Schema::named("std_msgs/String"), false)
+            .unwrap();
+        let registry = Registry::default();
+        let mut watch = Watch::default();
+        watch.look(&out, &registry);
+        assert!(drop_lines(&outbox).is_empty());
+        for _ in 0..3 {
+            topic.stats.record_drop(DropReason::Policy);
+        }
+        watch.look(&out, &registry);
+        let lines = drop_lines(&outbox);
+        assert_eq!(lines.len(), 1, "{lines:?}");
+        assert!(
+            lines[0].contains("3 messages of /r1/scan dropped"),
+            "{lines:?}"
+        );
+        // Nothing new: nothing said, and the topics were not walked for it.
+        watch.look(&out, &registry);
+        assert!(drop_lines(&outbox).is_empty());
+        assert_eq!(
+            watch.drops_seen,
+            fleetlink_relay::stats::drops_anywhere(),
+            "the walk is remembered by the drop count it saw"
+        );
     }
 }

@@ -340,6 +340,15 @@ fn open(topic: &InTopic, bytes: Bytes, compressed: bool) -> Result<Bytes, LinkEr
 /// Maps a router topic to the name it has on this link; `None` keeps it off the link.
 pub type LinkNamer = Arc<dyn Fn(&TopicMeta) -> Option<String> + Send + Sync>;
 
+/// The way to a link's writer: its [`Control`]s in a bounded queue, each boxed. tokio's
+/// channel allocates room for 32 entries at a time and a `Control` is over 100 bytes, so
+/// boxed an idle link's queue holds a few hundred bytes instead of several kilobytes
+/// (10,000 idle robots, docs/benchmarks/log.md); a box per control frame is nothing beside
+/// what the frame is for.
+pub type ControlSender = tokio::sync::mpsc::Sender<Box<Control>>;
+/// The writer's end of [`ControlSender`].
+pub type ControlReceiver = tokio::sync::mpsc::Receiver<Box<Control>>;
+
 /// Frames written on a link besides messages (replies, subscriptions, status).
 #[derive(Debug)]
 pub enum Control {

@@ -1010,7 +1010,8 @@ impl Outbox {
     /// idle link is measured by its heartbeat alone ([`Self::on_heartbeat_echo`]).
     pub fn poll_probe(&self, now: Instant) -> Option<u64> {
         self.with_estimator(|est, origin, busy| {
-            est.poll_probe(Nanos::since(origin, now), busy).map(|p| p.id)
+            est.poll_probe(Nanos::since(origin, now), busy)
+                .map(|p| p.id)
         })
         .flatten()
     }

@@ -22,7 +22,7 @@ use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
     Accept, CloseReason, Event, LinkSession, Role, SessionConfig, system_wall_clock,
 };
-use fleetlink_relay::link::{Control, ViaOut, drive, write_link};
+use fleetlink_relay::link::{Control, ControlSender, ViaOut, drive, write_link};
 use fleetlink_relay::link_calls::{LinkCalls, SameNames};
 use fleetlink_relay::websocket::ClientMessage;
 use fleetlink_relay::{ClientKind, Router};
@@ -144,7 +144,7 @@ pub async fn serve_agent<R, W, P>(
     );
     let (peer, peer_rx) = ChannelPeer::new();
     ctx.router.calls.attach(client, peer);
-    let (ctrl_tx, ctrl_rx) = mpsc::channel::<Control>(WRITER_QUEUE);
+    let (ctrl_tx, ctrl_rx) = mpsc::channel::<Box<Control>>(WRITER_QUEUE);
     // Cancelled by a newer connection of the robot, and with the hub's shutdown: the
     // session's loop waits on this one token of its own instead of two, one of them
     // shared (and locked on every turn) by every connection.
@@ -413,7 +413,7 @@ async fn serve_open<R>(
     session: &mut LinkSession,
     link: &mut RobotLink,
     peer_rx: &PeerReceiver,
-    ctrl_tx: &mpsc::Sender<Control>,
+    ctrl_tx: &ControlSender,
     ctx: &AgentContext,
     stop: &CancellationToken,
 ) -> CloseReason
@@ -460,7 +460,7 @@ where
                 link.live.last_seen_ns.store(unix_ns, Relaxed);
                 link.read_at(now, unix_ns);
                 if let Some(ping) = drive::feed(session, m, now) {
-                    let _ = ctrl_tx.try_send(Control::Pong(ping));
+                    let _ = ctrl_tx.try_send(Box::new(Control::Pong(ping)));
                 }
             }
             m = &mut call_news, if session.wants_peer_events() => {
@@ -471,7 +471,7 @@ where
             }
             permit = ctrl_tx.reserve(), if session.has_transmit() => {
                 if let (Ok(p), Some(c)) = (permit, session.poll_transmit()) {
-                    p.send(c);
+                    p.send(Box::new(c));
                 }
             }
             () = async { recording.as_mut().expect("guarded").await }, if recording.is_some() => {

@@ -7,13 +7,12 @@
 use std::time::{Duration, Instant};
 
 use bytes::Bytes;
-use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::Error as WsError;
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 
-use super::Control;
 use super::session::{CloseReason, LinkSession};
+use super::{Control, ControlSender};
 use crate::websocket::ClientMessage;
 
 /// How long a closing link's writer may take to flush and close the WebSocket before it
@@ -110,13 +109,13 @@ impl Timer {
 
 /// Moves what the session has to send to the writer, as long as the writer's queue has
 /// room; the rest stays in the session (the driver also waits for room in its select).
-pub fn pump(session: &mut LinkSession, writer: &mpsc::Sender<Control>) {
+pub fn pump(session: &mut LinkSession, writer: &ControlSender) {
     while session.has_transmit() {
         let Ok(permit) = writer.try_reserve() else {
             return;
         };
         if let Some(c) = session.poll_transmit() {
-            permit.send(c);
+            permit.send(Box::new(c));
         }
     }
 }
@@ -127,10 +126,11 @@ pub fn pump(session: &mut LinkSession, writer: &mpsc::Sender<Control>) {
 /// declared dead or failed (its socket may never drain).
 pub async fn stop_writer(
     mut writer: tokio::task::JoinHandle<()>,
-    queue: mpsc::Sender<Control>,
+    queue: ControlSender,
     reason: &CloseReason,
 ) {
-    let sent = close_frame(reason).is_some_and(|f| queue.try_send(Control::Close(Some(f))).is_ok());
+    let sent = close_frame(reason)
+        .is_some_and(|f| queue.try_send(Box::new(Control::Close(Some(f)))).is_ok());
     drop(queue);
     if sent && tokio::time::timeout(CLOSE_GRACE, &mut writer).await.is_ok() {
         return;

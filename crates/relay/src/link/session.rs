@@ -719,6 +719,7 @@ impl LinkSession {
             return Some(Control::Frame(Frame::Delivered { alias, seq }));
         }
         let c = self.tx.frames.pop_front()?;
+        release_if_drained(&mut self.tx.frames);
         if let Control::Frame(Frame::Status { .. }) = c {
             self.tx.statuses -= 1;
         }
@@ -740,7 +741,13 @@ impl LinkSession {
     }
 
     pub fn poll_event(&mut self) -> Option<Event> {
-        self.events.pop_front()
+        let e = self.events.pop_front();
+        if e.is_none() {
+            // A handshake's burst (a robot's every ADVERTISE at once) leaves no room
+            // behind on an idle link; a few events come back without reallocating.
+            release_if_drained(&mut self.events);
+        }
+        e
     }
 
     // --- inside
@@ -950,6 +957,14 @@ impl LinkSession {
                 }
             },
         }
+    }
+}
+
+/// Lets a drained queue's large buffer go (one a burst grew), so an idle link holds
+/// little; a queue of a few entries keeps its room.
+fn release_if_drained<T>(q: &mut VecDeque<T>) {
+    if q.is_empty() && q.capacity() > 8 {
+        *q = VecDeque::new();
     }
 }
 

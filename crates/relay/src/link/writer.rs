@@ -17,7 +17,7 @@ use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
 use super::compress::Compressor;
-use super::{Control, LinkNamer};
+use super::{Control, ControlReceiver, LinkNamer};
 use crate::message::{Message, TopicMeta, Via};
 use crate::names::TopicId;
 use crate::outbox::Outbox;
@@ -131,7 +131,7 @@ fn advertise_flags(outbox: &Outbox, meta: &TopicMeta) -> u8 {
 pub async fn write_link<K>(
     mut sink: K,
     outbox: Arc<Outbox>,
-    mut control: mpsc::Receiver<Control>,
+    mut control: ControlReceiver,
     namer: LinkNamer,
     announce_first: Vec<(Arc<TopicMeta>, Encoding)>,
     mut gate: Option<Box<dyn crate::gate::Gate>>,
@@ -180,7 +180,7 @@ pub async fn write_link<K>(
             let c = match received.take() {
                 Some(c) => c,
                 None => match control.try_recv() {
-                    Ok(c) => Some(c),
+                    Ok(c) => Some(*c),
                     Err(mpsc::error::TryRecvError::Disconnected) => None,
                     Err(mpsc::error::TryRecvError::Empty) => break,
                 },
@@ -411,14 +411,11 @@ pub async fn write_link<K>(
             // (`Control::Close`) right after. Wait a moment for it, so the peer learns the
             // close code (1007, 1001, ...) instead of a bare close.
             let until = tokio::time::Instant::now() + CLOSE_REASON_WAIT;
-            loop {
-                match tokio::time::timeout_at(until, control.recv()).await {
-                    Ok(Some(Control::Close(frame))) => {
-                        return finish(&mut sink, &mut buf, frame).await;
-                    }
-                    Ok(Some(Control::Frame(f))) => f.encode(&mut buf),
-                    Ok(Some(_)) => {}
-                    Ok(None) | Err(_) => break,
+            while let Ok(Some(c)) = tokio::time::timeout_at(until, control.recv()).await {
+                match *c {
+                    Control::Close(frame) => return finish(&mut sink, &mut buf, frame).await,
+                    Control::Frame(f) => f.encode(&mut buf),
+                    _ => {}
                 }
             }
             return finish(&mut sink, &mut buf, None).await;
@@ -435,7 +432,7 @@ pub async fn write_link<K>(
             wake = Some(wake.map_or(at, |w| w.min(at)));
         }
         tokio::select! {
-            c = control.recv() => received = Some(c),
+            c = control.recv() => received = Some(c.map(|c| *c)),
             _ = outbox.ready() => {}
             _ = sleep_until(wake) => {}
         }

@@ -18,7 +18,7 @@
 //!   that buffer, unmasked in place ([`frames::Decoder`]). Its reads grow from
 //!   [`FIRST_READ`] while they fill the room given and shrink back while they come small,
 //!   so a busy connection reads in large chunks and an idle one (a robot's heartbeats)
-//!   holds a page instead of 64 kB.
+//!   holds a kilobyte or two instead of 64 kB.
 //! - The writer gathers frames in one buffer and writes them with one (vectored) call per
 //!   flush. Payloads over [`COPY_UP_TO`] bytes are not copied but queued as they are.
 //! - Control frames are not answered here: a `Ping` comes out of the reader for the
@@ -59,7 +59,7 @@ use frames::Decoder;
 /// which it writes before taking more.
 pub const READ_CHUNK: usize = 64 << 10;
 /// Room a new reader's first read is given, and the least it comes down to.
-pub const FIRST_READ: usize = 4 << 10;
+pub const FIRST_READ: usize = 1 << 10;
 /// Payloads up to this size are copied into the writer's buffer; larger ones are queued
 /// as they are and written from where they lie.
 pub const COPY_UP_TO: usize = 16 << 10;

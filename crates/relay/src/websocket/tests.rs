@@ -238,7 +238,7 @@ async fn a_binary_message_in_two_parts_arrives_as_one_whether_its_body_is_copied
 }
 
 #[tokio::test]
-async fn an_idle_reader_holds_a_page_and_a_busy_one_reads_large() {
+async fn an_idle_reader_holds_little_and_a_busy_one_reads_large() {
     let (mut client, (_w, mut reader)) = pair(4 << 20).await;
     client.send(WsMessage::binary(vec![1u8; 20])).await.unwrap();
     assert!(matches!(

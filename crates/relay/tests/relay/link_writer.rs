@@ -91,13 +91,13 @@ fn spawn_writer(
     outbox: Arc<Outbox>,
     slots: usize,
 ) -> (
-    tokio::sync::mpsc::Sender<Control>,
+    tokio::sync::mpsc::Sender<Box<Control>>,
     futures_channel::mpsc::Receiver<WsMessage>,
     tokio::task::JoinHandle<()>,
 ) {
     let (tx, rx) = futures_channel::mpsc::channel::<WsMessage>(slots);
     let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let (ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Box<Control>>(8);
     let writer = tokio::spawn(write_link(
         sink,
         outbox,
@@ -225,7 +225,7 @@ async fn small_messages_pass_the_bulk_gate_that_holds_back_chunks() {
 
     let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(64);
     let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Box<Control>>(8);
     let writer = tokio::spawn(write_link(
         sink,
         outbox.clone(),
@@ -352,10 +352,10 @@ async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readverti
     topic.publish(publisher, 2, 0, Payload::json(&b"{\"last\":1}"[..]));
     router.unadvertise(publisher, &name);
     ctrl_tx
-        .send(Control::Unadvertise {
+        .send(Box::new(Control::Unadvertise {
             topic: topic.id(),
             since: std::time::Instant::now(),
-        })
+        }))
         .await
         .unwrap();
     while !seen.contains(&"U") {
@@ -374,10 +374,10 @@ async fn unadvertise_follows_the_topics_last_message_and_a_new_message_readverti
     // A second UNADVERTISE of a topic no longer advertised is not sent; neither is one
     // overtaken by a new publisher's message, which advertises the topic again.
     ctrl_tx
-        .send(Control::Unadvertise {
+        .send(Box::new(Control::Unadvertise {
             topic: topic.id(),
             since: std::time::Instant::now(),
-        })
+        }))
         .await
         .unwrap();
     let again = router
@@ -565,7 +565,7 @@ async fn the_uplink_writes_a_window_of_chunks_in_one_flush() {
         fed: Vec::new(),
         tx,
     };
-    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Box<Control>>(8);
     let writer = tokio::spawn(write_link(
         sink,
         outbox.clone(),
@@ -931,10 +931,10 @@ async fn a_held_back_topic_published_again_after_its_unadvertise_is_announced_ag
         1
     );
     ctrl_tx
-        .send(Control::Unadvertise {
+        .send(Box::new(Control::Unadvertise {
             topic: odom.id(),
             since: std::time::Instant::now(),
-        })
+        }))
         .await
         .unwrap();
     let got = frames_within(&mut rx, Duration::from_millis(200)).await;
@@ -1175,7 +1175,7 @@ async fn a_link_between_hubs_marks_messages_with_the_hubs_they_passed() {
         .unwrap();
     let (tx, mut rx) = futures_channel::mpsc::channel::<WsMessage>(64);
     let sink = tx.sink_map_err(|_| WsError::ConnectionClosed);
-    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Control>(8);
+    let (_ctrl_tx, ctrl_rx) = tokio::sync::mpsc::channel::<Box<Control>>(8);
     let peer = Arc::new(AtomicU64::new(0));
     let via = ViaOut {
         me: 10,
