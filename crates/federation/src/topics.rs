@@ -35,7 +35,7 @@ use fleetlink_proto::Schema;
 use fleetlink_relay::outbox::Taken;
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicsWatch};
 use fleetlink_relay::{Outbox, Router, Topic, TopicId, TopicName};
-use tokio::sync::mpsc;
+use tokio::sync::Notify;
 use tokio_util::sync::CancellationToken;
 use zenoh::Session;
 use zenoh::liveliness::LivelinessToken;
@@ -54,6 +54,7 @@ const PARKED_PER_HUB: usize = 100_000;
 /// Which hub provides each remote service or action this hub routes calls to.
 pub type Providers = Arc<Mutex<HashMap<TopicName, String>>>;
 
+/// What the catalog's tokens and the definitions asked of other hubs tell the topic loop.
 enum News {
     Token {
         hub: String,
@@ -64,6 +65,49 @@ enum News {
         name: TopicName,
         schema: Schema,
     },
+}
+
+/// The topic loop's news, coalesced. Zenoh hands the catalog's tokens to a callback on its
+/// own threads, which must not wait; rather than queueing every change there, a token's
+/// latest state replaces the one not read yet (a hub offering and withdrawing a topic a
+/// thousand times leaves one entry), so what waits is bounded by the tokens there are and
+/// the definitions asked for. They are read in the order each was first heard; one
+/// token's state never depends on another's, so the end state is the one a queue gives.
+#[derive(Default)]
+struct Inbox {
+    pending: Mutex<Pending>,
+    ready: Notify,
+}
+
+#[derive(Default)]
+struct Pending {
+    order: Vec<NewsKey>,
+    latest: HashMap<NewsKey, News>,
+}
+
+/// What a piece of news replaces: a token by its key expression, a definition by topic.
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum NewsKey {
+    Token(String),
+    Schema(TopicName),
+}
+
+impl Inbox {
+    fn post(&self, key: NewsKey, news: News) {
+        let mut p = self.pending.lock().unwrap_or_else(|p| p.into_inner());
+        if p.latest.insert(key.clone(), news).is_none() {
+            p.order.push(key);
+        }
+        drop(p);
+        self.ready.notify_one();
+    }
+
+    /// Everything posted since the last call, oldest first.
+    fn take(&self) -> Vec<News> {
+        let Pending { order, mut latest } =
+            std::mem::take(&mut *self.pending.lock().unwrap_or_else(|p| p.into_inner()));
+        order.iter().filter_map(|k| latest.remove(k)).collect()
+    }
 }
 
 /// What the pump needs of a topic this hub sends.
@@ -142,8 +186,7 @@ pub struct Topics {
     entries: HashMap<TopicName, Entry>,
     /// Names that cannot be key expressions, logged once.
     refused: BTreeSet<String>,
-    news_tx: mpsc::UnboundedSender<News>,
-    news_rx: mpsc::UnboundedReceiver<News>,
+    inbox: Arc<Inbox>,
     _catalog: Subscriber<()>,
     robots: HashMap<String, LivelinessToken>,
     services: HashMap<TopicName, RemoteService>,
@@ -159,8 +202,8 @@ impl Topics {
         shared: Arc<Shared>,
         outbox: Arc<Outbox>,
     ) -> Result<Topics, FederationError> {
-        let (news_tx, news_rx) = mpsc::unbounded_channel();
-        let tx = news_tx.clone();
+        let inbox = Arc::new(Inbox::default());
+        let posted = inbox.clone();
         let fleet = shared.fleet.clone();
         let me = shared.me.clone();
         let catalog = session
@@ -174,7 +217,8 @@ impl Topics {
                 };
                 if hub != me {
                     let put = sample.kind() == SampleKind::Put;
-                    let _ = tx.send(News::Token { hub, offer, put });
+                    let key = NewsKey::Token(sample.key_expr().as_str().to_owned());
+                    posted.post(key, News::Token { hub, offer, put });
                 }
             })
             .await
@@ -188,8 +232,7 @@ impl Topics {
             outlets: Arc::default(),
             entries: HashMap::new(),
             refused: BTreeSet::new(),
-            news_tx,
-            news_rx,
+            inbox,
             _catalog: catalog,
             robots: HashMap::new(),
             services: HashMap::new(),
@@ -224,12 +267,11 @@ impl Topics {
                             self.evaluate(&name).await;
                         }
                     }
-                    Some(news) = self.news_rx.recv() => {
-                        let mut touched = HashSet::new();
-                        self.on_news(news, &mut touched);
+                    () = self.inbox.ready.notified() => {
                         // A hub joining offers a burst: apply it whole, then act once per topic.
-                        while let Ok(more) = self.news_rx.try_recv() {
-                            self.on_news(more, &mut touched);
+                        let mut touched = HashSet::new();
+                        for news in self.inbox.take() {
+                            self.on_news(news, &mut touched);
                         }
                         for name in touched {
                             self.evaluate(&name).await;
@@ -716,7 +758,7 @@ impl Topics {
         };
         let key = format!("{}/schema/{hub}/{chunks}", keys::root(&self.shared.fleet));
         let session = self.session.clone();
-        let tx = self.news_tx.clone();
+        let inbox = self.inbox.clone();
         tokio::spawn(async move {
             let replies = match session.get(key).timeout(Duration::from_secs(5)).await {
                 Ok(r) => r,
@@ -739,7 +781,7 @@ impl Topics {
                     text: field("text"),
                 };
                 if !schema.text.is_empty() {
-                    let _ = tx.send(News::Schema { name, schema });
+                    inbox.post(NewsKey::Schema(name.clone()), News::Schema { name, schema });
                     return;
                 }
             }
@@ -881,5 +923,54 @@ async fn pump(
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn token(inbox: &Inbox, key: &str, name: &str, put: bool) {
+        let offer = Offer::Want { name: name.into() };
+        let news = News::Token {
+            hub: "h1".into(),
+            offer,
+            put,
+        };
+        inbox.post(NewsKey::Token(key.into()), news);
+    }
+
+    /// (name, put) of each token read.
+    fn read(inbox: &Inbox) -> Vec<(String, bool)> {
+        inbox
+            .take()
+            .into_iter()
+            .map(|n| match n {
+                News::Token {
+                    offer: Offer::Want { name },
+                    put,
+                    ..
+                } => (name, put),
+                _ => panic!("only wants were posted"),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn news_of_one_token_coalesce_to_its_latest_state_in_first_heard_order() {
+        let inbox = Inbox::default();
+        for i in 0..1000 {
+            token(&inbox, "k/a", "/a", i % 2 == 0);
+        }
+        token(&inbox, "k/b", "/b", true);
+        token(&inbox, "k/a", "/a", true);
+        token(&inbox, "k/b", "/b", false);
+        assert_eq!(
+            read(&inbox),
+            [("/a".to_owned(), true), ("/b".to_owned(), false)]
+        );
+        assert!(read(&inbox).is_empty(), "what was read is gone");
+        token(&inbox, "k/a", "/a", false);
+        assert_eq!(read(&inbox), [("/a".to_owned(), false)]);
     }
 }

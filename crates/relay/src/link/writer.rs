@@ -174,6 +174,10 @@ pub async fn write_link<K>(
     // What the wait at the end of a round received from `control` (`Some(None)`: closed),
     // handled first in the next round like everything else `control` holds.
     let mut received: Option<Option<Control>> = None;
+    // The wait for the outbox, made once and kept across rounds (made again after it
+    // fires): a fresh one each round joined and left the outbox's waiters, under their
+    // lock, at every heartbeat of every idle link.
+    let mut ready = std::pin::pin!(outbox.ready());
     loop {
         // 1. Control frames first: they are small and often answers the peer waits for.
         loop {
@@ -433,7 +437,7 @@ pub async fn write_link<K>(
         }
         tokio::select! {
             c = control.recv() => received = Some(c.map(|c| *c)),
-            _ = outbox.ready() => {}
+            _ = ready.as_mut() => ready.set(outbox.ready()),
             _ = sleep_until(wake) => {}
         }
     }
