@@ -16,7 +16,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
 use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
-use fleetlink_proto::frame::{Frame, WELCOME_COMPRESSION, WELCOME_INTEREST};
+use fleetlink_proto::frame::{WELCOME_COMPRESSION, WELCOME_INTEREST};
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
@@ -29,8 +29,6 @@ use fleetlink_relay::{ClientKind, Router};
 use futures_util::future::BoxFuture;
 use futures_util::{FutureExt, Sink, SinkExt, Stream, StreamExt};
 use tokio::sync::mpsc;
-use tokio_tungstenite::tungstenite::protocol::CloseFrame;
-use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
@@ -73,8 +71,41 @@ struct Admitted {
     heartbeat_ms: u32,
     identity: fleetlink_auth::Identity,
     outbox_epoch: u64,
-    /// The robot this link mirrors (`HELLO.mirror`), if it is a mirror.
-    mirror: Option<String>,
+    kind: LinkKind,
+}
+
+/// What an agent link speaks for: a robot of its own, or a mirror of another robot
+/// (`HELLO.mirror`, docs/mirror.md) that acts in that robot's namespace. (A peer that is
+/// a site hub shows itself later, by sending `VIA`: `LinkIn::peer_hub`.)
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum LinkKind {
+    Robot,
+    Mirror { of: String },
+}
+
+impl LinkKind {
+    /// The robot whose namespace a link named `name` acts in.
+    fn acts_in<'a>(&'a self, name: &'a str) -> &'a str {
+        match self {
+            LinkKind::Robot => name,
+            LinkKind::Mirror { of } => of,
+        }
+    }
+
+    /// How the hub's logs name a link called `name`.
+    fn describe(&self, name: &str) -> String {
+        match self {
+            LinkKind::Robot => format!("robot {name}"),
+            LinkKind::Mirror { of } => format!("mirror {name} of robot {of}"),
+        }
+    }
+
+    fn mirror_of(&self) -> Option<String> {
+        match self {
+            LinkKind::Robot => None,
+            LinkKind::Mirror { of } => Some(of.clone()),
+        }
+    }
 }
 
 /// Runs one agent connection to the end. `slot` (the hub's handshake admission) is held
@@ -119,7 +150,7 @@ pub async fn serve_agent<R, W, P>(
                 Some(r) => format!("{r} from {who}"),
                 None => who,
             };
-            return refuse(sink, reason, &who, &ctx.rosout).await;
+            return refuse(sink, &mut session, reason, &who, &ctx.rosout).await;
         }
     };
     let Admitted {
@@ -127,14 +158,11 @@ pub async fn serve_agent<R, W, P>(
         heartbeat_ms,
         identity,
         outbox_epoch,
-        mirror,
+        kind,
     } = admitted;
     // A mirror's topics live in its robot's namespace.
-    let namespace = format!("/{}", mirror.as_deref().unwrap_or(&robot));
-    let what = match &mirror {
-        Some(of) => format!("mirror {robot} of robot {of}"),
-        None => format!("robot {robot}"),
-    };
+    let namespace = format!("/{}", kind.acts_in(&robot));
+    let what = kind.describe(&robot);
     let book = ctx.ledger.open(&robot, outbox_epoch).await;
     let (client, outbox) = ctx.router.connect(
         ClientKind::Agent {
@@ -152,7 +180,7 @@ pub async fn serve_agent<R, W, P>(
     let session_no = ctx.registry.next_session();
     let live = Arc::new(LiveRobot::new(LiveLink {
         name: robot.clone(),
-        mirror_of: mirror.clone(),
+        mirror_of: kind.mirror_of(),
         client,
         session: session_no,
         addr,
@@ -161,9 +189,9 @@ pub async fn serve_agent<R, W, P>(
         replaced: replaced.clone(),
     }));
     // A mirror replaces an older connection of the same mirror, never its robot's.
-    let old = match mirror {
-        Some(_) => ctx.registry.insert_mirror(live.clone()),
-        None => ctx.registry.insert(live.clone()),
+    let old = match kind {
+        LinkKind::Mirror { .. } => ctx.registry.insert_mirror(live.clone()),
+        LinkKind::Robot => ctx.registry.insert(live.clone()),
     };
     if let Some(old) = old {
         tracing::info!(robot = %robot, "{what} reconnected; replacing its previous connection");
@@ -181,17 +209,17 @@ pub async fn serve_agent<R, W, P>(
         "connected",
         format!("{what} connected from {who}"),
     );
-    if mirror.is_none() {
+    if kind == LinkKind::Robot {
         record_seen(&ctx.store, &robot, addr, true);
     }
 
     // What a mirror publishes in its robot's namespace is input to that robot (audited
     // as an operator's is): it speaks for no robot of its own.
-    let gate = match mirror {
-        Some(_) => {
+    let gate = match kind {
+        LinkKind::Mirror { .. } => {
             crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity)
         }
-        None => crate::security::HubGate::for_agent(
+        LinkKind::Robot => crate::security::HubGate::for_agent(
             ctx.security.clone(),
             ctx.registry.clone(),
             identity,
@@ -247,9 +275,9 @@ pub async fn serve_agent<R, W, P>(
         session.handle_peer_event(m);
     }
     ctx.router.disconnect(client);
-    match mirror {
-        Some(_) => ctx.registry.remove_mirror_if_session(&robot, session_no),
-        None => ctx.registry.remove_if_session(&robot, session_no),
+    match kind {
+        LinkKind::Mirror { .. } => ctx.registry.remove_mirror_if_session(&robot, session_no),
+        LinkKind::Robot => ctx.registry.remove_if_session(&robot, session_no),
     }
     let level = match reason {
         CloseReason::Silent { .. } | CloseReason::ReadError(_) => crate::rosout::Level::Warn,
@@ -262,7 +290,7 @@ pub async fn serve_agent<R, W, P>(
         format!("{what} disconnected: {reason}"),
     );
     drive::stop_writer(writer, ctrl_tx, &reason).await;
-    if mirror.is_none() {
+    if kind == LinkKind::Robot {
         record_seen(&ctx.store, &robot, addr, false);
     }
 }
@@ -322,8 +350,8 @@ where
     };
     // The name is parsed here, at the edge; a refusal quotes the rule.
     let name = RobotName::new(&robot).map_err(|e| Ended::Refuse(e.to_string(), None))?;
-    let mirror = match mirror.as_str() {
-        "" => None,
+    let kind = match mirror.as_str() {
+        "" => LinkKind::Robot,
         m => match RobotName::new(m) {
             Ok(_) if m == robot => {
                 let reason = format!(
@@ -331,7 +359,7 @@ where
                 );
                 return Err(Ended::Refuse(reason, Some(robot)));
             }
-            Ok(_) => Some(mirror),
+            Ok(_) => LinkKind::Mirror { of: mirror },
             Err(e) => return Err(Ended::Refuse(format!("mirror of {m:?}: {e}"), Some(robot))),
         },
     };
@@ -365,17 +393,20 @@ where
     };
     let admin = GroupName::new("admin").expect("a valid group name");
     // The namespace the link acts in: a mirror's is its robot's.
-    let acts_in = mirror.as_deref().unwrap_or(&robot);
+    let acts_in = kind.acts_in(&robot);
     match authenticated {
         // Anyone else acting as a robot needs a rule letting it publish under that
         // robot's namespace: otherwise a viewer's token could evict a robot. So does any
         // mirror, whatever its credential: a robot token names the mirror, not the robot.
         Ok(identity)
-            if (operator || mirror.is_some())
+            if (operator || kind != LinkKind::Robot)
                 && !identity.in_group(&admin)
                 && !may_publish_under(&ctx.security, &identity, acts_in) =>
         {
-            let what = if mirror.is_some() { "mirror" } else { "act as" };
+            let what = match kind {
+                LinkKind::Mirror { .. } => "mirror",
+                LinkKind::Robot => "act as",
+            };
             let reason = format!(
                 "{} may not {what} robot {acts_in}: no rule lets it publish under /{acts_in}",
                 identity.principal()
@@ -387,7 +418,7 @@ where
             heartbeat_ms,
             identity,
             outbox_epoch,
-            mirror,
+            kind,
         }),
         // The public message alone ("authentication failed", "authentication required",
         // a rate limit): the agent turns it into advice.
@@ -512,9 +543,16 @@ fn record_seen(store: &Store, robot: &str, addr: Option<SocketAddr>, online: boo
     });
 }
 
-/// Tells a connection why it is not accepted, then closes it.
-async fn refuse<K>(mut sink: K, reason: String, who: &str, rosout: &crate::rosout::RosOut)
-where
+/// Tells a connection why it is not accepted, then closes it: the session's refusal (a
+/// `STATUS` 401 with the reason, queued by the session itself when it refused a malformed
+/// `HELLO`), then a close frame (1008 with the reason).
+async fn refuse<K>(
+    mut sink: K,
+    session: &mut LinkSession,
+    reason: String,
+    who: &str,
+    rosout: &crate::rosout::RosOut,
+) where
     K: Sink<WsMessage, Error = WsError> + Unpin,
 {
     tracing::warn!("refusing agent: {reason}");
@@ -523,18 +561,15 @@ where
         "refused",
         format!("refused agent {who}: {reason}"),
     );
-    let status = Frame::Status {
-        level: fleetlink_proto::frame::Level::Error,
-        code: 401,
-        alias: 0,
-        text: reason.clone(),
-    };
-    let _ = sink.send(WsMessage::Binary(status.to_bytes())).await;
-    let reason: String = reason.chars().take(120).collect();
-    let close = CloseFrame {
-        code: CloseCode::Policy,
-        reason: reason.into(),
-    };
-    let _ = sink.send(WsMessage::Close(Some(close))).await;
+    session.refuse(reason.clone());
+    while let Some(c) = session.poll_transmit() {
+        if let Control::Frame(f) = c
+            && sink.feed(WsMessage::Binary(f.to_bytes())).await.is_err()
+        {
+            return;
+        }
+    }
+    let close = drive::close_frame(&CloseReason::Refused(reason));
+    let _ = sink.send(WsMessage::Close(close)).await;
     let _ = sink.close().await;
 }
