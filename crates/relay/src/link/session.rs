@@ -781,7 +781,7 @@ impl LinkSession {
     }
 
     /// Whether the hub may leave out this heartbeat's `PING`: the peer pinged within the
-    /// last heartbeat, so it hears the hub's `PONG` and the hub hears the peer, each well
+    /// last heartbeat and a quarter ([`LinkSession::peer_pings_within`]), so it hears the hub's `PONG` and the hub hears the peer, each well
     /// inside two heartbeats, without a second exchange. Every [`HUB_PING_EVERY`]th
     /// heartbeat still pings, for the round trip and clock offset it measures. Only the
     /// hub skips: a peer that stops pinging gets the hub's pings again from the next
@@ -792,16 +792,27 @@ impl LinkSession {
             && self.pings_skipped + 1 < HUB_PING_EVERY
             && self
                 .peer_pinged
-                .is_some_and(|at| now.saturating_duration_since(at) < self.heartbeat)
+                .is_some_and(|at| now.saturating_duration_since(at) < self.peer_pings_within())
+    }
+
+    /// How long after the peer's last `PING` the hub still counts it as pinging: a
+    /// heartbeat, and a quarter for the peer's timer running late and the network's
+    /// jitter. Without the quarter, a peer whose pings come a heartbeat apart plus a
+    /// millisecond had the hub's own timer win the race every other heartbeat, and the
+    /// hub pinged about half the heartbeats instead of one in [`HUB_PING_EVERY`]. A peer
+    /// that stops pinging hears the hub's pings a quarter of a heartbeat later than
+    /// without it, still inside the two heartbeats its link may stay silent.
+    fn peer_pings_within(&self) -> Duration {
+        self.heartbeat + self.heartbeat / 4
     }
 
     /// When the heartbeat timer must next run. The agent pings every heartbeat. The hub,
     /// while the peer pings ([`LinkSession::skip_ping`]) and no acknowledgement waits to go
     /// with a heartbeat, would only leave its pings out: it sleeps through them until its
-    /// every-[`HUB_PING_EVERY`]th ping or until the peer has been quiet a heartbeat,
-    /// whichever comes first. Each ping the peer sends wakes the hub anyway (it answers
-    /// it), and this is asked again then; so an idle robot's link wakes the hub once a
-    /// heartbeat, not twice.
+    /// every-[`HUB_PING_EVERY`]th ping or until the peer has been quiet a heartbeat and a
+    /// quarter, whichever comes first. Each ping the peer sends wakes the hub anyway (it
+    /// answers it), and this is asked again then; so an idle robot's link wakes the hub
+    /// once a heartbeat, not twice.
     fn heartbeat_due(&self) -> Instant {
         let Some(pinged) = self.peer_pinged else {
             return self.next_ping;
@@ -811,7 +822,7 @@ impl LinkSession {
         }
         let skips_left = HUB_PING_EVERY.saturating_sub(self.pings_skipped + 1);
         let own_ping = self.next_ping + self.heartbeat * skips_left;
-        let peer_quiet = pinged + self.heartbeat;
+        let peer_quiet = pinged + self.peer_pings_within();
         self.next_ping.max(own_ping.min(peer_quiet))
     }
 

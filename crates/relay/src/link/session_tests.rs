@@ -276,6 +276,10 @@ struct Pair {
     /// Each message is held up by this much with probability `loss` (a TCP retransmission).
     loss: f64,
     rto: Duration,
+    /// Each message takes up to this much longer than `latency` (uniform), in order.
+    jitter: Duration,
+    /// The agent's `PING`s never reach the hub (a peer that stopped pinging).
+    agent_stops_pinging: bool,
     cut: bool,
     rng: fastrand::Rng,
     /// Goals running for feedback: (provider side is agent?, id).
@@ -325,6 +329,8 @@ impl Pair {
             latency,
             loss: 0.0,
             rto: Duration::from_millis(200),
+            jitter: Duration::ZERO,
+            agent_stops_pinging: false,
             cut: false,
             rng: fastrand::Rng::with_seed(36),
             feedback_goals: false,
@@ -336,7 +342,17 @@ impl Pair {
             return;
         }
         for m in msgs {
+            if to_hub
+                && self.agent_stops_pinging
+                && m.first() == Some(&(fleetlink_proto::frame::FrameKind::Ping as u8))
+            {
+                continue;
+            }
             let mut at = self.now + self.latency;
+            if !self.jitter.is_zero() {
+                let ns = u64::try_from(self.jitter.as_nanos()).unwrap_or(u64::MAX);
+                at += Duration::from_nanos(self.rng.u64(0..=ns));
+            }
             if self.loss > 0.0 && self.rng.f64() < self.loss {
                 at += self.rto;
             }
@@ -695,6 +711,30 @@ fn an_idle_link_stays_up_on_heartbeats_alone() {
     p.run_until(end, |_| {});
     check_side(&p.hub, "hub, idle", "robot link lost");
     check_side(&p.agent, "agent, idle", "hub link lost");
+}
+
+#[test]
+fn the_hub_leaves_its_pings_out_when_the_agents_come_a_little_late() {
+    // A real agent's pings come a heartbeat apart plus its timer's lateness and the
+    // network's jitter: the hub must not take each late one for a quiet peer.
+    let mut p = Pair::new(Duration::from_millis(300));
+    p.open();
+    p.jitter = Duration::from_millis(40);
+    let before = p.hub.session.stats().pings_sent;
+    let end = p.now + Duration::from_secs(60);
+    p.run_until(end, |_| {});
+    assert!(p.hub.closed.is_none() && p.agent.closed.is_none());
+    let hub_pings = p.hub.session.stats().pings_sent - before;
+    let every = u64::from(HUB_PING_EVERY);
+    assert!(
+        (60 / every - 1..=60 / every + 1).contains(&hub_pings),
+        "hub pinged {hub_pings} times in 60 s"
+    );
+    // A peer that stops pinging gets the hub's pings in time to keep its link up.
+    p.agent_stops_pinging = true;
+    let end = p.now + Duration::from_secs(10);
+    p.run_until(end, |_| {});
+    assert!(p.hub.closed.is_none() && p.agent.closed.is_none());
 }
 
 // --- handshake and malformed input
