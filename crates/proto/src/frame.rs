@@ -917,17 +917,7 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                 payload,
             }
         }
-        0x08 => {
-            let p = read_chunk(r, &CHUNK_FIELDS)?;
-            Frame::Chunk {
-                alias: p.alias,
-                seq: p.seq,
-                stamp_ns: p.stamp_ns,
-                total_len: p.total_len,
-                offset: p.offset,
-                data: p.data,
-            }
-        }
+        0x08 => read_chunk(r, &CHUNK_FIELDS)?.into_frame(false),
         0x09 => Frame::Ping {
             id: r.u64_le("PING.id")?,
             sent_ns: r.u64_le("PING.sent_ns")?,
@@ -1087,17 +1077,7 @@ fn decode_body(kind: u8, r: &mut Reader<'_>) -> Result<Frame, DecodeError> {
                 payload,
             }
         }
-        0x1b => {
-            let p = read_chunk(r, &ZCHUNK_FIELDS)?;
-            Frame::ZChunk {
-                alias: p.alias,
-                seq: p.seq,
-                stamp_ns: p.stamp_ns,
-                total_len: p.total_len,
-                offset: p.offset,
-                data: p.data,
-            }
-        }
+        0x1b => read_chunk(r, &ZCHUNK_FIELDS)?.into_frame(true),
         other => Frame::Unknown { kind: other },
     };
     Ok(frame)
@@ -1176,6 +1156,39 @@ struct Piece {
     total_len: u64,
     offset: u64,
     data: Bytes,
+}
+
+impl Piece {
+    /// The frame it came in: `ZCHUNK` when `compressed`, else `CHUNK`.
+    fn into_frame(self, compressed: bool) -> Frame {
+        let Piece {
+            alias,
+            seq,
+            stamp_ns,
+            total_len,
+            offset,
+            data,
+        } = self;
+        if compressed {
+            Frame::ZChunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            }
+        } else {
+            Frame::Chunk {
+                alias,
+                seq,
+                stamp_ns,
+                total_len,
+                offset,
+                data,
+            }
+        }
+    }
 }
 
 /// A `CHUNK` (or `ZCHUNK`), its piece checked to lie inside the whole.

@@ -781,8 +781,9 @@ impl LinkSession {
     }
 
     /// Whether the hub may leave out this heartbeat's `PING`: the peer pinged within the
-    /// last heartbeat and a quarter ([`LinkSession::peer_pings_within`]), so it hears the hub's `PONG` and the hub hears the peer, each well
-    /// inside two heartbeats, without a second exchange. Every [`HUB_PING_EVERY`]th
+    /// last heartbeat and a quarter ([`LinkSession::peer_pings_within`]), so it hears the
+    /// hub's `PONG` and the hub hears the peer, each well inside two heartbeats, without a
+    /// second exchange. Every [`HUB_PING_EVERY`]th
     /// heartbeat still pings, for the round trip and clock offset it measures. Only the
     /// hub skips: a peer that stops pinging gets the hub's pings again from the next
     /// heartbeat on. An idle fleet's links carry half the frames, which is most of what
