@@ -44,6 +44,8 @@ pub struct AgentOptions {
     pub rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
     /// The black box, if any.
     pub blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
+    /// Camera topics offered as video.
+    pub video: Vec<crate::video::VideoOptions>,
     /// The configuration, changeable while the agent runs ([`crate::runtime`]); `None`:
     /// fixed as built.
     pub runtime: Option<Arc<crate::runtime::RuntimeConfig>>,
@@ -124,6 +126,18 @@ impl AgentOptions {
                     compression: b.compression,
                 }
             }),
+            video: cfg
+                .video
+                .iter()
+                .map(|(camera, v)| {
+                    Ok(crate::video::VideoOptions {
+                        camera: parse(camera)?,
+                        topic: parse(&v.topic)?,
+                        settings: v.settings(),
+                        library: cfg.openh264_library.clone(),
+                    })
+                })
+                .collect::<Result<_, fleetlink_relay::NameError>>()?,
             runtime: None,
         })
     }
@@ -278,6 +292,7 @@ pub struct Agent {
     ros2: Option<fleetlink_ros2::Ros2Options>,
     rosbridge: Option<fleetlink_rosbridge_client::RosbridgeClientOptions>,
     blackbox: Option<fleetlink_record::blackbox::ring::RingOptions>,
+    video: Vec<crate::video::VideoOptions>,
     runtime: Option<Arc<crate::runtime::RuntimeConfig>>,
     /// A mirror offers no configuration services to the fleet (their names would be its
     /// robot's).
@@ -328,6 +343,7 @@ impl Agent {
             ros2: opts.ros2,
             rosbridge: opts.rosbridge,
             blackbox: opts.blackbox,
+            video: opts.video,
             runtime: opts.runtime,
             mirror,
             robot,
@@ -484,6 +500,18 @@ impl Agent {
                 shutdown.clone(),
             ))
         });
+        let video: Vec<_> = std::mem::take(&mut self.video)
+            .into_iter()
+            .map(|opts| {
+                let interest = Some(self.uplink.read_interest());
+                tokio::spawn(crate::video::serve(
+                    opts,
+                    self.router.clone(),
+                    interest,
+                    shutdown.clone(),
+                ))
+            })
+            .collect();
         let status = (!parts.is_empty()).then(|| {
             tokio::spawn(crate::status::publish(
                 self.router.clone(),
@@ -500,6 +528,7 @@ impl Agent {
             for t in [local, sim, ros1, rosbridge, blackbox, status, runtime_task]
                 .into_iter()
                 .flatten()
+                .chain(video)
             {
                 let _ = t.await;
             }

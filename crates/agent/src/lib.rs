@@ -26,5 +26,6 @@ pub mod runtime;
 pub mod sim;
 pub mod status;
 pub mod uplink;
+pub mod video;
 
 pub use agent::{Agent, AgentOptions};

@@ -61,6 +61,17 @@ impl ReadInterest {
         self.outbox.reads(t.id().0)
     }
 
+    /// Whether someone has asked for `topic`, which `reader` makes: a local subscriber
+    /// other than `reader` and the uplink, or the hub's interest ([`Outbox::asked_for`]).
+    /// Unlike [`ReadInterest::wanted`], a link that has not said what it wants asks for
+    /// nothing: for what costs the robot to make, not merely to read (a video encoder).
+    pub fn asked_for(&self, topic: &TopicName, reader: ClientId) -> bool {
+        let Some(t) = self.router.topic(topic) else {
+            return false;
+        };
+        t.has_subscriber_besides(&[reader, self.uplink]) || self.outbox.asked_for(t.id().0)
+    }
+
     /// [`ReadInterest::wanted`], with the wait before stopping: `unwanted_since` is the
     /// topic's own record of when it was last found unwanted (kept by the bridge).
     pub fn look(
@@ -70,7 +81,22 @@ impl ReadInterest {
         unwanted_since: &mut Option<Instant>,
         now: Instant,
     ) -> Look {
-        if self.wanted(topic, reader) {
+        Self::after_wait(self.wanted(topic, reader), unwanted_since, now)
+    }
+
+    /// [`ReadInterest::asked_for`], with the wait before stopping of [`ReadInterest::look`].
+    pub fn look_asked(
+        &self,
+        topic: &TopicName,
+        reader: ClientId,
+        unwanted_since: &mut Option<Instant>,
+        now: Instant,
+    ) -> Look {
+        Self::after_wait(self.asked_for(topic, reader), unwanted_since, now)
+    }
+
+    fn after_wait(wanted: bool, unwanted_since: &mut Option<Instant>, now: Instant) -> Look {
+        if wanted {
             *unwanted_since = None;
             return Look::Read;
         }

@@ -31,6 +31,7 @@ pub mod runtime;
 mod sim;
 mod source;
 mod validate;
+mod video;
 
 use std::collections::BTreeMap;
 use std::fmt;
@@ -50,6 +51,7 @@ pub use sim::{
     ImageSim, LaserScanSim, MarkersSim, OdometrySim, PointCloudSim, PoseSim, SimConfig, period_of,
 };
 pub use source::ConfigSource;
+pub use video::VideoStreamConfig;
 
 /// The agent's configuration. See `docs/config.md` for every field.
 #[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
@@ -114,6 +116,11 @@ pub struct AgentConfig {
     /// (docs/runtime-config.md). Default: `<name>/runtime.json` in the state directory
     /// ([`AgentConfig::runtime_file_path`]).
     pub runtime_file: Option<PathBuf>,
+    /// Camera topics offered as H.264 video, keyed by the camera topic (docs/video.md).
+    pub video: BTreeMap<String, VideoStreamConfig>,
+    /// Cisco's prebuilt OpenH264 library (`libopenh264.so.7`) to encode video with, instead
+    /// of the one built into fleetlink (docs/video.md says when one would).
+    pub openh264_library: Option<PathBuf>,
 }
 
 /// `blackbox:` — a ring buffer of local topics on the robot's disk, in MCAP segments, the
@@ -206,6 +213,8 @@ impl Default for AgentConfig {
             link: LinkSettings::default(),
             blackbox: None,
             runtime_file: None,
+            video: BTreeMap::new(),
+            openh264_library: None,
         }
     }
 }

@@ -1196,3 +1196,76 @@ fn a_mirror_lives_in_its_robots_namespace_under_a_name_of_its_own() {
     let e = AgentConfig::from_str("name: a\nmirror: 3robot\n", "m.yaml").expect_err("name");
     assert!(e.to_string().starts_with("m.yaml:2:"), "{e}");
 }
+
+#[test]
+fn video_section_becomes_stream_options_and_its_errors_name_the_field() {
+    let cfg = AgentConfig::from_str(
+        "video:\n  /camera/image_raw: { topic: /camera/video, fps: 10, keyframe_s: 3 }\n",
+        "robot.yaml",
+    )
+    .expect("valid video section");
+    let v = crate::AgentOptions::from_config(&cfg)
+        .expect("options")
+        .video;
+    assert_eq!(v.len(), 1);
+    assert_eq!(v[0].camera.as_str(), "/camera/image_raw");
+    assert_eq!(v[0].topic.as_str(), "/camera/video");
+    assert_eq!(v[0].settings.fps, 10.0);
+    assert_eq!(v[0].settings.bitrate_bps, 1_000_000, "the default bitrate");
+    assert_eq!(v[0].settings.keyframe_every, 30, "3 s at 10 fps");
+    assert_eq!(v[0].library, None);
+    // The docs' example is valid (but for the library, which is not on this machine).
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let doc = std::fs::read_to_string(root.join("docs/config.md")).expect("docs/config.md");
+    let block = doc
+        .split("```yaml\nvideo:")
+        .nth(1)
+        .and_then(|rest| rest.split("openh264_library").next())
+        .expect("the video block in docs/config.md");
+    let cfg = AgentConfig::from_str(&format!("video:{block}"), "docs/config.md")
+        .expect("docs video example is valid");
+    assert_eq!(cfg.video["/camera/image_raw"].bitrate_kbps, 1000);
+
+    for (text, want) in [
+        (
+            "video: { /cam: { topic: /cam } }\n",
+            "video[\"/cam\"].topic: is the camera topic itself",
+        ),
+        (
+            "video: { /a: { topic: /v }, /b: { topic: /v } }\n",
+            "video[\"/b\"].topic: /v is already the video of /a",
+        ),
+        (
+            "video: { /a: { topic: /b }, /b: { topic: /c } }\n",
+            "video[\"/a\"].topic: /b is a camera topic of video: too",
+        ),
+        (
+            "video: { /a: { topic: /v, fps: 0 } }\n",
+            "video[\"/a\"].fps: must be 1 to 60 (frames a second), got 0",
+        ),
+        (
+            "video: { /a: { topic: /v, bitrate_kbps: 10 } }\n",
+            "video[\"/a\"].bitrate_kbps: must be 50 to 50000",
+        ),
+        (
+            "video: { /a: { topic: /v, keyframe_s: 0 } }\n",
+            "video[\"/a\"].keyframe_s: must be 0.2 to 60",
+        ),
+        (
+            "video: { a: { topic: /v } }\n",
+            "video.a: camera topic must start with '/'",
+        ),
+        ("video: { /a: { fps: 5 } }\n", "missing field `topic`"),
+        (
+            "video: { /a: { topic: /v, crf: 5 } }\n",
+            "unknown field `crf`",
+        ),
+        (
+            "openh264_library: /nonexistent/libopenh264.so\n",
+            "openh264_library: /nonexistent/libopenh264.so is not a file",
+        ),
+    ] {
+        let e = err(text).to_string();
+        assert!(e.contains(want), "for {text:?}: {e}");
+    }
+}

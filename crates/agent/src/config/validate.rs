@@ -160,6 +160,7 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     if let Some(b) = &cfg.blackbox {
         validate_blackbox(b)?;
     }
+    validate_video(cfg)?;
     let topics = FieldPath::from("topics");
     for (name, spec) in &cfg.topics {
         check_topic(name).map_err(|m| Problem {
@@ -347,6 +348,66 @@ fn validate_blackbox(b: &super::BlackBoxConfig) -> Result<(), Problem> {
         ));
     }
     check_patterns([(at.key("topics"), &b.topics)])
+}
+
+/// `video:`: each camera topic and video topic a valid name, the video topic neither the
+/// camera's nor another stream's, the settings in range; `openh264_library` a file.
+fn validate_video(cfg: &AgentConfig) -> Result<(), Problem> {
+    let at = FieldPath::from("video");
+    let mut seen: BTreeMap<&str, &str> = BTreeMap::new();
+    for (camera, stream) in &cfg.video {
+        check_topic(camera).map_err(|m| Problem {
+            path: at.key(camera.clone()),
+            at_key: true,
+            message: format!("camera topic {m}"),
+        })?;
+        let here = at.key(camera.clone());
+        check_topic(&stream.topic).map_err(|m| problem(here.key("topic"), m))?;
+        if stream.topic == *camera {
+            return Err(problem(
+                here.key("topic"),
+                format!(
+                    "is the camera topic itself; name the video topic beside it, such as \
+                     {}/video",
+                    camera.rsplit_once('/').map_or("", |(dir, _)| dir)
+                ),
+            ));
+        }
+        if let Some(other) = seen.insert(&stream.topic, camera) {
+            return Err(problem(
+                here.key("topic"),
+                format!(
+                    "{} is already the video of {other}; give each camera its own",
+                    stream.topic
+                ),
+            ));
+        }
+        if cfg.video.contains_key(&stream.topic) {
+            return Err(problem(
+                here.key("topic"),
+                format!(
+                    "{} is a camera topic of video: too; a video topic cannot be a camera",
+                    stream.topic
+                ),
+            ));
+        }
+        if let Some((field, message)) = stream.problem() {
+            return Err(problem(here.key(field), message));
+        }
+    }
+    if let Some(path) = &cfg.openh264_library
+        && !path.is_file()
+    {
+        return Err(problem(
+            "openh264_library".into(),
+            format!(
+                "{} is not a file: give the path of Cisco's libopenh264.so (docs/video.md), \
+                 or leave it out to use the built-in encoder",
+                path.display()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 fn validate_rosbridge(r: &super::RosbridgeConfig) -> Result<(), Problem> {

@@ -38,8 +38,9 @@ pub fn robot_config(hub_url: &str, i: u32) -> anyhow::Result<(AgentConfig, Confi
     let yaml = format!(
         "name: robot{i}\nheartbeat_ms: 500\nlocal_rosbridge: null\n\
          sim:\n  seed: {i}\n  laser_scan: {{ rate_hz: 10 }}\n  odometry: {{ rate_hz: 20 }}\n  pose: {{ rate_hz: 10 }}\n  \
-         point_cloud: {{ rate_hz: 5, points: 5000 }}\n  image: {{ rate_hz: 5 }}\n  \
-         markers: {{ rate_hz: 1 }}\n"
+         point_cloud: {{ rate_hz: 5, points: 5000 }}\n  \
+         image: {{ rate_hz: 15, width: 640, height: 480 }}\n  markers: {{ rate_hz: 1 }}\n\
+         video:\n  /camera/image/compressed: {{ topic: /camera/video, fps: 15, bitrate_kbps: 800 }}\n"
     );
     let mut cfg = AgentConfig::from_str(&yaml, "<demo>")?;
     cfg.hub = vec![hub_url.to_owned()];

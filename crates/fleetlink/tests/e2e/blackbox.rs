@@ -82,6 +82,7 @@ rules:
             // lz4 on the robot; the slice it cuts is zstd.
             compression: fleetlink_record::Compression::Lz4,
         }),
+        video: Vec::new(),
         runtime: None,
     })
     .await;

@@ -228,6 +228,7 @@ pub async fn start_agent_sim(
         ros2: None,
         rosbridge: None,
         blackbox: None,
+        video: Vec::new(),
         runtime: None,
     })
     .await

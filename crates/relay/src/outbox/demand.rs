@@ -229,6 +229,18 @@ impl Outbox {
         }
     }
 
+    /// Whether the peer has asked for `alias`: [`Outbox::reads`], but a peer that has not
+    /// said what it wants (not connected yet, or a hub that sends everything) asks for
+    /// nothing. For what costs the robot to make, not merely to read (a video encoder).
+    pub fn asked_for(&self, alias: u32) -> bool {
+        match &self.lock().service {
+            Service::Scheduled { demand, .. } => {
+                (demand.driven && demand.flows(alias)) || demand.pull.contains(&alias)
+            }
+            Service::RoundRobin { .. } => true,
+        }
+    }
+
     /// [`Outbox::reads`] of the topic a slot of this outbox receives (false for a slot it
     /// no longer has).
     pub fn reads_slot(&self, slot: SlotId) -> bool {

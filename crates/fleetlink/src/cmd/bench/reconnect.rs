@@ -115,6 +115,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             ros2: None,
             rosbridge: None,
             blackbox: None,
+            video: Vec::new(),
             runtime: None,
         };
         let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;

@@ -1,0 +1,218 @@
+//! The agent's video streams: each camera topic of the `video:` section offered as an H.264
+//! video topic, encoded only while someone wants the video (crates/video, docs/video.md).
+//!
+//! Each stream is an in-process participant of the agent's router. It advertises its video
+//! topic at once, so the hub lists it, and asks the uplink's read interest whether anyone
+//! wants it: a viewer at the hub, a local subscriber. While someone does, it subscribes to
+//! the camera topic (which makes the ROS bridges read the camera) and runs an encoder
+//! thread ([`fleetlink_video::Stream`]); once nobody has wanted the video for
+//! [`UNWANTED_BEFORE_PAUSE`](fleetlink_relay::read_interest::UNWANTED_BEFORE_PAUSE), it
+//! stops the thread and lets the camera go. The camera topic itself is sent to the hub only
+//! if someone there wants it too.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::time::{Duration, Instant};
+
+use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::read_interest::{Look, ReadInterest};
+use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
+use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
+use fleetlink_video::source::SourceKind;
+use fleetlink_video::{Settings, Stream, VIDEO_TYPE};
+use tokio_util::sync::CancellationToken;
+
+/// How often a stream looks again at who wants it when nothing told it (local subscribers
+/// coming and going are not signalled).
+const LOOK_EVERY: Duration = Duration::from_secs(1);
+
+/// One configured stream.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VideoOptions {
+    /// The camera topic (`sensor_msgs/msg/Image` or `CompressedImage`).
+    pub camera: TopicName,
+    /// The video topic it is offered as.
+    pub topic: TopicName,
+    pub settings: Settings,
+    /// Cisco's OpenH264 to load instead of the built-in one.
+    pub library: Option<PathBuf>,
+}
+
+/// Runs one stream until `shutdown`.
+pub async fn serve(
+    opts: VideoOptions,
+    router: Arc<Router>,
+    interest: Option<Arc<ReadInterest>>,
+    shutdown: CancellationToken,
+) {
+    let (client, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "video".into(),
+        },
+        None,
+    );
+    let topic = match router.advertise(client, &opts.topic, Schema::named(VIDEO_TYPE), false) {
+        Ok(t) => t,
+        Err(e) => {
+            tracing::warn!("video: cannot offer {}: {e}", opts.topic);
+            router.disconnect(client);
+            return;
+        }
+    };
+    let mut running: Option<Running> = None;
+    let mut unwanted_since = None;
+    let mut look = tokio::time::interval(LOOK_EVERY);
+    look.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    let mut unreadable: Option<String> = None;
+    loop {
+        tokio::select! {
+            _ = shutdown.cancelled() => break,
+            _ = ReadInterest::changed(&interest) => {}
+            _ = look.tick() => {}
+            _ = outbox.ready() => {
+                loop {
+                    let batch = outbox.take(16, 64 << 20, Instant::now());
+                    if batch.items.is_empty() {
+                        break;
+                    }
+                    for (_, _, msg) in batch.items {
+                        let Some(r) = &running else { continue };
+                        let Some(kind) = SourceKind::of_type(&msg.topic.schema.type_name) else {
+                            note_once(&mut unreadable, format!(
+                                "{} is a {}, not a sensor_msgs/Image or CompressedImage; \
+                                 it cannot be offered as video",
+                                opts.camera, msg.topic.schema.type_name));
+                            continue;
+                        };
+                        match msg.payload_in(Encoding::Cdr, router.transcoder()) {
+                            Ok(cdr) => r.stream.push(kind, cdr, msg.received()),
+                            Err(e) => note_once(&mut unreadable, format!(
+                                "a message of {} does not convert to CDR: {e}", opts.camera)),
+                        }
+                    }
+                }
+                continue;
+            }
+        }
+        let wanted = match &interest {
+            Some(i) => i.look_asked(&opts.topic, client, &mut unwanted_since, Instant::now()),
+            // Without an uplink only local subscribers count.
+            None if topic.has_subscriber_besides(&[client]) => Look::Read,
+            None => Look::Stop,
+        };
+        match (wanted, running.is_some()) {
+            (Look::Read, false) => {
+                running = Running::start(&opts, &router, client, &topic);
+                unreadable = None;
+            }
+            (Look::Stop, true) => {
+                if let Some(r) = running.take() {
+                    r.stop(&router, client);
+                }
+                // The last frame kept for the hub would start a later viewer's picture
+                // on a frame that needs the ones before it.
+                if let Some(i) = &interest {
+                    i.stopped_reading(&opts.topic);
+                }
+            }
+            _ => {}
+        }
+    }
+    if let Some(r) = running.take() {
+        r.stop(&router, client);
+    }
+    router.disconnect(client);
+}
+
+/// A stream while someone wants it.
+struct Running {
+    topic: TopicName,
+    sub: SubscriptionId,
+    stream: Stream,
+}
+
+impl Running {
+    fn start(
+        opts: &VideoOptions,
+        router: &Arc<Router>,
+        client: ClientId,
+        topic: &Arc<Topic>,
+    ) -> Option<Running> {
+        let seq = AtomicU64::new(0);
+        let publish_to = topic.clone();
+        let sink = Box::new(move |out: fleetlink_video::Output| {
+            let n = seq.fetch_add(1, Relaxed) + 1;
+            let payload = Payload::new(Encoding::Cdr, out.cdr);
+            publish_to.publish_at(
+                publish_to.meta(),
+                client,
+                n,
+                out.stamp_ns,
+                payload,
+                out.arrived,
+            );
+        });
+        let stream = match Stream::spawn(
+            opts.topic.as_str(),
+            opts.settings,
+            opts.library.clone(),
+            sink,
+        ) {
+            Ok(s) => s,
+            Err(e) => {
+                tracing::warn!("video {}: cannot start its encoder thread: {e}", opts.topic);
+                return None;
+            }
+        };
+        let sub = match router.subscribe(
+            client,
+            Target::Exact(opts.camera.clone()),
+            SubOptions::default(),
+        ) {
+            Ok(sub) => sub,
+            Err(e) => {
+                tracing::warn!("video {}: cannot read {}: {e}", opts.topic, opts.camera);
+                return None;
+            }
+        };
+        tracing::info!(
+            "video {}: someone watches; encoding {}",
+            opts.topic,
+            opts.camera
+        );
+        Some(Running {
+            topic: opts.topic.clone(),
+            sub,
+            stream,
+        })
+    }
+
+    fn stop(self, router: &Router, client: ClientId) {
+        router.unsubscribe(client, self.sub);
+        let s = self.stream.stats();
+        let stream = self.stream;
+        // Dropping the stream joins its thread (after the frame it is encoding): off the
+        // agent's runtime.
+        tokio::task::spawn_blocking(move || drop(stream));
+        tracing::info!(
+            "video {}: nobody watches; stopped after {} frames ({} keyframes, {} left out \
+             over the frame rate, {} skipped by rate control, {} behind, {} failed)",
+            self.topic,
+            s.encoded.load(Relaxed),
+            s.keyframes.load(Relaxed),
+            s.over_rate.load(Relaxed),
+            s.skipped.load(Relaxed),
+            s.dropped.load(Relaxed),
+            s.failed.load(Relaxed),
+        );
+    }
+}
+
+/// Logs a problem with the camera's messages once until it changes.
+fn note_once(last: &mut Option<String>, text: String) {
+    if last.as_deref() != Some(text.as_str()) {
+        tracing::warn!("video: {text}");
+        *last = Some(text);
+    }
+}

@@ -1,0 +1,134 @@
+#!/usr/bin/env bash
+# Video interop suite (issue 60): camera topics offered as H.264 video, encoded on the
+# robot only while someone watches, decoded by FFmpeg (PyAV) from the first message on.
+# Real `fleetlink hub` and `fleetlink agent` processes in a network namespace of the
+# run's own (DDS discovery on its loopback); the robot's camera is a Cyclone DDS node
+# publishing 640x480 rgb8 sensor_msgs/msg/Image at 15 Hz, a test scene that is a function
+# of each message's stamp; the agent's simulated camera adds a 640x480 JPEG topic.
+#
+# Checks:
+#   1. both video topics are listed at the hub as foxglove_msgs/msg/CompressedVideo, and
+#      with nobody watching neither they nor the cameras send anything;
+#   2. a roslibpy viewer of /robot1/camera/video gets frames that PyAV decodes from the
+#      first message on, 640x480, near 15 a second, each within 30 dB luma PSNR of the
+#      scene its stamp names;
+#   3. meanwhile the raw camera topic itself was not sent to the hub (nobody there wants
+#      it: 0 messages);
+#   4. the simulated JPEG camera's video decodes too, 640x480;
+#   5. nobody watching any more, the agent stops encoding (its log says so).
+#
+# Needs root (network namespace). Bounded: about 60 s; every process runs under
+# `timeout`, killed on exit.
+#
+# Env: FLEETLINK_BIN (default target/release/fleetlink), PYTHON (default .venv/bin/python
+# with cyclonedds, av, numpy: scripts/setup.d/10-python-venv.sh, 35-ros2-peers.sh).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+bin="${FLEETLINK_BIN:-$root/target/release/fleetlink}"
+python="${PYTHON:-$root/.venv/bin/python}"
+export ROS_DOMAIN_ID=31 PYTHONDONTWRITEBYTECODE=1 NO_COLOR=1
+unset ROS_DISTRO
+
+[ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
+[ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
+"$python" -c 'import cyclonedds.domain, av, numpy, roslibpy' 2>/dev/null \
+    || { echo "FAIL: $python lacks cyclonedds, av, numpy or roslibpy; run scripts/setup-test-env.sh" >&2; exit 1; }
+[ "$(id -u)" -eq 0 ] || { echo "FAIL: the video suite needs root for its network namespace" >&2; exit 1; }
+bin="$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")"
+
+# shellcheck source=../lib.sh
+. "$here/../lib.sh"
+interop_begin video
+ns="flvid-$$"
+interop_netns "$ns"
+in_ns() { ip netns exec "$ns" timeout --kill-after=5 "$@"; }
+failed=()
+fail() { echo "FAIL: $*"; failed+=("$*"); }
+step() { echo "== $1"; }
+
+admin() { in_ns 30 "$bin" admin --data-dir "$tmp/hub-data" "$@"; }
+robot_token="$(admin token robot robot1)"
+op_token="$(admin token operator video --group admin)"
+in_ns 120 "$bin" hub --listen 127.0.0.1:0 --data-dir "$tmp/hub-data" >"$tmp/hub.log" 2>&1 &
+pids+=($!)
+hub_port="$(wait_for_line "$tmp/hub.log" '^fleetlink hub listening on [0-9.]+:([0-9]+)$' "hub start" "${pids[-1]}")"
+hub="127.0.0.1:$hub_port"
+api() { in_ns 10 curl -sf -H "Authorization: Bearer $op_token" "http://$hub$1"; }
+
+in_ns 90 "$python" "$here/video_peer.py" camera 80 >"$tmp/camera.log" 2>&1 &
+pids+=($!)
+wait_for_line "$tmp/camera.log" '^(camera) ready$' "the Cyclone camera" "${pids[-1]}" >/dev/null
+
+cat >"$tmp/agent.yaml" <<YAML
+hub: ws://$hub/
+name: robot1
+token: $robot_token
+local_rosbridge: null
+ros2:
+  publish: [/camera/image_raw]
+sim:
+  laser_scan: null
+  odometry: null
+  pose: null
+  point_cloud: null
+  image: { rate_hz: 15, width: 640, height: 480 }
+video:
+  /camera/image_raw: { topic: /camera/video, fps: 15, bitrate_kbps: 1500 }
+  /camera/image/compressed: { topic: /camera/jpeg_video }
+YAML
+in_ns 120 "$bin" agent --config "$tmp/agent.yaml" >"$tmp/agent.log" 2>&1 &
+pids+=($!)
+agent_pid=${pids[-1]}
+
+# A topic's field from the hub's listing: topic_field NAME FIELD.
+topic_field() {
+    api /api/v1/topics | "$python" -c 'import json,sys
+ts={t["name"]: t for t in json.load(sys.stdin)["topics"]}
+t=ts.get(sys.argv[1]); print("-" if t is None else t.get(sys.argv[2]))' "$1" "$2"
+}
+
+step "1. the video topics are listed, and nothing flows unwatched"
+for _ in $(seq 100); do
+    [ "$(topic_field /robot1/camera/image_raw state)" != "-" ] \
+        && [ "$(topic_field /robot1/camera/video state)" != "-" ] && break
+    kill -0 "$agent_pid" 2>/dev/null || break
+    sleep 0.1
+done
+for t in /robot1/camera/video /robot1/camera/jpeg_video; do
+    ty="$(topic_field "$t" type)"
+    [ "$ty" = "foxglove_msgs/msg/CompressedVideo" ] || fail "$t is listed as ${ty:-nothing}, not foxglove_msgs/msg/CompressedVideo"
+done
+sleep 2
+for t in /robot1/camera/video /robot1/camera/jpeg_video /robot1/camera/image_raw /robot1/camera/image/compressed; do
+    n="$(topic_field "$t" messages)"
+    [ "$n" = "0" ] || fail "unwatched, $t reached the hub anyway: $n messages"
+done
+
+step "2. a viewer decodes the camera's video from its first message"
+in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/video 6 \
+    --min-frames 60 --scene | tee "$tmp/watch.log" || fail "the video of the Cyclone camera (see above)"
+
+step "3. the raw camera was not sent for the video"
+n="$(topic_field /robot1/camera/image_raw messages)"
+[ "$n" = "0" ] || fail "/robot1/camera/image_raw reached the hub while only its video was watched: $n messages"
+
+step "4. the JPEG camera's video decodes too"
+in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/jpeg_video 4 \
+    --min-frames 30 | tee "$tmp/watch-jpeg.log" || fail "the video of the simulated JPEG camera (see above)"
+
+step "5. nobody watching, the encoders stop"
+for _ in $(seq 250); do
+    [ "$(grep -c 'nobody watches; stopped' "$tmp/agent.log" || true)" -ge 2 ] && break
+    sleep 0.1
+done
+grep -c 'nobody watches; stopped' "$tmp/agent.log" | grep -qx 2 \
+    || fail "the agent did not stop both encoders within 25 s of the last viewer leaving"
+grep 'nobody watches; stopped' "$tmp/agent.log" | sed 's/^/  agent: /' | head -2
+
+if [ ${#failed[@]} -ne 0 ]; then
+    echo "--- agent log"; tail -n 20 "$tmp/agent.log"
+    echo "video suite: ${#failed[@]} check(s) failed"
+    exit 1
+fi
+echo "video suite: all checks passed"

@@ -1,0 +1,173 @@
+"""Peers of the video interop suite (tests/interop/video/run.sh).
+
+    camera SECONDS          a Cyclone DDS node publishing /camera/image_raw,
+                            sensor_msgs/msg/Image 640x480 rgb8 at 15 Hz: a test scene
+                            that is a function of the message's stamp (scene()).
+    watch URL TOPIC SECONDS a roslibpy client of the hub subscribed to a video topic
+                            (foxglove_msgs/msg/CompressedVideo) for SECONDS; every frame
+                            is decoded by PyAV (FFmpeg's H.264 decoder) from the first
+                            message on. Checks the size, the count, that each frame
+                            decodes, and with --scene the luma PSNR of each decoded frame
+                            against the scene its stamp names.
+
+Prints what it found; exits 1 with FAIL lines when a check fails.
+"""
+import argparse
+import base64
+import dataclasses
+import os
+import sys
+import time
+import urllib.parse
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "ros2"))
+
+W, H, HZ = 640, 480, 15
+
+
+def scene(stamp_ns):
+    """The camera's picture at a stamp: colour gradients and a bright box that moves."""
+    x = np.arange(W, dtype=np.uint16)
+    y = np.arange(H, dtype=np.uint16)
+    img = np.empty((H, W, 3), dtype=np.uint8)
+    img[:, :, 0] = (x * 255 // W)[None, :]
+    img[:, :, 1] = (y * 255 // H)[:, None]
+    img[:, :, 2] = 96
+    t = (stamp_ns // 1_000_000) % 4000
+    bx = int(t * (W - 96) // 4000)
+    img[160:320, bx:bx + 96, :] = (250, 250, 240)
+    return img
+
+
+def luma(rgb):
+    """Full-range BT.601 luma, as the encoder's input."""
+    r, g, b = (rgb[:, :, i].astype(np.float64) for i in range(3))
+    return 0.299 * r + 0.587 * g + 0.114 * b
+
+
+def camera(seconds):
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.idl import IdlStruct
+    from cyclonedds.idl.types import sequence, uint8, uint32
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    import ros2_types as t
+
+    @dataclasses.dataclass
+    class Image(IdlStruct, typename=t.dds_name("sensor_msgs/msg/Image")):
+        header: t.Header
+        height: uint32
+        width: uint32
+        encoding: str
+        is_bigendian: uint8
+        step: uint32
+        data: sequence[uint8]
+
+    dp = DomainParticipant(int(os.environ.get("ROS_DOMAIN_ID", "0")))
+    topic = Topic(dp, "rt/camera/image_raw", Image)
+    writer = DataWriter(dp, topic, qos=t.qos(reliable=False, depth=2))
+    print("camera ready", flush=True)
+    start = time.monotonic()
+    n = 0
+    while time.monotonic() - start < seconds:
+        now = time.time_ns()
+        img = scene(now)
+        msg = Image(
+            header=t.Header(stamp=t.Time(sec=now // 1_000_000_000, nanosec=now % 1_000_000_000),
+                            frame_id="camera"),
+            height=H, width=W, encoding="rgb8", is_bigendian=0, step=W * 3,
+            data=img.tobytes(),
+        )
+        writer.write(msg)
+        n += 1
+        time.sleep(max(0.0, start + n / HZ - time.monotonic()))
+    print(f"camera published {n}", flush=True)
+
+
+def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr):
+    import av
+    import roslibpy
+
+    u = urllib.parse.urlparse(url)
+    # roslibpy builds the URL from host and port: the token goes in a header instead.
+    token = urllib.parse.parse_qs(u.query).get("token", [None])[0]
+    headers = {"Authorization": f"Bearer {token}"} if token else None
+    ros = roslibpy.Ros(host=u.hostname, port=u.port, headers=headers)
+    ros.run(timeout=10)
+    got = []
+    sub = roslibpy.Topic(ros, topic, "foxglove_msgs/msg/CompressedVideo")
+    sub.subscribe(lambda m: got.append(m))
+    print(f"watch subscribed to {topic}", flush=True)
+    time.sleep(seconds)
+    sub.unsubscribe()
+    ros.terminate()
+
+    failed = []
+    if not got:
+        print(f"FAIL: no message on {topic} in {seconds} s")
+        return 1
+    codec = av.CodecContext.create("h264", "r")
+    decoded, psnrs, sizes = 0, [], set()
+    for i, m in enumerate(got):
+        if m.get("format") != "h264":
+            failed.append(f"message {i}: format {m.get('format')!r}, not h264")
+            continue
+        data = m["data"]
+        data = base64.b64decode(data) if isinstance(data, str) else bytes(data)
+        try:
+            frames = codec.decode(av.Packet(data))
+        except av.error.FFmpegError as e:
+            failed.append(f"message {i} of {len(got)} does not decode: {e}")
+            continue
+        if len(frames) != 1:
+            failed.append(f"message {i}: {len(frames)} pictures, not one")
+        for f in frames:
+            decoded += 1
+            sizes.add((f.width, f.height))
+            if scene_check:
+                ts = m["timestamp"]
+                stamp = int(ts["sec"]) * 1_000_000_000 + int(ts["nanosec"])
+                y = f.to_ndarray(format="gray")[:H, :W].astype(np.float64)
+                # The stream says full range; FFmpeg's gray keeps the samples as they are.
+                ref = luma(scene(stamp))
+                mse = float(np.mean((y - ref) ** 2))
+                psnrs.append(10 * np.log10(255 * 255 / max(mse, 1e-9)))
+    want = tuple(int(v) for v in size.split("x"))
+    if sizes != {want}:
+        failed.append(f"decoded sizes {sorted(sizes)}, want {want}")
+    if decoded < min_frames:
+        failed.append(f"{decoded} frames decoded in {seconds} s, want at least {min_frames}")
+    if psnrs and min(psnrs) < min_psnr:
+        failed.append(f"luma PSNR down to {min(psnrs):.1f} dB against the scene, want >= {min_psnr}")
+    print(f"watch {topic}: {len(got)} messages, {decoded} decoded from the first, sizes {sorted(sizes)}"
+          + (f", luma PSNR min {min(psnrs):.1f} median {float(np.median(psnrs)):.1f} dB" if psnrs else ""))
+    for f in failed:
+        print(f"FAIL: {f}")
+    return 1 if failed else 0
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    sp = ap.add_subparsers(dest="cmd", required=True)
+    c = sp.add_parser("camera")
+    c.add_argument("seconds", type=float)
+    w = sp.add_parser("watch")
+    w.add_argument("url")
+    w.add_argument("topic")
+    w.add_argument("seconds", type=float)
+    w.add_argument("--size", default=f"{W}x{H}")
+    w.add_argument("--min-frames", type=int, default=1)
+    w.add_argument("--scene", action="store_true")
+    w.add_argument("--min-psnr", type=float, default=30.0)
+    a = ap.parse_args()
+    if a.cmd == "camera":
+        camera(a.seconds)
+        return 0
+    return watch(a.url, a.topic, a.seconds, a.size, a.min_frames, a.scene, a.min_psnr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
