@@ -38,6 +38,7 @@ mod bundled;
 pub mod cbor;
 mod cbor_check;
 pub mod error;
+pub mod h264;
 pub mod ident;
 pub mod json;
 pub mod json_scan;

@@ -202,6 +202,9 @@ impl TopicQos {
             "sensor_msgs/Image" | "sensor_msgs/CompressedImage" => {
                 TopicQos::new(2.0, Policy::Afr, 8)
             }
+            // Video: each frame needs the ones before it back to a keyframe, so frames
+            // are not thinned; room for four seconds at 15 fps (docs/video.md).
+            "foxglove_msgs/CompressedVideo" => TopicQos::new(2.0, Policy::DropOldest, 64),
             "sensor_msgs/PointCloud2" | "sensor_msgs/PointCloud" => {
                 TopicQos::new(1.0, Policy::Afr, 8)
             }

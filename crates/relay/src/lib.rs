@@ -42,6 +42,7 @@
 pub mod calls;
 pub mod channel_form;
 pub mod gate;
+pub mod gop;
 pub mod link;
 pub mod link_calls;
 pub mod link_control;

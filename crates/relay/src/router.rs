@@ -146,6 +146,9 @@ pub struct Topic {
     idle: std::sync::atomic::AtomicBool,
     /// Its publisher sends it only when asked ([`Router::request_pull`]).
     pull: std::sync::atomic::AtomicBool,
+    /// A video topic's frames since its last keyframe, for subscribers who come in the
+    /// middle ([`crate::gop`]); set once its type is known to be video.
+    gop: std::sync::OnceLock<Box<crate::gop::Gop>>,
     /// A robot publishes it as a no-drop stream: the epoch of that stream plus one (0:
     /// not reliable). Its messages' `seq` are the stream's numbers, so a far side that
     /// may see one twice (federated hubs, after a robot moved) can tell.
@@ -277,8 +280,17 @@ impl Topic {
     }
 
     fn set_meta(&self, meta: TopicMeta) {
+        self.follow_type(&meta);
         self.meta.store(Arc::new(meta));
         self.version.fetch_add(1, Release);
+    }
+
+    /// A video topic keeps its frames since the last keyframe, from the moment its type
+    /// is known.
+    fn follow_type(&self, meta: &TopicMeta) {
+        if crate::gop::is_video_type(&meta.schema.type_name) {
+            let _ = self.gop.set(Box::default());
+        }
     }
 
     fn set_subscribers(&self, list: Vec<SubscriberRef>) {
@@ -473,6 +485,9 @@ impl Topic {
         if self.latch.load(Relaxed) {
             *self.latched.lock().unwrap_or_else(|p| p.into_inner()) = Some(msg.clone());
         }
+        if let Some(gop) = self.gop.get() {
+            return self.fan_out_video(gop, msg, now);
+        }
         let mut targets = subscribers
             .iter()
             .filter(|s| s.client != msg.origin || s.own);
@@ -486,6 +501,23 @@ impl Topic {
             last = s;
         }
         last.outbox.push(last.slot, msg, now);
+        pushed
+    }
+
+    /// [`Topic::fan_out`] of a video topic: the frame is kept in the topic's group and
+    /// queued for the subscribers read under the group's lock, so that a subscriber being
+    /// added meanwhile gets it once, in order ([`crate::gop::Gop::lock`]).
+    #[cold]
+    fn fan_out_video(&self, gop: &crate::gop::Gop, msg: Arc<Message>, now: Instant) -> u64 {
+        let mut group = gop.lock();
+        group.keep(&msg);
+        let mut pushed = 0;
+        for s in self.subscribers.load().iter() {
+            if s.client != msg.origin || s.own {
+                s.outbox.push(s.slot, msg.clone(), now);
+                pushed += 1;
+            }
+        }
         pushed
     }
 }
@@ -906,12 +938,14 @@ impl Router {
             subscribers: ArcSwap::from_pointee(Vec::new()),
             version: AtomicU64::new(0),
             latched: Mutex::new(None),
+            gop: Default::default(),
             latch: Default::default(),
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
             idle: Default::default(),
             pull: Default::default(),
             reliable: AtomicU64::new(0),
         });
+        topic.follow_type(&topic.meta());
         st.topics.insert(name.clone(), topic.clone());
         st.names.insert(id, name.clone());
         st.topic_changed(name);
@@ -1044,7 +1078,16 @@ impl Router {
         };
         let mut list = Vec::clone(&topic.subscribers.load());
         list.push(r);
+        // A video topic's group is replayed to the new subscriber under the lock its
+        // publishes take (crate::gop).
+        let group = topic.gop.get().map(|g| g.lock());
         topic.set_subscribers(list);
+        for m in group.iter().flat_map(|g| g.frames()) {
+            if m.origin != client || own {
+                c.outbox.push(slot, m.clone(), Instant::now());
+            }
+        }
+        drop(group);
         let latched = topic
             .latched
             .lock()
@@ -1055,6 +1098,7 @@ impl Router {
         {
             c.outbox.push(slot, m, Instant::now());
         }
+
         st.demand_changed(topic);
     }
 

@@ -7,7 +7,8 @@
 //! - [`picture`]: those pixels as the encoder's 4:2:0 planes (raw formats and JPEG);
 //! - [`encoder`]: OpenH264 set up for live camera video (Constrained Baseline, no B-frames,
 //!   parameter sets before every keyframe, frames skipped rather than queued);
-//! - [`h264`]: what a frame's bitstream says (keyframe or not, the codec string);
+//! - [`h264`] (from `fleetlink-msg`, which the router shares): what a frame's bitstream
+//!   says (keyframe or not, the codec string);
 //! - [`message`]: the `CompressedVideo` message written straight as CDR;
 //! - [`stream`]: one encoder thread per stream behind a queue of two frames that drops the
 //!   oldest.
@@ -16,7 +17,7 @@
 //! it) and publishes what it makes.
 
 pub mod encoder;
-pub mod h264;
+pub use fleetlink_msg::h264;
 pub mod message;
 pub mod picture;
 pub mod source;

@@ -47,17 +47,22 @@ mod tests {
 
     #[test]
     fn fields_are_laid_out_with_cdr_alignment() {
+        let au = [0, 0, 0, 1, 0x65];
         let b = compressed_video(3_000_000_007, "cam", "h264", 5, |v| {
-            v.extend_from_slice(&[0, 0, 0, 1, 0x65])
+            v.extend_from_slice(&au)
         });
-        #[rustfmt::skip]
-        let want: &[u8] = &[
-            0, 1, 0, 0,
-            3, 0, 0, 0, 7, 0, 0, 0,
-            4, 0, 0, 0, b'c', b'a', b'm', 0,
-            5, 0, 0, 0, 0, 0, 0, 1, 0x65, 0, 0, 0,
-            5, 0, 0, 0, b'h', b'2', b'6', b'4', 0,
-        ];
-        assert_eq!(b, want);
+        // Header, stamp (3 s, 7 ns), "cam" with its NUL and length.
+        assert_eq!(
+            b[..20],
+            [
+                0, 1, 0, 0, 3, 0, 0, 0, 7, 0, 0, 0, 4, 0, 0, 0, b'c', b'a', b'm', 0
+            ]
+        );
+        assert_eq!(
+            fleetlink_msg::h264::compressed_video_data(&b),
+            Some(&au[..])
+        );
+        // The bitstream padded to four, then "h264" with its NUL and length.
+        assert_eq!(b[29..], [0, 0, 0, 5, 0, 0, 0, b'h', b'2', b'6', b'4', 0]);
     }
 }

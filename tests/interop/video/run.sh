@@ -11,7 +11,9 @@
 #      with nobody watching neither they nor the cameras send anything;
 #   2. a roslibpy viewer of /robot1/camera/video gets frames that PyAV decodes from the
 #      first message on, 640x480, near 15 a second, each within 30 dB luma PSNR of the
-#      scene its stamp names;
+#      scene its stamp names; a second viewer who comes in the middle of a group of
+#      pictures decodes from its first message too (the hub gives it the last keyframe
+#      and the frames since);
 #   3. meanwhile the raw camera topic itself was not sent to the hub (nobody there wants
 #      it: 0 messages);
 #   4. the simulated JPEG camera's video decodes too, 640x480;
@@ -105,9 +107,18 @@ for t in /robot1/camera/video /robot1/camera/jpeg_video /robot1/camera/image_raw
     [ "$n" = "0" ] || fail "unwatched, $t reached the hub anyway: $n messages"
 done
 
-step "2. a viewer decodes the camera's video from its first message"
+step "2. a viewer decodes the camera's video from its first message, and so does one who comes mid-stream"
 in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/video 6 \
-    --min-frames 60 --scene | tee "$tmp/watch.log" || fail "the video of the Cyclone camera (see above)"
+    --min-frames 60 --scene >"$tmp/watch.log" 2>&1 &
+first=$!
+# The second comes 2.7 s in: after the stream's first keyframe interval (2 s), in the
+# middle of a group, which it decodes from the keyframe the hub kept.
+sleep 2.7
+in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/video 3 \
+    --min-frames 30 --scene | sed 's/^/  mid-stream: /' \
+    || fail "a viewer who came mid-stream did not decode from its first message (see above)"
+wait "$first" || { cat "$tmp/watch.log"; fail "the video of the Cyclone camera (see above)"; }
+cat "$tmp/watch.log"
 
 step "3. the raw camera was not sent for the video"
 n="$(topic_field /robot1/camera/image_raw messages)"
