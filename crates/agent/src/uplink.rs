@@ -1253,7 +1253,16 @@ impl Uplink {
                 // On a site hub the topic's robot hears it (the subscription is passive).
                 self.router.note_demand(TopicId(alias));
             }
-            LinkEvent::Control(Frame::Pull { alias }) => self.outbox.pull(alias, Instant::now()),
+            LinkEvent::Control(Frame::Pull { alias }) => {
+                self.outbox.pull(alias, Instant::now());
+                // On a video topic: the hub asks for a keyframe (docs/video.md); its
+                // publisher hears it through its demand watch.
+                if let Some(t) = self.router.topic_by_id(TopicId(alias))
+                    && fleetlink_relay::gop::is_video_type(&t.meta().schema.type_name)
+                {
+                    self.router.request_pull(&t.name());
+                }
+            }
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {
                 self.outbox.on_delivered(alias, seq);
             }

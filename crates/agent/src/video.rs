@@ -60,6 +60,8 @@ pub async fn serve(
             return;
         }
     };
+    // The hub's requests for a keyframe arrive as pulls of the video topic.
+    let asks = router.watch_demand(client);
     let mut running: Option<Running> = None;
     let mut unwanted_since = None;
     let mut look = tokio::time::interval(LOOK_EVERY);
@@ -70,6 +72,15 @@ pub async fn serve(
             _ = shutdown.cancelled() => break,
             _ = ReadInterest::changed(&interest) => {}
             _ = look.tick() => {}
+            _ = asks.changed() => {
+                asks.take();
+                if !asks.take_pulls().is_empty()
+                    && let Some(r) = &mut running
+                {
+                    r.keyframe_asked(Instant::now());
+                }
+                continue;
+            }
             _ = outbox.ready() => {
                 loop {
                     let batch = outbox.take(16, 64 << 20, Instant::now());
@@ -130,7 +141,13 @@ struct Running {
     topic: TopicName,
     sub: SubscriptionId,
     stream: Stream,
+    /// When the last keyframe asked for was forced.
+    forced: Option<Instant>,
 }
+
+/// The most often a stream forces a keyframe when asked (the hub asks at most once a
+/// second per link; several hubs or viewers could ask more).
+const FORCE_EVERY: Duration = Duration::from_secs(1);
 
 impl Running {
     fn start(
@@ -185,7 +202,23 @@ impl Running {
             topic: opts.topic.clone(),
             sub,
             stream,
+            // Its first frame is a keyframe.
+            forced: Some(Instant::now()),
         })
+    }
+
+    /// The hub asked for a keyframe: the next frame is one, unless one was forced less
+    /// than [`FORCE_EVERY`] ago.
+    fn keyframe_asked(&mut self, now: Instant) {
+        if self
+            .forced
+            .is_some_and(|at| now.saturating_duration_since(at) < FORCE_EVERY)
+        {
+            return;
+        }
+        self.forced = Some(now);
+        self.stream.request_keyframe();
+        tracing::debug!("video {}: a keyframe was asked for", self.topic);
     }
 
     fn stop(self, router: &Router, client: ClientId) {

@@ -26,6 +26,7 @@ mod e2e {
     mod shutdown;
     mod site;
     mod tls;
+    mod video;
     mod viewer_deflate;
     mod viewer_liveness;
 }

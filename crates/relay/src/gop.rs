@@ -1,10 +1,16 @@
 //! A video topic's frames since its last keyframe (its group of pictures), kept so that a
 //! subscriber who comes in the middle of a stream gets the keyframe and what followed at
 //! once and decodes from its first message, as a latched topic's subscriber gets its one
-//! message (docs/video.md).
+//! message; and the chain of frames checked, so that no subscriber is ever given a frame
+//! whose predecessors it cannot have (docs/video.md).
 //!
 //! Only `foxglove_msgs/msg/CompressedVideo` in CDR is looked into (the access unit's
-//! leading NAL headers, [`fleetlink_msg::h264::is_keyframe`]); a group that grows past
+//! leading NAL headers, [`fleetlink_msg::h264::is_keyframe`]); other encodings pass as they
+//! are. A frame is delivered only while the chain since the last keyframe is whole: its
+//! publisher numbers frames one by one, so a number skipped means a frame was lost on the
+//! way (the robot's link queue, its budget or age limit, a blackout). From then on the
+//! frames are held back from everyone until the next keyframe, and one is asked for
+//! ([`Kept::take_ask`]: the robot's link sends it as `PULL`). A group that grows past
 //! [`MAX_FRAMES`] or [`MAX_BYTES`] is let go whole, and the next keyframe starts a new one.
 
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -12,6 +18,7 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use fleetlink_proto::Encoding;
 
 use crate::message::Message;
+use crate::names::ClientId;
 
 /// Most frames kept: 20 s at 15 fps, longer than any keyframe interval worth sending.
 pub const MAX_FRAMES: usize = 300;
@@ -45,6 +52,12 @@ pub struct Gop {
 pub struct Kept {
     frames: Vec<Arc<Message>>,
     bytes: usize,
+    /// The last frame seen: its publisher and number.
+    last: Option<(ClientId, u64)>,
+    /// The frames since the last keyframe all came: the next one can be delivered.
+    whole: bool,
+    /// A keyframe is wanted (the chain broke, or a subscriber came with nothing to show).
+    ask: bool,
 }
 
 impl Gop {
@@ -58,15 +71,42 @@ impl Gop {
 }
 
 impl Kept {
-    /// Takes a message published on the topic: a keyframe starts the group afresh, any
-    /// other frame joins a group that has begun.
-    pub fn keep(&mut self, msg: &Arc<Message>) {
+    /// Takes a frame published on the topic. False if it must not be delivered: it is not
+    /// a keyframe and the chain since the last one is broken (see the module docs), or it
+    /// is a frame seen already.
+    pub fn keep(&mut self, msg: &Arc<Message>) -> bool {
+        if msg.payload.encoding != Encoding::Cdr {
+            return true;
+        }
+        let previous = self.last.filter(|(origin, _)| *origin == msg.origin);
         if is_keyframe(msg) {
+            self.last = Some((msg.origin, msg.seq));
+            self.whole = true;
             self.frames.clear();
             self.bytes = 0;
-        } else if self.frames.is_empty() {
-            return;
+            self.add(msg);
+            return true;
         }
+        if previous.is_some_and(|(_, seq)| msg.seq <= seq) {
+            return false;
+        }
+        self.last = Some((msg.origin, msg.seq));
+        if !(self.whole && previous.is_some_and(|(_, seq)| msg.seq == seq + 1)) {
+            if self.whole || self.frames.is_empty() {
+                self.ask = true;
+            }
+            self.whole = false;
+            self.frames = Vec::new();
+            self.bytes = 0;
+            return false;
+        }
+        if !self.frames.is_empty() {
+            self.add(msg);
+        }
+        true
+    }
+
+    fn add(&mut self, msg: &Arc<Message>) {
         self.bytes += msg.payload.len();
         self.frames.push(msg.clone());
         if self.frames.len() > MAX_FRAMES || self.bytes > MAX_BYTES {
@@ -74,6 +114,19 @@ impl Kept {
             self.frames = Vec::new();
             self.bytes = 0;
         }
+    }
+
+    /// A subscriber came: with no group to give it, a keyframe is wanted.
+    pub fn joined(&mut self) {
+        if self.frames.is_empty() {
+            self.ask = true;
+        }
+    }
+
+    /// Whether a keyframe is wanted since the last call (the publisher's link asks its
+    /// robot for one).
+    pub fn take_ask(&mut self) -> bool {
+        std::mem::take(&mut self.ask)
     }
 
     /// The group so far, keyframe first (empty before a keyframe was seen).
@@ -158,6 +211,111 @@ mod tests {
         assert_eq!(late_joiner_gets(&router), Vec::<u8>::new());
         send(true, 7);
         assert_eq!(late_joiner_gets(&router), [7]);
+    }
+
+    /// A robot's video topic on a router, and a way to publish numbered frames on it.
+    fn video_topic(
+        router: &Router,
+    ) -> (crate::names::ClientId, std::sync::Arc<crate::router::Topic>) {
+        let (robot, _) = router.connect(
+            ClientKind::Internal {
+                role: "video".into(),
+            },
+            None,
+        );
+        let name = TopicName::parse("/cam/video").unwrap();
+        let schema = Schema::named("foxglove_msgs/msg/CompressedVideo");
+        (
+            robot,
+            router.advertise(robot, &name, schema, false).unwrap(),
+        )
+    }
+
+    fn numbers(outbox: &crate::outbox::Outbox) -> Vec<u8> {
+        let got = outbox.take(1000, usize::MAX, Instant::now());
+        got.items
+            .iter()
+            .map(|(_, _, m)| *m.payload.bytes.last().unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn a_frame_lost_before_the_router_holds_the_rest_of_its_group_back_from_everyone() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
+        let (viewer, outbox) = router.connect(ClientKind::Foxglove, None);
+        let name = TopicName::parse("/cam/video").unwrap();
+        router
+            .subscribe(viewer, Target::Exact(name), SubOptions::default())
+            .unwrap();
+        assert!(
+            topic.take_keyframe_ask(),
+            "a viewer came with nothing to show"
+        );
+        assert!(!topic.take_keyframe_ask(), "asked once");
+        let send = |seq: u64, key| topic.publish(robot, seq, 0, frame(key, seq as u8));
+        // A group's later frame first (the robot's link kept it from before): held back.
+        send(7, false);
+        assert!(topic.take_keyframe_ask());
+        send(8, true);
+        send(9, false);
+        send(9, false); // seen already
+        // 10 never came: 11 and 12 are held back, and a keyframe is asked for.
+        send(11, false);
+        send(12, false);
+        assert!(topic.take_keyframe_ask());
+        send(13, true);
+        send(14, false);
+        assert_eq!(numbers(&outbox), [8, 9, 13, 14]);
+        // A late joiner gets only the whole group.
+        assert_eq!(late_joiner_gets(&router), [13, 14]);
+        // A publisher that starts again (its numbers from 1) starts with a keyframe.
+        send(1, true);
+        send(2, false);
+        assert_eq!(numbers(&outbox), [1, 2]);
+        // Video in another encoding is not looked into.
+        topic.publish(robot, 50, 0, Payload::json(&b"{}"[..]));
+        assert_eq!(numbers(&outbox).len(), 1);
+    }
+
+    #[test]
+    fn a_subscriber_that_lost_a_frame_skips_to_the_next_keyframe() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
+        let (viewer, outbox) = router.connect(ClientKind::Foxglove, None);
+        let name = TopicName::parse("/cam/video").unwrap();
+        let small = fleetlink_qos::TopicQos {
+            policy: fleetlink_qos::Policy::DropOldest,
+            queue: 4,
+            ..fleetlink_qos::TopicQos::default()
+        };
+        let opts = SubOptions {
+            qos: Some(small),
+            ..SubOptions::default()
+        };
+        router.subscribe(viewer, Target::Exact(name), opts).unwrap();
+        let _ = topic.take_keyframe_ask();
+        let send = |seq: u64, key| topic.publish(robot, seq, 0, frame(key, seq as u8));
+        // A slow viewer: six frames into a queue of four, the keyframe among those lost.
+        send(1, true);
+        for seq in 2..=6 {
+            send(seq, false);
+        }
+        assert!(
+            topic.take_keyframe_ask(),
+            "the lost frame asks for a keyframe"
+        );
+        assert_eq!(
+            numbers(&outbox),
+            Vec::<u8>::new(),
+            "the rest of the group is skipped"
+        );
+        send(7, false);
+        send(8, true);
+        send(9, false);
+        assert_eq!(numbers(&outbox), [8, 9]);
+        // Another viewer with room lost nothing.
+        assert_eq!(late_joiner_gets(&router), [8, 9]);
     }
 
     #[test]

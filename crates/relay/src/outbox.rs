@@ -64,6 +64,10 @@ struct Slot {
     stats: Arc<TopicStats>,
     delivery: Delivery,
     in_ready: bool,
+    /// A video frame of this round-robin slot was dropped: the rest of its group is
+    /// skipped until a keyframe, so the subscriber's decoder is never given a frame
+    /// whose predecessor it lacks ([`crate::gop`]).
+    hole: bool,
 }
 
 /// How the writer is served.
@@ -257,6 +261,7 @@ impl Outbox {
                 stats,
                 delivery,
                 in_ready: false,
+                hole: false,
             },
         );
         id
@@ -293,8 +298,13 @@ impl Outbox {
             Service::RoundRobin { ready } => {
                 let q = s.queue.as_mut().expect("round-robin slots own a queue");
                 let before = q.len();
+                let video = crate::gop::is_video_type(&msg.topic.schema.type_name);
                 let dropped = q.push(msg, now);
                 let evicted = q.take_evicted();
+                if video && (evicted > 0 || dropped.is_some()) {
+                    s.hole = true;
+                    s.stats.keyframe_wanted.store(true, Relaxed);
+                }
                 if evicted > 0 {
                     for _ in 0..evicted {
                         s.stats.record_drop(DropReason::Policy);

@@ -298,6 +298,17 @@ impl Topic {
         self.version.fetch_add(1, Release);
     }
 
+    /// Whether a video topic wants a keyframe from its publisher since the last call (its
+    /// chain broke, a subscriber came with nothing to show, or one lost a frame;
+    /// [`crate::gop`]).
+    pub fn take_keyframe_ask(&self) -> bool {
+        let Some(gop) = self.gop.get() else {
+            return false;
+        };
+        let lost = self.stats.keyframe_wanted.swap(false, Relaxed);
+        gop.lock().take_ask() || lost
+    }
+
     /// Encoding of the most recent message, if any was published.
     pub fn last_encoding(&self) -> Option<fleetlink_proto::Encoding> {
         match self.last_encoding.load(Relaxed) {
@@ -510,7 +521,11 @@ impl Topic {
     #[cold]
     fn fan_out_video(&self, gop: &crate::gop::Gop, msg: Arc<Message>, now: Instant) -> u64 {
         let mut group = gop.lock();
-        group.keep(&msg);
+        if !group.keep(&msg) {
+            // Its chain is broken: held back from everyone until the next keyframe.
+            self.stats.record_drop(crate::queue::DropReason::Policy);
+            return 0;
+        }
         let mut pushed = 0;
         for s in self.subscribers.load().iter() {
             if s.client != msg.origin || s.own {
@@ -1080,7 +1095,10 @@ impl Router {
         list.push(r);
         // A video topic's group is replayed to the new subscriber under the lock its
         // publishes take (crate::gop).
-        let group = topic.gop.get().map(|g| g.lock());
+        let mut group = topic.gop.get().map(|g| g.lock());
+        if let Some(g) = group.as_mut() {
+            g.joined();
+        }
         topic.set_subscribers(list);
         for m in group.iter().flat_map(|g| g.frames()) {
             if m.origin != client || own {

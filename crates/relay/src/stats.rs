@@ -113,6 +113,9 @@ pub struct TopicStats {
     pub no_drop_flow: NoDropFlow,
     /// Messages a demand-driven uplink kept back because nobody wanted the topic.
     pub held_back: AtomicU64,
+    /// A video topic's subscriber lost a frame and skips to the next keyframe: one is
+    /// wanted from the publisher (taken by [`crate::Topic::take_keyframe_ask`]).
+    pub keyframe_wanted: std::sync::atomic::AtomicBool,
     /// Payload bytes of the messages that came over a robot's link, and the bytes they
     /// took there ([`TopicStats::link_figures`]).
     link_raw: AtomicU64,

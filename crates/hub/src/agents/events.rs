@@ -35,6 +35,27 @@ struct PubTopic {
     counts: StatsBatch,
     view: TopicView,
     unflushed: bool,
+    /// A video topic: when the robot may next be asked for a keyframe (`PULL`).
+    keyframes: Option<std::time::Instant>,
+}
+
+/// The most often the hub asks a robot for a keyframe of one video topic.
+const KEYFRAME_ASK_EVERY: std::time::Duration = std::time::Duration::from_secs(1);
+
+impl PubTopic {
+    /// Asks the robot for a keyframe of this video topic if the hub's router wants one
+    /// (its chain broke, or a viewer came with nothing to show: `relay::gop`), at most
+    /// once a second; the want stays until it may be asked.
+    fn ask_keyframe(&mut self, alias: u32, session: &mut LinkSession) {
+        let Some(next) = &mut self.keyframes else {
+            return;
+        };
+        let now = std::time::Instant::now();
+        if now >= *next && self.topic.take_keyframe_ask() {
+            *next = now + KEYFRAME_ASK_EVERY;
+            session.send(Frame::Pull { alias });
+        }
+    }
 }
 
 /// The hub's side of one robot link, besides the session.
@@ -104,6 +125,9 @@ impl RobotLink {
         for topic in self.demand.take() {
             if let Some(alias) = self.by_topic.get(&topic).copied() {
                 self.tell_interest(alias, session);
+                if let Some(p) = self.topics.get_mut(&alias) {
+                    p.ask_keyframe(alias, session);
+                }
             }
         }
         // Someone asked for one message of a pull topic.
@@ -226,6 +250,7 @@ impl RobotLink {
             }
         }
         gate.done(p.name.as_str(), Op::Publish, size);
+        p.ask_keyframe(alias, session);
     }
 
     fn on_link(&mut self, ev: LinkEvent, session: &mut LinkSession) {
@@ -262,6 +287,7 @@ impl RobotLink {
                         t.set_pull(topic.pull);
                         let epoch = self.book.lock().unwrap_or_else(|p| p.into_inner()).epoch();
                         t.set_reliable(topic.reliable.then_some(epoch));
+                        let video = fleetlink_relay::gop::is_video_type(&t.meta().schema.type_name);
                         if let Some(old) = self.topics.insert(
                             alias,
                             PubTopic {
@@ -271,6 +297,7 @@ impl RobotLink {
                                 counts: StatsBatch::default(),
                                 view: TopicView::default(),
                                 unflushed: false,
+                                keyframes: video.then(std::time::Instant::now),
                             },
                         ) {
                             // Rebound: what the old binding counted still counts.

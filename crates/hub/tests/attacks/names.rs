@@ -40,6 +40,20 @@ async fn robot_cannot_publish_into_another_robots_namespace() {
         json!({"op": "subscribe", "topic": "/robot2/x", "id": "s"}),
     )
     .await;
+    // The subscription is in place before robot2's message below, which it must receive
+    // (under load the hub could otherwise read that message first, and it would be lost).
+    let x = fleetlink_relay::TopicName::parse("/robot2/x").unwrap();
+    for _ in 0..500 {
+        if fx
+            .state
+            .router
+            .topic(&x)
+            .is_some_and(|t| t.subscriber_count() > 0)
+        {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(10)).await;
+    }
     // robot1 tries to advertise and publish there.
     let mut r1 = agent(fx.addr, "robot1", &fx.robot_token("robot1", None), None).await;
     welcomed(&mut r1).await;
@@ -57,7 +71,12 @@ async fn robot_cannot_publish_into_another_robots_namespace() {
     send_frame(&mut r1, advertise(8, "/robot1/ok")).await;
     // The subscriber's first message is robot2's, sent after every forged one.
     send_frame(&mut r2, message(1, 1, "genuine")).await;
-    let m = next_op(&mut sub, "publish").await;
+    let m = tokio::time::timeout(
+        std::time::Duration::from_secs(10),
+        next_op(&mut sub, "publish"),
+    )
+    .await
+    .expect("robot2's message reaches the subscriber within 10 s");
     assert_eq!(m["topic"], "/robot2/x");
     assert_eq!(
         m["msg"]["data"], "genuine",

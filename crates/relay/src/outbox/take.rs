@@ -56,7 +56,22 @@ impl Outbox {
                     };
                     let q = s.queue.as_mut().expect("round-robin slots own a queue");
                     match q.pop(now) {
+                        Some(m) if s.hole && !crate::gop::is_keyframe(&m) => {
+                            // After a lost video frame: skipped to the next keyframe,
+                            // which is wanted until it comes (the one asked for may
+                            // have been lost too, to a queue this slow).
+                            st.queued -= 1;
+                            s.stats.keyframe_wanted.store(true, Relaxed);
+                            s.stats.record_drop(DropReason::Policy);
+                            self.dropped.fetch_add(1, Relaxed);
+                            if q.is_empty() {
+                                s.in_ready = false;
+                            } else {
+                                ready.push_front(id);
+                            }
+                        }
                         Some(m) => {
+                            s.hole = false;
                             bytes += m.wire_len();
                             items.push((id, s.delivery, m));
                             st.queued -= 1;
