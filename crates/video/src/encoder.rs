@@ -123,7 +123,7 @@ fn config(s: Settings, range: Range) -> EncoderConfig {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use openh264::decoder::Decoder;
     use openh264::formats::YUVSource;
 

@@ -10,6 +10,7 @@
 //! - [`h264`] (from `fleetlink-msg`, which the router shares): what a frame's bitstream
 //!   says (keyframe or not, the codec string);
 //! - [`message`]: the `CompressedVideo` message written straight as CDR;
+//! - [`quality`]: the encoder measured against JPEG on the same frames (the benchmark);
 //! - [`stream`]: one encoder thread per stream behind a queue of two frames that drops the
 //!   oldest.
 //!
@@ -20,6 +21,7 @@ pub mod encoder;
 pub use fleetlink_msg::h264;
 pub mod message;
 pub mod picture;
+pub mod quality;
 pub mod source;
 pub mod stream;
 

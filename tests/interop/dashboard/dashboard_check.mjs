@@ -178,7 +178,7 @@ try {
     const note = img?.parentElement?.querySelector("p.muted")?.textContent ?? "";
     return img && img.style.display !== "none" && img.complete && img.naturalWidth > 0 && { w: img.naturalWidth, h: img.naturalHeight, note };
   }, null, 5000, "camera panel: a decoded picture");
-  if (cam) check(cam.w === 320 && cam.h === 240 && !/not a decodable/.test(cam.note), `camera panel: a decoded ${cam.w}x${cam.h} picture${cam.note ? ` (note: ${cam.note})` : ""}`);
+  if (cam) check(cam.w === 640 && cam.h === 480 && !/not a decodable/.test(cam.note), `camera panel: a decoded ${cam.w}x${cam.h} picture${cam.note ? ` (note: ${cam.note})` : ""}`);
   // Signing in replaced the connection: the status shows the new one, not the old one's close.
   const connText = await until(page, () => document.querySelector("#conn")?.textContent === "connected" && "connected", null, 3000, "status bar: connected after sign-in");
   if (connText) ok("status bar: connected after sign-in");

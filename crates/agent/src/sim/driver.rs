@@ -52,6 +52,10 @@ pub async fn drive(
         let payload = values.map(|v| Payload::json(v.to_string().into_bytes()));
         router.calls.respond(client, id, status, payload, text);
     };
+    // The camera is rendered only while someone wants its pictures (the hub, a local
+    // subscriber, a video stream): drawing and encoding 640x480 JPEGs at 15 Hz is most of
+    // the demo's CPU otherwise.
+    let costly: Vec<bool> = (0..topics.len()).map(|i| sim.is_costly(i)).collect();
     let start = Instant::now();
     let mut next_feedback = start;
     let mut due = Vec::new();
@@ -104,7 +108,14 @@ pub async fn drive(
         }
         due.clear();
         sim.set_goal_marker(state.goal.as_ref().map(|g| g.to));
-        sim.poll_into(start.elapsed(), &mut due);
+        let wanted = |i: usize| {
+            !costly[i]
+                || topics
+                    .get(i)
+                    .and_then(Option::as_ref)
+                    .is_some_and(|(t, _)| t.wanted_by_others(client))
+        };
+        sim.poll_wanted_into(start.elapsed(), &mut due, wanted);
         for m in due.drain(..) {
             if let Some(Some((topic, seq))) = topics.get_mut(m.topic_index) {
                 *seq += 1;

@@ -311,6 +311,17 @@ impl Sim {
 
     /// Like [`Sim::poll`], appending to `out` so a driver can reuse one `Vec`.
     pub fn poll_into(&mut self, now: Duration, out: &mut Vec<SimMessage>) {
+        self.poll_wanted_into(now, out, |_| true);
+    }
+
+    /// Like [`Sim::poll_into`], but the due slots of topics `wanted` says nobody wants
+    /// are passed over without being made: a camera nobody watches costs nothing to render.
+    pub fn poll_wanted_into(
+        &mut self,
+        now: Duration,
+        out: &mut Vec<SimMessage>,
+        wanted: impl Fn(usize) -> bool,
+    ) {
         let now_ns = u64::try_from(now.as_nanos()).unwrap_or(u64::MAX);
         for i in 0..self.topics.len() {
             let period = self.period_ns[i];
@@ -318,10 +329,19 @@ impl Sim {
                 continue;
             }
             let slot = now_ns / period;
-            self.skipped += slot - self.next_slot[i];
+            let skipped = slot - self.next_slot[i];
             self.next_slot[i] = slot + 1;
-            out.push(self.generate_slot(i, slot));
+            if wanted(i) {
+                self.skipped += skipped;
+                out.push(self.generate_slot(i, slot));
+            }
         }
+    }
+
+    /// Whether topic `i` is costly to make (the camera's rendered pictures), so that a
+    /// driver makes it only while it is wanted ([`Sim::poll_wanted_into`]).
+    pub fn is_costly(&self, i: usize) -> bool {
+        matches!(self.sensors.get(i), Some(Sensor::Image(_)))
     }
 
     /// Time since start at which the next message is due (`Duration::MAX` with no topics).

@@ -666,3 +666,32 @@ fn markers_are_deterministic_and_follow_the_goal() {
     assert_ne!(with_goal.json, without.json);
     assert_eq!(without, a[1]);
 }
+
+#[test]
+fn a_camera_nobody_wants_is_not_rendered_and_its_slots_are_not_counted_late() {
+    let mut sim = all_sensors();
+    let camera = (0..sim.topics().len())
+        .find(|&i| sim.is_costly(i))
+        .expect("the camera");
+    assert_eq!(
+        (0..sim.topics().len())
+            .filter(|&i| sim.is_costly(i))
+            .count(),
+        1,
+        "only the camera is costly"
+    );
+    let mut out = Vec::new();
+    for ms in (0..=2000).step_by(10) {
+        sim.poll_wanted_into(Duration::from_millis(ms), &mut out, |i| i != camera);
+    }
+    assert!(!out.is_empty());
+    assert!(
+        out.iter().all(|m| m.topic_index != camera),
+        "the camera was rendered"
+    );
+    assert_eq!(sim.skipped(), 0, "passed-over slots are not lateness");
+    // Wanted again: its next slot is made.
+    out.clear();
+    sim.poll_wanted_into(Duration::from_millis(2500), &mut out, |_| true);
+    assert!(out.iter().any(|m| m.topic_index == camera));
+}

@@ -26,6 +26,8 @@
 //!   WebSocket or rosbridge CBOR, side by side.
 //! - [`record`]: the `record` subcommand: the hub recording a robot's mixed topics to
 //!   MCAP at a given rate; the recorder thread's CPU and its drops.
+//! - [`video`]: the `video` subcommand: camera video against JPEG on the same frames
+//!   (bytes at equal luma PSNR, encode time).
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
 //!   while the durable outbox compacts on a slow disk (test builds).
 
@@ -42,6 +44,7 @@ mod record;
 mod relay;
 mod report;
 mod subscriber;
+mod video;
 mod viewer;
 mod ws_floor;
 
@@ -88,6 +91,9 @@ enum Command {
     /// to MCAP at a given data rate: messages recorded and dropped, the recorder thread's
     /// CPU.
     Record(record::Args),
+    /// Camera video against JPEG on the same frames: for each clip, the H.264 bitrate that
+    /// matches JPEG's luma PSNR, the bytes of each, and the encoder's time per frame.
+    Video(video::Args),
     /// The agent thread's heartbeat lateness and an adapter's latency while the durable
     /// outbox compacts a large journal on a simulated slow disk (test builds only).
     Journal(journal::Args),
@@ -106,6 +112,7 @@ pub fn run(args: Args) -> anyhow::Result<()> {
         Command::Viewer(a) => viewer::run(a),
         Command::Record(a) => record::run(a),
         Command::Journal(a) => journal::run(a),
+        Command::Video(a) => video::run(a),
     }
 }
 
