@@ -160,25 +160,41 @@ mod tests {
         Payload::new(fleetlink_proto::Encoding::Cdr, b)
     }
 
-    /// What a new subscriber of `/cam/video` finds in its queue at once.
-    fn late_joiner_gets(router: &Router) -> Vec<u8> {
+    /// A subscriber of `/cam/video` (with `opts`): its client and queue.
+    fn viewer(
+        router: &Router,
+        opts: SubOptions,
+    ) -> (
+        crate::names::ClientId,
+        std::sync::Arc<crate::outbox::Outbox>,
+    ) {
         let (c, outbox) = router.connect(ClientKind::Foxglove, None);
         let name = TopicName::parse("/cam/video").unwrap();
-        router
-            .subscribe(c, Target::Exact(name), SubOptions::default())
-            .unwrap();
+        router.subscribe(c, Target::Exact(name), opts).unwrap();
+        (c, outbox)
+    }
+
+    /// The numbers (last byte) of the frames waiting in a subscriber's queue.
+    fn numbers(outbox: &crate::outbox::Outbox) -> Vec<u8> {
         let got = outbox.take(1000, usize::MAX, Instant::now());
-        router.disconnect(c);
-        // The last byte of each access unit: its number.
         got.items
             .iter()
             .map(|(_, _, m)| *m.payload.bytes.last().unwrap())
             .collect()
     }
 
-    #[test]
-    fn a_late_subscriber_gets_the_last_keyframe_and_the_frames_since() {
-        let router = Router::default();
+    /// What a new subscriber of `/cam/video` finds in its queue at once.
+    fn late_joiner_gets(router: &Router) -> Vec<u8> {
+        let (c, outbox) = viewer(router, SubOptions::default());
+        let got = numbers(&outbox);
+        router.disconnect(c);
+        got
+    }
+
+    /// A robot's video topic on a router.
+    fn video_topic(
+        router: &Router,
+    ) -> (crate::names::ClientId, std::sync::Arc<crate::router::Topic>) {
         let (robot, _) = router.connect(
             ClientKind::Internal {
                 role: "video".into(),
@@ -187,7 +203,16 @@ mod tests {
         );
         let name = TopicName::parse("/cam/video").unwrap();
         let schema = Schema::named("foxglove_msgs/msg/CompressedVideo");
-        let topic = router.advertise(robot, &name, schema, false).unwrap();
+        (
+            robot,
+            router.advertise(robot, &name, schema, false).unwrap(),
+        )
+    }
+
+    #[test]
+    fn a_late_subscriber_gets_the_last_keyframe_and_the_frames_since() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
         let mut seq = 0;
         let mut send = |key, n| {
             seq += 1;
@@ -213,41 +238,11 @@ mod tests {
         assert_eq!(late_joiner_gets(&router), [7]);
     }
 
-    /// A robot's video topic on a router, and a way to publish numbered frames on it.
-    fn video_topic(
-        router: &Router,
-    ) -> (crate::names::ClientId, std::sync::Arc<crate::router::Topic>) {
-        let (robot, _) = router.connect(
-            ClientKind::Internal {
-                role: "video".into(),
-            },
-            None,
-        );
-        let name = TopicName::parse("/cam/video").unwrap();
-        let schema = Schema::named("foxglove_msgs/msg/CompressedVideo");
-        (
-            robot,
-            router.advertise(robot, &name, schema, false).unwrap(),
-        )
-    }
-
-    fn numbers(outbox: &crate::outbox::Outbox) -> Vec<u8> {
-        let got = outbox.take(1000, usize::MAX, Instant::now());
-        got.items
-            .iter()
-            .map(|(_, _, m)| *m.payload.bytes.last().unwrap())
-            .collect()
-    }
-
     #[test]
     fn a_frame_lost_before_the_router_holds_the_rest_of_its_group_back_from_everyone() {
         let router = Router::default();
         let (robot, topic) = video_topic(&router);
-        let (viewer, outbox) = router.connect(ClientKind::Foxglove, None);
-        let name = TopicName::parse("/cam/video").unwrap();
-        router
-            .subscribe(viewer, Target::Exact(name), SubOptions::default())
-            .unwrap();
+        let (_, outbox) = viewer(&router, SubOptions::default());
         assert!(
             topic.take_keyframe_ask(),
             "a viewer came with nothing to show"
@@ -282,8 +277,6 @@ mod tests {
     fn a_subscriber_that_lost_a_frame_skips_to_the_next_keyframe() {
         let router = Router::default();
         let (robot, topic) = video_topic(&router);
-        let (viewer, outbox) = router.connect(ClientKind::Foxglove, None);
-        let name = TopicName::parse("/cam/video").unwrap();
         let small = fleetlink_qos::TopicQos {
             policy: fleetlink_qos::Policy::DropOldest,
             queue: 4,
@@ -293,7 +286,7 @@ mod tests {
             qos: Some(small),
             ..SubOptions::default()
         };
-        router.subscribe(viewer, Target::Exact(name), opts).unwrap();
+        let (_, outbox) = viewer(&router, opts);
         let _ = topic.take_keyframe_ask();
         let send = |seq: u64, key| topic.publish(robot, seq, 0, frame(key, seq as u8));
         // A slow viewer: six frames into a queue of four, the keyframe among those lost.

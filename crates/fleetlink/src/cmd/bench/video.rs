@@ -21,8 +21,10 @@ pub struct Args {
     /// Frames of the demo robots' camera to render and measure as one more clip (0: none).
     #[arg(long, default_value_t = 150)]
     demo_frames: usize,
+    /// The frames' width in pixels (the clips' and the demo camera's).
     #[arg(long, default_value_t = 640)]
     width: u32,
+    /// The frames' height in pixels.
     #[arg(long, default_value_t = 480)]
     height: u32,
     /// The stream's frame rate (the clips' frames are taken as this rate's).
