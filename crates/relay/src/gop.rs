@@ -116,6 +116,17 @@ impl Kept {
         }
     }
 
+    /// Publisher `client` went: its frames are let go, and its next frame must be a
+    /// keyframe.
+    pub fn forget(&mut self, client: ClientId) {
+        if self.last.is_some_and(|(origin, _)| origin == client) {
+            self.frames = Vec::new();
+            self.bytes = 0;
+            self.whole = false;
+            self.last = None;
+        }
+    }
+
     /// A subscriber came: with no group to give it, a keyframe is wanted.
     pub fn joined(&mut self) {
         if self.frames.is_empty() {
@@ -309,6 +320,23 @@ mod tests {
         assert_eq!(numbers(&outbox), [8, 9]);
         // Another viewer with room lost nothing.
         assert_eq!(late_joiner_gets(&router), [8, 9]);
+    }
+
+    #[test]
+    fn the_group_goes_with_its_publisher() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
+        // A viewer keeps the topic alive after the robot goes.
+        let (_, _outbox) = viewer(&router, SubOptions::default());
+        topic.publish(robot, 1, 0, frame(true, 1));
+        topic.publish(robot, 2, 0, frame(false, 2));
+        assert_eq!(late_joiner_gets(&router), [1, 2]);
+        router.disconnect(robot);
+        assert_eq!(
+            late_joiner_gets(&router),
+            Vec::<u8>::new(),
+            "a stream that ended"
+        );
     }
 
     #[test]

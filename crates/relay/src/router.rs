@@ -742,6 +742,7 @@ impl Router {
             if let Some(p) = st.publishers.get_mut(name) {
                 p.retain(|c| *c != id);
             }
+            publisher_left(&st, name, id);
         }
         entry.outbox.close();
         let names: Vec<TopicName> = entry
@@ -885,6 +886,7 @@ impl Router {
         if let Some(p) = st.publishers.get_mut(name) {
             p.retain(|c| *c != client);
         }
+        publisher_left(&st, name, client);
         gc_topic(&mut st, name);
         if was {
             st.topic_changed(name);
@@ -1220,6 +1222,15 @@ fn detach(topic: &Topic, client: ClientId) {
         .cloned()
         .collect();
     topic.set_subscribers(list);
+}
+
+/// A publisher of `name` went: a video topic lets go of the group of pictures it kept of
+/// that publisher's stream (a later subscriber would be given frames of a stream that has
+/// ended; the publisher's next stream starts with a keyframe).
+fn publisher_left(st: &State, name: &TopicName, client: ClientId) {
+    if let Some(gop) = st.topics.get(name).and_then(|t| t.gop.get()) {
+        gop.lock().forget(client);
+    }
 }
 
 /// Forgets a topic nobody publishes or subscribes to any more.
