@@ -76,8 +76,11 @@ interop_plan() {
     echo "viewers tests/interop/viewers/run.sh -"
     echo "wait - -"
     local known=" links viewers "
-    for order in runtime-config ros2 msg ros1 dashboard mirror site postgres docs record \
-        rosbridge federation security failover foxglove calls websocket rosbridge-client tls; do
+    # mirror last: its DDS discovery loses the cloud nodes' readers when the machine is
+    # loaded (docs/testing.md), so it runs beside the quick suites at the end.
+    for order in runtime-config ros2 msg ros1 dashboard site postgres docs record video \
+        rosbridge federation security failover foxglove calls websocket rosbridge-client tls \
+        mirror; do
         [ -e "tests/interop/$order/run.sh" ] && echo "$order tests/interop/$order/run.sh -"
         known+="$order "
     done
