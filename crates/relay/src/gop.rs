@@ -300,7 +300,8 @@ mod tests {
         let (_, outbox) = viewer(&router, opts);
         let _ = topic.take_keyframe_ask();
         let send = |seq: u64, key| topic.publish(robot, seq, 0, frame(key, seq as u8));
-        // A slow viewer: six frames into a queue of four, the keyframe among those lost.
+        // A slow viewer: six frames into a queue of four. The frames that do not fit are
+        // the ones refused (evicting the keyframe would spoil all four).
         send(1, true);
         for seq in 2..=6 {
             send(seq, false);
@@ -311,15 +312,53 @@ mod tests {
         );
         assert_eq!(
             numbers(&outbox),
-            Vec::<u8>::new(),
-            "the rest of the group is skipped"
+            [1, 2, 3, 4],
+            "the whole part of the chain"
         );
+        // With room again, the rest of the group is still refused: 5 never came.
         send(7, false);
+        assert_eq!(numbers(&outbox), Vec::<u8>::new());
         send(8, true);
         send(9, false);
         assert_eq!(numbers(&outbox), [8, 9]);
         // Another viewer with room lost nothing.
         assert_eq!(late_joiner_gets(&router), [8, 9]);
+        // A keyframe coming to a full queue evicts its oldest frame: the frames queued
+        // after that one are skipped, the keyframe is given.
+        for seq in 10..=14 {
+            send(seq, false);
+        }
+        send(15, true);
+        assert_eq!(numbers(&outbox), [15]);
+    }
+
+    #[test]
+    fn a_throttled_subscriber_is_given_keyframes_past_its_rate_limit() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
+        let throttled = fleetlink_qos::TopicQos {
+            policy: fleetlink_qos::Policy::DropOldest,
+            queue: 10,
+            rate_limit_hz: Some(5.0),
+            ..fleetlink_qos::TopicQos::default()
+        };
+        let opts = SubOptions {
+            qos: Some(throttled),
+            ..SubOptions::default()
+        };
+        let (_, outbox) = viewer(&router, opts);
+        let _ = topic.take_keyframe_ask();
+        let send = |seq: u64, key| topic.publish(robot, seq, 0, frame(key, seq as u8));
+        // Faster than 5 a second: the first frame passes, the second is over the limit and
+        // the rest of the group is worthless; the next keyframe passes all the same.
+        send(1, true);
+        send(2, false);
+        assert!(topic.take_keyframe_ask(), "a keyframe is asked for");
+        send(3, false);
+        send(4, true);
+        send(5, false);
+        send(6, false);
+        assert_eq!(numbers(&outbox), [1, 4]);
     }
 
     #[test]

@@ -64,10 +64,50 @@ struct Slot {
     stats: Arc<TopicStats>,
     delivery: Delivery,
     in_ready: bool,
-    /// A video frame of this round-robin slot was dropped: the rest of its group is
-    /// skipped until a keyframe, so the subscriber's decoder is never given a frame
+    /// The video chain of this round-robin slot broke at the newest end (a frame was
+    /// refused on the way in): later frames are refused too until a keyframe, which
+    /// enters past the rate limit. So the subscriber's decoder is never given a frame
     /// whose predecessor it lacks ([`crate::gop`]).
     hole: bool,
+    /// The chain broke inside the queue (an older frame was evicted): what is queued
+    /// before the next keyframe is skipped when taken.
+    skip: bool,
+}
+
+/// Queues a video frame in the round-robin slot `s`, keeping the chain of frames the
+/// subscriber will be given whole: a frame that does not fit is refused rather than
+/// evicting the older frames it depends on; after a refusal, frames up to the next
+/// keyframe are refused too and that keyframe enters past the rate limit (a throttled
+/// video subscriber sees keyframes, which it asks for); an eviction all the same (a policy
+/// that evicts at random; the byte bound, checked by the caller) skips what follows it in
+/// the queue up to a keyframe. Every break asks for a keyframe.
+fn push_video(s: &mut Slot, msg: Arc<Message>, now: Instant) -> Option<(Arc<Message>, DropReason)> {
+    let key = crate::gop::is_keyframe(&msg);
+    let q = s.queue.as_mut().expect("round-robin slots own a queue");
+    let (dropped, refused) = if !key && (s.hole || q.is_full()) {
+        (Some((msg, DropReason::Policy)), true)
+    } else {
+        let pushed = if key && s.hole {
+            q.push_past_limit(msg.clone(), now)
+        } else {
+            q.push(msg.clone(), now)
+        };
+        let refused = pushed.as_ref().is_some_and(|(m, _)| Arc::ptr_eq(m, &msg));
+        (pushed, refused)
+    };
+    let evicted = dropped.is_some() && !refused;
+    if refused {
+        s.hole = true;
+    } else if key {
+        s.hole = false;
+    }
+    if evicted {
+        s.skip = true;
+    }
+    if refused || evicted {
+        s.stats.keyframe_wanted.store(true, Relaxed);
+    }
+    dropped
 }
 
 /// How the writer is served.
@@ -262,6 +302,7 @@ impl Outbox {
                 delivery,
                 in_ready: false,
                 hole: false,
+                skip: false,
             },
         );
         id
@@ -299,10 +340,16 @@ impl Outbox {
                 let q = s.queue.as_mut().expect("round-robin slots own a queue");
                 let before = q.len();
                 let video = crate::gop::is_video_type(&msg.topic.schema.type_name);
-                let dropped = q.push(msg, now);
+                let dropped = if video {
+                    push_video(s, msg, now)
+                } else {
+                    q.push(msg, now)
+                };
+                let q = s.queue.as_mut().expect("round-robin slots own a queue");
                 let evicted = q.take_evicted();
-                if video && (evicted > 0 || dropped.is_some()) {
-                    s.hole = true;
+                if video && evicted > 0 {
+                    // Past the byte bound: what follows the evicted frames is skipped.
+                    s.skip = true;
                     s.stats.keyframe_wanted.store(true, Relaxed);
                 }
                 if evicted > 0 {

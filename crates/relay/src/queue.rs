@@ -73,6 +73,16 @@ impl WireLen for Message {
 pub trait OutboundQueue: Send {
     /// Adds `msg`; returns what was dropped to make room (possibly `msg` itself).
     fn push(&mut self, msg: Arc<Message>, now: Instant) -> Option<(Arc<Message>, DropReason)>;
+    /// [`OutboundQueue::push`] past the rate limit, which neither refuses `msg` nor counts
+    /// it: for a video keyframe that ends a gap, without which the frames after it are
+    /// worthless.
+    fn push_past_limit(
+        &mut self,
+        msg: Arc<Message>,
+        now: Instant,
+    ) -> Option<(Arc<Message>, DropReason)>;
+    /// Whether the next push would have to drop a message to make room.
+    fn is_full(&self) -> bool;
     /// The next message to send, if one may be sent at `now`.
     fn pop(&mut self, now: Instant) -> Option<Arc<Message>>;
     fn len(&self) -> usize;
@@ -138,7 +148,55 @@ impl OutboundQueue for QosQueue {
     fn push(&mut self, msg: Arc<Message>, now: Instant) -> Option<(Arc<Message>, DropReason)> {
         let t = self.nanos(now);
         let len = msg.payload.len();
-        let out = match self.queue.push(msg, t) {
+        let pushed = self.queue.push(msg, t);
+        self.settle(pushed, len, t)
+    }
+
+    fn push_past_limit(
+        &mut self,
+        msg: Arc<Message>,
+        now: Instant,
+    ) -> Option<(Arc<Message>, DropReason)> {
+        let t = self.nanos(now);
+        let len = msg.payload.len();
+        let pushed = self.queue.push_kept(msg);
+        self.settle(pushed, len, t)
+    }
+
+    fn is_full(&self) -> bool {
+        self.queue.len() >= self.queue.capacity()
+    }
+
+    fn pop(&mut self, now: Instant) -> Option<Arc<Message>> {
+        let t = self.nanos(now);
+        let m = self.queue.pop(t)?;
+        self.bytes -= m.payload.len().min(self.bytes);
+        Some(m)
+    }
+
+    fn take_evicted(&mut self) -> u64 {
+        std::mem::take(&mut self.evicted)
+    }
+
+    fn len(&self) -> usize {
+        self.queue.len()
+    }
+
+    fn oldest(&self) -> Option<Instant> {
+        self.queue.peek().map(|m| m.received())
+    }
+}
+
+impl QosQueue {
+    /// Accounts for a push of a message of `len` bytes, then evicts the oldest messages
+    /// over the byte bound. Returns what the push dropped.
+    fn settle(
+        &mut self,
+        pushed: Push<Arc<Message>>,
+        len: usize,
+        t: Nanos,
+    ) -> Option<(Arc<Message>, DropReason)> {
+        let out = match pushed {
             Push::Queued => {
                 self.bytes += len;
                 None
@@ -162,25 +220,6 @@ impl OutboundQueue for QosQueue {
             }
         }
         out
-    }
-
-    fn pop(&mut self, now: Instant) -> Option<Arc<Message>> {
-        let t = self.nanos(now);
-        let m = self.queue.pop(t)?;
-        self.bytes -= m.payload.len().min(self.bytes);
-        Some(m)
-    }
-
-    fn take_evicted(&mut self) -> u64 {
-        std::mem::take(&mut self.evicted)
-    }
-
-    fn len(&self) -> usize {
-        self.queue.len()
-    }
-
-    fn oldest(&self) -> Option<Instant> {
-        self.queue.peek().map(|m| m.received())
     }
 }
 

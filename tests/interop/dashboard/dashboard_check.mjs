@@ -128,6 +128,8 @@ try {
     const d = (f2[k] ?? 0) - (f1[k] ?? 0);
     check(d > 0, `robot view: ${k} panel updating (${d} frames in 2 s)`);
   }
+  const inspected = await page.$eval(".inspector select", (e) => e.value);
+  console.log(`     the inspector shows ${inspected}`);
   // Chromium offers permessage-deflate: the hub negotiated it with the page's rosbridge
   // connection (issue 56), so the panels above were fed compressed messages.
   const deflated = await page.evaluate(async (t) => {

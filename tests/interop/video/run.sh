@@ -125,9 +125,17 @@ step "3. the raw camera was not sent for the video"
 n="$(topic_field /robot1/camera/image_raw messages)"
 [ "$n" = "0" ] || fail "/robot1/camera/image_raw reached the hub while only its video was watched: $n messages"
 
-step "4. the JPEG camera's video decodes too"
+step "4. the JPEG camera's video decodes too, and a throttled viewer's keyframes"
+# roslibjs's throttle_rate cannot thin a chain of frames: a viewer throttled to 5 a second
+# with a queue of one is given keyframes (which its losses ask the robot for), every one
+# decodable, rather than P-frames it could not decode.
+in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/jpeg_video 5 \
+    --min-frames 3 --throttle 200 --queue 1 >"$tmp/watch-throttled.log" 2>&1 &
+throttled=$!
 in_ns 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/jpeg_video 4 \
     --min-frames 10 | tee "$tmp/watch-jpeg.log" || fail "the video of the simulated JPEG camera (see above)"
+wait "$throttled" || { cat "$tmp/watch-throttled.log"; fail "a throttled viewer of the video (see above)"; }
+sed 's/^/  throttled: /' "$tmp/watch-throttled.log"
 
 step "5. nobody watching, the encoders stop"
 for _ in $(seq 250); do

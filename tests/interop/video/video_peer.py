@@ -87,7 +87,7 @@ def camera(seconds):
     print(f"camera published {n}", flush=True)
 
 
-def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr):
+def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr, throttle_ms=0, queue_length=0):
     import av
     import roslibpy
 
@@ -98,7 +98,8 @@ def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr):
     ros = roslibpy.Ros(host=u.hostname, port=u.port, headers=headers)
     ros.run(timeout=10)
     got = []
-    sub = roslibpy.Topic(ros, topic, "foxglove_msgs/msg/CompressedVideo")
+    sub = roslibpy.Topic(ros, topic, "foxglove_msgs/msg/CompressedVideo",
+                         throttle_rate=throttle_ms, queue_length=queue_length)
     sub.subscribe(lambda m: got.append(m))
     print(f"watch subscribed to {topic}", flush=True)
     time.sleep(seconds)
@@ -162,11 +163,14 @@ def main():
     w.add_argument("--min-frames", type=int, default=1)
     w.add_argument("--scene", action="store_true")
     w.add_argument("--min-psnr", type=float, default=30.0)
+    w.add_argument("--throttle", type=int, default=0, help="rosbridge throttle_rate, ms")
+    w.add_argument("--queue", type=int, default=0, help="rosbridge queue_length")
     a = ap.parse_args()
     if a.cmd == "camera":
         camera(a.seconds)
         return 0
-    return watch(a.url, a.topic, a.seconds, a.size, a.min_frames, a.scene, a.min_psnr)
+    return watch(a.url, a.topic, a.seconds, a.size, a.min_frames, a.scene, a.min_psnr,
+                 a.throttle, a.queue)
 
 
 if __name__ == "__main__":

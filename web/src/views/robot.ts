@@ -243,7 +243,7 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
     const sel = el("select");
     const tree = el("div", "tree");
     inspP.body.append(sel, tree);
-    const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic, ...markerTopics.map((t) => t.name)]);
+    const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic, ...markerTopics.map((t) => t.name), ...byType("foxglove_msgs/msg/CompressedVideo").map((t) => t.name)]);
     // Start on a live topic the other panels do not show (odometry, in the demo).
     const firstOther = own.find((t) => !shown.has(t.name) && t.rate_hz > 0) ?? own.find((t) => !shown.has(t.name)) ?? own[0];
     for (const t of own) sel.appendChild(new Option(`${t.name} (${t.type})`, t.name));

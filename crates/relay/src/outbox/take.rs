@@ -56,7 +56,7 @@ impl Outbox {
                     };
                     let q = s.queue.as_mut().expect("round-robin slots own a queue");
                     match q.pop(now) {
-                        Some(m) if s.hole && !crate::gop::is_keyframe(&m) => {
+                        Some(m) if s.skip && !crate::gop::is_keyframe(&m) => {
                             // After a lost video frame: skipped to the next keyframe,
                             // which is wanted until it comes (the one asked for may
                             // have been lost too, to a queue this slow).
@@ -71,7 +71,7 @@ impl Outbox {
                             }
                         }
                         Some(m) => {
-                            s.hole = false;
+                            s.skip = false;
                             bytes += m.wire_len();
                             items.push((id, s.delivery, m));
                             st.queued -= 1;
