@@ -19,6 +19,9 @@ export interface Probe {
   /** The robot view's configuration panel: loaded, whether the operator may change it,
    * the changes in force, the last apply's outcome. */
   config: { loaded: boolean; mayChange: boolean; overlay: unknown; result: string };
+  /** The camera panel's video: the topic played, its codec string, the size and number of
+   * pictures decoded, decoder errors, and why it fell back to pictures (empty if not). */
+  video: { topic: string; codec: string; width: number; height: number; decoded: number; errors: number; fallback: string };
 }
 
 export const probe: Probe = {
@@ -34,6 +37,7 @@ export const probe: Probe = {
   markers: { drawn: 0, shapes: 0, byType: {}, byNs: {} },
   mapToScreen: null,
   config: { loaded: false, mayChange: false, overlay: null, result: "" },
+  video: { topic: "", codec: "", width: 0, height: 0, decoded: 0, errors: 0, fallback: "" },
 };
 
 export function count(panel: string) {

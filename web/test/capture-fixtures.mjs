@@ -5,7 +5,8 @@
 //
 //   node --experimental-websocket test/capture-fixtures.mjs ws://127.0.0.1:8080/ robot1 [NAME...]
 //
-// NAMEs (scan, points, odom, markers) limit the capture to those fixtures.
+// NAMEs (scan, points, odom, markers, video) limit the capture to those fixtures. The video
+// fixture is a keyframe of the camera's H.264 stream.
 import { writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -13,10 +14,13 @@ import { fileURLToPath } from "node:url";
 const [url, robot = "robot1", ...only] = process.argv.slice(2);
 if (!url) throw new Error("usage: capture-fixtures.mjs WS_URL [ROBOT] [NAME...]");
 const out = join(dirname(fileURLToPath(import.meta.url)), "fixtures");
-const all = { scan: `/${robot}/scan`, points: `/${robot}/points`, odom: `/${robot}/odom`, markers: `/${robot}/markers` };
+const all = { scan: `/${robot}/scan`, points: `/${robot}/points`, odom: `/${robot}/odom`, markers: `/${robot}/markers`, video: `/${robot}/camera/video` };
 const topics = Object.fromEntries(Object.entries(all).filter(([k]) => !only.length || only.includes(k)));
-// A MarkerArray has no header of its own: its markers' stamp identifies it.
-const stampOf = (m) => JSON.stringify(m?.header?.stamp ?? m?.markers?.[0]?.header?.stamp);
+// A MarkerArray has no header of its own: its markers' stamp identifies it; a
+// CompressedVideo its timestamp.
+const stampOf = (m) => JSON.stringify(m?.header?.stamp ?? m?.markers?.[0]?.header?.stamp ?? m?.timestamp);
+// Whether an H.264 access unit (Annex B) holds an IDR slice: a start code, then NAL type 5.
+const idr = (d) => d.some((b, i) => i >= 2 && d[i - 2] === 0 && d[i - 1] === 0 && b === 1 && (d[i + 1] & 0x1f) === 5);
 
 function open(compression, onFrame) {
   const ws = new WebSocket(url);
@@ -35,7 +39,7 @@ const done = new Set();
 const a = open("cbor", (d) => {
   const b = new Uint8Array(d);
   const m = decode(b);
-  if (m.op === "publish") cbor.set(`${m.topic} ${stampOf(m.msg)}`, b);
+  if (m.op === "publish" && (m.msg.format !== "h264" || idr(m.msg.data))) cbor.set(`${m.topic} ${stampOf(m.msg)}`, b);
   check();
 });
 const b = open("none", (d) => {

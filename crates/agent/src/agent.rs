@@ -134,6 +134,7 @@ impl AgentOptions {
                         camera: parse(camera)?,
                         topic: parse(&v.topic)?,
                         settings: v.settings(),
+                        min_bitrate_bps: v.min_bitrate_bps(),
                         library: cfg.openh264_library.clone(),
                     })
                 })

@@ -8,7 +8,9 @@
 //! thread ([`fleetlink_video::Stream`]); once nobody has wanted the video for
 //! [`UNWANTED_BEFORE_PAUSE`](fleetlink_relay::read_interest::UNWANTED_BEFORE_PAUSE), it
 //! stops the thread and lets the camera go. The camera topic itself is sent to the hub only
-//! if someone there wants it too.
+//! if someone there wants it too. While it runs, its target bitrate follows the link
+//! ([`fleetlink_video::rate`]): down when its frames wait in the uplink's queue, up again
+//! when they do not, capped by the hub's share and the data budget.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -19,12 +21,13 @@ use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::read_interest::{Look, ReadInterest};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
+use fleetlink_video::rate::{LinkFollower, LinkState};
 use fleetlink_video::source::SourceKind;
 use fleetlink_video::{Settings, Stream, VIDEO_TYPE};
 use tokio_util::sync::CancellationToken;
 
 /// How often a stream looks again at who wants it when nothing told it (local subscribers
-/// coming and going are not signalled).
+/// coming and going are not signalled), and at its link (its bitrate follows it).
 const LOOK_EVERY: Duration = Duration::from_secs(1);
 
 /// One configured stream.
@@ -35,6 +38,9 @@ pub struct VideoOptions {
     /// The video topic it is offered as.
     pub topic: TopicName,
     pub settings: Settings,
+    /// The least the bitrate comes down to when the link carries less than
+    /// `settings.bitrate_bps` ([`fleetlink_video::rate`]).
+    pub min_bitrate_bps: u32,
     /// Cisco's OpenH264 to load instead of the built-in one.
     pub library: Option<PathBuf>,
 }
@@ -71,7 +77,11 @@ pub async fn serve(
         tokio::select! {
             _ = shutdown.cancelled() => break,
             _ = ReadInterest::changed(&interest) => {}
-            _ = look.tick() => {}
+            _ = look.tick() => {
+                if let (Some(r), Some(i)) = (&mut running, &interest) {
+                    r.follow_link(i, &topic);
+                }
+            }
             _ = asks.changed() => {
                 asks.take();
                 if !asks.take_pulls().is_empty()
@@ -143,6 +153,10 @@ struct Running {
     stream: Stream,
     /// When the last keyframe asked for was forced.
     forced: Option<Instant>,
+    /// The target bitrate, following the link.
+    rate: LinkFollower,
+    /// The lowest and highest targets it had.
+    rate_span: (u32, u32),
 }
 
 /// The most often a stream forces a keyframe when asked (the hub asks at most once a
@@ -204,7 +218,33 @@ impl Running {
             stream,
             // Its first frame is a keyframe.
             forced: Some(Instant::now()),
+            rate: LinkFollower::new(
+                opts.min_bitrate_bps,
+                opts.settings.bitrate_bps,
+                opts.settings.fps,
+            ),
+            rate_span: (opts.settings.bitrate_bps, opts.settings.bitrate_bps),
         })
+    }
+
+    /// Looks at the link (about once a second) and moves the encoder's target bitrate
+    /// with it.
+    fn follow_link(&mut self, interest: &ReadInterest, topic: &Topic) {
+        let (backlog_frames, limit_bytes_per_sec) = interest.link_load(topic);
+        let link = LinkState {
+            backlog_frames,
+            limit_bytes_per_sec,
+        };
+        if let Some(bps) = self.rate.update(link) {
+            self.stream.set_bitrate(bps);
+            self.rate_span = (self.rate_span.0.min(bps), self.rate_span.1.max(bps));
+            tracing::debug!(
+                "video {}: bitrate {} kbit/s ({} frames waiting on the link)",
+                self.topic,
+                bps / 1000,
+                backlog_frames
+            );
+        }
     }
 
     /// The hub asked for a keyframe: the next frame is one, unless one was forced less
@@ -230,7 +270,8 @@ impl Running {
         tokio::task::spawn_blocking(move || drop(stream));
         tracing::info!(
             "video {}: nobody watches; stopped after {} frames ({} keyframes, {} left out \
-             over the frame rate, {} skipped by rate control, {} behind, {} failed)",
+             over the frame rate, {} skipped by rate control, {} behind, {} failed; \
+             bitrate {} to {} kbit/s, following the link)",
             self.topic,
             s.encoded.load(Relaxed),
             s.keyframes.load(Relaxed),
@@ -238,6 +279,8 @@ impl Running {
             s.skipped.load(Relaxed),
             s.dropped.load(Relaxed),
             s.failed.load(Relaxed),
+            self.rate_span.0 / 1000,
+            self.rate_span.1 / 1000,
         );
     }
 }

@@ -87,10 +87,10 @@ fn push_video(s: &mut Slot, msg: Arc<Message>, now: Instant) -> Option<(Arc<Mess
     let (dropped, refused) = if !key && (s.hole || q.is_full()) {
         (Some((msg, DropReason::Policy)), true)
     } else {
-        let pushed = if key && s.hole {
-            q.push_past_limit(msg.clone(), now)
-        } else {
-            q.push(msg.clone(), now)
+        let pushed = match q.push(msg.clone(), now) {
+            // Over the rate limit; a keyframe ending a gap goes in all the same.
+            Some((m, DropReason::RateLimit)) if key && s.hole => q.push_past_limit(m, now),
+            pushed => pushed,
         };
         let refused = pushed.as_ref().is_some_and(|(m, _)| Arc::ptr_eq(m, &msg));
         (pushed, refused)
@@ -301,7 +301,9 @@ impl Outbox {
                 stats,
                 delivery,
                 in_ready: false,
-                hole: false,
+                // A video subscriber starts at a keyframe: the group the router replays
+                // to it, or the one its first refusal asks for.
+                hole: true,
                 skip: false,
             },
         );
@@ -339,7 +341,9 @@ impl Outbox {
             Service::RoundRobin { ready } => {
                 let q = s.queue.as_mut().expect("round-robin slots own a queue");
                 let before = q.len();
-                let video = crate::gop::is_video_type(&msg.topic.schema.type_name);
+                // Only CDR video is looked into, as by the router (`crate::gop`).
+                let video = crate::gop::is_video_type(&msg.topic.schema.type_name)
+                    && msg.payload.encoding == fleetlink_proto::Encoding::Cdr;
                 let dropped = if video {
                     push_video(s, msg, now)
                 } else {

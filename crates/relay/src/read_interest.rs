@@ -46,6 +46,16 @@ impl ReadInterest {
         }
     }
 
+    /// How the uplink carries `topic` now: its messages waiting in the link's queue, and
+    /// what the link may carry by rule (bytes/s: [`Outbox::send_limit`]). A video
+    /// stream's bitrate follows it.
+    pub fn link_load(&self, topic: &crate::Topic) -> (usize, Option<f64>) {
+        (
+            self.outbox.queued_for(topic.meta().id.0),
+            self.outbox.send_limit(),
+        )
+    }
+
     /// Whether `topic`, which `reader` publishes into the router, is wanted: it is latched
     /// (its one message must be at hand), a local subscriber other than `reader` and the
     /// uplink has it, or the uplink sends it (the hub wants it, `always`, no-drop, a pull

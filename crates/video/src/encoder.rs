@@ -64,6 +64,39 @@ impl H264Encoder {
         self.force_keyframe = true;
     }
 
+    /// Changes the target bitrate from the next frame on, without a keyframe (the stream
+    /// follows its link: [`crate::rate`]). The `openh264` crate sets the bitrate only when
+    /// it makes an encoder, and making one starts with a keyframe, the frame a slow link
+    /// can least afford: so the option is set through its raw API, the crate's one use of
+    /// `unsafe`.
+    #[allow(unsafe_code)]
+    pub fn set_bitrate(&mut self, bps: u32) -> Result<(), VideoError> {
+        self.settings.bitrate_bps = bps;
+        let Some((encoder, _)) = &mut self.encoder else {
+            return Ok(()); // made with it at the first picture
+        };
+        let mut info = openh264_sys2::SBitrateInfo {
+            iLayer: openh264_sys2::SPATIAL_LAYER_ALL,
+            iBitrate: i32::try_from(bps).unwrap_or(i32::MAX),
+        };
+        // The maximum first: the encoder refuses a target above it.
+        for option in [
+            openh264_sys2::ENCODER_OPTION_MAX_BITRATE,
+            openh264_sys2::ENCODER_OPTION_BITRATE,
+        ] {
+            // SAFETY: the encoder is initialised (it was made with a configuration), and
+            // both options take a pointer to an `SBitrateInfo` that lives through the
+            // call; neither changes anything the bindings rely on (sizes, formats).
+            let rc = unsafe { encoder.raw_api().set_option(option, (&raw mut info).cast()) };
+            if rc != 0 {
+                return Err(VideoError::Encoder(format!(
+                    "OpenH264 refused the bitrate {bps} b/s (option {option}: error {rc})"
+                )));
+            }
+        }
+        Ok(())
+    }
+
     /// Encodes `picture` captured at `stamp_ms`, appending its access unit to `out`.
     /// `None` when the encoder skipped the frame to keep to its bitrate.
     pub fn encode(
@@ -212,6 +245,60 @@ pub(crate) mod tests {
         assert!(
             keyframes.contains(&10),
             "the periodic keyframe: {keyframes:?}"
+        );
+    }
+
+    #[test]
+    fn a_lower_bitrate_takes_effect_without_a_keyframe() {
+        let (w, h) = (320, 240);
+        let settings = Settings {
+            fps: 15.0,
+            bitrate_bps: 2_000_000,
+            keyframe_every: 1000,
+        };
+        let mut enc = H264Encoder::new(settings, None);
+        let mut pic = Picture::default();
+        // Bytes of frames 15..45 (after the rate control settled) at one bitrate, then
+        // the next 30 after the change.
+        let (mut before, mut after) = (0usize, 0usize);
+        let mut keyframes_after_change = 0;
+        // Noise: more detail than either bitrate carries, so both are used in full.
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut noise = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as u8
+        };
+        for f in 0..90 {
+            let rgb: Vec<u8> = (0..w * h * 3).map(|_| noise()).collect();
+            let pixels = Pixels::Raw {
+                width: w as u32,
+                height: h as u32,
+                step: (w * 3) as u32,
+                encoding: "rgb8",
+                data: &rgb,
+            };
+            pic.fill(&pixels).unwrap();
+            if f == 45 {
+                enc.set_bitrate(200_000).unwrap();
+                assert_eq!(enc.settings().bitrate_bps, 200_000);
+            }
+            let mut out = Vec::new();
+            let frame = enc.encode(&pic, f as u64 * 66, &mut out).unwrap();
+            match f {
+                15..45 => before += out.len(),
+                60..90 => after += out.len(),
+                _ => {}
+            }
+            if f >= 45 && frame.is_some_and(|fr| fr.keyframe) {
+                keyframes_after_change += 1;
+            }
+        }
+        assert_eq!(keyframes_after_change, 0, "no keyframe for a new bitrate");
+        assert!(
+            after * 4 < before,
+            "30 frames: {before} bytes at 2 Mbit/s, {after} bytes at 200 kbit/s"
         );
     }
 }

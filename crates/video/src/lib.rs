@@ -12,7 +12,8 @@
 //! - [`message`]: the `CompressedVideo` message written straight as CDR;
 //! - [`quality`]: the encoder measured against JPEG on the same frames (the benchmark);
 //! - [`stream`]: one encoder thread per stream behind a queue of two frames that drops the
-//!   oldest.
+//!   oldest;
+//! - [`rate`]: the stream's target bitrate following its link.
 //!
 //! No sockets and no async runtime: the agent decides when a stream runs (someone watches
 //! it) and publishes what it makes.
@@ -22,6 +23,7 @@ pub use fleetlink_msg::h264;
 pub mod message;
 pub mod picture;
 pub mod quality;
+pub mod rate;
 pub mod source;
 pub mod stream;
 

@@ -63,6 +63,8 @@ struct Pending {
     /// When the last frame let in arrived (for the frame rate).
     last_in: Option<Instant>,
     keyframe: bool,
+    /// A new target bitrate, for the encoder before its next frame.
+    bitrate: Option<u32>,
     stop: bool,
 }
 
@@ -96,6 +98,7 @@ impl Stream {
                 frames: VecDeque::with_capacity(QUEUE + 1),
                 last_in: None,
                 keyframe: false,
+                bitrate: None,
                 stop: false,
             }),
             wake: Condvar::new(),
@@ -149,6 +152,16 @@ impl Stream {
         p.keyframe = true;
     }
 
+    /// The encoder's target bitrate from its next frame on.
+    pub fn set_bitrate(&self, bps: u32) {
+        let mut p = self
+            .shared
+            .pending
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        p.bitrate = Some(bps);
+    }
+
     pub fn stats(&self) -> Arc<StreamStats> {
         self.shared.stats.clone()
     }
@@ -182,7 +195,7 @@ impl Worker {
         let mut picture = Picture::default();
         let start = Instant::now();
         loop {
-            let (kind, cdr, arrived, keyframe) = {
+            let (kind, cdr, arrived, keyframe, bitrate) = {
                 let mut p = self
                     .shared
                     .pending
@@ -195,13 +208,24 @@ impl Worker {
                         return;
                     }
                     if let Some((kind, cdr, arrived)) = p.frames.pop_front() {
-                        break (kind, cdr, arrived, std::mem::take(&mut p.keyframe));
+                        break (
+                            kind,
+                            cdr,
+                            arrived,
+                            std::mem::take(&mut p.keyframe),
+                            p.bitrate.take(),
+                        );
                     }
                     p = self.shared.wake.wait(p).unwrap_or_else(|e| e.into_inner());
                 }
             };
             if keyframe {
                 self.encoder.request_keyframe();
+            }
+            if let Some(bps) = bitrate
+                && let Err(e) = self.encoder.set_bitrate(bps)
+            {
+                tracing::warn!("video {}: {e}", self.name);
             }
             let began = Instant::now();
             let stamp_ms = arrived.saturating_duration_since(start).as_millis() as u64;

@@ -1,8 +1,8 @@
 // The dashboard in real headless Chromium (Debian's package, driven by puppeteer-core)
-// against `fleetlink demo`: fleet view, robot panels (the camera's picture decoded), the
-// marker layer (the simulator's pillars, walls and goal as visualization_msgs markers),
-// navigation goal + cancel, a service form call, the recordings page's black-box form, and
-// a viewer without publish rights.
+// against `fleetlink demo`: fleet view, robot panels (the camera's H.264 video decoded with
+// WebCodecs; its JPEG for a viewer without), the marker layer (the simulator's pillars,
+// walls and goal as visualization_msgs markers), navigation goal + cancel, a service form
+// call, the recordings page's black-box form, and a viewer without publish rights.
 // Screenshots of each view go to --shots. Exits non-zero when any check failed.
 //
 //   node dashboard_check.mjs --url http://127.0.0.1:PORT/ --user U --password P --viewer-token V --shots DIR
@@ -173,14 +173,25 @@ try {
   check(undone === "applied: topics", `configuration panel: the change undone (${undone})`);
   const cloudInfo = await page.$eval(".robot-grid section:nth-child(4) .info", (e) => e.textContent);
   check(/points/.test(cloudInfo), `point cloud panel: ${cloudInfo}`);
-  // The camera panel shows the simulator's picture of its room: a JPEG the browser
-  // decoded, at the demo's size, not the grey-level view of undecodable bytes.
-  const cam = await until(page, () => {
-    const img = document.querySelector("img.camera");
-    const note = img?.parentElement?.querySelector("p.muted")?.textContent ?? "";
-    return img && img.style.display !== "none" && img.complete && img.naturalWidth > 0 && { w: img.naturalWidth, h: img.naturalHeight, note };
-  }, null, 5000, "camera panel: a decoded picture");
-  if (cam) check(cam.w === 640 && cam.h === 480 && !/not a decodable/.test(cam.note), `camera panel: a decoded ${cam.w}x${cam.h} picture${cam.note ? ` (note: ${cam.note})` : ""}`);
+  // The camera panel plays the robot's H.264 video with WebCodecs: Chromium decoded it at
+  // the demo's size, and the canvas shows the simulator's room (light walls and floor,
+  // dark pillars), not a black or flat picture.
+  const vid = await until(page, () => {
+    const v = window.fleetlink.video, cv = document.querySelector("canvas.camera.video");
+    if (!cv || v.decoded < 10) return null;
+    const d = cv.getContext("2d").getImageData(0, 0, cv.width, cv.height).data;
+    let s = 0, s2 = 0, n = 0;
+    for (let i = 0; i < d.length; i += 16) { const y = (d[i] + d[i + 1] + d[i + 2]) / 3; s += y; s2 += y * y; n++; }
+    const info = cv.closest("section").querySelector("h2 .info").textContent;
+    return { ...v, canvas: `${cv.width}x${cv.height}`, mean: s / n, sd: Math.sqrt(Math.max(0, s2 / n - (s / n) ** 2)), info };
+  }, null, 8000, "camera panel: ten video frames decoded");
+  if (vid) {
+    check(vid.topic === `/${robot}/camera/video` && /^avc1\.42/.test(vid.codec) && !vid.fallback && vid.errors === 0,
+      `camera panel: ${vid.topic} played with WebCodecs as ${vid.codec} (${vid.decoded} frames, ${vid.errors} errors${vid.fallback ? `, fell back: ${vid.fallback}` : ""})`);
+    check(vid.width === 640 && vid.height === 480 && vid.canvas === "640x480", `camera panel: video frames of ${vid.width}x${vid.height} on a ${vid.canvas} canvas`);
+    check(vid.mean > 30 && vid.sd > 10, `camera panel: the canvas shows a picture (mean level ${vid.mean.toFixed(0)}, spread ${vid.sd.toFixed(0)})`);
+    check(/fps/.test(vid.info) && /B\/s/.test(vid.info), `camera panel: frame rate and bytes per second shown ("${vid.info}")`);
+  }
   // Signing in replaced the connection: the status shows the new one, not the old one's close.
   const connText = await until(page, () => document.querySelector("#conn")?.textContent === "connected" && "connected", null, 3000, "status bar: connected after sign-in");
   if (connText) ok("status bar: connected after sign-in");
@@ -330,6 +341,8 @@ try {
   step = "viewer";
   const ctx = await browser.createBrowserContext();
   const v = await ctx.newPage();
+  // This viewer's browser has no WebCodecs: its camera panel falls back to the JPEG topic.
+  await v.evaluateOnNewDocument(() => { delete window.VideoDecoder; });
   await v.goto(o.url);
   await signIn(v, o["viewer-token"]);
   await v.goto(`${o.url}#/robot/${robot}`);
@@ -339,6 +352,17 @@ try {
   check(btns.estop && btns.init && btns.svc, `viewer: e-stop, initial pose and service controls disabled ${JSON.stringify(btns)}`);
   check(/not allowed/.test(dis?.estop ?? ""), "viewer: the reason is the hub's refusal text");
   await until(v, () => window.fleetlink.frames.scan > 0, null, 5000, "viewer still sees the robot's data");
+  // The camera panel shows the simulator's picture of its room: a JPEG the browser
+  // decoded, at the demo's size, not the grey-level view of undecodable bytes.
+  const cam = await until(v, () => {
+    const img = document.querySelector("img.camera");
+    const note = img?.parentElement?.parentElement?.querySelector("p.muted")?.textContent ?? "";
+    return img && img.style.display !== "none" && img.complete && img.naturalWidth > 0 && { w: img.naturalWidth, h: img.naturalHeight, note };
+  }, null, 5000, "viewer without WebCodecs: a decoded camera picture");
+  if (cam) {
+    check(cam.w === 640 && cam.h === 480 && !/not a decodable/.test(cam.note), `viewer without WebCodecs: a decoded ${cam.w}x${cam.h} JPEG picture`);
+    check(/no WebCodecs/.test(cam.note), `viewer without WebCodecs: the panel says why it shows JPEG ("${cam.note}")`);
+  }
   const viewerCfg = await until(v, () => window.fleetlink.config.loaded && { may: window.fleetlink.config.mayChange, hidden: document.querySelector(".config .config-edit")?.hidden }, null, 8000, "viewer: the configuration panel loaded");
   if (viewerCfg) check(!viewerCfg.may && viewerCfg.hidden, `viewer: the configuration is shown without its editor ${JSON.stringify(viewerCfg)}`);
 

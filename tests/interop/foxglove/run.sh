@@ -2,14 +2,15 @@
 # Foxglove WebSocket interop suite: @foxglove/ws-protocol's FoxgloveClient (npm, under
 # Node) against a fleetlink hub with one simulated robot.
 #
-# Starts a hub and one agent (robot1: simulated laser, odometry, point cloud; services
-# /set_mode and /get_status; a local rosbridge listener where the robot's /cmd_vel is
-# watched), waits until robot1 is online with its topics, then runs
+# Starts a hub and one agent (robot1: simulated laser, odometry, point cloud, a camera
+# and its H.264 video; services /set_mode and /get_status; a local rosbridge listener
+# where the robot's /cmd_vel is watched), waits until robot1 is online with its topics, then runs
 # foxglove_client_check.mjs once per subprotocol (foxglove.websocket.v1 as Lichtblick
 # offers it, foxglove.sdk.v1 as the current Foxglove app does), with client publishing
 # and service calls in CDR on one run and JSON on the other, and a token without rights
 # on each; then deflate_check.mjs (permessage-deflate, two compressing clients and one
-# plain). Every process started here is stopped on exit (trap), also on failure.
+# plain); then video_check.mjs (the camera's video read by FoxgloveClient, decoded by
+# PyAV). Every process started here is stopped on exit (trap), also on failure.
 # Bounded: each step has a timeout; the suite takes well under 2 minutes.
 #
 # Env: FLEETLINK_BIN (default: target/release/fleetlink).
@@ -56,6 +57,9 @@ sim:
   laser_scan:  { rate_hz: 10, ranges: $scan_ranges }
   odometry:    { rate_hz: 20 }
   point_cloud: { rate_hz: 2, points: $points }
+  image:       { rate_hz: 15, width: 320, height: 240 }
+video:
+  /camera/image/compressed: { topic: /camera/video }
 YAML
 "$bin" agent --name "$robot" --config "$tmp/agent.yaml" --local-listen 127.0.0.1:0 >"$tmp/agent.log" 2>&1 &
 pids+=($!)
@@ -90,6 +94,16 @@ run_check "foxglove.sdk.v1" node "$here/foxglove_client_check.mjs" "${common[@]}
     --subprotocol foxglove.sdk.v1 --publish-encoding json --call-encoding cdr \
     --param '/fleetlink_interop/mode="patrol"'
 
+# The camera's video (issue 60): a Foxglove client reads its CompressedVideo frames from
+# CDR, and FFmpeg's decoder (PyAV) decodes them all from the first.
+echo "== foxglove video"
+if ! { timeout --kill-after=5 60 node "$here/video_check.mjs" --url "$hub_url" \
+            --topic "/$robot/camera/video" --seconds 4 --out "$tmp/foxglove-video.frames" \
+        && timeout --kill-after=5 60 "$root/.venv/bin/python" "$root/tests/interop/video/video_peer.py" \
+            decode "$tmp/foxglove-video.frames" --size 320x240 --min-frames 20; }; then
+    failed+=("foxglove video")
+fi
+
 # Both processes must have survived everything the clients did.
 # permessage-deflate (issue 56): FoxgloveClient over ws with perMessageDeflate.
 run_check "foxglove deflate" node "$here/deflate_check.mjs" --url "$hub_url" \
@@ -99,7 +113,7 @@ for pid in "${pids[@]}"; do
     kill -0 "$pid" 2>/dev/null || failed+=("server process $pid died")
 done
 
-echo "foxglove interop: ${#failed[@]} failure(s) in 3 client runs, $((SECONDS - started)) s"
+echo "foxglove interop: ${#failed[@]} failure(s) in 4 client runs, $((SECONDS - started)) s"
 if [ ${#failed[@]} -ne 0 ]; then
     echo "FAIL: ${failed[*]}" >&2
     exit 1

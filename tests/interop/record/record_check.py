@@ -6,15 +6,17 @@ odometry), an empty hub B (--hub2), an admin operator token for each, and a toke
 without rights on hub A. The checks, in order:
 
   refused      `fleetlink record` with the token without rights fails, naming the refusal
-  record       `fleetlink record` starts a recording of the robot's scan and odometry and
-               of /interop/.*; a roslibpy client publishes 100 std_msgs/String at 20 Hz,
+  record       `fleetlink record` starts a recording of the robot's scan, odometry and
+               camera video and of /interop/.*; a roslibpy client publishes 100 std_msgs/String at 20 Hz,
                a Foxglove WebSocket client 20 ROS 1 std_msgs/String; `fleetlink record
                stop`, `list --json` and `download`
   read         Python's mcap reader (indexed, with summary) and its stream reader:
                channels with their schemas and encodings, counts equal to the hub's,
                chunks zstd and at most 4 MiB, the recording's metadata (no drops); every
                message decoded by mcap-ros2-support / mcap-ros1-support: the strings as
-               published, in order; scans with the configured beams and sane values
+               published, in order; scans with the configured beams and sane values;
+               the video's frames decoded by FFmpeg's H.264 decoder (PyAV) from the
+               first message on, which is a keyframe
   replay       `fleetlink play` of the file to hub B: a roslibpy subscriber there gets the
                100 strings, in order, with the recorded spacing (median and span within
                10 %)
@@ -41,6 +43,9 @@ from mcap.records import Message as McapMessage
 from mcap_ros1.decoder import DecoderFactory as Ros1Decoders
 from mcap_ros2.decoder import DecoderFactory as Ros2Decoders
 from websockets.sync.client import connect as ws_connect
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "video"))
+from video_peer import decode_frames  # noqa: E402
 
 TIMEOUT = 15.0
 CHATTER = "/interop/chatter"
@@ -103,6 +108,16 @@ def foxglove_publish_ros1(hub, token, topic, texts):
             pass
 
 
+def has_idr(au):
+    """Whether an H.264 access unit (Annex B) holds an IDR slice (NAL type 5)."""
+    at = au.find(b"\x00\x00\x01")
+    while at >= 0 and at + 3 < len(au):
+        if au[at + 3] & 0x1F == 5:
+            return True
+        at = au.find(b"\x00\x00\x01", at + 3)
+    return False
+
+
 def step_refused(args):
     rc, _, err = run(args, "record", "--hub", args.hub, "--token", args.denied_token,
                      "--topics", "/robot1/.*", ok=False)
@@ -116,7 +131,7 @@ def step_record(args):
     pub.advertise()
     time.sleep(0.3)
     _, out, _ = run(args, "record", "--hub", args.hub, "--token", args.op_token, "--topics",
-                    f"/{args.robot}/(scan|odom)", "/interop/.*", "--name", "interop")
+                    f"/{args.robot}/(scan|odom|camera/video)", "/interop/.*", "--name", "interop")
     rec_id = out.split()[0]
     check(rec_id.startswith("rec-"), f"no recording id in: {out}")
     threading.Thread(target=foxglove_publish_ros1, daemon=True,
@@ -159,6 +174,7 @@ def step_read(args, info, path):
         want = {
             f"/{args.robot}/scan": ("cdr", "ros2msg", "sensor_msgs/msg/LaserScan"),
             f"/{args.robot}/odom": ("cdr", "ros2msg", "nav_msgs/msg/Odometry"),
+            f"/{args.robot}/camera/video": ("cdr", "ros2msg", "foxglove_msgs/msg/CompressedVideo"),
             CHATTER: ("cdr", "ros2msg", "std_msgs/msg/String"),
             LEVEL: ("ros1", "ros1msg", "std_msgs/String"),
         }
@@ -177,11 +193,14 @@ def step_read(args, info, path):
         check(meta.get("fleetlink.recording", {}).get("dropped") == "0",
               f"metadata {meta}")
 
-        texts, levels, scans, odoms = [], [], 0, 0
+        texts, levels, scans, odoms, video = [], [], 0, 0, []
         counted = 0
         for _schema, channel, _msg, decoded in reader.iter_decoded_messages():
             counted += 1
-            if channel.topic == CHATTER:
+            if channel.topic.endswith("/camera/video"):
+                t = decoded.timestamp
+                video.append((decoded.format, bytes(decoded.data), t.sec * 1_000_000_000 + t.nanosec))
+            elif channel.topic == CHATTER:
                 texts.append(decoded.data)
             elif channel.topic == LEVEL:
                 levels.append(decoded.data)
@@ -199,6 +218,15 @@ def step_read(args, info, path):
         check(levels == [f"level {i}" for i in range(N_LEVEL)], f"ROS 1 strings read back: {levels[:3]}… ({len(levels)})")
         # The recording ran for over 6 s: at 10 and 20 Hz, well over these.
         check(scans >= 30 and odoms >= 60, f"{scans} scans, {odoms} odometry messages")
+        # The camera's video, as Foxglove would play it from the file: every frame decodes
+        # from the first, which is a keyframe (the hub's kept group, or the one asked for).
+        check(video and video[0][0] == "h264" and has_idr(video[0][1]),
+              f"the recording's first video frame is not an H.264 keyframe ({len(video)} frames)")
+        decoded, _, found, failed = decode_frames(video, "320x240")
+        check(not failed, f"the recorded video: {found}: {'; '.join(failed)}")
+        # 90 frames in 6 s at 15 fps; a floor, for a loaded machine.
+        check(decoded >= 20, f"the recorded video: {found}; want at least 20 frames")
+        print(f"  video: {found}")
     with open(path, "rb") as f:
         streamed = sum(1 for r in StreamReader(f).records if isinstance(r, McapMessage))
     check(streamed == info["messages"], f"the stream reader found {streamed} messages")

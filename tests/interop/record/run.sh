@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# MCAP recording and replay interop suite: the hub records the simulated robot's topics,
-# a roslibpy publisher's strings and a Foxglove client's ROS 1 messages; Python's `mcap`
-# reader with `mcap-ros2-support` and `mcap-ros1-support` reads the files; `fleetlink
+# MCAP recording and replay interop suite: the hub records the simulated robot's topics
+# (its camera's H.264 video among them), a roslibpy publisher's strings and a Foxglove
+# client's ROS 1 messages; Python's `mcap` reader with `mcap-ros2-support` and
+# `mcap-ros1-support` reads the files, PyAV decodes the video; `fleetlink
 # play` replays one to a second hub, where roslibpy receives it.
 #
-# Starts hub A with robot1 (simulated laser and odometry) and hub B (empty), each with
+# Starts hub A with robot1 (simulated laser, odometry and camera video) and hub B (empty), each with
 # its own data directory and tokens, then runs record_check.py, which drives the
 # `fleetlink record` and `fleetlink play` commands and the peers. Every process started
 # here is stopped on exit (trap), also on failure. Bounded: each step has a timeout; the
@@ -50,6 +51,9 @@ token: $robot_token
 sim:
   laser_scan: { rate_hz: 10, ranges: $scan_ranges }
   odometry:   { rate_hz: 20 }
+  image:      { rate_hz: 15, width: 320, height: 240 }
+video:
+  /camera/image/compressed: { topic: /camera/video }
 YAML
 "$bin" agent --name "$robot" --config "$tmp/agent.yaml" --no-local >"$tmp/agent.log" 2>&1 &
 pids+=($!)

@@ -12,6 +12,9 @@ Modes:
               when that single message arrived.
   wrongtype   a node that subscribes /cmd_vel with the wrong type (std_msgs/String) for
               3 s: the agent must refuse it and keep serving the right subscribers.
+  camera S    a camera driver: /camera/image_raw, sensor_msgs/Image 640x480 rgb8 at
+              15 Hz for S seconds, the test scene of the video suite
+              (tests/interop/video/video_peer.py scene(), a function of the stamp).
 
 Every published value is a pure function of its index, so the hub side checks equality
 without talking to this process (expected values: hub_peer.py builds the same ones).
@@ -163,6 +166,44 @@ def idle_cloud():
         rate.sleep()
 
 
+def camera(seconds):
+    """The video suite's scene, built without numpy (Debian's rospy Python has none):
+    the gradient once, then the moving box pasted row by row into a copy per frame."""
+    from sensor_msgs.msg import Image
+    w, h = 640, 480
+    base = bytearray(w * h * 3)
+    row = bytearray(w * 3)
+    for x in range(w):
+        row[3 * x] = x * 255 // w
+        row[3 * x + 2] = 96
+    for y in range(h):
+        row[1::3] = bytes([y * 255 // h]) * w
+        base[y * w * 3:(y + 1) * w * 3] = row
+    box = bytes((250, 250, 240)) * 96
+    rospy.init_node("camera", disable_signals=True)
+    pub = rospy.Publisher("/camera/image_raw", Image, queue_size=2)
+    m = Image(height=h, width=w, encoding="rgb8", is_bigendian=0, step=w * 3)
+    m.header.frame_id = "camera"
+    print("camera ready", flush=True)
+    rate = rospy.Rate(15)
+    end = rospy.Time.now() + rospy.Duration(seconds)
+    n = 0
+    while not rospy.is_shutdown() and rospy.Time.now() < end:
+        stamp = rospy.Time.now()
+        t = (stamp.to_nsec() // 1_000_000) % 4000
+        bx = t * (w - 96) // 4000
+        img = bytearray(base)
+        for y in range(160, 320):
+            at = (y * w + bx) * 3
+            img[at:at + 96 * 3] = box
+        m.header.stamp = stamp
+        m.data = bytes(img)
+        pub.publish(m)
+        n += 1
+        rate.sleep()
+    print(f"camera published {n}", flush=True)
+
+
 def connected_to(node, topic, peer):
     """Whether `node`'s bus (its slave API's getBusInfo, as `rosnode info` reads it) has a
     connection on `topic` with `peer`. Prints yes/no."""
@@ -190,6 +231,8 @@ if __name__ == "__main__":
         oneshot()
     elif sys.argv[1] == "wrongtype":
         wrongtype()
+    elif sys.argv[1] == "camera":
+        camera(float(sys.argv[2]))
     elif sys.argv[1] == "idle_cloud":
         idle_cloud()
     elif sys.argv[1] == "connected":

@@ -21,7 +21,10 @@
 #      (/<robot>/fleetlink/diagnostics, ROS 1 part at WARN), and /cmd_vel keeps flowing;
 #   5. roscore killed and restarted under the running agent: a publisher started afterwards
 #      reaches the hub, and the agent's publication is registered again (`rostopic echo`);
-#   6. that publisher restarted: the agent follows it (publisherUpdate) and data flows again.
+#   6. that publisher restarted: the agent follows it (publisherUpdate) and data flows again;
+#   7. a rospy camera (sensor_msgs/Image 640x480 rgb8, 15 Hz) offered as H.264 video: a
+#      roslibpy viewer at the hub decodes every frame from the first with PyAV, and each
+#      picture matches the scene its stamp names.
 # Every step runs under `timeout`; every process started here is stopped on exit (trap).
 # The whole suite stays under 3 minutes.
 #
@@ -116,11 +119,13 @@ local_rosbridge: null
 ros1:
   master_uri: $ROS_MASTER_URI
   publish:
-    include: [/scan, /points, /custom, /chatter, /after_restart, /idle_points]
+    include: [/scan, /points, /custom, /chatter, /after_restart, /idle_points, /camera/image_raw]
   subscribe: [/cmd_vel, /announce, /chatter, /oneshot]
   services:
     expose: [/set_enabled, /add_two_ints]
     offer: ["/cloud/.*"]
+video:
+  /camera/image_raw: { topic: /camera/video, fps: 15, bitrate_kbps: 1500 }
 EOF
 "$bin" agent --config "$tmp/agent.yaml" >"$tmp/agent.log" 2>&1 &
 pids+=($!)
@@ -262,6 +267,15 @@ kill -TERM "$after_pid"; wait "$after_pid" 2>/dev/null || true
 "$rospython" "$here/ros_peer.py" after >"$tmp/after2.log" 2>&1 &
 pids+=($!)
 timeout --kill-after=5 40 "$python" "$here/hub_peer.py" check-after --hub-url "$hub_url" --robot "$robot" || fail "check-after (restarted publisher)"
+
+step "7. a rospy camera's video decodes at the hub from the first frame"
+"$rospython" "$here/ros_peer.py" camera 15 >"$tmp/camera.log" 2>&1 &
+pids+=($!)
+camera_pid=${pids[-1]}
+wait_for_line "$tmp/camera.log" '^(camera) ready$' "the rospy camera" "$camera_pid" >/dev/null
+timeout --kill-after=5 40 "$python" "$root/tests/interop/video/video_peer.py" watch "$hub_url" \
+    "/$robot/camera/video" 6 --min-frames 20 --scene || fail "the rospy camera's video (see above)"
+kill -TERM "$camera_pid" 2>/dev/null; wait "$camera_pid" 2>/dev/null || true
 
 kill -0 "$agent_pid" 2>/dev/null || fail "the agent died"
 echo "ros1 interop: ${#failed[@]} failure(s), $((SECONDS - started)) s"

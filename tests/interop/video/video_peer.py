@@ -9,6 +9,9 @@
                             message on. Checks the size, the count, that each frame
                             decodes, and with --scene the luma PSNR of each decoded frame
                             against the scene its stamp names.
+    decode FILE             the same decoding of frames another peer wrote to FILE (the
+                            Foxglove client's): per frame a little-endian u32 length and
+                            the H.264 access unit.
 
 Prints what it found; exits 1 with FAIL lines when a check fails.
 """
@@ -29,8 +32,8 @@ W, H, HZ = 640, 480, 15
 
 def scene(stamp_ns):
     """The camera's picture at a stamp: colour gradients and a bright box that moves."""
-    x = np.arange(W, dtype=np.uint16)
-    y = np.arange(H, dtype=np.uint16)
+    x = np.arange(W, dtype=np.uint32)
+    y = np.arange(H, dtype=np.uint32)
     img = np.empty((H, W, 3), dtype=np.uint8)
     img[:, :, 0] = (x * 255 // W)[None, :]
     img[:, :, 1] = (y * 255 // H)[:, None]
@@ -87,8 +90,8 @@ def camera(seconds):
     print(f"camera published {n}", flush=True)
 
 
-def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr, throttle_ms=0, queue_length=0):
-    import av
+def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr, throttle_ms=0, queue_length=0,
+          resume_after=None, min_resumed=0, tail=None, tail_min_frames=0, tail_max_age_ms=None):
     import roslibpy
 
     u = urllib.parse.urlparse(url)
@@ -100,37 +103,75 @@ def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr, throttle
     got = []
     sub = roslibpy.Topic(ros, topic, "foxglove_msgs/msg/CompressedVideo",
                          throttle_rate=throttle_ms, queue_length=queue_length)
-    sub.subscribe(lambda m: got.append(m))
+    arrived, wall = [], []
+    since = time.monotonic()
+    sub.subscribe(lambda m: (got.append(m), arrived.append(time.monotonic()), wall.append(time.time_ns())))
     print(f"watch subscribed to {topic}", flush=True)
     time.sleep(seconds)
     sub.unsubscribe()
     ros.terminate()
 
-    failed = []
     if not got:
         print(f"FAIL: no message on {topic} in {seconds} s")
         return 1
+    frames = []
+    for m in got:
+        data = m["data"]
+        ts = m["timestamp"]
+        frames.append((m.get("format"), base64.b64decode(data) if isinstance(data, str) else bytes(data),
+                       int(ts["sec"]) * 1_000_000_000 + int(ts["nanosec"])))
+    rc = report(f"watch {topic}", frames, size, min_frames, scene_check, min_psnr)
+    # The source's stamp is its wall clock, on this machine: the age of each frame as it
+    # arrived here (decoding adds PyAV's 1-2 ms), and how long the first one took.
+    ages = sorted((w - f[2]) / 1e6 for w, f in zip(wall, frames))
+    print(f"watch {topic}: first frame {1e3 * (arrived[0] - since):.0f} ms after subscribing; "
+          f"age on arrival p50 {ages[len(ages) // 2]:.1f} ms, p95 {ages[int(len(ages) * 0.95)]:.1f} ms")
+    if tail is not None:
+        # The last `tail` seconds: enough frames, and their age on arrival.
+        end = since + seconds
+        late = sorted((w - f[2]) / 1e6 for a, w, f in zip(arrived, wall, frames) if a > end - tail)
+        p50 = late[len(late) // 2] if late else float("inf")
+        print(f"watch {topic}: last {tail} s: {len(late)} frames, age on arrival p50 {p50:.0f} ms")
+        if len(late) < tail_min_frames:
+            print(f"FAIL: {len(late)} frames in the last {tail} s, want at least {tail_min_frames}")
+            rc = 1
+        if tail_max_age_ms is not None and p50 > tail_max_age_ms:
+            print(f"FAIL: frames {p50:.0f} ms old on arrival in the last {tail} s (median), "
+                  f"want at most {tail_max_age_ms}")
+            rc = 1
+    if resume_after is not None:
+        resumed = sum(1 for t in arrived if t - since > resume_after)
+        gaps = [b - a for a, b in zip(arrived, arrived[1:])]
+        print(f"watch {topic}: {resumed} frames after {resume_after} s; longest gap {max(gaps, default=0):.1f} s")
+        if resumed < min_resumed:
+            print(f"FAIL: {resumed} frames came after {resume_after} s, want at least {min_resumed}")
+            rc = 1
+    return rc
+
+
+def decode_frames(frames, size, scene_check=False):
+    """Decodes (format, access unit, stamp) frames in order with FFmpeg's H.264 decoder,
+    from the first on. Returns (what was found, failures)."""
+    import av
+
+    failed = []
     codec = av.CodecContext.create("h264", "r")
     decoded, psnrs, sizes = 0, [], set()
-    for i, m in enumerate(got):
-        if m.get("format") != "h264":
-            failed.append(f"message {i}: format {m.get('format')!r}, not h264")
+    for i, (fmt, data, stamp) in enumerate(frames):
+        if fmt != "h264":
+            failed.append(f"message {i}: format {fmt!r}, not h264")
             continue
-        data = m["data"]
-        data = base64.b64decode(data) if isinstance(data, str) else bytes(data)
         try:
-            frames = codec.decode(av.Packet(data))
+            pictures = codec.decode(av.Packet(data))
         except av.error.FFmpegError as e:
-            failed.append(f"message {i} of {len(got)} does not decode: {e}")
+            failed.append(f"message {i} of {len(frames)} does not decode: {e}")
             continue
-        if len(frames) != 1:
-            failed.append(f"message {i}: {len(frames)} pictures, not one")
-        for f in frames:
+        if len(pictures) != 1:
+            failed.append(f"message {i}: {len(pictures)} pictures, not one")
+        for f in pictures:
             decoded += 1
             sizes.add((f.width, f.height))
             if scene_check:
-                ts = m["timestamp"]
-                stamp = int(ts["sec"]) * 1_000_000_000 + int(ts["nanosec"])
                 y = f.to_ndarray(format="gray")[:H, :W].astype(np.float64)
                 # The stream says full range; FFmpeg's gray keeps the samples as they are.
                 ref = luma(scene(stamp))
@@ -139,15 +180,35 @@ def watch(url, topic, seconds, size, min_frames, scene_check, min_psnr, throttle
     want = tuple(int(v) for v in size.split("x"))
     if sizes != {want}:
         failed.append(f"decoded sizes {sorted(sizes)}, want {want}")
+    found = (f"{len(frames)} messages, {decoded} decoded from the first, sizes {sorted(sizes)}"
+             + (f", luma PSNR min {min(psnrs):.1f} median {float(np.median(psnrs)):.1f} dB" if psnrs else ""))
+    return decoded, psnrs, found, failed
+
+
+def report(what, frames, size, min_frames, scene_check=False, min_psnr=30.0):
+    """Decodes `frames` (decode_frames) and prints the outcome; 1 if a check failed."""
+    decoded, psnrs, found, failed = decode_frames(frames, size, scene_check)
     if decoded < min_frames:
-        failed.append(f"{decoded} frames decoded in {seconds} s, want at least {min_frames}")
+        failed.append(f"{decoded} frames decoded, want at least {min_frames}")
     if psnrs and min(psnrs) < min_psnr:
         failed.append(f"luma PSNR down to {min(psnrs):.1f} dB against the scene, want >= {min_psnr}")
-    print(f"watch {topic}: {len(got)} messages, {decoded} decoded from the first, sizes {sorted(sizes)}"
-          + (f", luma PSNR min {min(psnrs):.1f} median {float(np.median(psnrs)):.1f} dB" if psnrs else ""))
+    print(f"{what}: {found}")
     for f in failed:
         print(f"FAIL: {f}")
     return 1 if failed else 0
+
+
+def read_frames(path):
+    """Frames written by another peer: per frame a little-endian u32 length, then the
+    access unit; all in format h264."""
+    with open(path, "rb") as f:
+        b = f.read()
+    frames, at = [], 0
+    while at + 4 <= len(b):
+        n = int.from_bytes(b[at:at + 4], "little")
+        frames.append(("h264", b[at + 4:at + 4 + n], 0))
+        at += 4 + n
+    return frames
 
 
 def main():
@@ -165,12 +226,25 @@ def main():
     w.add_argument("--min-psnr", type=float, default=30.0)
     w.add_argument("--throttle", type=int, default=0, help="rosbridge throttle_rate, ms")
     w.add_argument("--queue", type=int, default=0, help="rosbridge queue_length")
+    w.add_argument("--tail", type=float, help="seconds at the end checked on their own")
+    w.add_argument("--tail-min-frames", type=int, default=0)
+    w.add_argument("--tail-max-age-ms", type=float, help="median age on arrival in the tail")
+    w.add_argument("--resume-after", type=float, help="seconds after subscribing")
+    w.add_argument("--min-resumed", type=int, default=0,
+                   help="frames that must come after --resume-after seconds")
+    d = sp.add_parser("decode")
+    d.add_argument("file")
+    d.add_argument("--size", default=f"{W}x{H}")
+    d.add_argument("--min-frames", type=int, default=1)
     a = ap.parse_args()
+    if a.cmd == "decode":
+        return report(f"decode {os.path.basename(a.file)}", read_frames(a.file), a.size, a.min_frames)
     if a.cmd == "camera":
         camera(a.seconds)
         return 0
     return watch(a.url, a.topic, a.seconds, a.size, a.min_frames, a.scene, a.min_psnr,
-                 a.throttle, a.queue)
+                 a.throttle, a.queue, a.resume_after, a.min_resumed, a.tail, a.tail_min_frames,
+                 a.tail_max_age_ms)
 
 
 if __name__ == "__main__":

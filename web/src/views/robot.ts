@@ -1,5 +1,6 @@
 // The robot view: panels chosen from the robot's topics by type (LaserScan 2D,
-// PointCloud2 3D, CompressedImage, Odometry/Pose path on the map), a generic inspector
+// PointCloud2 3D, the camera's video or CompressedImage (camera.ts), Odometry/Pose path
+// on the map), a generic inspector
 // for any topic, per-topic sparklines (rate and bandwidth from the hub, latency measured
 // here), the link quality over the last minutes, and the tasking panel.
 //
@@ -7,11 +8,12 @@
 // than the robot, the hub drops the older messages for us and we draw the newest.
 
 import { api, type RobotInfo, type TopicInfo } from "../api";
-import { bytesOf, imageKind, inspectable, pose2d, scanPoints, stampMs } from "../messages";
+import { inspectable, pose2d, scanPoints, stampMs } from "../messages";
 import { MarkerStore } from "../markers";
 import { count, probe } from "../probe";
 import type { Rosbridge } from "../rosbridge";
 import { Chart, Series, Sparkline } from "./charts";
+import { cameraPanel } from "./camera";
 import { CloudView } from "./cloud3d";
 import { configPanel } from "./config";
 import { ago, bps, button, el, jsonTree, num } from "./dom";
@@ -189,61 +191,14 @@ export function robotView(root: HTMLElement, rb: Rosbridge, name: string): () =>
       cleanups.push(() => view.destroy());
     } else cloudP.body.appendChild(el("p", "muted", "This robot publishes no PointCloud2."));
 
-    // CompressedImage → <img> when the bytes decode, else a view of the bytes themselves.
-    const camT = byType("sensor_msgs/msg/CompressedImage")[0];
-    if (camT) {
-      const img = el("img", "camera");
-      const cv = el("canvas", "camera bytes");
-      const note = el("p", "muted");
-      camP.body.append(img, cv, note);
-      let url = "", busy = false;
-      cleanups.push(rb.subscribe(camT.name, async (msg) => {
-        clock(camT.name).note(msg);
-        count("camera");
-        if (busy) return; // decoding the previous frame still; this one is skipped
-        busy = true;
-        const data = bytesOf(msg.data);
-        const kind = imageKind(data);
-        try {
-          const blob = new Blob([data as BlobPart], { type: `image/${kind === "png" ? "png" : "jpeg"}` });
-          const bmp = await createImageBitmap(blob);
-          bmp.close();
-          if (url) URL.revokeObjectURL(url);
-          url = URL.createObjectURL(blob);
-          img.src = url;
-          img.style.display = "";
-          cv.style.display = "none";
-          note.textContent = "";
-          camP.info.textContent = `${camT.name} · ${msg.format} · ${(data.length / 1024).toFixed(0)} KiB`;
-        } catch {
-          // Not a decodable image (a format the browser cannot read, a corrupt or
-          // truncated frame): show the bytes as grey levels so the stream is still visible.
-          img.style.display = "none";
-          cv.style.display = "";
-          const side = Math.max(1, Math.floor(Math.sqrt(data.length)));
-          cv.width = side; cv.height = side;
-          const g = cv.getContext("2d")!;
-          const px = g.createImageData(side, side);
-          for (let i = 0; i < side * side; i++) {
-            const v = data[i];
-            px.data[i * 4] = px.data[i * 4 + 1] = px.data[i * 4 + 2] = v;
-            px.data[i * 4 + 3] = 255;
-          }
-          g.putImageData(px, 0, 0);
-          note.textContent = `not a decodable ${msg.format} image (${kind === "unknown" ? "no image header" : `${kind} header, undecodable body`}): showing its ${data.length.toLocaleString()} bytes as grey levels`;
-          camP.info.textContent = `${camT.name} · ${msg.format} · ${(data.length / 1024).toFixed(0)} KiB`;
-        } finally {
-          busy = false;
-        }
-      }, { type: camT.type, queue_length: 1 }));
-      cleanups.push(() => url && URL.revokeObjectURL(url));
-    } else camP.body.appendChild(el("p", "muted", "This robot publishes no CompressedImage."));
+    // Camera: the video topic played with WebCodecs, or the JPEG topic.
+    const cameraTopics = cameraPanel(camP, rb, own, cleanups, (t, msg) => clock(t).note(msg));
 
     // Inspector: any topic, JSON tree, rate and latency.
     const sel = el("select");
     const tree = el("div", "tree");
     inspP.body.append(sel, tree);
-    const shown = new Set([scan?.name, cloudT?.name, camT?.name, src?.topic, ...markerTopics.map((t) => t.name), ...byType("foxglove_msgs/msg/CompressedVideo").map((t) => t.name)]);
+    const shown = new Set([scan?.name, cloudT?.name, src?.topic, ...markerTopics.map((t) => t.name), ...cameraTopics]);
     // Start on a live topic the other panels do not show (odometry, in the demo).
     const firstOther = own.find((t) => !shown.has(t.name) && t.rate_hz > 0) ?? own.find((t) => !shown.has(t.name)) ?? own[0];
     for (const t of own) sel.appendChild(new Option(`${t.name} (${t.type})`, t.name));

@@ -1212,6 +1212,7 @@ fn video_section_becomes_stream_options_and_its_errors_name_the_field() {
     assert_eq!(v[0].topic.as_str(), "/camera/video");
     assert_eq!(v[0].settings.fps, 10.0);
     assert_eq!(v[0].settings.bitrate_bps, 1_000_000, "the default bitrate");
+    assert_eq!(v[0].min_bitrate_bps, 250_000, "a quarter of it, by default");
     assert_eq!(v[0].settings.keyframe_every, 30, "3 s at 10 fps");
     assert_eq!(v[0].library, None);
     // The docs' example is valid (but for the library, which is not on this machine).
@@ -1246,6 +1247,10 @@ fn video_section_becomes_stream_options_and_its_errors_name_the_field() {
         (
             "video: { /a: { topic: /v, bitrate_kbps: 10 } }\n",
             "video[\"/a\"].bitrate_kbps: must be 50 to 50000",
+        ),
+        (
+            "video: { /a: { topic: /v, bitrate_kbps: 500, min_bitrate_kbps: 600 } }\n",
+            "video[\"/a\"].min_bitrate_kbps: must be 50 to bitrate_kbps (500), got 600",
         ),
         (
             "video: { /a: { topic: /v, keyframe_s: 0 } }\n",

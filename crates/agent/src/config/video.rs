@@ -14,9 +14,13 @@ pub struct VideoStreamConfig {
     /// Frames a second at most (1–60). Default 15; a faster camera is thinned.
     #[serde(default = "default_fps")]
     pub fps: f32,
-    /// Target kilobits a second (50–50000). Default 1000.
+    /// Target kilobits a second on a link that carries it (50–50000). Default 1000.
     #[serde(default = "default_bitrate_kbps")]
     pub bitrate_kbps: u32,
+    /// The least the target comes down to when the link carries less (50 to
+    /// `bitrate_kbps`). Default a quarter of `bitrate_kbps`, at least 50.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_bitrate_kbps: Option<u32>,
     /// A keyframe at least this often, seconds (0.2–60). Default 2: the longest a viewer
     /// that missed a frame waits for a whole picture.
     #[serde(default = "default_keyframe_s")]
@@ -45,6 +49,14 @@ impl VideoStreamConfig {
         }
     }
 
+    /// The floor of the bitrate, bits a second.
+    pub fn min_bitrate_bps(&self) -> u32 {
+        self.min_bitrate_kbps
+            .unwrap_or((self.bitrate_kbps / 4).max(50))
+            .min(self.bitrate_kbps)
+            .saturating_mul(1000)
+    }
+
     /// What is wrong with it, as (field, message).
     pub(crate) fn problem(&self) -> Option<(&'static str, String)> {
         if !(self.fps.is_finite() && (1.0..=60.0).contains(&self.fps)) {
@@ -59,6 +71,17 @@ impl VideoStreamConfig {
                 format!(
                     "must be 50 to 50000 (kilobits a second; 640x480 at 15 fps looks good \
                      from about 500), got {}",
+                    self.bitrate_kbps
+                ),
+            ));
+        }
+        if let Some(min) = self.min_bitrate_kbps
+            && !(50..=self.bitrate_kbps).contains(&min)
+        {
+            return Some((
+                "min_bitrate_kbps",
+                format!(
+                    "must be 50 to bitrate_kbps ({}), got {min}",
                     self.bitrate_kbps
                 ),
             ));

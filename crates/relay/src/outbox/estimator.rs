@@ -48,6 +48,24 @@ impl Outbox {
         }
     }
 
+    /// What the link may carry by rule, bytes/s: the smaller of the hub's capacity share
+    /// and the data budget's rate; `None` without either (and for a plain outbox).
+    pub fn send_limit(&self) -> Option<f64> {
+        let st = self.lock();
+        let Service::Scheduled { link, sched, .. } = &st.service else {
+            return None;
+        };
+        [
+            link.share,
+            sched
+                .data_budget()
+                .and_then(|b| b.config().max_bytes_per_sec),
+        ]
+        .into_iter()
+        .flatten()
+        .reduce(f64::min)
+    }
+
     /// An echo probe due now, if any (scheduled outboxes only): its id goes out in a PING.
     /// Probes go out while data waits or is unacknowledged (and until the first echo); an
     /// idle link is measured by its heartbeat alone ([`Self::on_heartbeat_echo`]).
