@@ -189,6 +189,18 @@ pub(crate) mod tests {
         10.0 * (255.0f64 * 255.0 / mse.max(1e-9)).log10()
     }
 
+    /// `pic` holds the `w`×`h` rgb8 picture `rgb`.
+    fn fill_rgb(pic: &mut Picture, w: usize, h: usize, rgb: &[u8]) {
+        let pixels = Pixels::Raw {
+            width: w as u32,
+            height: h as u32,
+            step: (w * 3) as u32,
+            encoding: "rgb8",
+            data: rgb,
+        };
+        pic.fill(&pixels).unwrap();
+    }
+
     #[test]
     fn frames_decode_from_the_first_and_keyframes_come_when_asked() {
         let (w, h) = (160, 96);
@@ -202,15 +214,7 @@ pub(crate) mod tests {
         let mut pic = Picture::default();
         let mut keyframes = Vec::new();
         for f in 0..25 {
-            let rgb = card(w, h, f);
-            let pixels = Pixels::Raw {
-                width: w as u32,
-                height: h as u32,
-                step: (w * 3) as u32,
-                encoding: "rgb8",
-                data: &rgb,
-            };
-            pic.fill(&pixels).unwrap();
+            fill_rgb(&mut pic, w, h, &card(w, h, f));
             if f == 13 {
                 enc.request_keyframe();
             }
@@ -272,14 +276,7 @@ pub(crate) mod tests {
         };
         for f in 0..90 {
             let rgb: Vec<u8> = (0..w * h * 3).map(|_| noise()).collect();
-            let pixels = Pixels::Raw {
-                width: w as u32,
-                height: h as u32,
-                step: (w * 3) as u32,
-                encoding: "rgb8",
-                data: &rgb,
-            };
-            pic.fill(&pixels).unwrap();
+            fill_rgb(&mut pic, w, h, &rgb);
             if f == 45 {
                 enc.set_bitrate(200_000).unwrap();
                 assert_eq!(enc.settings().bitrate_bps, 200_000);

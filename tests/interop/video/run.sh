@@ -20,8 +20,8 @@
 #   4. the simulated JPEG camera's video decodes too, 640x480;
 #   5. the robot's link (a veth pair between the robot's namespace and the hub's) down for
 #      5 s while a viewer watches: every picture it decodes, before and after, matches its
-#      scene, and pictures come again (at least 8 in its last 5.5 s, which begin about
-#      3 s after the link's return);
+#      scene, and pictures come again (at least 8 in its last 5.5 s, which begin 3.5 s
+#      after the link's return);
 #   6. the robot's link slowed to 300 kbit/s (tbf) under the simulated camera's stream,
 #      which takes most of its 1000 kbit/s: its bitrate comes down (the agent's log), and
 #      in the last 6 s of a 24 s watch at least 10 frames arrive, half of them under 1 s
@@ -169,7 +169,9 @@ step "5. a 5 s blackout of the robot's link: the viewer's pictures stop, then re
 in_hub 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/video 17 \
     --min-frames 20 --scene --resume-after 11.5 --min-resumed 8 >"$tmp/watch-blackout.log" 2>&1 &
 blackout_viewer=$!
-sleep 4
+# Three seconds of pictures after the viewer subscribed, then the link goes for 5 s.
+wait_for_line "$tmp/watch-blackout.log" '^watch (subscribed) to' "the blackout viewer" "$blackout_viewer" >/dev/null
+sleep 3
 ip -n "$ns" link set vr down
 sleep 5
 ip -n "$ns" link set vr up

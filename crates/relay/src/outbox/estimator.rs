@@ -14,6 +14,20 @@ fn link_busy(
     sched.has_queued() || link.unacked_bytes() > 0 || !pulled.is_empty()
 }
 
+/// What a link may carry by rule, bytes/s: the smaller of the hub's capacity share and the
+/// data budget's rate; `None` without either.
+fn limit_by_rule(link: &LinkControl, sched: &Scheduler<Arc<Message>>) -> Option<f64> {
+    [
+        link.share,
+        sched
+            .data_budget()
+            .and_then(|b| b.config().max_bytes_per_sec),
+    ]
+    .into_iter()
+    .flatten()
+    .reduce(f64::min)
+}
+
 /// A link report for the hub: demand, delivered rate and one-way latency.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct LinkFigures {
@@ -55,15 +69,7 @@ impl Outbox {
         let Service::Scheduled { link, sched, .. } = &st.service else {
             return None;
         };
-        [
-            link.share,
-            sched
-                .data_budget()
-                .and_then(|b| b.config().max_bytes_per_sec),
-        ]
-        .into_iter()
-        .flatten()
-        .reduce(f64::min)
+        limit_by_rule(link, sched)
     }
 
     /// An echo probe due now, if any (scheduled outboxes only): its id goes out in a PING.
@@ -159,10 +165,7 @@ impl Outbox {
         }
         let capacity = [
             link.measured.map(|(r, _)| r).filter(|r| *r > 0.0),
-            link.share,
-            sched
-                .data_budget()
-                .and_then(|b| b.config().max_bytes_per_sec),
+            limit_by_rule(link, sched),
         ]
         .into_iter()
         .flatten()
