@@ -391,11 +391,13 @@ impl Agent {
             o.changes = Some(rx);
             ros2_changes = Some(tx);
         }
+        let (video_changes, videos) = watch::channel(std::mem::take(&mut self.video));
         if let Some(rt) = &self.runtime {
             rt.attach(crate::runtime::Parts {
                 uplink: self.uplink.control(),
                 ros1: ros1_changes,
                 ros2: ros2_changes,
+                video: Some(video_changes),
             });
         }
         // A mirror offers no configuration services (their names would be its robot's).
@@ -501,18 +503,12 @@ impl Agent {
                 shutdown.clone(),
             ))
         });
-        let video: Vec<_> = std::mem::take(&mut self.video)
-            .into_iter()
-            .map(|opts| {
-                let interest = Some(self.uplink.read_interest());
-                tokio::spawn(crate::video::serve(
-                    opts,
-                    self.router.clone(),
-                    interest,
-                    shutdown.clone(),
-                ))
-            })
-            .collect();
+        let video = tokio::spawn(crate::video::supervise(
+            videos,
+            self.router.clone(),
+            Some(self.uplink.read_interest()),
+            shutdown.clone(),
+        ));
         let status = (!parts.is_empty()).then(|| {
             tokio::spawn(crate::status::publish(
                 self.router.clone(),
@@ -529,7 +525,7 @@ impl Agent {
             for t in [local, sim, ros1, rosbridge, blackbox, status, runtime_task]
                 .into_iter()
                 .flatten()
-                .chain(video)
+                .chain([video])
             {
                 let _ = t.await;
             }

@@ -3,7 +3,9 @@
 //! A change ([`crate::config::runtime`]) is checked like the YAML file, then applied to the
 //! running parts without restarting them: the uplink's per-topic QoS at once (and its topic
 //! names by reconnecting), what the ROS 1 and ROS 2 bridges carry through their change
-//! channels (each bridge starts and stops only the topics and services that changed). The
+//! channels (each bridge starts and stops only the topics and services that changed), the
+//! video streams through theirs (each starts, restarts or ends only if its own settings
+//! changed). The
 //! changes in force are written to the robot's disk before they apply, with the file they
 //! were made against, and merged again with the file, entry by entry, when the agent
 //! starts ([`crate::config::runtime::kept`]). Every change is recorded in an audit log
@@ -41,6 +43,8 @@ pub struct Parts {
     pub uplink: Arc<UplinkControl>,
     pub ros1: Option<watch::Sender<fleetlink_ros1::Ros1Options>>,
     pub ros2: Option<watch::Sender<fleetlink_ros2::Ros2Options>>,
+    /// The video streams ([`crate::video::supervise`]).
+    pub video: Option<watch::Sender<Vec<crate::video::VideoOptions>>>,
 }
 
 /// The configuration of a running agent and the changes made to it.
@@ -333,6 +337,13 @@ impl RuntimeConfig {
                 }
                 if let (Some(tx), Some(o)) = (&p.ros2, opts.ros2.clone()) {
                     tx.send_replace(o);
+                }
+                if let Some(tx) = &p.video {
+                    tx.send_if_modified(|now| {
+                        let changed = *now != opts.video;
+                        *now = opts.video.clone();
+                        changed
+                    });
                 }
             }
             // Kept changes set aside at start were kept on disk until now; the file now

@@ -1193,6 +1193,7 @@ impl Uplink {
                     latch: topic.latched,
                     no_drop: false,
                     via,
+                    encoding: None,
                 };
                 match self
                     .router
@@ -1255,12 +1256,14 @@ impl Uplink {
             }
             LinkEvent::Control(Frame::Pull { alias }) => {
                 self.outbox.pull(alias, Instant::now());
-                // On a video topic: the hub asks for a keyframe (docs/video.md); its
-                // publisher hears it through its demand watch.
+                // On a video topic: the hub asks for a keyframe (docs/video.md). The
+                // robot's encoder hears it through its demand watch; on a site hub the
+                // topic wants one, which the site's link to its robot asks for.
                 if let Some(t) = self.router.topic_by_id(TopicId(alias))
                     && fleetlink_relay::gop::is_video_type(&t.meta().schema.type_name)
                 {
                     self.router.request_pull(&t.name());
+                    t.want_keyframe();
                 }
             }
             LinkEvent::Control(Frame::Delivered { alias, seq }) => {

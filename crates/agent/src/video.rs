@@ -11,7 +11,13 @@
 //! if someone there wants it too. While it runs, its target bitrate follows the link
 //! ([`fleetlink_video::rate`]): down when its frames wait in the uplink's queue, up again
 //! when they do not, capped by the hub's share and the data budget.
+//!
+//! The streams follow the `video:` section as it changes while the agent runs
+//! ([`supervise`]): a stream whose settings change restarts its encoder with them (its
+//! next frame a keyframe), one whose camera or video topic changes, or that goes, ends, and
+//! a new one starts.
 
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -19,11 +25,12 @@ use std::time::{Duration, Instant};
 
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::read_interest::{Look, ReadInterest};
-use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
+use fleetlink_relay::router::{Publication, SubOptions, SubscriptionId, Target};
 use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicName};
 use fleetlink_video::rate::{LinkFollower, LinkState};
 use fleetlink_video::source::SourceKind;
 use fleetlink_video::{Settings, Stream, VIDEO_TYPE};
+use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;
 
 /// How often a stream looks again at who wants it when nothing told it (local subscribers
@@ -45,20 +52,112 @@ pub struct VideoOptions {
     pub library: Option<PathBuf>,
 }
 
-/// Runs one stream until `shutdown`.
-pub async fn serve(
-    opts: VideoOptions,
+/// A stream [`supervise`] runs: where its settings go, and how to end it.
+struct Served {
+    video: TopicName,
+    settings: watch::Sender<VideoOptions>,
+    stop: CancellationToken,
+    task: tokio::task::JoinHandle<()>,
+}
+
+/// Runs the streams `wanted` lists, following its changes, until `shutdown`.
+pub async fn supervise(
+    mut wanted: watch::Receiver<Vec<VideoOptions>>,
     router: Arc<Router>,
     interest: Option<Arc<ReadInterest>>,
     shutdown: CancellationToken,
 ) {
+    let mut served: BTreeMap<TopicName, Served> = BTreeMap::new();
+    loop {
+        let want = wanted.borrow_and_update().clone();
+        // Streams that go, or whose camera is offered under another video topic, end
+        // first (a video topic may pass from one camera to another).
+        let ending: Vec<TopicName> = served
+            .iter()
+            .filter(|(camera, s)| {
+                !want
+                    .iter()
+                    .any(|o| o.camera == **camera && o.topic == s.video)
+            })
+            .map(|(camera, _)| camera.clone())
+            .collect();
+        for camera in ending {
+            if let Some(s) = served.remove(&camera) {
+                s.stop.cancel();
+                let _ = s.task.await;
+                tracing::info!(
+                    "video {}: no longer offered (configuration changed)",
+                    s.video
+                );
+            }
+        }
+        for opts in want {
+            match served.get(&opts.camera) {
+                Some(s) => {
+                    s.settings.send_if_modified(|now| {
+                        let changed = *now != opts;
+                        *now = opts;
+                        changed
+                    });
+                }
+                None => {
+                    let (settings, changes) = watch::channel(opts.clone());
+                    let stop = shutdown.child_token();
+                    let task = tokio::spawn(serve(
+                        changes,
+                        router.clone(),
+                        interest.clone(),
+                        stop.clone(),
+                    ));
+                    let video = opts.topic.clone();
+                    let s = Served {
+                        video,
+                        settings,
+                        stop,
+                        task,
+                    };
+                    served.insert(opts.camera, s);
+                }
+            }
+        }
+        tokio::select! {
+            _ = shutdown.cancelled() => break,
+            changed = wanted.changed() => {
+                if changed.is_err() {
+                    // Nobody changes the streams any more: they run as they are.
+                    shutdown.cancelled().await;
+                    break;
+                }
+            }
+        }
+    }
+    for s in served.into_values() {
+        let _ = s.task.await;
+    }
+}
+
+/// Runs one stream until `shutdown`, taking new settings (same camera and video topic)
+/// from `changes`.
+async fn serve(
+    mut changes: watch::Receiver<VideoOptions>,
+    router: Arc<Router>,
+    interest: Option<Arc<ReadInterest>>,
+    shutdown: CancellationToken,
+) {
+    let mut opts = changes.borrow_and_update().clone();
     let (client, outbox) = router.connect(
         ClientKind::Internal {
             role: "video".into(),
         },
         None,
     );
-    let topic = match router.advertise(client, &opts.topic, Schema::named(VIDEO_TYPE), false) {
+    // CDR from the start, so the link announces the topic before its first frame (the hub
+    // lists it, and a viewer can ask for it) also when the stream starts after the link.
+    let how = Publication {
+        encoding: Some(Encoding::Cdr),
+        ..Publication::default()
+    };
+    let topic = match router.advertise_as(client, &opts.topic, Schema::named(VIDEO_TYPE), how) {
         Ok(t) => t,
         Err(e) => {
             tracing::warn!("video: cannot offer {}: {e}", opts.topic);
@@ -76,6 +175,25 @@ pub async fn serve(
     loop {
         tokio::select! {
             _ = shutdown.cancelled() => break,
+            Ok(()) = changes.changed() => {
+                let new = changes.borrow_and_update().clone();
+                tracing::info!(
+                    "video {}: settings changed: {} fps, {} kbit/s ({} at least), a keyframe \
+                     every {} frames",
+                    opts.topic,
+                    new.settings.fps,
+                    new.settings.bitrate_bps / 1000,
+                    new.min_bitrate_bps / 1000,
+                    new.settings.keyframe_every
+                );
+                opts = new;
+                // The encoder restarts with them; its first frame is a keyframe.
+                if let Some(r) = running.take() {
+                    r.stop(&router, client, "settings changed");
+                    running = Running::start(&opts, &router, client, &topic);
+                }
+                continue;
+            }
             _ = ReadInterest::changed(&interest) => {}
             _ = look.tick() => {
                 if let (Some(r), Some(i)) = (&mut running, &interest) {
@@ -129,7 +247,7 @@ pub async fn serve(
             }
             (Look::Stop, true) => {
                 if let Some(r) = running.take() {
-                    r.stop(&router, client);
+                    r.stop(&router, client, "nobody watches");
                 }
                 // The last frame kept for the hub would start a later viewer's picture
                 // on a frame that needs the ones before it.
@@ -141,7 +259,7 @@ pub async fn serve(
         }
     }
     if let Some(r) = running.take() {
-        r.stop(&router, client);
+        r.stop(&router, client, "the stream ends");
     }
     router.disconnect(client);
 }
@@ -261,7 +379,8 @@ impl Running {
         tracing::debug!("video {}: a keyframe was asked for", self.topic);
     }
 
-    fn stop(self, router: &Router, client: ClientId) {
+    /// Ends the encoder and lets the camera go; `why` opens the log line.
+    fn stop(self, router: &Router, client: ClientId, why: &str) {
         router.unsubscribe(client, self.sub);
         let s = self.stream.stats();
         let stream = self.stream;
@@ -269,7 +388,7 @@ impl Running {
         // agent's runtime.
         tokio::task::spawn_blocking(move || drop(stream));
         tracing::info!(
-            "video {}: nobody watches; stopped after {} frames ({} keyframes, {} left out \
+            "video {}: {why}; stopped after {} frames ({} keyframes, {} left out \
              over the frame rate, {} skipped by rate control, {} behind, {} failed; \
              bitrate {} to {} kbit/s, following the link)",
             self.topic,

@@ -203,8 +203,13 @@ impl TopicQos {
                 TopicQos::new(2.0, Policy::Afr, 8)
             }
             // Video: each frame needs the ones before it back to a keyframe, so frames
-            // are not thinned; room for four seconds at 15 fps (docs/video.md).
-            "foxglove_msgs/CompressedVideo" => TopicQos::new(2.0, Policy::DropOldest, 64),
+            // are not thinned; room for four seconds at 15 fps, but a frame that waited
+            // two (an outage) is stale for a live viewer: the hub asks for a keyframe
+            // instead (docs/video.md).
+            "foxglove_msgs/CompressedVideo" => TopicQos {
+                max_age_ms: Some(2000),
+                ..TopicQos::new(2.0, Policy::DropOldest, 64)
+            },
             "sensor_msgs/PointCloud2" | "sensor_msgs/PointCloud" => {
                 TopicQos::new(1.0, Policy::Afr, 8)
             }

@@ -11,8 +11,10 @@
 //! way (the robot's link queue, its budget or age limit, a blackout). From then on the
 //! frames are held back from everyone until the next keyframe, and one is asked for
 //! ([`Kept::take_ask`]: the robot's link sends it as `PULL`). A group that grows past
-//! [`MAX_FRAMES`] or [`MAX_BYTES`] is let go whole, and the next keyframe starts a new one.
+//! [`MAX_FRAMES`] or [`MAX_BYTES`] is let go whole, and the next keyframe starts a new one;
+//! so is one that would take a router's groups together past [`MAX_BYTES_ALL`] ([`Pool`]).
 
+use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 use std::sync::{Arc, Mutex, MutexGuard};
 
 use fleetlink_proto::Encoding;
@@ -24,6 +26,50 @@ use crate::names::ClientId;
 pub const MAX_FRAMES: usize = 300;
 /// Most payload bytes kept per topic.
 pub const MAX_BYTES: usize = 16 << 20;
+/// Most payload bytes kept by all the video topics of one router together: a hub with a
+/// thousand robots' cameras keeps a thousand groups of a few hundred kilobytes each, and
+/// no more than this whatever they send.
+pub const MAX_BYTES_ALL: usize = 256 << 20;
+
+/// The bytes the groups of one router's video topics keep together, against a bound.
+#[derive(Debug)]
+pub struct Pool {
+    used: AtomicUsize,
+    limit: usize,
+}
+
+impl Default for Pool {
+    fn default() -> Pool {
+        Pool::new(MAX_BYTES_ALL)
+    }
+}
+
+impl Pool {
+    pub fn new(limit: usize) -> Pool {
+        Pool {
+            used: AtomicUsize::new(0),
+            limit,
+        }
+    }
+
+    /// The bytes kept now.
+    pub fn used(&self) -> usize {
+        self.used.load(Relaxed)
+    }
+
+    /// Takes `n` bytes from the pool; false (and nothing taken) past its bound.
+    fn take(&self, n: usize) -> bool {
+        self.used
+            .fetch_update(Relaxed, Relaxed, |used| {
+                used.checked_add(n).filter(|total| *total <= self.limit)
+            })
+            .is_ok()
+    }
+
+    fn give_back(&self, n: usize) {
+        self.used.fetch_sub(n, Relaxed);
+    }
+}
 
 /// Whether a ROS type is a video stream's (either spelling).
 pub fn is_video_type(type_name: &str) -> bool {
@@ -42,16 +88,16 @@ pub fn is_keyframe(msg: &Message) -> bool {
 
 /// The frames of the current group (see the module docs). Its lock also orders a new
 /// subscriber's replay against the topic's publishes ([`Gop::lock`]).
-#[derive(Default)]
 pub struct Gop {
     kept: Mutex<Kept>,
 }
 
 /// The group, behind [`Gop::lock`].
-#[derive(Default)]
 pub struct Kept {
     frames: Vec<Arc<Message>>,
+    /// The payload bytes of `frames`, taken from `pool`.
     bytes: usize,
+    pool: Arc<Pool>,
     /// The last frame seen: its publisher and number.
     last: Option<(ClientId, u64)>,
     /// The frames since the last keyframe all came: the next one can be delivered.
@@ -61,6 +107,20 @@ pub struct Kept {
 }
 
 impl Gop {
+    /// An empty group whose bytes count against `pool` (the router's).
+    pub fn new(pool: Arc<Pool>) -> Gop {
+        Gop {
+            kept: Mutex::new(Kept {
+                frames: Vec::new(),
+                bytes: 0,
+                pool,
+                last: None,
+                whole: false,
+                ask: false,
+            }),
+        }
+    }
+
     /// The group, locked. The router holds this while it fans a frame out (keeping it,
     /// then queueing it for the subscribers it reads under the lock) and while it adds a
     /// subscriber (replaying the group into its queue): so a frame reaches a new
@@ -82,8 +142,7 @@ impl Kept {
         if is_keyframe(msg) {
             self.last = Some((msg.origin, msg.seq));
             self.whole = true;
-            self.frames.clear();
-            self.bytes = 0;
+            self.let_go();
             self.add(msg);
             return true;
         }
@@ -96,8 +155,7 @@ impl Kept {
                 self.ask = true;
             }
             self.whole = false;
-            self.frames = Vec::new();
-            self.bytes = 0;
+            self.let_go();
             return false;
         }
         if !self.frames.is_empty() {
@@ -107,24 +165,40 @@ impl Kept {
     }
 
     fn add(&mut self, msg: &Arc<Message>) {
-        self.bytes += msg.payload.len();
-        self.frames.push(msg.clone());
-        if self.frames.len() > MAX_FRAMES || self.bytes > MAX_BYTES {
-            // Too long to give whole: nobody gets a part of it.
-            self.frames = Vec::new();
-            self.bytes = 0;
+        let len = msg.payload.len();
+        let fits = self.frames.len() < MAX_FRAMES && self.bytes + len <= MAX_BYTES;
+        if fits && self.pool.take(len) {
+            self.bytes += len;
+            self.frames.push(msg.clone());
+        } else {
+            // Too long to give whole (for the topic, or beside the router's other
+            // groups): nobody gets a part of it.
+            self.let_go();
         }
+    }
+
+    /// Lets go of the group's frames and gives their bytes back to the pool.
+    fn let_go(&mut self) {
+        self.pool.give_back(std::mem::take(&mut self.bytes));
+        self.frames = Vec::new();
     }
 
     /// Publisher `client` went: its frames are let go, and its next frame must be a
     /// keyframe.
     pub fn forget(&mut self, client: ClientId) {
         if self.last.is_some_and(|(origin, _)| origin == client) {
-            self.frames = Vec::new();
-            self.bytes = 0;
+            self.let_go();
             self.whole = false;
             self.last = None;
         }
+    }
+
+    /// The last subscriber went: the group is let go (see [`Router`]'s detach); frames
+    /// that still come are delivered as before, and kept again from the next keyframe.
+    ///
+    /// [`Router`]: crate::Router
+    pub fn nobody_watches(&mut self) {
+        self.let_go();
     }
 
     /// A subscriber came: with no group to give it, a keyframe is wanted.
@@ -143,6 +217,12 @@ impl Kept {
     /// The group so far, keyframe first (empty before a keyframe was seen).
     pub fn frames(&self) -> &[Arc<Message>] {
         &self.frames
+    }
+}
+
+impl Drop for Kept {
+    fn drop(&mut self) {
+        self.let_go();
     }
 }
 
@@ -224,6 +304,8 @@ mod tests {
     fn a_late_subscriber_gets_the_last_keyframe_and_the_frames_since() {
         let router = Router::default();
         let (robot, topic) = video_topic(&router);
+        // Someone watches throughout (else the robot would not send).
+        let (_, _watching) = viewer(&router, SubOptions::default());
         let mut seq = 0;
         let mut send = |key, n| {
             seq += 1;
@@ -247,6 +329,62 @@ mod tests {
         assert_eq!(late_joiner_gets(&router), Vec::<u8>::new());
         send(true, 7);
         assert_eq!(late_joiner_gets(&router), [7]);
+    }
+
+    #[test]
+    fn the_routers_groups_together_keep_no_more_than_its_pool() {
+        let (key, p) = (frame(true, 0).len(), frame(false, 0).len());
+        let mut router = Router::default();
+        // Room for a keyframe and one frame after it, all topics together.
+        router.video_pool = std::sync::Arc::new(super::Pool::new(key + p));
+        let (robot, topic) = video_topic(&router);
+        let (_, outbox) = viewer(&router, SubOptions::default());
+        let mut seq = 0;
+        let mut send = |key, n| {
+            seq += 1;
+            topic.publish(robot, seq, 0, frame(key, n));
+        };
+        send(true, 1);
+        send(false, 2);
+        assert_eq!(late_joiner_gets(&router), [1, 2]);
+        assert_eq!(router.video_pool.used(), key + p);
+        // The next frame does not fit: the group is let go whole, its bytes given back,
+        // and the frames still flow to subscribers.
+        assert_eq!(numbers(&outbox), [1, 2]);
+        send(false, 3);
+        assert_eq!(numbers(&outbox), [3]);
+        assert_eq!(router.video_pool.used(), 0);
+        assert_eq!(late_joiner_gets(&router), Vec::<u8>::new());
+        send(true, 4);
+        assert_eq!(late_joiner_gets(&router), [4]);
+        assert_eq!(router.video_pool.used(), key);
+        // A publisher that goes gives its group's bytes back.
+        router.disconnect(robot);
+        assert_eq!(router.video_pool.used(), 0);
+        drop(outbox);
+    }
+
+    #[test]
+    fn the_group_goes_when_the_last_subscriber_does() {
+        let router = Router::default();
+        let (robot, topic) = video_topic(&router);
+        let (viewer_id, _) = viewer(&router, SubOptions::default());
+        topic.publish(robot, 1, 0, frame(true, 1));
+        topic.publish(robot, 2, 0, frame(false, 2));
+        // Nobody watches: the robot stops sending, and the group would be stale.
+        router.disconnect(viewer_id);
+        assert_eq!(router.video_pool.used(), 0);
+        let (_, outbox) = viewer(&router, SubOptions::default());
+        assert_eq!(numbers(&outbox), Vec::<u8>::new());
+        assert!(
+            topic.take_keyframe_ask(),
+            "the newcomer asks for a keyframe"
+        );
+        // The newcomer starts at the next keyframe, which starts a group.
+        topic.publish(robot, 3, 0, frame(false, 3));
+        topic.publish(robot, 4, 0, frame(true, 4));
+        assert_eq!(numbers(&outbox), [4]);
+        assert_eq!(late_joiner_gets(&router), [4]);
     }
 
     #[test]

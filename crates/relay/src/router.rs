@@ -75,6 +75,9 @@ pub struct Publication {
     pub no_drop: bool,
     /// The hubs the publisher is behind, when it is another hub's link (`VIA`).
     pub via: Option<Arc<crate::message::Via>>,
+    /// The encoding its messages will have, when the publisher knows before the first
+    /// ([`Topic::note_encoding`]): a link announces the topic at once.
+    pub encoding: Option<fleetlink_proto::Encoding>,
 }
 
 /// A subscription's identity within its client.
@@ -149,6 +152,8 @@ pub struct Topic {
     /// A video topic's frames since its last keyframe, for subscribers who come in the
     /// middle ([`crate::gop`]); set once its type is known to be video.
     gop: std::sync::OnceLock<Box<crate::gop::Gop>>,
+    /// The router's bound on what its video topics' groups keep together.
+    video_pool: Arc<crate::gop::Pool>,
     /// A robot publishes it as a no-drop stream: the epoch of that stream plus one (0:
     /// not reliable). Its messages' `seq` are the stream's numbers, so a far side that
     /// may see one twice (federated hubs, after a robot moved) can tell.
@@ -289,7 +294,9 @@ impl Topic {
     /// is known.
     fn follow_type(&self, meta: &TopicMeta) {
         if crate::gop::is_video_type(&meta.schema.type_name) {
-            let _ = self.gop.set(Box::default());
+            let _ = self
+                .gop
+                .set(Box::new(crate::gop::Gop::new(self.video_pool.clone())));
         }
     }
 
@@ -307,6 +314,15 @@ impl Topic {
         };
         let lost = self.stats.keyframe_wanted.swap(false, Relaxed);
         gop.lock().take_ask() || lost
+    }
+
+    /// Marks a video topic as wanting a keyframe from its publisher, as a subscriber's
+    /// lost frame does: the next [`Topic::take_keyframe_ask`] says so. For a want heard
+    /// from elsewhere (another hub's viewers, a hub upstream); other topics ignore it.
+    pub fn want_keyframe(&self) {
+        if self.gop.get().is_some() {
+            self.stats.keyframe_wanted.store(true, Relaxed);
+        }
     }
 
     /// Encoding of the most recent message, if any was published.
@@ -606,6 +622,8 @@ pub struct Router {
     /// Parameters (`/rosapi/get_param` ...); in memory unless the owner supplies a
     /// durable store.
     pub params: Arc<dyn crate::params::ParamStore>,
+    /// What the video topics' groups keep, all together ([`crate::gop::Pool`]).
+    pub video_pool: Arc<crate::gop::Pool>,
 }
 
 /// A read-only view of one topic for listings.
@@ -656,6 +674,7 @@ impl Router {
             default_queue: 1000,
             default_queue_bytes: 2 << 20,
             started: Instant::now(),
+            video_pool: Arc::default(),
         }
     }
 
@@ -789,6 +808,7 @@ impl Router {
             latch,
             no_drop,
             via,
+            encoding,
         } = how;
         // Definitions travel with topics: learn what the publisher sent, or fill in what
         // the registry knows so listings and viewers get the full text.
@@ -851,6 +871,10 @@ impl Router {
                 t
             }
         };
+        // Before the watchers look (they do once the state's lock is let go).
+        if let Some(e) = encoding {
+            topic.note_encoding(e);
+        }
         if latch {
             topic.latch.store(true, Relaxed);
             // Messages carry the flag from now on, so links announce the topic latched.
@@ -956,6 +980,7 @@ impl Router {
             version: AtomicU64::new(0),
             latched: Mutex::new(None),
             gop: Default::default(),
+            video_pool: self.video_pool.clone(),
             latch: Default::default(),
             last_encoding: std::sync::atomic::AtomicU8::new(u8::MAX),
             idle: Default::default(),
@@ -1221,6 +1246,13 @@ fn detach(topic: &Topic, client: ClientId) {
         .filter(|s| s.client != client)
         .cloned()
         .collect();
+    if list.is_empty()
+        && let Some(gop) = topic.gop.get()
+    {
+        // Its publisher stops sending to nobody: what is kept now would be stale by the
+        // time someone comes, who then gets a fresh keyframe instead (crate::gop).
+        gop.lock().nobody_watches();
+    }
     topic.set_subscribers(list);
 }
 
@@ -1269,5 +1301,30 @@ mod watch_tests {
             .advertise(c, &name, Schema::named("std_msgs/msg/Empty"), false)
             .unwrap();
         assert_eq!(kept.take(), vec![name]);
+    }
+}
+
+#[cfg(test)]
+mod keyframe_tests {
+    use super::*;
+
+    #[test]
+    fn a_keyframe_wanted_from_elsewhere_is_asked_once_and_only_of_video() {
+        let router = Router::default();
+        let (c, _) = router.connect(ClientKind::Foxglove, None);
+        let advertise = |name: &str, type_name: &str| {
+            let name = TopicName::parse(name).unwrap();
+            router
+                .advertise(c, &name, Schema::named(type_name), false)
+                .unwrap()
+        };
+        let video = advertise("/cam/video", "foxglove_msgs/msg/CompressedVideo");
+        let _ = video.take_keyframe_ask();
+        video.want_keyframe();
+        assert!(video.take_keyframe_ask());
+        assert!(!video.take_keyframe_ask(), "asked once");
+        let scan = advertise("/scan", "sensor_msgs/msg/LaserScan");
+        scan.want_keyframe();
+        assert!(!scan.take_keyframe_ask(), "not a video topic");
     }
 }

@@ -94,6 +94,7 @@ hub: ws://10.231.0.1:$hub_port/
 name: robot1
 token: $robot_token
 local_rosbridge: null
+runtime_file: $tmp/robot-state/runtime.json
 ros2:
   publish: [/camera/image_raw]
 sim:
@@ -189,13 +190,47 @@ in_hub 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /ro
 sed 's/^/  slow link: /' "$tmp/watch-slow.log"
 ip netns exec "$ns" tc qdisc del dev vr root
 
-step "7. nobody watching, the encoders stop"
+step "7. video: changed while the agent runs: a watched stream's bitrate, a stream renamed"
+# The hub's configuration API (docs/runtime-config.md): the watched stream restarts its
+# encoder with the new settings and its viewer goes on decoding every picture; the JPEG
+# camera's stream leaves the hub under its old name and is offered under the new one.
+in_hub 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/video 8 \
+    --min-frames 40 --scene --resume-after 5 --min-resumed 20 >"$tmp/watch-change.log" 2>&1 &
+change_viewer=$!
+wait_for_line "$tmp/watch-change.log" '^watch (subscribed) to' "the viewer of the change" "$change_viewer" >/dev/null
+sleep 2
+answer="$(in_hub 10 curl -s -X PUT -H "Authorization: Bearer $op_token" --data-binary @- \
+    "http://$hub/api/v1/robots/robot1/config" <<'YAML'
+video:
+  /camera/image_raw: { bitrate_kbps: 600, keyframe_s: 1 }
+  /camera/image/compressed: { topic: /camera/small_video, fps: 5 }
+YAML
+)"
+echo "$answer" | "$python" -c 'import json,sys; a=json.load(sys.stdin); sys.exit(0 if a.get("changed")==["video"] else 1)' \
+    || fail "the hub did not take the video change: $answer"
+wait_for_line "$tmp/agent.log" '(video /camera/video: settings changed: 15 fps, 600 kbit/s)' \
+    "the stream taking its new bitrate" "$agent_pid" >/dev/null || fail "the watched stream did not take its new settings"
+for _ in $(seq 100); do
+    [ "$(topic_field /robot1/camera/small_video type)" = "foxglove_msgs/msg/CompressedVideo" ] \
+        && [ "$(topic_field /robot1/camera/jpeg_video state)" = "-" ] && break
+    sleep 0.1
+done
+[ "$(topic_field /robot1/camera/small_video type)" = "foxglove_msgs/msg/CompressedVideo" ] \
+    || fail "the renamed stream is not listed as /robot1/camera/small_video"
+[ "$(topic_field /robot1/camera/jpeg_video state)" = "-" ] \
+    || fail "/robot1/camera/jpeg_video is still listed after its stream was renamed"
+wait "$change_viewer" || { cat "$tmp/watch-change.log"; fail "the video across its settings' change (see above)"; }
+sed 's/^/  changed: /' "$tmp/watch-change.log"
+in_hub 60 "$python" "$here/video_peer.py" watch "ws://$hub/?token=$op_token" /robot1/camera/small_video 3 \
+    --min-frames 8 | sed 's/^/  renamed: /' || fail "the renamed stream's video (see above)"
+
+step "8. nobody watching, the encoders stop"
 # Each stream's encoder has stopped as often as it started.
 running() {
     local v started stopped n=0
-    for v in /camera/video /camera/jpeg_video; do
+    for v in /camera/video /camera/jpeg_video /camera/small_video; do
         started="$(grep -c "video $v: someone watches" "$tmp/agent.log" || true)"
-        stopped="$(grep -c "video $v: nobody watches; stopped" "$tmp/agent.log" || true)"
+        stopped="$(grep -cE "video $v: [a-z ]+; stopped after" "$tmp/agent.log" || true)"
         [ "$started" -gt "$stopped" ] && n=$((n + 1))
     done
     echo "$n"
@@ -205,10 +240,10 @@ for _ in $(seq 250); do
     sleep 0.1
 done
 [ "$(running)" -eq 0 ] || fail "the agent did not stop every encoder within 25 s of the last viewer leaving"
-grep 'nobody watches; stopped' "$tmp/agent.log" | sed 's/^/  agent: /'
+grep -E ': [a-z ]+; stopped after' "$tmp/agent.log" | sed 's/^/  agent: /'
 # The simulated camera's stream came down to fit the slow link (the range is in the stop
 # line of its last run).
-low="$(sed -nE 's#.*video /camera/jpeg_video: nobody watches; .* bitrate ([0-9]+) to [0-9]+ kbit/s.*#\1#p' "$tmp/agent.log" | tail -n1)"
+low="$(sed -nE 's#.*video /camera/jpeg_video: [a-z ]+; stopped .* bitrate ([0-9]+) to [0-9]+ kbit/s.*#\1#p' "$tmp/agent.log" | tail -n1)"
 [ -n "$low" ] && [ "$low" -le 300 ] \
     || fail "the simulated camera's bitrate did not come down to the 300 kbit/s link (lowest: ${low:-not logged} kbit/s)"
 

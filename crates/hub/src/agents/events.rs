@@ -275,6 +275,7 @@ impl RobotLink {
                     latch: topic.latched,
                     no_drop: topic.reliable,
                     via,
+                    encoding: None,
                 };
                 match self
                     .router

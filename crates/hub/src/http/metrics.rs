@@ -170,6 +170,14 @@ impl Collector for HubCollector {
             MetricType::Gauge,
         )?;
         ConstGauge::new(st.registry.list().len() as i64).encode(m)?;
+        let m = enc.encode_descriptor(
+            "fleetlink_video_kept_bytes",
+            "Bytes of video frames kept since each video topic's last keyframe, for new \
+             viewers, all topics together (bounded; docs/video.md)",
+            None,
+            MetricType::Gauge,
+        )?;
+        ConstGauge::new(st.router.video_pool.used() as i64).encode(m)?;
         encode_budgets(&st.registry.list(), &mut enc)?;
         encode_audit(&st.security.audit, &mut enc)?;
         if let Some(f) = st.federation.get() {

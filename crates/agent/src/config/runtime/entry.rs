@@ -1,11 +1,13 @@
 //! The entries a configuration's changeable part is made of, and kept changes merge at:
 //! one field of one topic's QoS (`topics["/pose"].rate_limit_hz`), one `remap` entry, one
-//! `subscribe` entry, one name of a bridge's list (`/scan` in `ros2.publish.include`).
+//! `subscribe` entry, one name of a bridge's list (`/scan` in `ros2.publish.include`), one
+//! field of one camera's video stream (`video["/camera/image_raw"].bitrate_kbps`).
 //!
 //! A configuration is read and written entry by entry, so a change to `/pose` touches
 //! `/pose` alone, and the changes in force are exactly the entries where the running
-//! configuration differs from its file ([`diff`]). An entry's value is JSON: a QoS field's
-//! or a remap's value (`null`: not set), or whether a list holds a name (`true`/`false`).
+//! configuration differs from its file ([`diff`]). An entry's value is JSON: a QoS field's,
+//! a video field's or a remap's value (`null`: not set), or whether a list holds a name
+//! (`true`/`false`). A camera has a video stream while its `topic` is set.
 
 use std::collections::BTreeSet;
 use std::fmt;
@@ -13,7 +15,7 @@ use std::fmt;
 use fleetlink_qos::TopicQosSpec;
 use serde_json::{Map, Value};
 
-use crate::config::{AgentConfig, Subscription};
+use crate::config::{AgentConfig, Subscription, VideoStreamConfig};
 
 /// The bridges' lists a running agent changes, by the path a change writes them at.
 pub const LISTS: &[&str] = &[
@@ -35,6 +37,43 @@ pub const LISTS: &[&str] = &[
     "ros2.actions.offer",
 ];
 
+/// A field of a camera's video stream (`VideoStreamConfig`'s), each an entry. `Topic`
+/// comes first, as entries sort and apply: setting it makes the stream (its other fields
+/// then take their defaults), unsetting it removes the stream.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum VideoField {
+    Topic,
+    Fps,
+    BitrateKbps,
+    MinBitrateKbps,
+    KeyframeS,
+}
+
+impl VideoField {
+    pub const ALL: [VideoField; 5] = [
+        VideoField::Topic,
+        VideoField::Fps,
+        VideoField::BitrateKbps,
+        VideoField::MinBitrateKbps,
+        VideoField::KeyframeS,
+    ];
+
+    /// Its key in the YAML.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            VideoField::Topic => "topic",
+            VideoField::Fps => "fps",
+            VideoField::BitrateKbps => "bitrate_kbps",
+            VideoField::MinBitrateKbps => "min_bitrate_kbps",
+            VideoField::KeyframeS => "keyframe_s",
+        }
+    }
+
+    pub fn of(key: &str) -> Option<VideoField> {
+        VideoField::ALL.into_iter().find(|f| f.as_str() == key)
+    }
+}
+
 /// One entry of the changeable part of a configuration.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Entry {
@@ -46,6 +85,8 @@ pub enum Entry {
     Subscribe { hub: String, local: String },
     /// One name (or pattern) of a bridge's list ([`LISTS`]).
     Name { list: &'static str, name: String },
+    /// One field of one camera topic's video stream.
+    Video { camera: String, field: VideoField },
 }
 
 impl fmt::Display for Entry {
@@ -57,6 +98,9 @@ impl fmt::Display for Entry {
                 write!(f, "subscribe {{ hub: {hub}, local: {local} }}")
             }
             Entry::Name { list, name } => write!(f, "{list} {name}"),
+            Entry::Video { camera, field } => {
+                write!(f, "video[{camera:?}].{}", field.as_str())
+            }
         }
     }
 }
@@ -68,6 +112,7 @@ impl Entry {
             Entry::Qos { .. } => "topics",
             Entry::Remap { .. } => "remap",
             Entry::Subscribe { .. } => "subscribe",
+            Entry::Video { .. } => "video",
             Entry::Name { list, .. } => super::CHANGEABLE
                 .iter()
                 .copied()
@@ -110,6 +155,11 @@ impl Entry {
                 let (_, names) = lists(cfg).into_iter().find(|(l, _)| l == list)?;
                 Value::Bool(names.contains(name))
             }
+            Entry::Video { camera, field } => cfg
+                .video
+                .get(camera)
+                .and_then(|stream| video_fields(stream).remove(field.as_str()))
+                .unwrap_or(Value::Null),
         })
     }
 
@@ -166,6 +216,29 @@ impl Entry {
                     names.push(name.clone());
                 }
             }
+            Entry::Video { camera, field } => {
+                // A camera has a stream while its video topic is set.
+                if *field == VideoField::Topic && value.is_null() {
+                    cfg.video.remove(camera);
+                    return Ok(());
+                }
+                if value.is_null() && !cfg.video.contains_key(camera) {
+                    return Ok(());
+                }
+                let mut fields = cfg.video.get(camera).map(video_fields).unwrap_or_default();
+                fields.insert(field.as_str().to_owned(), value.clone());
+                fields.retain(|_, v| !v.is_null());
+                if !fields.contains_key("topic") {
+                    return Err(format!(
+                        "video[{camera:?}]: {camera} has no video stream to change; a new \
+                         stream names its video topic, for example `video: {{ {camera}: {{ \
+                         topic: {camera}/video }} }}`"
+                    ));
+                }
+                let stream = serde_json::from_value(Value::Object(fields))
+                    .map_err(|e| format!("{self}: {e}"))?;
+                cfg.video.insert(camera.clone(), stream);
+            }
         }
         Ok(())
     }
@@ -175,6 +248,15 @@ fn flag(entry: &Entry, value: &Value) -> Result<bool, String> {
     value
         .as_bool()
         .ok_or_else(|| format!("{entry}: expected true or false, got {value}"))
+}
+
+/// A video stream's fields as JSON (the defaults written out; `min_bitrate_kbps` only
+/// when set).
+pub fn video_fields(stream: &VideoStreamConfig) -> Map<String, Value> {
+    match serde_json::to_value(stream) {
+        Ok(Value::Object(map)) => map,
+        _ => Map::new(),
+    }
 }
 
 /// A topic's QoS fields as JSON, unset ones `null`.
@@ -270,6 +352,17 @@ fn entries(cfg: &AgentConfig) -> BTreeSet<Entry> {
             list,
             name: name.clone(),
         }));
+    }
+    for (camera, stream) in &cfg.video {
+        out.extend(
+            video_fields(stream)
+                .keys()
+                .filter_map(|k| VideoField::of(k))
+                .map(|field| Entry::Video {
+                    camera: camera.clone(),
+                    field,
+                }),
+        );
     }
     out
 }

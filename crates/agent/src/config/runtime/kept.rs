@@ -162,6 +162,10 @@ pub fn change_doc(entries: &[KeptEntry]) -> Map<String, Value> {
                 let spec = object_at(&mut doc, &["topics", topic]);
                 spec.insert(field.clone(), k.value.clone());
             }
+            Entry::Video { camera, field } => {
+                let stream = object_at(&mut doc, &["video", camera]);
+                stream.insert(field.as_str().to_owned(), k.value.clone());
+            }
             Entry::Remap { local } if k.value.is_null() => {
                 push_at(&mut remove, &["remap"], Value::String(local.clone()));
             }

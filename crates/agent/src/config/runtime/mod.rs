@@ -2,11 +2,13 @@
 //! YAML file's own shape (JSON is YAML too) naming only what changes.
 //!
 //! A change merges with the configuration entry by entry ([`entry`]): a topic's QoS field,
-//! a `remap` entry, a `subscribe` entry, a name of a bridge's list. Writing `/pose` under
+//! a `remap` entry, a `subscribe` entry, a name of a bridge's list, a field of a camera's
+//! video stream. Writing `/pose` under
 //! `topics` changes the fields of `/pose` it writes and nothing else; a name written in a
 //! list is added to it. Removing is an operation of its own, written under `remove:` in the
-//! same shape (`remove: { topics: [/pose], ros2: { publish: [/scan] } }`), applied before
-//! what the change sets; a QoS field written `null` is unset.
+//! same shape (`remove: { topics: [/pose], video: [/camera/image_raw], ros2: { publish:
+//! [/scan] } }`), applied before what the change sets; a QoS or video field written `null`
+//! is unset (a video field then takes its default).
 //!
 //! A change is read like the file: the same typed parse, the same checks on what it writes
 //! and on the configuration it makes, so its errors have the same texts, with the line and
@@ -33,7 +35,7 @@ use super::{
     AgentConfig, ConfigError, Ros1Config, Ros2Config, SourcePos, Subscription, field_error,
     parse_error, validate,
 };
-use entry::{Entry, lists, qos_fields};
+use entry::{Entry, VideoField, lists, qos_fields};
 use kept::KeptEntry;
 
 /// The fields a running agent changes without a restart.
@@ -49,6 +51,7 @@ pub const CHANGEABLE: &[&str] = &[
     "ros2.read",
     "ros2.services",
     "ros2.actions",
+    "video",
 ];
 
 /// A change that checked out.
@@ -140,7 +143,25 @@ struct ChangeDoc {
     topics: BTreeMap<String, TopicQosSpec>,
     ros1: Option<Ros1Config>,
     ros2: Option<Ros2Config>,
+    video: BTreeMap<String, VideoChange>,
     remove: Removal,
+}
+
+/// A camera's video stream as a change writes it: only the fields it changes
+/// (`VideoStreamConfig`'s, which the whole configuration's checks then read).
+#[derive(Debug, Default, Deserialize, serde::Serialize)]
+#[serde(default, deny_unknown_fields)]
+struct VideoChange {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    topic: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fps: Option<f32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    bitrate_kbps: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min_bitrate_kbps: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    keyframe_s: Option<f32>,
 }
 
 /// `remove:` — entries to remove, written as they are written to add them; `topics` and
@@ -153,6 +174,8 @@ struct Removal {
     topics: Vec<String>,
     ros1: Option<Ros1Config>,
     ros2: Option<Ros2Config>,
+    /// Camera topics whose video stream goes.
+    video: Vec<String>,
 }
 
 /// Reads a change: its shape (only changeable fields; with `running`, only bridges it
@@ -191,6 +214,13 @@ pub(crate) fn read(
             sets.push((entry, Value::Null));
         }
     }
+    for camera in &doc.remove.video {
+        let entry = Entry::Video {
+            camera: camera.clone(),
+            field: VideoField::Topic,
+        };
+        sets.push((entry, Value::Null));
+    }
     for local in &doc.remove.remap {
         sets.push((
             Entry::Remap {
@@ -217,6 +247,28 @@ pub(crate) fn read(
                 },
                 value,
             ));
+        }
+    }
+    for (camera, change) in &doc.video {
+        let values = match serde_json::to_value(change) {
+            Ok(Value::Object(map)) => map,
+            _ => serde_json::Map::new(),
+        };
+        // The typed parse took only known keys; the topic first ([`VideoField`]).
+        let mut written: Vec<VideoField> = tree
+            .keys_at(&["video", camera])
+            .unwrap_or_default()
+            .iter()
+            .filter_map(|(key, _)| VideoField::of(key))
+            .collect();
+        written.sort();
+        for field in written {
+            let value = values.get(field.as_str()).cloned().unwrap_or(Value::Null);
+            let entry = Entry::Video {
+                camera: camera.clone(),
+                field,
+            };
+            sets.push((entry, value));
         }
     }
     for (local, hub) in &doc.remap {
@@ -306,7 +358,7 @@ fn written_fields(
     let mut written = Vec::new();
     for (key, pos) in top {
         match key.as_str() {
-            "remap" | "subscribe" | "topics" => written.push(key),
+            "remap" | "subscribe" | "topics" | "video" => written.push(key),
             "remove" if under.is_empty() => {}
             "ros1" | "ros2" => {
                 if let Some(cfg) = running {
@@ -458,6 +510,7 @@ pub(crate) fn path_is_in(path: &FieldPath, entry: &Entry, cfg: &AgentConfig) -> 
     match entry {
         Entry::Qos { topic, .. } => keys.get(..2) == Some(&[Some("topics"), Some(topic)]),
         Entry::Remap { local } => keys.get(..2) == Some(&[Some("remap"), Some(local)]),
+        Entry::Video { camera, .. } => keys.get(..2) == Some(&[Some("video"), Some(camera)]),
         Entry::Subscribe { hub, local } => {
             keys.first() == Some(&Some("subscribe"))
                 && index

@@ -261,11 +261,14 @@ proptest::proptest! {
                     "ros2.read", "ros2.domain_id", "topics./a", "topics./a.rate_limit_hz",
                     "topics./a.priority", "topics./a.policy", "topics./a.no_drop", "remap./a",
                     "remove.topics", "remove.ros2.publish", "remove.remap", "remove",
+                    "video", "video./a", "video./a.topic", "video./a.fps",
+                    "video./a.bitrate_kbps", "video./a.min_bitrate_kbps", "remove.video",
                 ]),
                 proptest::sample::select(vec![
                     "[/a, /b]", "[]", "{}", "0", "2", "-1", "latest", "/x/a", "null", "true",
                     "{ include: [/a], exclude: [/b] }", "[{ hub: /h, local: /l }]",
                     "{ rate_limit_hz: 2 }", "\"bad name\"", "[1, 2]", "{ x: 1 }", "[/a]",
+                    "{ topic: /a/video }", "{ topic: /v, fps: 5 }", "/a/video", "600",
                 ]),
             ),
             0..5,
@@ -277,7 +280,7 @@ proptest::proptest! {
         let mut text = String::new();
         for (key, value) in &entries {
             let mut parts: Vec<&str> = key.split('.').collect();
-            if key.starts_with("topics./") || key.starts_with("remap./") {
+            if key.starts_with("topics./") || key.starts_with("remap./") || key.starts_with("video./") {
                 let (section, rest) = key.split_once('.').unwrap();
                 let mut p = vec![section];
                 p.extend(rest.splitn(2, '.'));
@@ -314,5 +317,93 @@ proptest::proptest! {
                 proptest::prop_assert!(!said.is_empty() && (e.field().is_some() || e.position().is_some()), "{}", said);
             }
         }
+    }
+}
+
+/// A camera's video stream changes field by field; a stream is added and removed whole;
+/// the changes merge again with a file that changed meanwhile.
+#[test]
+fn video_streams_change_field_by_field_and_merge_again() {
+    let file = AgentConfig::from_str(
+        "video:\n  /cam/a: { topic: /cam/a/video, fps: 10 }\n  /cam/b: { topic: /cam/b/video }\n",
+        "robot.yaml",
+    )
+    .unwrap();
+    let c = first(&file, "video: { /cam/a: { bitrate_kbps: 400 } }\n").unwrap();
+    assert_eq!(c.fields, vec!["video"]);
+    let a = &c.config.video["/cam/a"];
+    assert_eq!(
+        (a.topic.as_str(), a.fps, a.bitrate_kbps),
+        ("/cam/a/video", 10.0, 400)
+    );
+    assert_eq!(
+        c.config.video["/cam/b"], file.video["/cam/b"],
+        "/cam/b untouched"
+    );
+    assert_eq!(
+        c.kept
+            .iter()
+            .map(|k| k.entry.to_string())
+            .collect::<Vec<_>>(),
+        vec![r#"video["/cam/a"].bitrate_kbps"#]
+    );
+    assert_eq!(again(&file, &c), c.config);
+
+    // A new stream, and one removed; a field written null takes its default.
+    let c = then(
+        &file,
+        &c,
+        "video: { /cam/c: { topic: /cam/c/video, keyframe_s: 1 }, /cam/a: { fps: null } }\nremove: { video: [/cam/b] }\n",
+    )
+    .unwrap();
+    assert_eq!(c.config.video["/cam/a"].fps, 15.0);
+    assert_eq!(c.config.video["/cam/a"].bitrate_kbps, 400);
+    assert!(!c.config.video.contains_key("/cam/b"));
+    assert_eq!(c.config.video["/cam/c"].keyframe_s, 1.0);
+    assert_eq!(again(&file, &c), c.config);
+
+    // The file raises /cam/a's fps meanwhile: the kept bitrate still applies, and the
+    // kept fps (the default, written by the change) is set aside as the file changed it.
+    let newer = AgentConfig::from_str(
+        "video:\n  /cam/a: { topic: /cam/a/video, fps: 20 }\n  /cam/b: { topic: /cam/b/video }\n",
+        "robot.yaml",
+    )
+    .unwrap();
+    let settled = settle(&newer, c.kept.clone());
+    assert_eq!(settled.config.video["/cam/a"].bitrate_kbps, 400);
+    assert_eq!(settled.config.video["/cam/a"].fps, 20.0);
+    assert!(
+        settled
+            .set_aside
+            .iter()
+            .any(|a| a.kept.entry.to_string() == r#"video["/cam/a"].fps"#),
+        "{:?}",
+        settled.set_aside
+    );
+    assert!(!settled.config.video.contains_key("/cam/b"));
+    assert!(settled.config.video.contains_key("/cam/c"));
+}
+
+#[test]
+fn video_changes_are_checked_like_the_file() {
+    let file =
+        AgentConfig::from_str("video:\n  /cam/a: { topic: /cam/a/video }\n", "robot.yaml").unwrap();
+    for (change, expected) in [
+        (
+            "video: { /cam/a: { fps: 0 } }\n",
+            "video[\"/cam/a\"].fps: must be 1 to 60",
+        ),
+        (
+            "video: { /cam/x: { fps: 5 } }\n",
+            "/cam/x has no video stream to change; a new stream names its video topic",
+        ),
+        (
+            "video: { /cam/b: { topic: /cam/a/video } }\n",
+            "/cam/a/video is already the video of /cam/a",
+        ),
+        ("video: { /cam/a: { crf: 5 } }\n", "unknown field `crf`"),
+    ] {
+        let e = first(&file, change).expect_err(change).to_string();
+        assert!(e.contains(expected), "{change}: {e}");
     }
 }
