@@ -152,8 +152,9 @@ const SNIFF_TIMEOUT: Duration = Duration::from_secs(10);
 const SNIFF_MAX: usize = 8192;
 
 /// Reads the request head (and whatever came with it, at most [`SNIFF_MAX`] bytes): a
-/// WebSocket upgrade, or not. The bytes read are handed back to be read again.
-async fn sniff(tcp: &mut tokio::net::TcpStream) -> (Sniffed, Vec<u8>) {
+/// WebSocket upgrade, or not. The bytes read are handed back to be read again. Each read
+/// waits for the socket, so a head that comes in pieces costs one wake per piece.
+async fn sniff(tcp: &mut (impl tokio::io::AsyncRead + Unpin)) -> (Sniffed, Vec<u8>) {
     let mut buf = Vec::with_capacity(1024);
     let look = async {
         let mut chunk = [0u8; 2048];
@@ -301,4 +302,44 @@ fn constant_time_eq(a: &[u8], b: &[u8]) -> bool {
 /// Binds the local listener address.
 pub async fn bind(addr: SocketAddr) -> std::io::Result<TcpListener> {
     TcpListener::bind(addr).await
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tokio::io::AsyncWriteExt;
+
+    /// The head the listener must see whole before it can tell a WebSocket client from an
+    /// HTTP one, sent in two pieces: it waits for the second without a timer, and hands
+    /// back every byte it read.
+    #[tokio::test]
+    async fn a_request_head_in_pieces_is_read_as_it_comes_and_handed_back() {
+        let head = b"GET / HTTP/1.1\r\nHost: robot\r\nUpgrade: websocket\r\n\r\n";
+        let (mut client, mut server) = tokio::io::duplex(1024);
+        client.write_all(&head[..20]).await.unwrap();
+        let sniffing = sniff(&mut server);
+        tokio::pin!(sniffing);
+        tokio::select! {
+            biased;
+            _ = &mut sniffing => panic!("half a head was taken for a whole one"),
+            () = std::future::ready(()) => {}
+        }
+        client.write_all(&head[20..]).await.unwrap();
+        let (kind, read) = sniffing.await;
+        assert!(matches!(kind, Sniffed::WebSocket));
+        assert_eq!(read, head);
+    }
+
+    #[tokio::test]
+    async fn a_plain_request_is_http_and_a_closed_connection_is_gone() {
+        let (mut client, mut server) = tokio::io::duplex(1024);
+        client
+            .write_all(b"GET /api/v1/config HTTP/1.1\r\nHost: robot\r\n\r\n")
+            .await
+            .unwrap();
+        assert!(matches!(sniff(&mut server).await.0, Sniffed::Http));
+        let (client, mut server) = tokio::io::duplex(1024);
+        drop(client);
+        assert!(matches!(sniff(&mut server).await.0, Sniffed::Gone));
+    }
 }

@@ -187,7 +187,7 @@ impl Recordings {
             dir,
             gate,
             online,
-            persist: Box::new(move |i| write_info(&keep_dir, i)),
+            persist: Arc::new(move |i| write_info(&keep_dir, i)),
         };
         let task = tokio::spawn(fetch::run(job));
         tracing::info!(recording = %id, robot = %spec.robot, "black-box fetch started");

@@ -3,11 +3,17 @@
 //! stop, and keep the finished file (checked against the robot's SHA-256) as a
 //! recording. Topics the requester may not read are cut out of the file before it is
 //! kept.
+//!
+//! The task wakes only for what moves it: a call's answer, pieces in its outbox, a stop,
+//! or the next of its deadlines (a retry, a stall, the give-up). Its disk work (the
+//! slice's file, `recording.json`) runs on the blocking pool, so a slow disk holds this
+//! fetch, not the hub's other tasks. Times are Tokio's, so tests can run it on a paused
+//! clock.
 
 use std::io::Write;
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use fleetlink_proto::Payload;
 use fleetlink_relay::calls::{CallEvent, CallId, CallOptions, CallStatus, ChannelPeer, PeerMsg};
@@ -17,6 +23,7 @@ use fleetlink_relay::router::{ClientKind, SubOptions, Target};
 use fleetlink_relay::{ClientId, Router, TopicName};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
+use tokio::time::Instant;
 
 use super::{DATA_TOPIC, FETCH_SERVICE, FetchReply, FetchRequest, Piece, SliceRange};
 use crate::file::FileFigures;
@@ -126,7 +133,8 @@ pub(crate) struct FetchJob {
     pub dir: PathBuf,
     pub gate: Box<dyn Gate>,
     pub online: Online,
-    pub persist: Box<dyn Fn(&RecordingInfo) + Send + Sync>,
+    /// Writes `recording.json`; shared so that it can run on the blocking pool.
+    pub persist: Arc<dyn Fn(&RecordingInfo) + Send + Sync>,
 }
 
 /// Leaves the router when the fetch ends, however it ends.
@@ -151,7 +159,28 @@ pub(crate) async fn run(job: FetchJob) {
             }
         }
     });
-    (job.persist)(&job.shared.info());
+    persist(&job).await;
+}
+
+/// Writes the fetch's `recording.json` as it stands now, off the runtime, and waits
+/// until it is written (a later write must not be overtaken by an earlier one).
+async fn persist(job: &FetchJob) {
+    let (write, info) = (job.persist.clone(), job.shared.info());
+    let id = info.id.clone();
+    if let Err(e) = tokio::task::spawn_blocking(move || write(&info)).await {
+        tracing::warn!(recording = %id, "keeping recording.json: {e}");
+    }
+}
+
+/// Runs disk work on the blocking pool; an error says `what` was being done.
+async fn on_disk<T: Send + 'static>(
+    what: String,
+    work: impl FnOnce() -> std::io::Result<T> + Send + 'static,
+) -> Result<T, String> {
+    match tokio::task::spawn_blocking(work).await {
+        Ok(done) => done.map_err(|e| format!("{what}: {e}")),
+        Err(e) => Err(format!("{what}: {e}")),
+    }
 }
 
 struct Progress {
@@ -190,9 +219,13 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
     let label = info.spec.name.clone().unwrap_or_else(|| id.clone());
     let final_name = format!("{label}.mcap");
     let part = job.dir.join(format!("{final_name}.part"));
+    let file = on_disk(format!("creating {}", part.display()), {
+        let part = part.clone();
+        move || std::fs::File::create(part)
+    })
+    .await?;
     let mut got = Progress {
-        file: std::fs::File::create(&part)
-            .map_err(|e| format!("creating {}: {e}", part.display()))?,
+        file,
         hash: Sha256::new(),
         received: 0,
         last: Instant::now(),
@@ -333,21 +366,17 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
                 None => return Err("the hub is stopping".into()),
             },
             _ = outbox.ready() => {
-                outbox.take_into(&mut items, 256, 16 << 20, Instant::now());
-                // The file is written off the runtime: a slow disk holds this fetch,
-                // not the hub's other tasks.
+                outbox.take_into(&mut items, 256, 16 << 20, Instant::now().into_std());
                 let pieces: Vec<Arc<fleetlink_relay::Message>> = items.drain(..).map(|(_, _, m)| m).collect();
                 let mut writing = got;
                 let slice = id.clone();
-                got = tokio::task::spawn_blocking(move || {
+                got = on_disk(format!("writing {}", part.display()), move || {
                     for m in &pieces {
                         accept(&m.payload, &slice, &mut writing)?;
                     }
-                    Ok::<_, std::io::Error>(writing)
+                    Ok(writing)
                 })
-                .await
-                .map_err(|e| format!("writing {}: {e}", part.display()))?
-                .map_err(|e| format!("writing {}: {e}", part.display()))?;
+                .await?;
                 job.shared.update(|i| {
                     if let Some(b) = &mut i.blackbox {
                         b.received = got.received;
@@ -356,22 +385,20 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
                 });
                 if last_persist.elapsed() >= PERSIST_EVERY {
                     last_persist = Instant::now();
-                    (job.persist)(&job.shared.info());
+                    persist(job).await;
                 }
             }
-            _ = tokio::time::sleep_until(wake.into()) => {}
+            _ = tokio::time::sleep_until(wake) => {}
             _ = job.shared.stop.cancelled() => {}
         }
     }
     let r = reply.expect("the loop ends with a reply");
     let mut file = got.file;
-    tokio::task::spawn_blocking(move || {
+    on_disk(format!("syncing {}", part.display()), move || {
         file.flush()?;
         file.sync_data()
     })
-    .await
-    .map_err(|e| e.to_string())?
-    .map_err(|e| e.to_string())?;
+    .await?;
     let sha = super::hex(&got.hash.finalize());
     if sha != r.sha256 {
         return Err(format!(
