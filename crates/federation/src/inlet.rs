@@ -13,6 +13,10 @@
 //!   [`HOLD`] and [`HOLD_MAX`] messages, then published if its offer comes, dropped if
 //!   not — a hub publishes into a topic only what it offers;
 //! - from anyone else: dropped and counted.
+//!
+//! A video topic whose chain broke here, or whose new viewer found nothing kept, asks the
+//! offering hubs for a keyframe ([`crate::keyframes`]): looked at after each message
+//! published and whenever the topics loop sets the offering hubs.
 
 use std::collections::{HashMap, VecDeque};
 use std::sync::atomic::Ordering::Relaxed;
@@ -25,6 +29,7 @@ use fleetlink_proto::Payload;
 use fleetlink_relay::gate::{Gate, Op};
 use fleetlink_relay::{Topic, TopicName};
 
+use crate::keyframes::Asker;
 use crate::keys::{MessageHeader, StreamMark};
 use crate::{ImportFigures, Shared};
 
@@ -39,6 +44,7 @@ pub struct Inlet {
     name: TopicName,
     shared: Arc<Shared>,
     figures: Arc<ImportFigures>,
+    asker: Arc<Asker>,
     // std Mutex: taken by the Zenoh callback per message and by the topics loop when
     // offers change; never held across an await.
     state: Mutex<State>,
@@ -58,12 +64,18 @@ struct State {
 }
 
 impl Inlet {
-    pub fn new(topic: Arc<Topic>, shared: Arc<Shared>, figures: Arc<ImportFigures>) -> Arc<Inlet> {
+    pub fn new(
+        topic: Arc<Topic>,
+        shared: Arc<Shared>,
+        figures: Arc<ImportFigures>,
+        asker: Arc<Asker>,
+    ) -> Arc<Inlet> {
         Arc::new(Inlet {
             name: topic.name(),
             topic,
             shared,
             figures,
+            asker,
             state: Mutex::new(State::default()),
         })
     }
@@ -78,7 +90,8 @@ impl Inlet {
     }
 
     /// The admitted hubs that offer the topic now: new ones get a gate, and what they
-    /// sent before their offer arrived is published in order.
+    /// sent before their offer arrived is published in order. A keyframe wanted here
+    /// (a viewer came with nothing to show) is asked of them.
     pub fn set_offerers<'h>(&self, hubs: impl IntoIterator<Item = &'h String>, now: Instant) {
         let hubs: Vec<&String> = hubs
             .into_iter()
@@ -101,6 +114,7 @@ impl Inlet {
             }
         }
         self.expire(&mut st, now);
+        self.ask_keyframe(&st);
     }
 
     /// A message hub `hub` put under the topic's key.
@@ -108,6 +122,7 @@ impl Inlet {
         let mut st = self.lock();
         if st.from.contains_key(hub) {
             self.deliver(&mut st, hub, header, bytes);
+            self.ask_keyframe(&st);
             return;
         }
         self.expire(&mut st, now);
@@ -121,6 +136,12 @@ impl Inlet {
             self.shared.counters.refused.fetch_add(1, Relaxed);
         }
         queue.push_back((now, header, bytes));
+    }
+
+    /// Asks the offering hubs for a keyframe if the router here wants one.
+    fn ask_keyframe(&self, st: &State) {
+        self.asker
+            .ask_if_wanted(&self.topic, &self.name, st.from.keys());
     }
 
     /// Drops what waited longer than [`HOLD`] for an offer that did not come.

@@ -10,6 +10,7 @@
 //! | `fleetlink/<f>/schema/<hub>/<topic>` | queryable: the topic's full definition on `<hub>` |
 //! | `fleetlink/<f>/call/<hub>/<service>` | queryable: a service call or action goal to `<hub>` |
 //! | `fleetlink/<f>/cancel/<hub>` | a caller gives up a call it made to `<hub>` |
+//! | `fleetlink/<f>/keyframe/<hub>/<from>/<topic>` | hub `<from>` asks `<hub>`, which sends it the video topic, for a keyframe of it (no payload) |
 //!
 //! A ROS name `/robot1/scan` becomes the chunks `robot1/scan`; a type `pkg/msg/T` the
 //! one chunk `pkg:msg:T`. Names that cannot be key expressions (empty chunks, Zenoh's
@@ -151,6 +152,29 @@ pub fn topic_key(fleet: &str, hub: &str, name: &str) -> Option<String> {
     Some(format!("{}/t/{hub}/{}", root(fleet), name_chunks(name)?))
 }
 
+/// Key on which hub `from` asks hub `to` for a keyframe of the video topic `name`.
+pub fn keyframe_key(fleet: &str, to: &str, from: &str, name: &str) -> Option<String> {
+    Some(format!(
+        "{}/keyframe/{to}/{from}/{}",
+        root(fleet),
+        name_chunks(name)?
+    ))
+}
+
+/// The asking hub and the topic of a keyframe ask made to hub `to`; `None` for a key
+/// that is not one.
+pub fn parse_keyframe_key(fleet: &str, to: &str, key: &str) -> Option<(String, String)> {
+    let rest = key
+        .strip_prefix(&root(fleet))?
+        .strip_prefix("/keyframe/")?
+        .strip_prefix(to)?
+        .strip_prefix('/')?;
+    let (from, tail) = rest.split_once('/')?;
+    let name = format!("/{tail}");
+    name_chunks(&name)?;
+    (!from.is_empty()).then(|| (from.to_owned(), name))
+}
+
 /// What travels beside a message's payload (the Zenoh attachment): its encoding, its
 /// publisher's numbering and stamp, and for a robot's no-drop stream the stream's epoch,
 /// so that a hub hearing the same message from two hubs (its robot moved between them)
@@ -287,6 +311,33 @@ mod tests {
         assert_eq!(parse_offer("f", "fleetlink/g/cat/h/t/0/-/x"), None);
         assert_eq!(parse_offer("f", "fleetlink/f/cat/h/z/0/-/x"), None);
         assert_eq!(chunk("hub a/1"), "hub_a_1");
+    }
+
+    #[test]
+    fn keyframe_asks_name_both_hubs_and_the_topic() {
+        let key = keyframe_key("f", "hubA", "hubB", "/robot1/camera/video").unwrap();
+        assert_eq!(key, "fleetlink/f/keyframe/hubA/hubB/robot1/camera/video");
+        assert_eq!(
+            parse_keyframe_key("f", "hubA", &key),
+            Some(("hubB".to_owned(), "/robot1/camera/video".to_owned()))
+        );
+        assert_eq!(parse_keyframe_key("f", "hubC", &key), None, "another hub's");
+        assert_eq!(
+            parse_keyframe_key("f", "hub", &key),
+            None,
+            "a prefix of the id"
+        );
+        assert_eq!(
+            parse_keyframe_key("g", "hubA", &key),
+            None,
+            "another fleet's"
+        );
+        assert_eq!(
+            parse_keyframe_key("f", "hubA", "fleetlink/f/keyframe/hubA/hubB"),
+            None,
+            "no topic"
+        );
+        assert_eq!(keyframe_key("f", "a", "b", "/a/*"), None);
     }
 
     #[test]

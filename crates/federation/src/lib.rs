@@ -17,6 +17,10 @@
 //!   tokens; the others' are advertised here with the federation as their provider, so a
 //!   call (or action goal) goes as a Zenoh query to the hub where the provider is, its
 //!   feedback and answer coming back as replies, a cancel as a message to that hub.
+//! - **Keyframes** ([`keyframes`]): a video topic received from another hub whose chain
+//!   broke here, or whose new viewer found nothing kept, asks that hub for a keyframe (at
+//!   most once a second per topic, acted upon at most once a second there), which asks
+//!   its robot as for a viewer of its own.
 //!
 //! **No loops, by construction.** A message enters Zenoh only from the hub where it was
 //! published by a local client: the federation's own subscription never receives what
@@ -30,6 +34,7 @@
 
 pub mod calls;
 mod inlet;
+pub mod keyframes;
 pub mod keys;
 pub mod topics;
 pub mod trust;
@@ -242,8 +247,14 @@ pub struct Counters {
     /// Calls and goals sent to other hubs, and received from them.
     pub calls_out: AtomicU64,
     pub calls_in: AtomicU64,
-    /// Messages and calls from other hubs that this hub's rules refused.
+    /// Messages, calls and keyframe asks from other hubs that this hub's rules refused.
     pub refused: AtomicU64,
+    /// Keyframe asks of video topics sent to the hubs that send them here.
+    pub keyframe_asks_out: AtomicU64,
+    /// Keyframe asks heard for video topics this hub sends, and those acted upon (the
+    /// others came within a second of one, or a rule refused them).
+    pub keyframe_asks_in: AtomicU64,
+    pub keyframe_asks_acted: AtomicU64,
 }
 
 /// One exported topic's figures.
@@ -527,6 +538,9 @@ impl Federated for Federation {
                 "calls_out": c.calls_out.load(Relaxed),
                 "calls_in": c.calls_in.load(Relaxed),
                 "refused": c.refused.load(Relaxed),
+                "keyframe_asks_out": c.keyframe_asks_out.load(Relaxed),
+                "keyframe_asks_in": c.keyframe_asks_in.load(Relaxed),
+                "keyframe_asks_acted": c.keyframe_asks_acted.load(Relaxed),
             },
         })
     }
@@ -581,8 +595,23 @@ impl Federated for Federation {
             ),
             (
                 "fleetlink_federation_refused",
-                "Messages and calls from other hubs refused here (hub not admitted, or a rule)",
+                "Messages, calls and keyframe asks from other hubs refused here (hub not admitted, or a rule)",
                 c.refused.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_keyframe_asks_out",
+                "Keyframe asks of video topics sent to the hubs they come from",
+                c.keyframe_asks_out.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_keyframe_asks_in",
+                "Keyframe asks heard from other hubs for video topics sent from here",
+                c.keyframe_asks_in.load(Relaxed),
+            ),
+            (
+                "fleetlink_federation_keyframe_asks_acted",
+                "Keyframe asks from other hubs acted upon (at most one a second per topic)",
+                c.keyframe_asks_acted.load(Relaxed),
             ),
         ]
     }

@@ -23,7 +23,9 @@
 //!    `ADVERTISE` and its first message — a no-drop message resent on arrival included —
 //!    already goes to the hubs that want it.
 //!
-//! The robots online here are offered as tokens too, for the other hubs' listings.
+//! The robots online here are offered as tokens too, for the other hubs' listings, and
+//! the keyframe asks of video topics cross both ways beside the messages
+//! ([`crate::keyframes`]).
 
 use std::collections::{BTreeSet, HashMap, HashSet};
 use std::sync::atomic::Ordering::Relaxed;
@@ -44,6 +46,7 @@ use zenoh::qos::CongestionControl;
 use zenoh::sample::{Locality, SampleKind};
 
 use crate::inlet::Inlet;
+use crate::keyframes::{self, Answerer, Asker};
 use crate::keys::{self, MessageHeader, Offer};
 use crate::{ExportFigures, FederationError, ImportFigures, Shared, zerr};
 
@@ -188,6 +191,9 @@ pub struct Topics {
     refused: BTreeSet<String>,
     inbox: Arc<Inbox>,
     _catalog: Subscriber<()>,
+    /// Keyframe asks of the topics wanted here, and the other hubs' asks heard.
+    asker: Arc<Asker>,
+    _keyframes: Subscriber<()>,
     robots: HashMap<String, LivelinessToken>,
     services: HashMap<TopicName, RemoteService>,
     providers: Providers,
@@ -223,6 +229,8 @@ impl Topics {
             })
             .await
             .map_err(zerr)?;
+        let answerer = Arc::new(Answerer::new(router.clone(), shared.clone()));
+        let keyframes = keyframes::answer(&session, answerer).await?;
         Ok(Topics {
             watch: router.watch_topics(),
             session,
@@ -234,6 +242,8 @@ impl Topics {
             refused: BTreeSet::new(),
             inbox,
             _catalog: catalog,
+            asker: Arc::default(),
+            _keyframes: keyframes,
             robots: HashMap::new(),
             services: HashMap::new(),
             providers: Arc::default(),
@@ -250,6 +260,12 @@ impl Topics {
             self.session.clone(),
             self.outbox.clone(),
             self.outlets.clone(),
+            self.shared.clone(),
+            stop.clone(),
+        );
+        let asks = keyframes::ask_loop(
+            self.session.clone(),
+            self.asker.clone(),
             self.shared.clone(),
             stop.clone(),
         );
@@ -295,7 +311,7 @@ impl Topics {
                 }
             }
         };
-        tokio::join!(pump, work);
+        tokio::join!(pump, asks, work);
     }
 
     /// Takes the parked tokens of hubs admitted since.
@@ -616,7 +632,7 @@ impl Topics {
         )
         .ok_or_else(not_a_key)?;
         let key = keys::topic_key(&self.shared.fleet, "*", name.as_str()).ok_or_else(not_a_key)?;
-        let inlet = Inlet::new(topic, self.shared.clone(), figures);
+        let inlet = Inlet::new(topic, self.shared.clone(), figures, self.asker.clone());
         let prefix = format!("{}/t/", keys::root(&self.shared.fleet));
         let shared = self.shared.clone();
         let into = inlet.clone();

@@ -1,7 +1,8 @@
 //! Video through a real hub and agent (docs/video.md): a subscriber who lost frames skips to
 //! a keyframe, which the hub asks the robot for (`PULL`), so it comes long before the
-//! stream's own keyframe interval; a subscriber who comes mid-stream starts at a keyframe;
-//! and nobody is given a frame whose predecessor it lacks.
+//! stream's own keyframe interval, also for a viewer upstream of a site hub; a subscriber
+//! who comes mid-stream starts at a keyframe; and nobody is given a frame whose
+//! predecessor it lacks.
 
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -27,8 +28,11 @@ video:
   /camera/image/compressed: { topic: /camera/video, fps: 15, keyframe_s: 60 }
 ";
 
-/// A subscriber at the hub to the robot's video with a queue of `room` frames.
-fn viewer(router: &Arc<Router>, room: usize) -> Arc<Outbox> {
+/// The robot's video at its hub.
+const VIDEO: &str = "/robot1/camera/video";
+
+/// A subscriber at a hub to the video `name` with a queue of `room` frames.
+fn viewer(router: &Arc<Router>, name: &str, room: usize) -> Arc<Outbox> {
     let (client, outbox) = router.connect(
         ClientKind::Internal {
             role: "viewer".into(),
@@ -43,7 +47,7 @@ fn viewer(router: &Arc<Router>, room: usize) -> Arc<Outbox> {
         }),
         ..SubOptions::default()
     };
-    let name = TopicName::parse("/robot1/camera/video").unwrap();
+    let name = TopicName::parse(name).unwrap();
     router.subscribe(client, Target::Exact(name), opts).unwrap();
     outbox
 }
@@ -90,7 +94,7 @@ async fn a_viewer_that_lost_frames_resumes_at_a_keyframe_asked_of_the_robot() {
     let router = hub.state.router.clone();
 
     // A viewer who reads: from its first frame, a whole chain.
-    let steady = viewer(&router, 64);
+    let steady = viewer(&router, VIDEO, 64);
     let first = frames(&steady, 15, Duration::from_secs(20)).await;
     assert!(first.len() >= 15, "{} frames in 20 s", first.len());
     assert_whole_chain("a steady viewer", &first);
@@ -98,14 +102,14 @@ async fn a_viewer_that_lost_frames_resumes_at_a_keyframe_asked_of_the_robot() {
     // A slow viewer: a queue of two, not read for a second. Its queue drops frames, and
     // the stream's keyframe (with keyframe_s: 60) was long ago: what it gets must start at
     // a keyframe the hub asked the robot for, well within the 60 s.
-    let slow = viewer(&router, 2);
+    let slow = viewer(&router, VIDEO, 2);
     tokio::time::sleep(Duration::from_secs(1)).await;
     let resumed = frames(&slow, 20, Duration::from_secs(20)).await;
     assert!(resumed.len() >= 20, "{} frames in 20 s", resumed.len());
     assert_whole_chain("a viewer that lost frames", &resumed);
 
     // One who comes mid-stream starts at the kept keyframe.
-    let late = viewer(&router, 64);
+    let late = viewer(&router, VIDEO, 64);
     let got = frames(&late, 5, Duration::from_secs(20)).await;
     assert_whole_chain("a viewer who came mid-stream", &got);
 
@@ -115,4 +119,35 @@ async fn a_viewer_that_lost_frames_resumes_at_a_keyframe_asked_of_the_robot() {
     assert_whole_chain("the steady viewer throughout", &all);
     agent.shutdown().await;
     hub.shutdown().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_viewer_upstream_of_a_site_hub_that_lost_frames_resumes_at_a_keyframe() {
+    // The cloud's PULL reaches the site hub's link upstream, which marks the topic there;
+    // the site's link to the robot asks the robot.
+    let cloud = start_hub().await;
+    let site = start_hub().await;
+    let _link = link_site(&cloud, &site, "site7").await;
+    let cfg = AgentConfig::from_str(ROBOT, "robot.yaml").unwrap();
+    let mut opts = AgentOptions::from_config(&cfg).unwrap();
+    opts.uplink = uplink_config(&site, "robot1");
+    opts.local_listen = None;
+    let agent = start_agent_opts(opts).await;
+    agent.wait_connected().await;
+    let router = cloud.state.router.clone();
+    let upstream = "/site7/robot1/camera/video";
+
+    let steady = viewer(&router, upstream, 64);
+    let first = frames(&steady, 15, Duration::from_secs(20)).await;
+    assert!(first.len() >= 15, "{} frames in 20 s", first.len());
+    assert_whole_chain("a steady viewer upstream", &first);
+
+    let slow = viewer(&router, upstream, 2);
+    tokio::time::sleep(Duration::from_secs(1)).await;
+    let resumed = frames(&slow, 20, Duration::from_secs(20)).await;
+    assert!(resumed.len() >= 20, "{} frames in 20 s", resumed.len());
+    assert_whole_chain("a viewer upstream that lost frames", &resumed);
+    agent.shutdown().await;
+    site.shutdown().await;
+    cloud.shutdown().await;
 }
