@@ -10,9 +10,10 @@
 #   2. each video frame's age when it reached the viewer: the viewer's clock minus the
 #      stamp the simulator gave the picture when it rendered it (one clock: one machine);
 #      PyAV's decoding (1-2 ms a frame) comes after;
-#   3. a new viewer's first frame: from its subscription to the first frame it can decode
-#      (the hub gives it the last keyframe and the frames since), over 8 viewers that come
-#      at random points of the stream.
+#   3. a new viewer's first frame: from its subscription to the first frame it can decode,
+#      over 8 viewers that come at random points of the stream, while another viewer
+#      watches (the hub gives it the last keyframe and the frames since), then over 8 that
+#      come alone (the hub kept nothing for nobody and asks the robot for a keyframe).
 #
 #   scripts/bench-video-live.sh
 #
@@ -102,14 +103,25 @@ echo "  as JPEG pictures:     $jpeg_cpu %   ($(cat "$tmp/jpeg.log"))"
 echo "  as H.264 video:       $video_cpu %"
 grep -E "age on arrival|decoded" "$tmp/video.log" | sed 's/^/  /'
 
-# New viewers at random points of the stream: the first frame's delay.
-firsts=()
-for i in $(seq 8); do
-    sleep "0.$((RANDOM % 10))"
-    line="$("$python" tests/interop/video/video_peer.py watch "$url" /robot1/camera/video 1.5 2>&1 \
-        | sed -nE 's#.*first frame ([0-9]+) ms after subscribing.*#\1#p')"
-    [ -n "$line" ] && firsts+=("$line")
-done
-printf '%s\n' "${firsts[@]}" | sort -n | awk '{a[NR]=$1} END {
-    if (NR == 0) { print "new viewers: no first frame measured"; exit }
-    printf "new viewer first frame after subscribing, %d viewers: median %d ms, max %d ms\n", NR, a[int((NR + 1) / 2)], a[NR] }'
+# New viewers at random points of the stream: the first frame's delay. While someone
+# else watches, the hub gives a newcomer the group it kept; once nobody does, the hub has
+# let the group go (it would be stale), and asks the robot for a keyframe instead.
+first_frames() {
+    local firsts=() line i
+    for i in $(seq 8); do
+        sleep "0.$((RANDOM % 10))"
+        line="$("$python" tests/interop/video/video_peer.py watch "$url" /robot1/camera/video 1.5 2>&1 \
+            | sed -nE 's#.*first frame ([0-9]+) ms after subscribing.*#\1#p')"
+        [ -n "$line" ] && firsts+=("$line")
+    done
+    printf '%s\n' "${firsts[@]}" | sort -n | awk -v what="$1" '{a[NR]=$1} END {
+        if (NR == 0) { print "new viewers " what ": no first frame measured"; exit }
+        printf "new viewer first frame after subscribing, %s, %d viewers: median %d ms, max %d ms\n", what, NR, a[int((NR + 1) / 2)], a[NR] }'
+}
+"$python" tests/interop/video/video_peer.py watch "$url" /robot1/camera/video 30 >/dev/null 2>&1 &
+watching=$!
+sleep 2
+first_frames "while another viewer watches (the hub's kept group)"
+kill "$watching" 2>/dev/null || true
+wait "$watching" 2>/dev/null || true
+first_frames "each alone (a keyframe asked of the robot)"

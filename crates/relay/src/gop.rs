@@ -193,6 +193,11 @@ impl Kept {
         }
     }
 
+    /// The publisher of the frames seen last.
+    pub fn publisher(&self) -> Option<ClientId> {
+        self.last.map(|(origin, _)| origin)
+    }
+
     /// The last subscriber went: the group is let go (see [`Router`]'s detach); frames
     /// that still come are delivered as before, and kept again from the next keyframe.
     ///
@@ -368,6 +373,10 @@ mod tests {
     fn the_group_goes_when_the_last_subscriber_does() {
         let router = Router::default();
         let (robot, topic) = video_topic(&router);
+        // As a hub's link to its robot does: it hears its whole namespace, its own video
+        // topic included, which it is not given, and which is no viewer.
+        let all = Target::Pattern(regex::Regex::new("^/cam/.*").unwrap());
+        router.subscribe(robot, all, SubOptions::default()).unwrap();
         let (viewer_id, _) = viewer(&router, SubOptions::default());
         topic.publish(robot, 1, 0, frame(true, 1));
         topic.publish(robot, 2, 0, frame(false, 2));

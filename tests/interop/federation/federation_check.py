@@ -17,6 +17,11 @@ Checks, in order (see run.sh for the story):
                     feedback ends CANCELED
   triangle          /fleet/chat published on each hub and subscribed on each: every
                     subscriber gets every other hub's message exactly once (no loops)
+  keyframe_asks     a viewer on C of /<robot>/camera/video (the simulated camera's, its
+                    own keyframes 60 s apart), throttled to 200 ms with a queue of one so
+                    it loses frames, decodes every frame from the first (video_peer.py
+                    watch, PyAV), at least 3 in 5 s: keyframes C asked A for, and A its
+                    robot (C's keyframe_asks_out and A's keyframe_asks_acted went up)
 
 Prints `PASS <check>: figures` or `FAIL <check>: why`; exits 1 if any failed. Every wait
 is bounded.
@@ -25,6 +30,8 @@ is bounded.
 import argparse
 import json
 import math
+import os
+import subprocess
 import sys
 import threading
 import time
@@ -37,6 +44,7 @@ ODOM = "nav_msgs/msg/Odometry"
 STRING = "std_msgs/msg/String"
 NAV_TYPE = "fleetlink_sim/action/NavigateTo"
 WAIT = 15.0
+VIDEO_PEER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "video", "video_peer.py")
 
 
 class CheckFailed(Exception):
@@ -286,6 +294,40 @@ def triangle(ctx):
     return f"{topic} on 3 hubs, {n} messages each: every subscriber got each message exactly once ({', '.join(report)})"
 
 
+def keyframe_asks(ctx):
+    topic = f"/{ctx.robot}/camera/video"
+    wait_until(f"{topic} in C's catalog", lambda: ctx.c.imported(topic))
+    c0, a0 = ctx.c.federation()["counters"], ctx.a.federation()["counters"]
+    # The viewer takes one frame in 200 ms and loses the rest, so it is given keyframes
+    # only; with the stream's own 60 s apart, every one past the first was asked for.
+    try:
+        r = subprocess.run([sys.executable, VIDEO_PEER, "watch", f"ws://{ctx.c.addr}/?token={ctx.c.token}",
+                            topic, "5", "--size", "320x240", "--min-frames", "3",
+                            "--throttle", "200", "--queue", "1"],
+                           capture_output=True, text=True, timeout=20)
+    except subprocess.TimeoutExpired as e:
+        raise CheckFailed(f"the viewer on C did not end within 20 s: {e.stdout!r}")
+    lines = [ln for ln in r.stdout.splitlines() if ln.strip() and "subscribed to" not in ln]
+    check(r.returncode == 0,
+          f"the throttled viewer on C (exit {r.returncode}): {' | '.join(lines)} {r.stderr.strip()[-500:]}")
+
+    def counted():
+        c, a = ctx.c.federation()["counters"], ctx.a.federation()["counters"]
+        return (c["keyframe_asks_out"] - c0["keyframe_asks_out"],
+                a["keyframe_asks_in"] - a0["keyframe_asks_in"],
+                a["keyframe_asks_acted"] - a0["keyframe_asks_acted"])
+
+    # What A counts may lag C's count by the asks' way through Zenoh: a bounded wait.
+    deadline = time.monotonic() + 3
+    out, heard, acted = counted()
+    while not (out > 0 and acted > 0) and time.monotonic() < deadline:
+        time.sleep(0.1)
+        out, heard, acted = counted()
+    check(out > 0 and acted > 0, f"{' | '.join(lines)}; but C's keyframe_asks_out went up by {out} and "
+          f"A's keyframe_asks_acted by {acted} (keyframe_asks_in by {heard}): want both above 0")
+    return f"{' | '.join(lines)}; C asked {out} times, A heard {heard} asks and acted on {acted}"
+
+
 class Ctx:
     pass
 
@@ -305,7 +347,7 @@ def main():
     wait_until(f"{a.robot} online at A",
                lambda: any(r["name"] == a.robot and r["online"] for r in ctx.a.api("/api/v1/robots")["robots"]))
     failed = 0
-    for check_fn in (subscribe_remote, no_data_to_b, listings, calls, triangle):
+    for check_fn in (subscribe_remote, no_data_to_b, listings, calls, triangle, keyframe_asks):
         try:
             print(f"PASS {check_fn.__name__}: {check_fn(ctx)}", flush=True)
         except CheckFailed as e:

@@ -17,7 +17,11 @@
 #      navigate_to_pose action a goal (feedback, then SUCCEEDED) and a second goal that it
 #      cancels after the first feedback (CANCELED);
 #   5. no loops: a topic published on each of the three hubs and subscribed on each is
-#      received by each subscriber exactly once per message (triangle).
+#      received by each subscriber exactly once per message (triangle);
+#   6. keyframe asks cross hubs: a viewer on C of the robot's video (its simulated camera,
+#      keyframes 60 s apart), throttled so that it loses frames, decodes every frame it is
+#      given from the first (tests/interop/video/video_peer.py, PyAV), at least 3 in 5 s,
+#      which only keyframes C asked of A, and A of the robot, can give (keyframe_asks).
 #
 # Then the failover part, with tests/interop/failover/failover_check.py subscribing on C:
 # hub A is frozen 0.5 s (SIGSTOP) and killed (kill -9); the agent moves to B, C's
@@ -25,7 +29,7 @@
 # every value once, in order, none missing (also the values A never confirmed, which the
 # agent resends through B while C may have heard some of them from A already).
 #
-# Every wait is bounded; every process is stopped on exit. About 40 s.
+# Every wait is bounded; every process is stopped on exit. About 50 s.
 #
 # Env: FLEETLINK_BIN (default: target/release/fleetlink), PYTHON (default: .venv/bin/python).
 set -euo pipefail
@@ -37,6 +41,9 @@ robot=robot1
 
 [ -x "$bin" ] || { echo "FAIL: fleetlink binary not found at $bin (set FLEETLINK_BIN)" >&2; exit 1; }
 [ -x "$python" ] || { echo "FAIL: $python missing; run scripts/setup.d/10-python-venv.sh" >&2; exit 1; }
+# PyAV and numpy for the video viewer of check 6 (video_peer.py).
+"$python" -c 'import av, numpy, roslibpy' 2>/dev/null \
+    || { echo "FAIL: $python lacks av, numpy or roslibpy; run scripts/setup-test-env.sh" >&2; exit 1; }
 if ! "$bin" hub --help | grep -q -- '--federate'; then
     echo "FAIL: $bin has no --federate (built without the federation feature)" >&2
     exit 1
@@ -95,6 +102,9 @@ topics:
 sim:
   odometry: { rate_hz: 10 }
   laser_scan: { rate_hz: 5 }
+  image: { rate_hz: 15 }
+video:
+  /camera/image/compressed: { topic: /camera/video, fps: 15, keyframe_s: 60 }
 YAML
 "$bin" agent --config "$tmp/agent.yaml" >"$tmp/agent.log" 2>&1 &
 pids+=($!)

@@ -418,12 +418,16 @@ pub(super) fn detach(topic: &Topic, client: ClientId) {
         .filter(|s| s.client != client)
         .cloned()
         .collect();
-    if list.is_empty()
-        && let Some(gop) = topic.gop.get()
-    {
-        // Its publisher stops sending to nobody: what is kept now would be stale by the
-        // time someone comes, who then gets a fresh keyframe instead (crate::gop).
-        gop.lock().nobody_watches();
+    if let Some(gop) = topic.gop.get() {
+        let mut group = gop.lock();
+        // Nobody left but the publisher itself (a robot's link subscribes to its whole
+        // namespace, its own topics included, and is not given them): it stops sending
+        // to nobody, and what is kept now would be stale by the time someone comes, who
+        // then gets a fresh keyframe instead (crate::gop).
+        let publisher = group.publisher();
+        if list.iter().all(|s| Some(s.client) == publisher && !s.own) {
+            group.nobody_watches();
+        }
     }
     topic.set_subscribers(list);
 }
