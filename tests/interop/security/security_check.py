@@ -219,13 +219,27 @@ def attack_certificate_of_another_fleet(ctx):
         sub.undeclare()
         offer.undeclare()
         want.undeclare()
+        # Keyframe asks (docs/video.md) from a hub not admitted: refused before anything
+        # else is looked at, each counted.
+        _, fed = ctx.a.api("/api/v1/federation")
+        before = fed["counters"]
+        for name in ("robot1/camera/video", "robot1/odom"):
+            for _ in range(3):
+                s.put(f"{ROOT}/keyframe/{ctx.a_zid}/{me}/{name}", b"")
+        counters = lambda: ctx.a.api("/api/v1/federation")[1]["counters"]
+        wait(lambda: counters()["refused"] >= before["refused"] + 6,
+             "hub A counting the six keyframe asks it refused", timeout=5.0)
+        after = counters()
+        check(after["keyframe_asks_in"] == before["keyframe_asks_in"]
+              and after["keyframe_asks_acted"] == before["keyframe_asks_acted"],
+              f"hub A heard keyframe asks of a hub not admitted: {before} -> {after}")
     finally:
         s.close()
     # Control: the same topic from an admitted hub's operator reaches the robot.
     ctx.publish_from_b("/robot1/cmd_vel", 1.5)
     ctx.local.until(lambda m: m.get("topic") == "/cmd_vel" and m["msg"]["linear"]["x"] == 1.5,
                     "control: hub B's operator publishing /robot1/cmd_vel reaches the robot")
-    return "not admitted (logged with its fleet); call refused; its /cmd_vel never reached the robot; its want got no /odom"
+    return "not admitted (logged with its fleet); call refused; its /cmd_vel never reached the robot; its want got no /odom; its keyframe asks refused"
 
 
 def attack_admitted_hub_calls_hub_only_services(ctx):
