@@ -99,8 +99,19 @@ fn a_lost_listener_reconnects_and_catches_up_on_what_it_missed() {
     let before = everything(&b);
 
     // Cut every listening connection, as a database restart would, and change the rules
-    // while B is not listening.
+    // while B is not listening. Both hubs' listeners first (A's may still be starting on a
+    // loaded machine, and would then escape the cut).
     let admin_db = Database::connect(&url).unwrap();
+    let listening = || {
+        admin_db
+            .execute(
+                "SELECT 1 FROM pg_stat_activity
+                 WHERE datname = current_database() AND query = 'LISTEN fleetlink_changes'",
+                &[],
+            )
+            .unwrap()
+    };
+    within(Duration::from_secs(5), || listening() >= 2).expect("both hubs listen");
     let cut = admin_db
         .execute(
             "SELECT pg_terminate_backend(pid) FROM pg_stat_activity
