@@ -1,6 +1,5 @@
-//! What the service and action frames (`0x10`–`0x17`) need beyond the shared codec: the
-//! outcome of a call, the decoder of their bodies, and the cutting of a large body into
-//! `CALL_CHUNK` frames.
+//! The service and action frames (`0x10`–`0x17`): writing and reading their bodies, and
+//! cutting a large call body into `CALL_CHUNK` frames.
 //!
 //! A large body's pieces travel *before* the frame they belong to, which carries the last
 //! piece. Unlike a topic's `CHUNK`s, whose last piece completes the message, a call body
@@ -8,64 +7,13 @@
 //! receiver handles one frame per body, whether or not the body was cut, and the header
 //! fields (alias, deadline, status, encoding) are read in one place.
 
-use bytes::Bytes;
+use bytes::{BufMut, Bytes};
 
-use super::{Frame, FrameKind, check_piece_fits, read_encoding};
+use super::shared::{check_piece_fits, read_encoding};
+use super::types::{CallStatus, Frame, FrameKind};
 use crate::error::DecodeError;
 use crate::payload::Schema;
-use crate::wire::Reader;
-
-/// Outcome of a call (`REPLY.status`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum CallStatus {
-    /// The payload is the response (the action's result, for a goal).
-    Ok = 0,
-    /// The provider answered false or raised; the payload says why.
-    Failed = 1,
-    /// The deadline passed before an answer came.
-    Timeout = 2,
-    /// Nobody provides the service (any more): not advertised, or its provider went away.
-    NoProvider = 3,
-    /// The ACL forbids this call for this caller.
-    Forbidden = 4,
-    /// The caller cancelled the call or goal.
-    Cancelled = 5,
-    /// The action's server aborted the goal, or the link to it was lost.
-    Aborted = 6,
-    /// A bound on pending calls was hit; the payload names the bound.
-    Busy = 7,
-}
-
-impl CallStatus {
-    /// Reads a status byte. A value from a later version is read as `Failed`: the call did
-    /// not succeed in any way this side understands, and the payload still says why.
-    pub fn from_u8(v: u8) -> CallStatus {
-        match v {
-            0 => CallStatus::Ok,
-            2 => CallStatus::Timeout,
-            3 => CallStatus::NoProvider,
-            4 => CallStatus::Forbidden,
-            5 => CallStatus::Cancelled,
-            6 => CallStatus::Aborted,
-            7 => CallStatus::Busy,
-            _ => CallStatus::Failed,
-        }
-    }
-
-    pub fn as_str(self) -> &'static str {
-        match self {
-            CallStatus::Ok => "ok",
-            CallStatus::Failed => "failed",
-            CallStatus::Timeout => "timeout",
-            CallStatus::NoProvider => "no_provider",
-            CallStatus::Forbidden => "forbidden",
-            CallStatus::Cancelled => "cancelled",
-            CallStatus::Aborted => "aborted",
-            CallStatus::Busy => "busy",
-        }
-    }
-}
+use crate::wire::{Reader, put_str, put_varint};
 
 /// Whether `kind` is a frame whose body may be cut into `CALL_CHUNK`s.
 fn is_body_kind(kind: u8) -> bool {
@@ -77,6 +25,89 @@ fn is_body_kind(kind: u8) -> bool {
     ]
     .iter()
     .any(|k| *k as u8 == kind)
+}
+
+/// Writes the body of a service or action frame. The codec sends only those frames here.
+pub(super) fn encode_body(frame: &Frame, b: &mut impl BufMut) {
+    match frame {
+        Frame::ServiceAdvertise {
+            alias,
+            name,
+            schema,
+            flags,
+        } => {
+            put_varint(b, u64::from(*alias));
+            put_str(b, name);
+            put_str(b, &schema.type_name);
+            put_str(b, &schema.encoding);
+            put_str(b, &schema.text);
+            b.put_u8(*flags);
+        }
+        Frame::ServiceUnadvertise { alias } => put_varint(b, u64::from(*alias)),
+        Frame::Call {
+            call_id,
+            alias,
+            deadline_ms,
+            encoding,
+            payload,
+        } => {
+            put_varint(b, *call_id);
+            put_varint(b, u64::from(*alias));
+            put_varint(b, *deadline_ms);
+            b.put_u8(*encoding as u8);
+            b.put_slice(payload);
+        }
+        Frame::Goal {
+            call_id,
+            alias,
+            deadline_ms,
+            goal_id,
+            encoding,
+            payload,
+        } => {
+            put_varint(b, *call_id);
+            put_varint(b, u64::from(*alias));
+            put_varint(b, *deadline_ms);
+            b.put_slice(goal_id);
+            b.put_u8(*encoding as u8);
+            b.put_slice(payload);
+        }
+        Frame::Reply {
+            call_id,
+            status,
+            encoding,
+            payload,
+        } => {
+            put_varint(b, *call_id);
+            b.put_u8(*status as u8);
+            b.put_u8(*encoding as u8);
+            b.put_slice(payload);
+        }
+        Frame::Feedback {
+            call_id,
+            encoding,
+            payload,
+        } => {
+            put_varint(b, *call_id);
+            b.put_u8(*encoding as u8);
+            b.put_slice(payload);
+        }
+        Frame::Cancel { call_id } => put_varint(b, *call_id),
+        Frame::CallChunk {
+            call_id,
+            kind,
+            total_len,
+            offset,
+            data,
+        } => {
+            put_varint(b, *call_id);
+            b.put_u8(*kind);
+            put_varint(b, *total_len);
+            put_varint(b, *offset);
+            b.put_slice(data);
+        }
+        other => unreachable!("{other:?} is not a service or action frame"),
+    }
 }
 
 /// Decodes the body of a frame of kind `0x10`–`0x17`.
