@@ -236,16 +236,27 @@ pub struct CallBridge {
     receiver: PeerReceiver,
     /// Kept so the table can reach the federation (it holds the peer too).
     _peer: Arc<ChannelPeer>,
+    /// Calls and cancels from other hubs, bounded ([`INPUT_QUEUE`]): a call that finds
+    /// it full is answered `Busy`, a cancel is dropped.
     inputs: mpsc::Receiver<Input>,
     _queryables: Vec<Queryable<()>>,
     _cancels: zenoh::pubsub::Subscriber<()>,
-    /// Calls made here by other hubs, by this table's id.
+    /// Calls made here by other hubs, by this table's id: one per call pending on the
+    /// table with the federation as its caller, so bounded by the table's limit of
+    /// pending calls per caller (past it a call is answered `Busy`). Each goes when the
+    /// table ends its call, which it does for every call (answer, deadline, cancel).
     incoming: HashMap<CallId, Incoming>,
-    /// And by the calling hub's id, for its cancels.
+    /// The same calls by the calling hub's id, for its cancels (never more than above).
     incoming_ids: HashMap<(String, CallId), CallId>,
-    /// Calls this hub sent elsewhere: the hub each went to.
+    /// Calls this hub sent elsewhere: the hub each went to, kept while its Zenoh query
+    /// is open. The table's limit of pending calls per provider bounds the calls in
+    /// flight; a query outlives its call here by at most [`DEADLINE_SLACK`], except for a
+    /// goal without a deadline that ended here first (cancelled, its caller gone): its
+    /// query waits for the far hub's answer, or for that hub to leave, at most
+    /// [`GOAL_QUERY_LIMIT`].
     outgoing: Arc<Mutex<HashMap<CallId, String>>>,
-    /// This hub's services and actions, offered as tokens.
+    /// This hub's services and actions, offered as tokens: one per service provided on
+    /// this hub.
     offered: HashMap<TopicName, LivelinessToken>,
 }
 

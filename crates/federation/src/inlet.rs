@@ -55,11 +55,16 @@ struct State {
     /// No-drop numbering: a robot that moved between hubs is heard from both, and each
     /// message is published once.
     mark: StreamMark,
-    /// The admitted hubs offering the topic, each with this hub's gate for it.
+    /// The admitted hubs offering the topic (as the topics loop sets them), each with
+    /// this hub's gate for it.
     from: HashMap<String, HubGate>,
-    /// Messages of admitted hubs whose offer has not arrived yet, oldest first.
+    /// Messages of admitted hubs whose offer has not arrived yet, oldest first. Only
+    /// admitted hubs are held, at most [`HOLD_MAX`] messages each (past it the oldest is
+    /// dropped and counted); what waited longer than [`HOLD`] is dropped the next time a
+    /// hub not offering sends or the offering hubs are set.
     held: HashMap<String, VecDeque<(Instant, MessageHeader, Bytes)>>,
-    /// Hubs whose messages a rule refused, told once.
+    /// Hubs whose messages a rule refused, told once: at most one per hub that offered
+    /// the topic while it was wanted here.
     told: std::collections::HashSet<String>,
 }
 

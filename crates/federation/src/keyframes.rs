@@ -50,6 +50,8 @@ const GATES_KEPT: usize = 1024;
 /// Asks waiting to leave, by topic (the sans-IO part of [`Asker`]).
 #[derive(Debug, Default)]
 pub struct Outgoing {
+    /// One per topic wanted here that asks, or asked within the last second: let go
+    /// once its second is over and nothing more is wanted ([`Outgoing::take_due`]).
     topics: HashMap<TopicName, Waiting>,
 }
 
@@ -200,7 +202,9 @@ pub enum Heard {
 /// The asks acted upon, by topic (the sans-IO part of [`Answerer`]).
 #[derive(Debug, Default)]
 pub struct Answers {
-    /// When each topic may next be marked.
+    /// When each topic may next be marked: one per video topic sent from here that was
+    /// acted upon within the last second (those whose second is over are let go
+    /// whenever an ask is acted upon).
     next: HashMap<TopicId, Instant>,
 }
 
@@ -229,6 +233,7 @@ struct AnswerState {
     answers: Answers,
     /// This hub's gate for each asking hub, kept so that a refusal is audited once, with
     /// the name it was made for (over plain TCP a hub's name comes with its token).
+    /// Admitted hubs only, at most [`GATES_KEPT`] (then it starts afresh).
     gates: HashMap<String, (HubName, HubGate)>,
 }
 

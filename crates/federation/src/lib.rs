@@ -290,8 +290,12 @@ pub struct Shared {
     pub hub_name: String,
     pub client: ClientId,
     pub counters: Counters,
+    /// Figures of each topic sent and received: one per topic the topics loop keeps an
+    /// entry for (kept and let go with it).
     pub exports: Mutex<BTreeMap<String, Arc<ExportFigures>>>,
     pub imports: Mutex<BTreeMap<String, Arc<ImportFigures>>>,
+    /// The hubs heard of, by Zenoh id: one per admitted hub that offered its name or a
+    /// robot, removed with its name token (robots and all).
     pub peers: Mutex<BTreeMap<String, Peer>>,
     /// Which hubs are admitted, by the certificates their links show.
     pub admission: Arc<Admission>,

@@ -27,110 +27,35 @@
 //! the keyframe asks of video topics cross both ways beside the messages
 //! ([`crate::keyframes`]).
 
-use std::collections::{BTreeSet, HashMap, HashSet};
+mod listen;
+mod news;
+mod outlet;
+mod services;
+
+use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
+use std::sync::Arc;
 use std::sync::atomic::Ordering::Relaxed;
-use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use fleetlink_hub::registry::Registry;
 use fleetlink_proto::Schema;
-use fleetlink_relay::outbox::Taken;
-use fleetlink_relay::router::{SubOptions, SubscriptionId, Target, TopicsWatch};
-use fleetlink_relay::{Outbox, Router, Topic, TopicId, TopicName};
-use tokio::sync::Notify;
+use fleetlink_relay::router::{SubscriptionId, TopicsWatch};
+use fleetlink_relay::{Outbox, Router, TopicId, TopicName};
 use tokio_util::sync::CancellationToken;
 use zenoh::Session;
 use zenoh::liveliness::LivelinessToken;
-use zenoh::pubsub::{Publisher, Subscriber};
-use zenoh::qos::CongestionControl;
-use zenoh::sample::{Locality, SampleKind};
+use zenoh::pubsub::Subscriber;
+use zenoh::sample::SampleKind;
 
-use crate::inlet::Inlet;
 use crate::keyframes::{self, Answerer, Asker};
-use crate::keys::{self, MessageHeader, Offer};
-use crate::{ExportFigures, FederationError, ImportFigures, Shared, zerr};
+use crate::keys::{self, Offer};
+use crate::{ExportFigures, FederationError, ImportFigures, Peer, Shared, zerr};
+use listen::Listening;
+use news::{Inbox, News, NewsKey, Parked};
+use outlet::Outlets;
+use services::Services;
 
-/// Tokens kept per hub not admitted yet (its links' certificates not seen yet): a hub
-/// joining offers its whole catalog at once; beyond this it is offering too much to be one.
-const PARKED_PER_HUB: usize = 100_000;
-
-/// Which hub provides each remote service or action this hub routes calls to.
-pub type Providers = Arc<Mutex<HashMap<TopicName, String>>>;
-
-/// What the catalog's tokens and the definitions asked of other hubs tell the topic loop.
-enum News {
-    Token {
-        hub: String,
-        offer: Offer,
-        put: bool,
-    },
-    Schema {
-        name: TopicName,
-        schema: Schema,
-    },
-}
-
-/// The topic loop's news, coalesced. Zenoh hands the catalog's tokens to a callback on its
-/// own threads, which must not wait; rather than queueing every change there, a token's
-/// latest state replaces the one not read yet (a hub offering and withdrawing a topic a
-/// thousand times leaves one entry), so what waits is bounded by the tokens there are and
-/// the definitions asked for. They are read in the order each was first heard; one
-/// token's state never depends on another's, so the end state is the one a queue gives.
-#[derive(Default)]
-struct Inbox {
-    pending: Mutex<Pending>,
-    ready: Notify,
-}
-
-#[derive(Default)]
-struct Pending {
-    order: Vec<NewsKey>,
-    latest: HashMap<NewsKey, News>,
-}
-
-/// What a piece of news replaces: a token by its key expression, a definition by topic.
-#[derive(Clone, PartialEq, Eq, Hash)]
-enum NewsKey {
-    Token(String),
-    Schema(TopicName),
-}
-
-impl Inbox {
-    fn post(&self, key: NewsKey, news: News) {
-        let mut p = self.pending.lock().unwrap_or_else(|p| p.into_inner());
-        if p.latest.insert(key.clone(), news).is_none() {
-            p.order.push(key);
-        }
-        drop(p);
-        self.ready.notify_one();
-    }
-
-    /// Everything posted since the last call, oldest first.
-    fn take(&self) -> Vec<News> {
-        let Pending { order, mut latest } =
-            std::mem::take(&mut *self.pending.lock().unwrap_or_else(|p| p.into_inner()));
-        order.iter().filter_map(|k| latest.remove(k)).collect()
-    }
-}
-
-/// What the pump needs of a topic this hub sends.
-///
-/// Design choice: a declared `Publisher` only for a topic that is both wanted elsewhere
-/// and published here; the quiet subscriptions a hub holds for topics nobody publishes
-/// there (yet) send through `Session::put` if a message comes before the publisher.
-/// Zenoh 1.10 matches every new declaration against all it knows
-/// (`Resource::get_matches`), so a publisher declared for each of 10,000 topics wanted
-/// elsewhere kept an idle hub busy for many seconds; a declared publisher is cheaper per
-/// message than a put. A no-drop topic's messages always go by put with congestion
-/// control `Block` (they wait for room in Zenoh's queues); the rest drop under
-/// congestion rather than stall every topic behind one slow hub. Whether a topic is
-/// no-drop is known only when its robot advertises, possibly after another hub wanted it.
-struct Outlet {
-    key: zenoh::key_expr::KeyExpr<'static>,
-    publisher: Option<Publisher<'static>>,
-    topic: Arc<Topic>,
-    figures: Arc<ExportFigures>,
-}
+pub use services::Providers;
 
 /// Everything the federation does about one topic name.
 #[derive(Default)]
@@ -165,40 +90,34 @@ impl Entry {
     }
 }
 
-/// A topic wanted here: the want token, the Zenoh subscriber to every hub's key for it,
-/// and the intake that decides what of it is taken ([`Inlet`]).
-struct Listening {
-    _want: LivelinessToken,
-    _sub: Subscriber<()>,
-    inlet: Arc<Inlet>,
-}
-
-/// A remote service or action: the hubs offering it, with type and kind.
-#[derive(Default)]
-struct RemoteService {
-    from: HashMap<String, (String, bool)>,
-}
-
 pub struct Topics {
     session: Session,
     router: Arc<Router>,
     shared: Arc<Shared>,
     watch: Arc<TopicsWatch>,
     outbox: Arc<Outbox>,
-    outlets: Arc<Mutex<HashMap<TopicId, Arc<Outlet>>>>,
+    /// One per topic another hub wants ([`outlet`]).
+    outlets: Outlets,
+    /// One per topic name that something is done about: offered here or by an admitted
+    /// hub, wanted here or by one, imported or sent; let go when nothing is
+    /// ([`Entry::is_empty`]).
     entries: HashMap<TopicName, Entry>,
-    /// Names that cannot be key expressions, logged once.
+    /// Names published here that cannot be key expressions, logged once: one per such
+    /// name for the hub's life (names of this hub's publishers, not of other hubs).
     refused: BTreeSet<String>,
+    /// Coalesced by token ([`Inbox`]).
     inbox: Arc<Inbox>,
     _catalog: Subscriber<()>,
     /// Keyframe asks of the topics wanted here, and the other hubs' asks heard.
     asker: Arc<Asker>,
     _keyframes: Subscriber<()>,
+    /// The robots online here, offered as tokens.
     robots: HashMap<String, LivelinessToken>,
-    services: HashMap<TopicName, RemoteService>,
-    providers: Providers,
-    /// Tokens of hubs not admitted (yet), by hub: taken when the hub is admitted.
-    parked: HashMap<String, Vec<(Offer, bool)>>,
+    /// One per service or action an admitted hub offers.
+    services: Services,
+    /// Tokens of hubs not admitted (yet), by hub: taken when the hub is admitted; bounded
+    /// in hubs and in tokens per hub ([`Parked`]).
+    parked: Parked,
 }
 
 impl Topics {
@@ -233,11 +152,12 @@ impl Topics {
         let keyframes = keyframes::answer(&session, answerer).await?;
         Ok(Topics {
             watch: router.watch_topics(),
+            services: Services::new(router.clone(), shared.client),
             session,
             router,
             shared,
             outbox,
-            outlets: Arc::default(),
+            outlets: Outlets::default(),
             entries: HashMap::new(),
             refused: BTreeSet::new(),
             inbox,
@@ -245,18 +165,16 @@ impl Topics {
             asker: Arc::default(),
             _keyframes: keyframes,
             robots: HashMap::new(),
-            services: HashMap::new(),
-            providers: Arc::default(),
-            parked: HashMap::new(),
+            parked: Parked::default(),
         })
     }
 
     pub fn providers(&self) -> Providers {
-        self.providers.clone()
+        self.services.providers()
     }
 
     pub async fn run(mut self, registry: Arc<Registry>, stop: CancellationToken) {
-        let pump = pump(
+        let pump = outlet::pump(
             self.session.clone(),
             self.outbox.clone(),
             self.outlets.clone(),
@@ -315,29 +233,26 @@ impl Topics {
     }
 
     /// Takes the parked tokens of hubs admitted since.
+    /// Takes the parked tokens of hubs admitted since. Hubs refused keep nothing parked;
+    /// a hub that left withdrew its tokens, which let it go already.
     fn unpark(&mut self, touched: &mut HashSet<TopicName>) {
-        let now: Vec<String> = self
-            .parked
-            .keys()
-            .filter(|h| self.shared.admission.is_admitted(h))
-            .cloned()
-            .collect();
-        for hub in now {
-            for (offer, put) in self.parked.remove(&hub).unwrap_or_default() {
+        let admission = self.shared.admission.clone();
+        let now = self.parked.take(
+            |h| admission.is_admitted(h),
+            |h| admission.refusal(h).is_some(),
+        );
+        for (hub, offers) in now {
+            for offer in offers {
                 self.on_news(
                     News::Token {
                         hub: hub.clone(),
                         offer,
-                        put,
+                        put: true,
                     },
                     touched,
                 );
             }
         }
-        // Hubs refused or gone for good keep nothing parked for long.
-        let admission = &self.shared.admission;
-        self.parked
-            .retain(|hub, _| admission.refusal(hub).is_none());
     }
 
     fn on_news(&mut self, news: News, touched: &mut HashSet<TopicName>) {
@@ -345,14 +260,7 @@ impl Topics {
             && !self.shared.admission.is_admitted(hub)
         {
             // Nothing a hub offers or wants counts before a link shows its certificate.
-            let tokens = self.parked.entry(hub.clone()).or_default();
-            if *put {
-                if tokens.len() < PARKED_PER_HUB {
-                    tokens.push((offer.clone(), true));
-                }
-            } else {
-                tokens.retain(|(o, _)| o != offer);
-            }
+            self.parked.note(hub, offer, *put);
             return;
         }
         match news {
@@ -388,17 +296,14 @@ impl Topics {
                     touched.insert(name);
                 }
                 Offer::Service { name, type_name } => {
-                    self.service(hub, name, type_name, false, put)
+                    self.services.offer(hub, name, type_name, false, put)
                 }
-                Offer::Action { name, type_name } => self.service(hub, name, type_name, true, put),
+                Offer::Action { name, type_name } => {
+                    self.services.offer(hub, name, type_name, true, put)
+                }
                 Offer::Robot { name } => {
                     let mut peers = self.shared.peers.lock().unwrap_or_else(|p| p.into_inner());
-                    let peer = peers.entry(hub).or_default();
-                    if put {
-                        peer.robots.insert(name);
-                    } else {
-                        peer.robots.remove(&name);
-                    }
+                    note_robot(&mut peers, hub, name, put);
                 }
                 Offer::Hub { name } => {
                     // Over TLS a hub is known by its certificate's name, not by this token.
@@ -529,7 +434,15 @@ impl Topics {
         if demand && e.listening.is_none() {
             if let Some(t) = &topic {
                 let figures = e.import_figures.get_or_insert_with(Arc::default).clone();
-                match self.want(name, t.clone(), figures).await {
+                let want = listen::want(
+                    &self.session,
+                    &self.shared,
+                    &self.asker,
+                    name,
+                    t.clone(),
+                    figures,
+                );
+                match want.await {
                     Ok(l) => e.listening = Some(l),
                     Err(err) => tracing::warn!("federation: cannot subscribe to {name}: {err}"),
                 }
@@ -549,7 +462,7 @@ impl Topics {
         // 4. Send while another hub wants it.
         let wanted = !e.wanted_by.is_empty();
         if wanted && e.sending.is_none() {
-            match self.send(name).await {
+            match self.outlets.open(&self.router, &self.shared, name).await {
                 Ok((sid, id, figures)) => {
                     e.sending = Some((sid, id));
                     e.export_figures = Some(figures);
@@ -558,13 +471,10 @@ impl Topics {
             }
         } else if !wanted && let Some((sid, id)) = e.sending.take() {
             self.router.unsubscribe(me, sid);
-            self.outlets
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .remove(&id);
+            self.outlets.close(id);
         }
         if let (Some((_, id)), Some(_)) = (e.sending, &e.offer) {
-            self.declare_publisher(id).await;
+            self.outlets.declare_publisher(&self.session, id).await;
         }
         if e.offer.is_some() || e.sending.is_some() {
             let f = e.export_figures.get_or_insert_with(Arc::default);
@@ -612,161 +522,6 @@ impl Topics {
             }
         }
     }
-
-    /// The want token that tells the hubs with publishers to send `name`, and one Zenoh
-    /// subscriber to what any hub puts of it, taken by an [`Inlet`] (declared while
-    /// someone here subscribes, whether or not a hub offers it yet).
-    async fn want(
-        &self,
-        name: &TopicName,
-        topic: Arc<Topic>,
-        figures: Arc<ImportFigures>,
-    ) -> Result<Listening, FederationError> {
-        let not_a_key = || FederationError::Zenoh(format!("{name} cannot be a Zenoh key"));
-        let want = keys::offer_key(
-            &self.shared.fleet,
-            &self.shared.me,
-            &Offer::Want {
-                name: name.as_str().to_owned(),
-            },
-        )
-        .ok_or_else(not_a_key)?;
-        let key = keys::topic_key(&self.shared.fleet, "*", name.as_str()).ok_or_else(not_a_key)?;
-        let inlet = Inlet::new(topic, self.shared.clone(), figures, self.asker.clone());
-        let prefix = format!("{}/t/", keys::root(&self.shared.fleet));
-        let shared = self.shared.clone();
-        let into = inlet.clone();
-        let sub = self
-            .session
-            .declare_subscriber(key)
-            .allowed_origin(Locality::Remote)
-            .callback(move |sample| {
-                let counters = &shared.counters;
-                let Some(hub) = sample
-                    .key_expr()
-                    .as_str()
-                    .strip_prefix(&prefix)
-                    .and_then(|rest| rest.split('/').next())
-                else {
-                    counters.malformed.fetch_add(1, Relaxed);
-                    return;
-                };
-                let header = match sample
-                    .attachment()
-                    .map(|a| MessageHeader::decode(&a.to_bytes()))
-                {
-                    Some(Ok(h)) => h,
-                    Some(Err(e)) => {
-                        counters.malformed.fetch_add(1, Relaxed);
-                        tracing::debug!("federation: message on {}: {e}", sample.key_expr());
-                        return;
-                    }
-                    None => {
-                        counters.malformed.fetch_add(1, Relaxed);
-                        return;
-                    }
-                };
-                let bytes = bytes::Bytes::from(sample.payload().to_bytes().into_owned());
-                into.take(hub, header, bytes, Instant::now());
-            })
-            .await
-            .map_err(zerr)?;
-        let token = self
-            .session
-            .liveliness()
-            .declare_token(want)
-            .await
-            .map_err(zerr)?;
-        Ok(Listening {
-            _want: token,
-            _sub: sub,
-            inlet,
-        })
-    }
-
-    /// Subscribes here on behalf of the hubs that want `name`, with a Zenoh publisher for
-    /// what arrives.
-    async fn send(
-        &self,
-        name: &TopicName,
-    ) -> Result<(SubscriptionId, TopicId, Arc<ExportFigures>), FederationError> {
-        let key = keys::topic_key(&self.shared.fleet, &self.shared.me, name.as_str())
-            .ok_or_else(|| FederationError::Zenoh(format!("{name} cannot be a Zenoh key")))?;
-        let sid = self
-            .router
-            .subscribe(
-                self.shared.client,
-                Target::Exact(name.clone()),
-                SubOptions {
-                    unlisted: true,
-                    ..SubOptions::default()
-                },
-            )
-            .map_err(|e| FederationError::Zenoh(e.to_string()))?;
-        let topic = self
-            .router
-            .topic(name)
-            .expect("a subscription keeps its topic");
-        let key = match zenoh::key_expr::KeyExpr::try_from(key) {
-            Ok(k) => k,
-            Err(e) => {
-                self.router.unsubscribe(self.shared.client, sid);
-                return Err(zerr(e));
-            }
-        };
-        let figures = Arc::new(ExportFigures::default());
-        let id = topic.id();
-        self.outlets
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .insert(
-                id,
-                Arc::new(Outlet {
-                    key,
-                    publisher: None,
-                    topic,
-                    figures: figures.clone(),
-                }),
-            );
-        Ok((sid, id, figures))
-    }
-
-    /// Gives the outlet of topic `id` a declared publisher, once.
-    async fn declare_publisher(&self, id: TopicId) {
-        let Some(o) = self
-            .outlets
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .get(&id)
-            .filter(|o| o.publisher.is_none())
-            .cloned()
-        else {
-            return;
-        };
-        let declared = self
-            .session
-            .declare_publisher(o.key.clone())
-            .congestion_control(CongestionControl::Drop)
-            .allowed_destination(Locality::Remote)
-            .await;
-        match declared {
-            Ok(p) => {
-                let with = Arc::new(Outlet {
-                    key: o.key.clone(),
-                    publisher: Some(p),
-                    topic: o.topic.clone(),
-                    figures: o.figures.clone(),
-                });
-                let mut outlets = self.outlets.lock().unwrap_or_else(|p| p.into_inner());
-                // Still the same outlet (not withdrawn meanwhile).
-                if outlets.get(&id).is_some_and(|cur| Arc::ptr_eq(cur, &o)) {
-                    outlets.insert(id, with);
-                }
-            }
-            Err(e) => tracing::debug!("federation: publisher for {}: {e}", o.key),
-        }
-    }
-
     /// Asks `hub` for the full definition of `name`'s type; the answer comes back as news.
     fn ask_schema(&self, hub: String, name: TopicName) {
         let Some(chunks) = keys::name_chunks(name.as_str()) else {
@@ -803,52 +558,6 @@ impl Topics {
             }
         });
     }
-
-    /// A remote hub offers (or withdrew) a service or action: this hub provides it through
-    /// the federation while no client here provides it itself.
-    fn service(&mut self, hub: String, name: String, type_name: String, action: bool, put: bool) {
-        let Ok(name) = TopicName::parse(&name) else {
-            return;
-        };
-        let me = self.shared.client;
-        let calls = &self.router.calls;
-        let entry = self.services.entry(name.clone()).or_default();
-        if put {
-            entry.from.insert(hub, (type_name, action));
-        } else if entry
-            .from
-            .get(&hub)
-            .is_some_and(|(t, a)| *t == type_name && *a == action)
-        {
-            entry.from.remove(&hub);
-        } else {
-            return;
-        }
-        let mut providers = self.providers.lock().unwrap_or_else(|p| p.into_inner());
-        // Keep the current provider hub while it offers; otherwise take any other.
-        let next = match providers.get(&name) {
-            Some(h) if entry.from.contains_key(h) => Some(h.clone()),
-            _ => entry.from.keys().next().cloned(),
-        };
-        match next {
-            Some(h) => {
-                if calls.service(&name).is_some_and(|s| s.provider != me) {
-                    return; // a client here provides it: calls stay on this hub
-                }
-                let (type_name, action) = entry.from[&h].clone();
-                providers.insert(name.clone(), h);
-                drop(providers);
-                calls.advertise(me, name, Schema::named(type_name), action);
-            }
-            None => {
-                providers.remove(&name);
-                drop(providers);
-                self.services.remove(&name);
-                calls.unadvertise(me, &name);
-            }
-        }
-    }
-
     /// Offers the robots online here, withdraws those that left.
     async fn sync_robots(&mut self, registry: &Registry) {
         let online: BTreeSet<String> = registry.list().iter().map(|r| r.name.clone()).collect();
@@ -871,74 +580,14 @@ impl Topics {
     }
 }
 
-/// Puts what the federation's subscriptions receive into Zenoh: each message once, its
-/// payload as it is (a reference to the received bytes, no copy), the header beside it.
-async fn pump(
-    session: Session,
-    outbox: Arc<Outbox>,
-    outlets: Arc<Mutex<HashMap<TopicId, Arc<Outlet>>>>,
-    shared: Arc<Shared>,
-    stop: CancellationToken,
-) {
-    let mut items: Vec<Taken> = Vec::new();
-    let mut batch: Vec<(Arc<Outlet>, Arc<fleetlink_relay::Message>)> = Vec::new();
-    loop {
-        outbox.take_into(&mut items, 256, 1 << 20, Instant::now());
-        if items.is_empty() {
-            if outbox.is_closed() {
-                return;
-            }
-            tokio::select! {
-                _ = stop.cancelled() => return,
-                _ = outbox.ready() => continue,
-            }
-        }
-        {
-            let outlets = outlets.lock().unwrap_or_else(|p| p.into_inner());
-            for (_, _, msg) in items.drain(..) {
-                if let Some(o) = outlets.get(&msg.topic.id) {
-                    batch.push((o.clone(), msg));
-                }
-            }
-        }
-        for (o, msg) in batch.drain(..) {
-            let epoch = o.topic.reliable_epoch();
-            let header = MessageHeader {
-                encoding: msg.payload.encoding,
-                seq: msg.seq,
-                stamp_ns: msg.stamp_ns,
-                reliable: epoch,
-            };
-            let len = msg.payload.len() as u64;
-            let payload = zenoh::bytes::ZBytes::from(msg.payload.bytes.clone());
-            let put = match (&o.publisher, epoch) {
-                (Some(p), None) => p.put(payload).attachment(header.encode()).await,
-                (_, reliable) => {
-                    let congestion = if reliable.is_some() {
-                        CongestionControl::Block
-                    } else {
-                        CongestionControl::Drop
-                    };
-                    session
-                        .put(&o.key, payload)
-                        .attachment(header.encode())
-                        .congestion_control(congestion)
-                        .allowed_destination(Locality::Remote)
-                        .await
-                }
-            };
-            match put {
-                Ok(()) => {
-                    o.figures.sent.fetch_add(1, Relaxed);
-                    shared.counters.sent.fetch_add(1, Relaxed);
-                    shared.counters.sent_bytes.fetch_add(len, Relaxed);
-                }
-                Err(e) => {
-                    shared.counters.send_failed.fetch_add(1, Relaxed);
-                    tracing::debug!("federation: put on {} failed: {e}", msg.topic.name);
-                }
-            }
-        }
+/// Hub `hub` offers (`put`) or withdrew robot `name`. A withdrawal never makes an entry:
+/// a hub that left is removed with its robots, whatever order the ends of its tokens
+/// come in, and leaves nothing behind.
+fn note_robot(peers: &mut BTreeMap<String, Peer>, hub: String, name: String, put: bool) {
+    if put {
+        peers.entry(hub).or_default().robots.insert(name);
+    } else if let Some(peer) = peers.get_mut(&hub) {
+        peer.robots.remove(&name);
     }
 }
 
@@ -946,47 +595,20 @@ async fn pump(
 mod tests {
     use super::*;
 
-    fn token(inbox: &Inbox, key: &str, name: &str, put: bool) {
-        let offer = Offer::Want { name: name.into() };
-        let news = News::Token {
-            hub: "h1".into(),
-            offer,
-            put,
-        };
-        inbox.post(NewsKey::Token(key.into()), news);
-    }
-
-    /// (name, put) of each token read.
-    fn read(inbox: &Inbox) -> Vec<(String, bool)> {
-        inbox
-            .take()
-            .into_iter()
-            .map(|n| match n {
-                News::Token {
-                    offer: Offer::Want { name },
-                    put,
-                    ..
-                } => (name, put),
-                _ => panic!("only wants were posted"),
-            })
-            .collect()
-    }
-
     #[test]
-    fn news_of_one_token_coalesce_to_its_latest_state_in_first_heard_order() {
-        let inbox = Inbox::default();
-        for i in 0..1000 {
-            token(&inbox, "k/a", "/a", i % 2 == 0);
-        }
-        token(&inbox, "k/b", "/b", true);
-        token(&inbox, "k/a", "/a", true);
-        token(&inbox, "k/b", "/b", false);
-        assert_eq!(
-            read(&inbox),
-            [("/a".to_owned(), true), ("/b".to_owned(), false)]
-        );
-        assert!(read(&inbox).is_empty(), "what was read is gone");
-        token(&inbox, "k/a", "/a", false);
-        assert_eq!(read(&inbox), [("/a".to_owned(), false)]);
+    fn a_hub_that_left_leaves_no_peer_behind_whatever_the_order_of_its_tokens() {
+        let mut peers = BTreeMap::new();
+        note_robot(&mut peers, "h1".into(), "r1".into(), true);
+        note_robot(&mut peers, "h1".into(), "r2".into(), true);
+        // The hub's own token ends first: it is removed with its robots ...
+        peers.remove("h1");
+        // ... and the ends of its robots' tokens that come after bring nothing back.
+        note_robot(&mut peers, "h1".into(), "r1".into(), false);
+        note_robot(&mut peers, "h1".into(), "r2".into(), false);
+        assert!(peers.is_empty());
+
+        note_robot(&mut peers, "h2".into(), "r3".into(), true);
+        note_robot(&mut peers, "h2".into(), "r3".into(), false);
+        assert!(peers["h2"].robots.is_empty(), "a hub still there stays");
     }
 }

@@ -265,30 +265,56 @@ fn run(mut job: Job, client: ClientId, outbox: Arc<Outbox>) {
     }
     // Nothing more enters the queue; what is in it is the recording's tail.
     router.disconnect(client);
-    if failure.is_none() {
-        let tc = router.transcoder();
-        outbox.take_into(&mut items, usize::MAX, usize::MAX, Instant::now());
-        for (_, _, msg) in items.drain(..) {
-            if !job
-                .gate
-                .allows_topic(msg.topic.id.0, msg.topic.name.as_str(), Op::Subscribe)
-            {
-                refused_total += 1;
-                continue;
-            }
-            if let Some((f, _, _)) = file.as_mut()
-                && let Err(e) = f.write(&msg, tc)
-            {
-                failure = Some(format!("writing {}: {e}", f.path().display()));
-                break;
-            }
-        }
+    if failure.is_none()
+        && let Err(e) = write_tail(&mut job, &outbox, &mut items, &mut file, &mut refused_total)
+    {
+        failure = Some(e);
     }
     if let Some((f, _, d0)) = file.take()
         && let Err(e) = close(&job, f, d0, &outbox, &mut unconvertible_done)
     {
         failure.get_or_insert(e);
     }
+    conclude(&job, &outbox, refused_total, unconvertible_done, failure);
+}
+
+/// Writes what is left in the queue once the recorder has left the router (the
+/// recording's tail) into the open file, if there is one; stops at the first failure.
+fn write_tail(
+    job: &mut Job,
+    outbox: &Outbox,
+    items: &mut Vec<Taken>,
+    file: &mut Option<(McapFile, Instant, u64)>,
+    refused_total: &mut u64,
+) -> Result<(), String> {
+    let router = job.router.clone();
+    let tc = router.transcoder();
+    outbox.take_into(items, usize::MAX, usize::MAX, Instant::now());
+    for (_, _, msg) in items.drain(..) {
+        if !job
+            .gate
+            .allows_topic(msg.topic.id.0, msg.topic.name.as_str(), Op::Subscribe)
+        {
+            *refused_total += 1;
+            continue;
+        }
+        if let Some((f, _, _)) = file.as_mut()
+            && let Err(e) = f.write(&msg, tc)
+        {
+            return Err(format!("writing {}: {e}", f.path().display()));
+        }
+    }
+    Ok(())
+}
+
+/// The recording's final figures and state (`failure`: why it failed), kept.
+fn conclude(
+    job: &Job,
+    outbox: &Outbox,
+    refused_total: u64,
+    unconvertible_done: u64,
+    failure: Option<String>,
+) {
     let dropped = outbox.dropped.load(Relaxed);
     job.shared.update(|i| {
         i.dropped = dropped;

@@ -11,16 +11,18 @@
 //! clock.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Duration;
 
 use fleetlink_proto::Payload;
-use fleetlink_relay::calls::{CallEvent, CallId, CallOptions, CallStatus, ChannelPeer, PeerMsg};
+use fleetlink_relay::calls::{
+    CallEvent, CallId, CallOptions, CallRefused, CallStatus, ChannelPeer, PeerMsg, PeerReceiver,
+};
 use fleetlink_relay::gate::{Gate, Op};
 use fleetlink_relay::outbox::Taken;
 use fleetlink_relay::router::{ClientKind, SubOptions, Target};
-use fleetlink_relay::{ClientId, Router, TopicName};
+use fleetlink_relay::{ClientId, Outbox, Router, TopicName};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use tokio::time::Instant;
@@ -199,23 +201,7 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
         TopicName::parse(&format!("/{robot}{FETCH_SERVICE}")).map_err(|e| format!("robot: {e}"))?;
     let data =
         TopicName::parse(&format!("/{robot}{DATA_TOPIC}")).map_err(|e| format!("robot: {e}"))?;
-    let router = &job.router;
-    let (client, outbox) = router.connect(
-        ClientKind::Internal {
-            role: "blackbox fetch".into(),
-        },
-        None,
-    );
-    let _member = Member(router.clone(), client);
-    let sub = SubOptions {
-        queue_length: 256,
-        ..SubOptions::default()
-    };
-    router
-        .subscribe(client, Target::Exact(data), sub)
-        .map_err(|e| e.to_string())?;
-    let (peer, calls) = ChannelPeer::new();
-    router.calls.attach(client, peer);
+    let (client, outbox, calls, _member) = join(&job.router, data)?;
     let label = info.spec.name.clone().unwrap_or_else(|| id.clone());
     let final_name = format!("{label}.mcap");
     let part = job.dir.join(format!("{final_name}.part"));
@@ -230,18 +216,23 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
         received: 0,
         last: Instant::now(),
     };
-    let mut reply: Option<FetchReply> = None;
-    let mut asked_to = 0u64;
-    let mut asked_at = Instant::now();
-    let mut pending: Option<(CallId, u64)> = None;
-    let mut retry_at: Option<Instant> = None;
+    let mut asking = Asking::new(Instant::now());
     let mut last_persist = Instant::now();
     let mut items: Vec<Taken> = Vec::new();
-    let (mut calls_made, mut resumed) = (0u64, 0u64);
-    // Since when the robot has been online without the service.
-    let mut no_service: Option<Instant> = None;
+    let slice = Slice {
+        job,
+        id: &id,
+        robot: &robot,
+        range: &bb.range,
+        service: &service,
+        client,
+    };
     loop {
-        if reply.as_ref().is_some_and(|r| got.received >= r.size) {
+        if asking
+            .reply
+            .as_ref()
+            .is_some_and(|r| got.received >= r.size)
+        {
             break;
         }
         if job.shared.stop.is_cancelled() {
@@ -254,135 +245,20 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
                 GIVE_UP.as_secs() / 60
             ));
         }
-        if pending.is_none() && retry_at.is_none_or(|t| now >= t) {
-            let stalled = reply.is_some()
-                && got.received < asked_to
-                && now >= asked_at + STALL
-                && now >= got.last + STALL;
-            if stalled {
-                asked_to = got.received;
-                resumed += 1;
-                tracing::info!(recording = %id, "black-box pieces stopped at byte {}; asking again", got.received);
-            }
-            let more = match &reply {
-                None => true,
-                Some(r) => asked_to < r.size && got.received + WINDOW / 2 >= asked_to,
-            };
-            if more {
-                let req = FetchRequest {
-                    slice: id.clone(),
-                    range: bb.range.clone(),
-                    offset: asked_to,
-                    window: WINDOW,
-                };
-                let body = serde_json::to_vec(&req).map_err(|e| e.to_string())?;
-                let opts = CallOptions {
-                    timeout: Some(CALL_TIMEOUT),
-                    ..CallOptions::default()
-                };
-                calls_made += 1;
-                asked_at = now;
-                retry_at = None;
-                match router
-                    .calls
-                    .call(client, &service, Payload::json(body), opts)
-                {
-                    Ok(call) => pending = Some((call, asked_to)),
-                    Err(refused) => {
-                        tracing::debug!(recording = %id, "fetch call refused: {}", refused.text);
-                        let online = (job.online)(&robot);
-                        if online && refused.status == CallStatus::NoProvider {
-                            let since = *no_service.get_or_insert(now);
-                            if now >= since + NO_SERVICE {
-                                return Err(format!(
-                                    "{robot} is online but keeps no black box (its agent has no \
-                                     blackbox: section)"
-                                ));
-                            }
-                        } else {
-                            no_service = None;
-                        }
-                        let why = if online {
-                            format!("{robot} does not offer its black box yet")
-                        } else {
-                            format!("{robot} is offline; the fetch goes on when it is back")
-                        };
-                        job.shared.update(|i| {
-                            if let Some(b) = &mut i.blackbox {
-                                b.waiting = Some(why);
-                            }
-                        });
-                        retry_at = Some(now + RETRY);
-                    }
-                }
-            }
-        }
-        // Nothing to wait for but the clock: a retry, a stall's deadline, the give-up.
-        let mut wake = got.last + GIVE_UP;
-        if pending.is_none() {
-            match retry_at {
-                Some(t) => wake = wake.min(t),
-                None if reply.is_some() && got.received < asked_to => {
-                    wake = wake.min(asked_at.max(got.last) + STALL);
-                }
-                None => {}
-            }
-        }
+        asking.ask(&slice, &got, now)?;
+        let wake = asking.wake(&got);
         tokio::select! {
             m = calls.recv() => match m {
                 Some(PeerMsg::Event(CallEvent::Done { id: call, status, payload, text }))
-                    if pending.is_some_and(|(p, _)| p == call) =>
+                    if asking.pending.is_some_and(|(p, _)| p == call) =>
                 {
-                    let (_, offset) = pending.take().expect("matched above");
-                    match status {
-                        CallStatus::Ok => {
-                            let r: FetchReply = payload
-                                .as_ref()
-                                .and_then(|p| serde_json::from_slice(&p.bytes).ok())
-                                .ok_or_else(|| format!("{robot} answered the fetch with something that is not a slice's description"))?;
-                            asked_to = asked_to.max(offset.saturating_add(WINDOW)).min(r.size);
-                            reply = Some(r);
-                            no_service = None;
-                        }
-                        CallStatus::NoProvider | CallStatus::Timeout | CallStatus::Busy | CallStatus::Aborted => {
-                            // The robot is away or its link is: ask again from where the file ends.
-                            asked_to = got.received;
-                            retry_at = Some(Instant::now() + RETRY);
-                        }
-                        _ => return Err(format!("{robot}: {text}")),
-                    }
-                    let waiting = (status != CallStatus::Ok).then(|| format!("{robot}: {text}"));
-                    job.shared.update(|i| {
-                        if let Some(b) = &mut i.blackbox {
-                            b.waiting = waiting;
-                            b.size = reply.as_ref().map(|r| r.size);
-                            b.sha256 = reply.as_ref().map(|r| r.sha256.clone());
-                            b.calls = calls_made;
-                            b.resumed = resumed;
-                        }
-                    });
+                    asking.answered(&slice, got.received, status, payload, &text)?;
                 }
                 Some(_) => {}
                 None => return Err("the hub is stopping".into()),
             },
             _ = outbox.ready() => {
-                outbox.take_into(&mut items, 256, 16 << 20, Instant::now().into_std());
-                let pieces: Vec<Arc<fleetlink_relay::Message>> = items.drain(..).map(|(_, _, m)| m).collect();
-                let mut writing = got;
-                let slice = id.clone();
-                got = on_disk(format!("writing {}", part.display()), move || {
-                    for m in &pieces {
-                        accept(&m.payload, &slice, &mut writing)?;
-                    }
-                    Ok(writing)
-                })
-                .await?;
-                job.shared.update(|i| {
-                    if let Some(b) = &mut i.blackbox {
-                        b.received = got.received;
-                    }
-                    i.bytes = got.received;
-                });
+                got = write_pieces(&slice, &outbox, &mut items, &part, got).await?;
                 if last_persist.elapsed() >= PERSIST_EVERY {
                     last_persist = Instant::now();
                     persist(job).await;
@@ -392,7 +268,262 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
             _ = job.shared.stop.cancelled() => {}
         }
     }
-    let r = reply.expect("the loop ends with a reply");
+    keep(&slice, got, asking, &part, &final_name).await
+}
+
+/// Joins the router for one fetch: subscribed to the robot's pieces, attached to the
+/// call table. The member leaves when dropped, on an error here too.
+fn join(
+    router: &Arc<Router>,
+    data: TopicName,
+) -> Result<(ClientId, Arc<Outbox>, PeerReceiver, Member), String> {
+    let (client, outbox) = router.connect(
+        ClientKind::Internal {
+            role: "blackbox fetch".into(),
+        },
+        None,
+    );
+    let member = Member(router.clone(), client);
+    let sub = SubOptions {
+        queue_length: 256,
+        ..SubOptions::default()
+    };
+    router
+        .subscribe(client, Target::Exact(data), sub)
+        .map_err(|e| e.to_string())?;
+    let (peer, calls) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    Ok((client, outbox, calls, member))
+}
+
+/// The slice one fetch asks for and of whom, the same for every call.
+struct Slice<'a> {
+    job: &'a FetchJob,
+    /// The recording's id, which is the slice's id on the robot.
+    id: &'a str,
+    robot: &'a str,
+    range: &'a SliceRange,
+    service: &'a TopicName,
+    /// The fetch's member of the router.
+    client: ClientId,
+}
+
+impl Slice<'_> {
+    /// Shows what the fetch waits for (`None`: nothing) and how far the asking is.
+    fn show(&self, f: impl FnOnce(&mut BlackBoxFetch)) {
+        self.job.shared.update(|i| {
+            if let Some(b) = &mut i.blackbox {
+                f(b);
+            }
+        });
+    }
+}
+
+/// Where the asking stands: what the robot said of the slice, how far it was asked for,
+/// the call in flight, and when the next may leave.
+struct Asking {
+    reply: Option<FetchReply>,
+    /// The end of the bytes asked for so far, and when the last call left.
+    asked_to: u64,
+    asked_at: Instant,
+    /// The call in flight and the offset it asked from.
+    pending: Option<(CallId, u64)>,
+    retry_at: Option<Instant>,
+    calls_made: u64,
+    resumed: u64,
+    /// Since when the robot has been online without the service.
+    no_service: Option<Instant>,
+}
+
+impl Asking {
+    fn new(now: Instant) -> Asking {
+        Asking {
+            reply: None,
+            asked_to: 0,
+            asked_at: now,
+            pending: None,
+            retry_at: None,
+            calls_made: 0,
+            resumed: 0,
+            no_service: None,
+        }
+    }
+
+    /// Makes the next call if one is due: the first, the next window once half of the
+    /// last is in, or from where the file ends once pieces stopped coming.
+    fn ask(&mut self, s: &Slice<'_>, got: &Progress, now: Instant) -> Result<(), String> {
+        if self.pending.is_some() || self.retry_at.is_some_and(|at| now < at) {
+            return Ok(());
+        }
+        let stalled = self.reply.is_some()
+            && got.received < self.asked_to
+            && now >= self.asked_at + STALL
+            && now >= got.last + STALL;
+        if stalled {
+            self.asked_to = got.received;
+            self.resumed += 1;
+            tracing::info!(recording = %s.id, "black-box pieces stopped at byte {}; asking again", got.received);
+        }
+        let more = match &self.reply {
+            None => true,
+            Some(r) => self.asked_to < r.size && got.received + WINDOW / 2 >= self.asked_to,
+        };
+        if !more {
+            return Ok(());
+        }
+        let req = FetchRequest {
+            slice: s.id.to_owned(),
+            range: s.range.clone(),
+            offset: self.asked_to,
+            window: WINDOW,
+        };
+        let body = serde_json::to_vec(&req).map_err(|e| e.to_string())?;
+        let opts = CallOptions {
+            timeout: Some(CALL_TIMEOUT),
+            ..CallOptions::default()
+        };
+        self.calls_made += 1;
+        self.asked_at = now;
+        self.retry_at = None;
+        match s
+            .job
+            .router
+            .calls
+            .call(s.client, s.service, Payload::json(body), opts)
+        {
+            Ok(call) => self.pending = Some((call, self.asked_to)),
+            Err(refused) => self.refused(s, refused, now)?,
+        }
+        Ok(())
+    }
+
+    /// A call the table refused: the robot is away, or offers no black box (yet). Tried
+    /// again after [`RETRY`]; a robot online without the service for [`NO_SERVICE`]
+    /// has none.
+    fn refused(&mut self, s: &Slice<'_>, refused: CallRefused, now: Instant) -> Result<(), String> {
+        let robot = s.robot;
+        tracing::debug!(recording = %s.id, "fetch call refused: {}", refused.text);
+        let online = (s.job.online)(robot);
+        if online && refused.status == CallStatus::NoProvider {
+            let since = *self.no_service.get_or_insert(now);
+            if now >= since + NO_SERVICE {
+                return Err(format!(
+                    "{robot} is online but keeps no black box (its agent has no \
+                     blackbox: section)"
+                ));
+            }
+        } else {
+            self.no_service = None;
+        }
+        let why = if online {
+            format!("{robot} does not offer its black box yet")
+        } else {
+            format!("{robot} is offline; the fetch goes on when it is back")
+        };
+        s.show(|b| b.waiting = Some(why));
+        self.retry_at = Some(now + RETRY);
+        Ok(())
+    }
+
+    /// When to look again with nothing else happening: a retry, a stall's deadline, the
+    /// give-up.
+    fn wake(&self, got: &Progress) -> Instant {
+        let mut wake = got.last + GIVE_UP;
+        if self.pending.is_none() {
+            match self.retry_at {
+                Some(t) => wake = wake.min(t),
+                None if self.reply.is_some() && got.received < self.asked_to => {
+                    wake = wake.min(self.asked_at.max(got.last) + STALL);
+                }
+                None => {}
+            }
+        }
+        wake
+    }
+
+    /// The robot answered the call in flight (`received`: the bytes at the hub now).
+    fn answered(
+        &mut self,
+        s: &Slice<'_>,
+        received: u64,
+        status: CallStatus,
+        payload: Option<Payload>,
+        text: &str,
+    ) -> Result<(), String> {
+        let robot = s.robot;
+        let (_, offset) = self.pending.take().expect("matched by the caller");
+        match status {
+            CallStatus::Ok => {
+                let r: FetchReply = payload
+                    .as_ref()
+                    .and_then(|p| serde_json::from_slice(&p.bytes).ok())
+                    .ok_or_else(|| format!("{robot} answered the fetch with something that is not a slice's description"))?;
+                self.asked_to = self.asked_to.max(offset.saturating_add(WINDOW)).min(r.size);
+                self.reply = Some(r);
+                self.no_service = None;
+            }
+            CallStatus::NoProvider
+            | CallStatus::Timeout
+            | CallStatus::Busy
+            | CallStatus::Aborted => {
+                // The robot is away or its link is: ask again from where the file ends.
+                self.asked_to = received;
+                self.retry_at = Some(Instant::now() + RETRY);
+            }
+            _ => return Err(format!("{robot}: {text}")),
+        }
+        let waiting = (status != CallStatus::Ok).then(|| format!("{robot}: {text}"));
+        s.show(|b| {
+            b.waiting = waiting;
+            b.size = self.reply.as_ref().map(|r| r.size);
+            b.sha256 = self.reply.as_ref().map(|r| r.sha256.clone());
+            b.calls = self.calls_made;
+            b.resumed = self.resumed;
+        });
+        Ok(())
+    }
+}
+
+/// Appends the pieces in the outbox to the file (on the blocking pool) and shows the
+/// bytes at the hub.
+async fn write_pieces(
+    s: &Slice<'_>,
+    outbox: &Outbox,
+    items: &mut Vec<Taken>,
+    part: &Path,
+    got: Progress,
+) -> Result<Progress, String> {
+    outbox.take_into(items, 256, 16 << 20, Instant::now().into_std());
+    let pieces: Vec<Arc<fleetlink_relay::Message>> = items.drain(..).map(|(_, _, m)| m).collect();
+    let mut writing = got;
+    let slice = s.id.to_owned();
+    let got = on_disk(format!("writing {}", part.display()), move || {
+        for m in &pieces {
+            accept(&m.payload, &slice, &mut writing)?;
+        }
+        Ok(writing)
+    })
+    .await?;
+    s.job.shared.update(|i| {
+        if let Some(b) = &mut i.blackbox {
+            b.received = got.received;
+        }
+        i.bytes = got.received;
+    });
+    Ok(got)
+}
+
+/// The whole slice is in: checks it against the robot's SHA-256 and keeps what the
+/// requester may read as the recording's file.
+async fn keep(
+    s: &Slice<'_>,
+    got: Progress,
+    asking: Asking,
+    part: &Path,
+    final_name: &str,
+) -> Result<(), String> {
+    let (job, id, robot) = (s.job, s.id, s.robot);
+    let r = asking.reply.expect("the loop ends with a reply");
     let mut file = got.file;
     on_disk(format!("syncing {}", part.display()), move || {
         file.flush()?;
@@ -407,53 +538,21 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
         ));
     }
     // Keep only what the requester may read (the robot's topics under /<robot>).
-    let dest = job.dir.join(&final_name);
-    let mut gate = job.gate.fork();
+    let dest = job.dir.join(final_name);
+    let gate = job.gate.fork();
     let prefix = format!("/{robot}");
     let (kept, refused) = tokio::task::spawn_blocking({
-        let (part, dest) = (part.clone(), dest.clone());
-        move || -> Result<(FetchReply, u64), String> {
-            let mut refused_topics = false;
-            let mut keep = |topic: &str| {
-                let ok = gate.allows(&format!("{prefix}{topic}"), Op::Subscribe);
-                refused_topics |= !ok;
-                ok
-            };
-            let cut = super::slice::cut(&[part.as_path()], 0, u64::MAX, &mut keep, &dest);
-            match cut {
-                Ok(k) if !refused_topics => {
-                    // Nothing was left out: keep the robot's bytes as they came.
-                    std::fs::rename(&part, &dest).map_err(|e| e.to_string())?;
-                    Ok((
-                        FetchReply {
-                            size: r.size,
-                            sha256: r.sha256.clone(),
-                            ..k
-                        },
-                        0,
-                    ))
-                }
-                Ok(k) => {
-                    let _ = std::fs::remove_file(&part);
-                    let refused = r.messages.saturating_sub(k.messages);
-                    Ok((k, refused))
-                }
-                Err(e) => {
-                    let _ = std::fs::remove_file(&part);
-                    Err(format!(
-                        "none of the slice's topics may be read by its requester ({e})"
-                    ))
-                }
-            }
-        }
+        let (part, r) = (part.to_owned(), r.clone());
+        move || cut_readable(gate, &prefix, &part, &dest, &r)
     })
     .await
     .map_err(|e| e.to_string())??;
+    let (calls_made, resumed) = (asking.calls_made, asking.resumed);
     job.shared.update(|i| {
         i.messages = kept.messages;
         i.bytes = kept.size;
         i.files = vec![FileFigures {
-            name: final_name.clone(),
+            name: final_name.to_owned(),
             bytes: kept.size,
             messages: kept.messages,
             start_ns: Some(kept.start_ns),
@@ -470,6 +569,50 @@ async fn fetch(job: &FetchJob) -> Result<(), String> {
     });
     tracing::info!(recording = %id, robot = %robot, bytes = r.size, resumed, "black-box slice fetched");
     Ok(())
+}
+
+/// Writes to `dest` the messages of the slice in `part` whose topics (under `prefix`,
+/// the robot's) `gate` lets the requester read, and removes `part`. With nothing left
+/// out, `part` is kept as it came. Returns the kept file's figures and the messages cut.
+fn cut_readable(
+    mut gate: Box<dyn Gate>,
+    prefix: &str,
+    part: &Path,
+    dest: &Path,
+    r: &FetchReply,
+) -> Result<(FetchReply, u64), String> {
+    let mut refused_topics = false;
+    let mut keep = |topic: &str| {
+        let ok = gate.allows(&format!("{prefix}{topic}"), Op::Subscribe);
+        refused_topics |= !ok;
+        ok
+    };
+    let cut = super::slice::cut(&[part], 0, u64::MAX, &mut keep, dest);
+    match cut {
+        Ok(k) if !refused_topics => {
+            // Nothing was left out: keep the robot's bytes as they came.
+            std::fs::rename(part, dest).map_err(|e| e.to_string())?;
+            Ok((
+                FetchReply {
+                    size: r.size,
+                    sha256: r.sha256.clone(),
+                    ..k
+                },
+                0,
+            ))
+        }
+        Ok(k) => {
+            let _ = std::fs::remove_file(part);
+            let refused = r.messages.saturating_sub(k.messages);
+            Ok((k, refused))
+        }
+        Err(e) => {
+            let _ = std::fs::remove_file(part);
+            Err(format!(
+                "none of the slice's topics may be read by its requester ({e})"
+            ))
+        }
+    }
 }
 
 /// Appends a piece that starts where the file ends; others are ignored (a piece of
