@@ -460,31 +460,7 @@ impl Agent {
                 name: "ros2",
                 report: stats.clone(),
             });
-            std::thread::Builder::new()
-                .name("ros2".into())
-                .spawn(move || {
-                    let rt = match tokio::runtime::Builder::new_multi_thread()
-                        .worker_threads(2)
-                        .thread_name("ros2-rt")
-                        .enable_all()
-                        .build()
-                    {
-                        Ok(rt) => rt,
-                        Err(e) => {
-                            tracing::error!("ros2: cannot start its runtime: {e}");
-                            return;
-                        }
-                    };
-                    rt.block_on(async move {
-                        if let Err(e) =
-                            fleetlink_ros2::run(opts, router, stats, interest, shutdown).await
-                        {
-                            tracing::error!("{e}");
-                        }
-                    })
-                })
-                .map_err(|e| tracing::error!("ros2: cannot start its thread: {e}"))
-                .ok()
+            spawn_ros2(opts, router, stats, interest, shutdown)
         });
         let rosbridge = self.rosbridge.map(|opts| {
             let (router, shutdown) = (self.router.clone(), shutdown.clone());
@@ -541,4 +517,38 @@ impl Agent {
             );
         }
     }
+}
+
+/// The ROS 2 adapter's thread: it runs on a two-worker runtime of its own, whatever
+/// runtime the rest of the agent runs on (see [`Agent::run`]).
+fn spawn_ros2(
+    opts: fleetlink_ros2::Ros2Options,
+    router: Arc<Router>,
+    stats: Arc<fleetlink_ros2::Ros2Stats>,
+    interest: Option<Arc<fleetlink_relay::read_interest::ReadInterest>>,
+    shutdown: CancellationToken,
+) -> Option<std::thread::JoinHandle<()>> {
+    std::thread::Builder::new()
+        .name("ros2".into())
+        .spawn(move || {
+            let rt = match tokio::runtime::Builder::new_multi_thread()
+                .worker_threads(2)
+                .thread_name("ros2-rt")
+                .enable_all()
+                .build()
+            {
+                Ok(rt) => rt,
+                Err(e) => {
+                    tracing::error!("ros2: cannot start its runtime: {e}");
+                    return;
+                }
+            };
+            rt.block_on(async move {
+                if let Err(e) = fleetlink_ros2::run(opts, router, stats, interest, shutdown).await {
+                    tracing::error!("{e}");
+                }
+            })
+        })
+        .map_err(|e| tracing::error!("ros2: cannot start its thread: {e}"))
+        .ok()
 }

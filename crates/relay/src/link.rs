@@ -1,7 +1,8 @@
 //! The parts of a `fleetlink.v1` link that hub and agent share: the link session
 //! ([`session::LinkSession`], the protocol as one state machine for both ends), turning
-//! received frames into topic events ([`LinkIn`]) and writing an outbox onto the link
-//! ([`write_link`]).
+//! received frames into topic events ([`LinkIn`]), what goes out on the link next without
+//! I/O ([`Outbound`]: an outbox's messages, chunks, announcements, the session's frames)
+//! and the task that writes it ([`write_link`]).
 //!
 //! On every link a topic's alias is its id in the *sending* router, so a message's frames
 //! ([`Message::link_frames`](crate::Message::link_frames)) are the same bytes for every
@@ -10,10 +11,12 @@
 
 mod compress;
 pub mod drive;
+pub mod outbound;
 pub mod session;
 mod writer;
 
-pub use writer::{ViaOut, write_link};
+pub use outbound::{Outbound, Round, Transmit, ViaOut};
+pub use writer::write_link;
 
 use std::collections::VecDeque;
 use std::sync::Arc;

@@ -29,23 +29,7 @@ fn problem(path: FieldPath, message: impl Into<String>) -> Problem {
 
 pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
     validate_hubs(cfg)?;
-    if let Some(m) = &cfg.mirror {
-        if *m == cfg.name {
-            return Err(problem(
-                "name".into(),
-                format!("a mirror needs a name of its own, not {m}'s (e.g. {m}_mirror)"),
-            ));
-        }
-        if cfg.sim.is_some() {
-            return Err(problem(
-                "sim".into(),
-                format!(
-                    "a mirror of {m} presents the real robot's topics; a simulated robot \
-                     belongs in an agent of its own (remove sim: or mirror:)"
-                ),
-            ));
-        }
-    }
+    validate_mirror(cfg)?;
     if let Some(tls) = &cfg.tls {
         for (field, path) in [
             ("tls.ca", &tls.ca),
@@ -175,6 +159,28 @@ pub(crate) fn validate(cfg: &AgentConfig) -> Result<(), Problem> {
                 None => topics.key(name.clone()),
             };
             return Err(problem(path, e.to_string()));
+        }
+    }
+    Ok(())
+}
+
+/// A mirror (docs/mirror.md) has a name of its own and presents a real robot's topics.
+fn validate_mirror(cfg: &AgentConfig) -> Result<(), Problem> {
+    if let Some(m) = &cfg.mirror {
+        if *m == cfg.name {
+            return Err(problem(
+                "name".into(),
+                format!("a mirror needs a name of its own, not {m}'s (e.g. {m}_mirror)"),
+            ));
+        }
+        if cfg.sim.is_some() {
+            return Err(problem(
+                "sim".into(),
+                format!(
+                    "a mirror of {m} presents the real robot's topics; a simulated robot \
+                     belongs in an agent of its own (remove sim: or mirror:)"
+                ),
+            ));
         }
     }
     Ok(())
