@@ -37,7 +37,8 @@
 //! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
 //!   `/rosapi` services the hub answers itself.
 //! - [`websocket`]: the server side of a WebSocket connection as a reader and a writer
-//!   that share only the socket, which rosbridge sessions run on.
+//!   that share only the socket, which rosbridge sessions run on (the `fleetlink-websocket`
+//!   crate, with the writers' wait for work that needs an outbox).
 
 pub mod calls;
 pub mod channel_form;

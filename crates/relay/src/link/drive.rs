@@ -76,36 +76,7 @@ pub async fn timer(at: Option<Instant>) {
     }
 }
 
-/// [`timer`] for a loop that waits many times: one timer entry for the session's life,
-/// moved only when the deadline does (the heartbeat's, most of the time), instead of a
-/// new one for every message read.
-pub struct Timer {
-    sleep: std::pin::Pin<Box<tokio::time::Sleep>>,
-    at: Option<Instant>,
-}
-
-impl Default for Timer {
-    fn default() -> Timer {
-        Timer {
-            sleep: Box::pin(tokio::time::sleep(Duration::from_secs(3600))),
-            at: None,
-        }
-    }
-}
-
-impl Timer {
-    /// Sleeps until `at` (forever for `None`).
-    pub async fn wait(&mut self, at: Option<Instant>) {
-        let Some(at) = at else {
-            return std::future::pending().await;
-        };
-        if self.at != Some(at) {
-            self.sleep.as_mut().reset(at.into());
-            self.at = Some(at);
-        }
-        self.sleep.as_mut().await
-    }
-}
+pub use fleetlink_websocket::timer::Timer;
 
 /// Moves what the session has to send to the writer, as long as the writer's queue has
 /// room; the rest stays in the session (the driver also waits for room in its select).

@@ -248,7 +248,7 @@ pub struct Watch {
     live: Liveness,
     probe: Option<ProgressProbe>,
     replies: mpsc::Sender<Reply>,
-    timer: crate::link::drive::Timer,
+    timer: crate::timer::Timer,
 }
 
 impl Watch {
@@ -261,7 +261,7 @@ impl Watch {
             live: Liveness::new(cfg, now()),
             probe,
             replies,
-            timer: crate::link::drive::Timer::default(),
+            timer: crate::timer::Timer::default(),
         }
     }
 
@@ -286,7 +286,7 @@ impl Watch {
             return due.gone;
         }
         if due.ping {
-            let payload = Bytes::copy_from_slice(&crate::unix_nanos().to_be_bytes());
+            let payload = Bytes::copy_from_slice(&unix_nanos().to_be_bytes());
             let _ = self
                 .replies
                 .try_send(Reply::Frame(WsMessage::Ping(payload)));
@@ -323,6 +323,14 @@ impl Watch {
 /// The driver's clock: tokio's, so that a session under paused time sees it advance.
 fn now() -> Instant {
     tokio::time::Instant::now().into_std()
+}
+
+/// Nanoseconds since the Unix epoch: a ping's payload, so its pong says when it was sent.
+fn unix_nanos() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_nanos() as u64)
+        .unwrap_or(0)
 }
 
 #[cfg(test)]

@@ -1,32 +1,15 @@
-//! The direct replies a session's reader hands its writer (`status`, answers, the close
-//! frame), and the writer's wait between batches — shared by the rosbridge and Foxglove
-//! writers, which differ only in how they frame a batch of messages.
+//! The writer's wait between batches, shared by the rosbridge and Foxglove writers, which
+//! differ only in how they frame a batch of messages; the replies it waits for are the
+//! WebSocket layer's ([`Reply`]).
 
 use std::time::Instant;
 
 use futures_util::{Sink, SinkExt};
 use tokio::sync::mpsc;
-use tokio_tungstenite::tungstenite::protocol::CloseFrame;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 
 use crate::outbox::Outbox;
-
-/// What the reader asks the writer to send besides the outbox.
-#[derive(Debug)]
-pub enum Reply {
-    Frame(WsMessage),
-    /// Sent last: the writer then closes the connection.
-    Close(Option<CloseFrame>),
-}
-
-/// Sends `c` as the last frame and closes the connection.
-pub async fn close_with<K>(sink: &mut K, c: Option<CloseFrame>)
-where
-    K: Sink<WsMessage, Error = WsError> + Unpin,
-{
-    let _ = sink.send(WsMessage::Close(c)).await;
-    let _ = sink.close().await;
-}
+pub use fleetlink_websocket::replies::{Reply, close_with};
 
 /// A writer with nothing to send waits here for a reply, the outbox or `wake_at` (when
 /// a held-back message is due). False: the session is over and the connection closed,

@@ -38,6 +38,7 @@ pub mod frames;
 pub mod liveness;
 pub mod replies;
 pub mod tcp_progress;
+pub mod timer;
 
 use std::collections::VecDeque;
 use std::io::IoSlice;
