@@ -387,7 +387,7 @@ impl Uplink {
                         }
                         self.stats.rtt_ns.store(rtt.as_nanos() as u64, Relaxed);
                     }
-                    Event::ReportDue => self.report(session, ctrl_tx, &mut unpublished, &mut told),
+                    Event::ReportDue => self.report(session, &mut unpublished, &mut told),
                     Event::Hello { .. } | Event::Opened { .. } => {}
                 }
             }

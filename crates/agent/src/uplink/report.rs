@@ -36,7 +36,6 @@ impl Uplink {
     pub(super) fn report(
         &self,
         session: &mut LinkSession,
-        writer: &ControlSender,
         unpublished: &mut HashSet<TopicId>,
         told: &mut Told,
     ) {
@@ -68,15 +67,13 @@ impl Uplink {
             if t.publishers.iter().any(|c| *c != me) {
                 unpublished.remove(&id);
             } else if !unpublished.contains(&id) {
-                // An instruction to the writer (after the topic's queued messages); a full
-                // queue leaves it for the next report.
-                let gone = Control::Unadvertise {
+                // An instruction to the writer, through the session like every frame:
+                // `UNADVERTISE` after the topic's queued messages.
+                session.send_control(Control::Unadvertise {
                     topic: id,
                     since: Instant::now(),
-                };
-                if writer.try_send(Box::new(gone)).is_ok() {
-                    unpublished.insert(id);
-                }
+                });
+                unpublished.insert(id);
             }
         }
         if let Some(f) = self.outbox.link_figures(Instant::now()) {
