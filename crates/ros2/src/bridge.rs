@@ -1,10 +1,23 @@
-//! The participant and its loop: discovery, topics up and down, the call table's side.
+//! The participant and its loop: the shared [`Bridge`], the discovery tick, and making
+//! the participant again when it stops carrying anything.
 //!
 //! One task ([`run`]) owns the router client's outbox, the call-table channel and the
 //! discovery tick; each bridged-up topic has a task reading its DDS reader, each exposed
 //! service or action a task reading its replies ([`crate::services`]). rustdds runs its
 //! own network threads; its readers are polled as async streams here, its writers are
 //! written without waiting (keep-last history never blocks).
+//!
+//! # Layout
+//!
+//! - [`endpoints`]: the bridge's own readers and writers, listed while they live.
+//! - [`up`]: local topics read from the graph and sent to the router.
+//! - [`down`](mod@down): router topics written into the graph.
+//! - [`rejoin`]: why a participant ends and is made again.
+
+mod down;
+mod endpoints;
+mod rejoin;
+mod up;
 
 use std::collections::{HashMap, HashSet};
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -15,17 +28,16 @@ use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::ChannelPeer;
 use fleetlink_relay::names::ClientId;
-use fleetlink_relay::read_interest::{Look, ReadInterest};
-use fleetlink_relay::router::{RouteError, SubOptions, SubscriptionId, Target};
+use fleetlink_relay::read_interest::ReadInterest;
+use fleetlink_relay::router::SubscriptionId;
 use fleetlink_relay::stats::{AdapterReport, Problems};
-use fleetlink_relay::{ClientKind, Message, Router, Topic, TopicName};
+use fleetlink_relay::{ClientKind, Router};
 use futures::StreamExt;
 use rustdds::no_key::{DataReader, DataWriter};
 use rustdds::{
     DomainParticipant, GUID, Publisher, QosPolicies, RTPSEntity, StatusEvented, Subscriber,
     TopicKind,
 };
-use tokio::task::AbortHandle;
 use tokio_util::sync::CancellationToken;
 
 use crate::names::{self, DdsName};
@@ -33,72 +45,12 @@ use crate::offered_actions::OfferedAction;
 use crate::options::Ros2Options;
 use crate::raw::{RawAdapter, RawCdr};
 use crate::services::{self, Offered, Remote};
+use down::{Down, down, follow_readers, follow_subscriptions, holding, release_held};
+use rejoin::{DdsAddresses, End, LIVENESS_PERIOD};
+use up::{Up, follow_interest, start_up, stop_up};
 
-/// A reader or writer of this bridge, listed among its node's endpoints while it lives.
-pub type RawReader = Tracked<DataReader<RawCdr, RawAdapter>>;
-pub type RawWriter = Tracked<DataWriter<RawCdr, RawAdapter>>;
-
-/// The GUIDs of the bridge's own readers and writers (`true`: a writer): what its node
-/// lists in `ros_discovery_info` ([`crate::node_info`]).
-#[derive(Debug, Default)]
-pub(crate) struct OwnEndpoints(Mutex<HashMap<GUID, bool>>);
-
-impl OwnEndpoints {
-    fn lock(&self) -> MutexGuard<'_, HashMap<GUID, bool>> {
-        self.0.lock().unwrap_or_else(|p| p.into_inner())
-    }
-
-    /// The readers' and the writers' GUIDs, each sorted.
-    pub(crate) fn list(&self) -> (Vec<GUID>, Vec<GUID>) {
-        let all = self.lock();
-        let mut readers: Vec<GUID> = all.iter().filter(|(_, w)| !**w).map(|(g, _)| *g).collect();
-        let mut writers: Vec<GUID> = all.iter().filter(|(_, w)| **w).map(|(g, _)| *g).collect();
-        readers.sort_by_key(|g| g.to_bytes());
-        writers.sort_by_key(|g| g.to_bytes());
-        (readers, writers)
-    }
-}
-
-/// A DDS entity of the bridge with its entry in [`OwnEndpoints`], removed when it is
-/// dropped (with the entity).
-pub struct Tracked<T> {
-    inner: T,
-    _entry: Entry,
-}
-
-#[derive(Debug)]
-struct Entry(Arc<OwnEndpoints>, GUID);
-
-impl Drop for Entry {
-    fn drop(&mut self) {
-        self.0.lock().remove(&self.1);
-    }
-}
-
-impl<T> std::ops::Deref for Tracked<T> {
-    type Target = T;
-    fn deref(&self) -> &T {
-        &self.inner
-    }
-}
-
-impl<T> std::ops::DerefMut for Tracked<T> {
-    fn deref_mut(&mut self) -> &mut T {
-        &mut self.inner
-    }
-}
-
-impl RawReader {
-    /// The reader's samples as a stream, which keeps the reader listed while it lives.
-    pub fn async_sample_stream(
-        self,
-    ) -> Tracked<rustdds::no_key::DataReaderStream<RawCdr, RawAdapter>> {
-        Tracked {
-            inner: self.inner.async_sample_stream(),
-            _entry: self._entry,
-        }
-    }
-}
+pub(crate) use endpoints::OwnEndpoints;
+pub use endpoints::{RawReader, RawWriter, Tracked};
 
 #[derive(Debug, thiserror::Error)]
 pub enum Ros2Error {
@@ -150,118 +102,6 @@ impl AdapterReport for Stats {
 
     fn problems(&self) -> Vec<String> {
         self.problems.list()
-    }
-}
-
-/// A local topic sent up: its router topic, the writers feeding it, its reader task
-/// (none while nobody wants the topic read), and what makes its reader again.
-struct Up {
-    writers: HashSet<GUID>,
-    task: Option<AbortHandle>,
-    reading: Arc<Reading>,
-    /// Since when nobody has wanted it, while that lasts.
-    unwanted_since: Option<Instant>,
-}
-
-/// What a bridged-up topic's reader is made from, kept while the topic is not read.
-struct Reading {
-    dds_topic: String,
-    dds_type: String,
-    qos: QosPolicies,
-    topic: Arc<Topic>,
-    /// Numbers of the messages put into the router, across readers.
-    seq: AtomicU64,
-}
-
-/// A router topic written into the graph.
-struct Down {
-    writer: RawWriter,
-    type_name: String,
-    /// Set while a new writer waits to be matched (see [`Held`]).
-    held: Option<Held>,
-}
-
-/// How long a new writer's first messages wait for the local readers DDS discovery knew
-/// of when the writer was made.
-const DOWN_MATCH_WAIT: std::time::Duration = std::time::Duration::from_millis(1000);
-
-/// How long held messages still wait once the bridge's writer has matched the readers:
-/// matching is two-sided, and DDS tells only the writer's side. The reader's side takes
-/// the writer's announcement on its own discovery thread (Cyclone: a queue of its own),
-/// and until it has, it drops what the writer sends. On a loaded machine that took
-/// longer than sending the first message right after the writer's side matched (the
-/// ROS 2 suite's step 2c failed once in CI that way).
-const DOWN_REMOTE_GRACE: std::time::Duration = std::time::Duration::from_millis(150);
-
-/// A new writer's messages, held until it has matched the local readers of its topic
-/// that discovery knew of when it was made, and [`DOWN_REMOTE_GRACE`] more (or until
-/// [`DOWN_MATCH_WAIT`] has passed). A volatile reader only gets what is written after it
-/// is matched: without this, a node waiting for a hub topic missed its first message,
-/// written while DDS was still matching the bridge's new writer with it.
-struct Held {
-    readers: i32,
-    until: Instant,
-    /// When the writer's side had matched every known reader.
-    matched_at: Option<Instant>,
-    bodies: std::collections::VecDeque<Bytes>,
-}
-
-impl Down {
-    /// Whether held messages may go: every known reader matched, or waited long enough.
-    fn matched(&mut self, now: Instant) -> bool {
-        let Some(h) = &mut self.held else {
-            return true;
-        };
-        while let Some(ev) = self.writer.try_recv_status() {
-            if let rustdds::DataWriterStatus::PublicationMatched { current, .. } = ev
-                && current.count() >= h.readers
-            {
-                h.matched_at.get_or_insert(now);
-            }
-        }
-        h.matched_at
-            .is_some_and(|t| now.duration_since(t) >= DOWN_REMOTE_GRACE)
-            || now >= h.until
-    }
-
-    /// Writes `body`, or holds it while the writer is not matched yet (the oldest held
-    /// message is dropped beyond the writer's depth, as its history would).
-    fn write(&mut self, body: Bytes, stats: &Stats) {
-        let now = Instant::now();
-        if !self.matched(now) {
-            let h = self.held.as_mut().expect("held while not matched");
-            h.bodies.push_back(body);
-            if h.bodies.len() > crate::qos::DEPTH as usize {
-                h.bodies.pop_front();
-                stats.dropped_down.fetch_add(1, Relaxed);
-            }
-            return;
-        }
-        for b in self.held.take().map(|h| h.bodies).unwrap_or_default() {
-            self.write_now(b, stats);
-        }
-        self.write_now(body, stats);
-    }
-
-    /// Sends what was held once the writer is matched or the wait is over.
-    fn release(&mut self, stats: &Stats) {
-        if self.held.is_some() && self.matched(Instant::now()) {
-            for b in self.held.take().map(|h| h.bodies).unwrap_or_default() {
-                self.write_now(b, stats);
-            }
-        }
-    }
-
-    fn write_now(&self, body: Bytes, stats: &Stats) {
-        match self.writer.write(RawCdr(body), None) {
-            Ok(()) => {
-                stats.messages_down.fetch_add(1, Relaxed);
-            }
-            Err(e) => {
-                stats.dropped_down.fetch_add(1, Relaxed);
-                tracing::debug!("ros2: writing a {} message: {e:?}", self.type_name);
-            }
-        }
     }
 }
 
@@ -366,11 +206,7 @@ impl Bridge {
     }
 
     fn track<T>(&self, guid: GUID, writer: bool, inner: T) -> Tracked<T> {
-        self.endpoints.lock().insert(guid, writer);
-        Tracked {
-            inner,
-            _entry: Entry(self.endpoints.clone(), guid),
-        }
+        self.endpoints.track(guid, writer, inner)
     }
 
     /// A DDS writer of raw samples on `dds_topic`.
@@ -478,86 +314,6 @@ fn ros2_schema(type_name: &str) -> Schema {
     }
 }
 
-/// How often the bridge checks that rustdds' threads still run.
-const LIVENESS_PERIOD: std::time::Duration = std::time::Duration::from_secs(2);
-
-/// How one participant's bridging ended.
-enum End {
-    Shutdown,
-    /// rustdds' own threads have ended: nothing more arrives or leaves.
-    ParticipantStopped,
-    /// Addresses appeared that the participant does not use (see [`DdsAddresses`]).
-    NetworkChanged(Vec<DdsAddress>),
-    /// rustdds lost this participant by lease and does not take it back, though it still
-    /// announces itself (see [`crate::lost_peers`]).
-    StrandedPeer(crate::lost_peers::Prefix),
-}
-
-/// One IPv4 address of a multicast-capable interface: where rustdds joins DDS discovery.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
-struct DdsAddress {
-    interface: String,
-    /// The interface's index: a device removed and added again is a new one (its
-    /// multicast memberships went with the old device).
-    index: u32,
-    addr: std::net::Ipv4Addr,
-}
-
-impl std::fmt::Display for DdsAddress {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} {}", self.interface, self.addr)
-    }
-}
-
-/// The host's addresses as rustdds sees them when a participant starts.
-///
-/// rustdds joins DDS multicast and picks the unicast addresses it announces once, when a
-/// participant is created, from the interfaces then up. An agent started before the robot's
-/// network (at boot, before DHCP; a USB Ethernet plugged in later; a Wi-Fi address that
-/// changed) would never discover the participants on the new network, nor be discovered by
-/// them. The bridge compares the addresses with the last look every [`LIVENESS_PERIOD`]
-/// and rejoins the graph when one appeared. One that only went away changes nothing.
-#[derive(Debug, Default)]
-struct DdsAddresses {
-    seen: std::collections::BTreeSet<DdsAddress>,
-}
-
-impl DdsAddresses {
-    /// The addresses now; `None` when the system cannot say (nothing is concluded then).
-    fn now() -> Option<DdsAddresses> {
-        use nix::net::if_::InterfaceFlags;
-        let mut seen = std::collections::BTreeSet::new();
-        // getifaddrs(3): tens of microseconds (netdev, which rustdds uses, also reads
-        // each interface's files in /sys: ten times that).
-        for a in nix::ifaddrs::getifaddrs().ok()? {
-            // As rustdds chooses where to join multicast: the flag, IPv4 only.
-            if !a.flags.contains(InterfaceFlags::IFF_MULTICAST) {
-                continue;
-            }
-            let Some(v4) = a.address.as_ref().and_then(|s| s.as_sockaddr_in()) else {
-                continue;
-            };
-            let index = nix::net::if_::if_nametoindex(a.interface_name.as_str()).unwrap_or(0);
-            seen.insert(DdsAddress {
-                interface: a.interface_name,
-                index,
-                addr: v4.ip(),
-            });
-        }
-        Some(DdsAddresses { seen })
-    }
-
-    /// Takes a new look; returns the addresses that appeared since the last one.
-    fn appeared(&mut self, now: Option<DdsAddresses>) -> Vec<DdsAddress> {
-        let Some(now) = now else {
-            return Vec::new();
-        };
-        let new = now.seen.difference(&self.seen).cloned().collect();
-        *self = now;
-        new
-    }
-}
-
 /// Bridges the ROS 2 graph of `opts.domain_id` with `router` until `shutdown`.
 ///
 /// The participant is made again (the router's topics and services go and come back) when:
@@ -636,6 +392,7 @@ pub async fn run(
     }
 }
 
+/// One participant's bridging, from joining the domain until it ends ([`End`]).
 async fn run_participant(
     opts: Ros2Options,
     router: &Arc<Router>,
@@ -696,7 +453,7 @@ async fn run_participant(
     if bridge.opts.parameters {
         fleetlink_relay::params::advertise_services(&router.calls, client);
     }
-    follow_offers(&bridge);
+    services::follow_offers(&bridge);
     follow_subscriptions(&bridge);
     let mut tick = tokio::time::interval(bridge.opts.discovery_period);
     tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
@@ -708,17 +465,7 @@ async fn run_participant(
     let status = bridge.dp.status_listener();
     let mut events = status.as_async_status_stream();
     let mut lost = crate::lost_peers::LostPeers::default();
-    let mut announcements =
-        match crate::lost_peers::Announcements::open(domain, addresses.seen.iter().map(|a| a.addr))
-        {
-            Ok(a) => Some(a),
-            Err(e) => {
-                // Without a network there is nothing to lose; the rejoin on a new address
-                // opens it again.
-                tracing::debug!("ros2: not listening to discovery announcements: {e}");
-                None
-            }
-        };
+    let mut announcements = listen_to_announcements(domain, &addresses);
     let end = loop {
         tokio::select! {
             _ = shutdown.cancelled() => break End::Shutdown,
@@ -743,7 +490,7 @@ async fn run_participant(
             new = fleetlink_relay::live::next_change(&mut changes) => {
                 tracing::info!("ros2: what crosses changed (runtime configuration)");
                 *bridge.live.write().unwrap_or_else(|p| p.into_inner()) = Arc::new(new);
-                follow_offers(&bridge);
+                services::follow_offers(&bridge);
                 follow_subscriptions(&bridge);
                 discover(&bridge);
             }
@@ -770,6 +517,30 @@ async fn run_participant(
             _ = held_tick.tick(), if holding(&bridge) => release_held(&bridge),
         }
     };
+    leave(&bridge, domain);
+    Ok(end)
+}
+
+/// The discovery announcements of domain `domain` heard on `addresses`, to notice peers
+/// rustdds lost ([`crate::lost_peers`]); `None` when they cannot be heard.
+fn listen_to_announcements(
+    domain: u16,
+    addresses: &DdsAddresses,
+) -> Option<crate::lost_peers::Announcements> {
+    match crate::lost_peers::Announcements::open(domain, addresses.seen.iter().map(|a| a.addr)) {
+        Ok(a) => Some(a),
+        Err(e) => {
+            // Without a network there is nothing to lose; the rejoin on a new address
+            // opens it again.
+            tracing::debug!("ros2: not listening to discovery announcements: {e}");
+            None
+        }
+    }
+}
+
+/// Ends a participant's bridging: stops the tasks of its topics, services and actions,
+/// leaves the router, and logs what crossed.
+fn leave(bridge: &Bridge, domain: u16) {
     let st = std::mem::take(&mut *bridge.lock());
     for task in st.up.values().filter_map(|u| u.task.as_ref()) {
         task.abort();
@@ -783,7 +554,7 @@ async fn run_participant(
     for a in st.offered_actions.values() {
         a.abort();
     }
-    router.disconnect(client);
+    bridge.router.disconnect(bridge.client);
     let s = &bridge.stats;
     tracing::info!(
         "ros2: left domain {domain}: {} messages up, {} down ({} dropped)",
@@ -791,93 +562,6 @@ async fn run_participant(
         s.messages_down.load(Relaxed),
         s.dropped_down.load(Relaxed)
     );
-    Ok(end)
-}
-
-/// Watches the fleet services and actions the options offer to local nodes, and stops
-/// offering those they no longer do (after a runtime change).
-fn follow_offers(bridge: &Arc<Bridge>) {
-    let opts = bridge.live();
-    let (services, actions) = {
-        let mut st = bridge.lock();
-        let services: Vec<_> = st
-            .offered
-            .keys()
-            .filter(|n| !opts.offer.matches(n))
-            .cloned()
-            .collect();
-        let actions: Vec<_> = st
-            .offered_actions
-            .keys()
-            .filter(|n| !opts.offer_actions.matches(n))
-            .cloned()
-            .collect();
-        (
-            services
-                .into_iter()
-                .filter_map(|n| st.offered.remove(&n).map(|o| (n, o)))
-                .collect::<Vec<_>>(),
-            actions
-                .into_iter()
-                .filter_map(|n| st.offered_actions.remove(&n).map(|a| (n, a)))
-                .collect::<Vec<_>>(),
-        )
-    };
-    for (name, o) in services {
-        o.task.abort();
-        tracing::info!("ros2: fleet service {name} no longer offered to local nodes");
-    }
-    for (name, a) in actions {
-        a.abort();
-        tracing::info!("ros2: fleet action {name} no longer offered to local nodes");
-    }
-    // Watched anew: the services that match now are told at once (those offered already
-    // stay as they are).
-    bridge.router.calls.unwatch(bridge.client);
-    for re in opts.offer.include.iter().chain(&opts.offer_actions.include) {
-        bridge.router.calls.watch(bridge.client, re.clone());
-    }
-}
-
-/// Subscribes the router topics the options write into the graph, and lets go of those
-/// they no longer do (with their DDS writers).
-fn follow_subscriptions(bridge: &Bridge) {
-    let opts = bridge.live();
-    let gone: Vec<(String, SubscriptionId)> = {
-        let mut st = bridge.lock();
-        let names: Vec<String> = st
-            .subscribed
-            .keys()
-            .filter(|k| !opts.subscribe.iter().any(|n| n.as_str() == k.as_str()))
-            .cloned()
-            .collect();
-        names
-            .into_iter()
-            .filter_map(|k| {
-                st.down.remove(&k);
-                st.subscribed.remove_entry(&k)
-            })
-            .collect()
-    };
-    for (name, sid) in gone {
-        bridge.router.unsubscribe(bridge.client, sid);
-        tracing::info!("ros2: no longer writing {name} into the graph");
-    }
-    for name in &opts.subscribe {
-        if bridge.lock().subscribed.contains_key(name.as_str()) {
-            continue;
-        }
-        match bridge.router.subscribe(
-            bridge.client,
-            Target::Exact(name.clone()),
-            SubOptions::default(),
-        ) {
-            Ok(sid) => {
-                bridge.lock().subscribed.insert(name.to_string(), sid);
-            }
-            Err(e) => tracing::warn!("ros2: cannot subscribe to {name}: {e}"),
-        }
-    }
 }
 
 /// One look at what discovery knows: starts and stops bridged topics, exposed services
@@ -927,393 +611,4 @@ fn discover(bridge: &Arc<Bridge>) {
     follow_interest(bridge, Instant::now());
     follow_readers(bridge);
     services::discover(bridge);
-}
-
-/// Subscribes the router topics `read` matches that a node of the graph reads (a reader
-/// other than the bridge's), and lets go of those whose last reader went: what no node
-/// reads is not asked for, so its robot does not send it.
-fn follow_readers(bridge: &Bridge) {
-    let opts = bridge.live();
-    if opts.read.is_empty() && bridge.lock().read.is_empty() {
-        return;
-    }
-    let mut readers: HashSet<String> = HashSet::new();
-    for r in bridge.dp.discovered_readers() {
-        let s = &r.subscription_topic_data;
-        if bridge.is_own(s.key()) {
-            continue;
-        }
-        if let Some(DdsName::Topic(ros)) = DdsName::parse(s.topic_name())
-            && !names::is_hidden(&ros)
-            && opts.read.matches(&ros)
-            && !opts.subscribe.iter().any(|n| n.as_str() == ros)
-        {
-            readers.insert(ros);
-        }
-    }
-    let (gone, new): (Vec<(String, SubscriptionId)>, Vec<String>) = {
-        let mut st = bridge.lock();
-        let gone: Vec<String> = st
-            .read
-            .keys()
-            .filter(|k| !readers.contains(*k))
-            .cloned()
-            .collect();
-        let gone = gone
-            .into_iter()
-            .filter_map(|k| st.read.remove_entry(&k))
-            .collect();
-        let new = readers
-            .into_iter()
-            .filter(|k| !st.read.contains_key(k))
-            .collect();
-        (gone, new)
-    };
-    for (ros, sid) in gone {
-        bridge.router.unsubscribe(bridge.client, sid);
-        tracing::info!("ros2: no node reads {ros} any more; no longer asking for it");
-    }
-    for ros in new {
-        let name = match TopicName::parse(&ros) {
-            Ok(n) => n,
-            Err(e) => {
-                tracing::debug!("ros2: a reader of {ros}, which is no topic name here: {e}");
-                continue;
-            }
-        };
-        match bridge
-            .router
-            .subscribe(bridge.client, Target::Exact(name), SubOptions::default())
-        {
-            Ok(sid) => {
-                tracing::info!("ros2: a node reads {ros}; asking for it");
-                bridge.lock().read.insert(ros, sid);
-            }
-            Err(e) => tracing::warn!("ros2: cannot ask for {ros}: {e}"),
-        }
-    }
-}
-
-/// Drops the reader of each topic nobody has wanted for a while ([`ReadInterest::look`]; the
-/// local writers then stop sending to the agent) and makes one again for each topic
-/// wanted again.
-fn follow_interest(bridge: &Arc<Bridge>, now: Instant) {
-    let Some(interest) = &bridge.interest else {
-        return;
-    };
-    let mut resume = Vec::new();
-    {
-        let mut st = bridge.lock();
-        for (ros, up) in st.up.iter_mut() {
-            let name = up.reading.topic.name();
-            match interest.look(&name, bridge.client, &mut up.unwanted_since, now) {
-                Look::Read if up.task.is_none() => resume.push(ros.clone()),
-                Look::Stop => {
-                    if let Some(task) = up.task.take() {
-                        task.abort(); // the reader goes with its task
-                        interest.stopped_reading(&name);
-                        bridge.stats.paused_reading.fetch_add(1, Relaxed);
-                        tracing::info!("ros2: nobody wants {ros}; no longer reading it");
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-    for ros in resume {
-        let Some(reading) = bridge.lock().up.get(&ros).map(|u| u.reading.clone()) else {
-            continue;
-        };
-        match bridge.reader(&reading.dds_topic, &reading.dds_type, reading.qos.clone()) {
-            Ok(reader) => {
-                let task = tokio::spawn(pump_up(bridge.clone(), reading, reader)).abort_handle();
-                if let Some(up) = bridge.lock().up.get_mut(&ros) {
-                    up.task = Some(task);
-                }
-                tracing::info!("ros2: {ros} is wanted again; reading it");
-            }
-            Err(e) => tracing::warn!("ros2: cannot read {ros} again: {e}"),
-        }
-    }
-}
-
-/// Starts bridging local topic `ros` up, with a reader matching its first writer.
-fn start_up(bridge: &Arc<Bridge>, ros: &str, writers: &[rustdds::discovery::DiscoveredWriterData]) {
-    let p = &writers[0].publication_topic_data;
-    let Some(ros_type) = names::ros_type(&p.type_name) else {
-        bridge.report_once(ros, &bridge.stats.unknown_types, || {
-            format!(
-                "ros2: not bridging {ros}: its DDS type {:?} is not a ROS 2 type name (pkg::msg::dds_::T_)",
-                p.type_name
-            )
-        });
-        return;
-    };
-    let Some(schema) = bridge.schema(&ros_type) else {
-        bridge.report_once(ros, &bridge.stats.unknown_types, || {
-            format!(
-                "ros2: not bridging {ros}: type {ros_type} is unknown to the agent's registry; \
-                 give the agent its package with --msg-path DIR (DIR/<package>/msg/<Type>.msg)"
-            )
-        });
-        return;
-    };
-    let Ok(name) = TopicName::parse(ros) else {
-        return;
-    };
-    // Latched when any writer keeps its last message for late readers.
-    let latched = writers.iter().any(|w| {
-        matches!(
-            w.publication_topic_data.durability,
-            Some(rustdds::policy::Durability::TransientLocal)
-        )
-    });
-    let reliable = writers.iter().all(|w| {
-        !matches!(
-            w.publication_topic_data.reliability,
-            Some(rustdds::policy::Reliability::BestEffort)
-        )
-    });
-    let qos = crate::qos::reader_for(
-        Some(if reliable {
-            rustdds::policy::Reliability::Reliable {
-                max_blocking_time: rustdds::Duration::from_millis(100),
-            }
-        } else {
-            rustdds::policy::Reliability::BestEffort
-        }),
-        latched.then_some(rustdds::policy::Durability::TransientLocal),
-        crate::qos::reader_depth(&ros_type),
-    );
-    let topic = match bridge
-        .router
-        .advertise(bridge.client, &name, schema, latched)
-    {
-        Ok(t) => t,
-        Err(RouteError::TypeConflict { existing, .. }) => {
-            bridge.report_once(ros, &bridge.stats.type_mismatches, || {
-                format!(
-                    "ros2: type mismatch on {ros}: the agent's topic is {existing}, local writers send {ros_type}; \
-                     {ros} is not bridged, other topics are unaffected"
-                )
-            });
-            return;
-        }
-        Err(e) => {
-            tracing::warn!("ros2: cannot bridge {ros}: {e}");
-            return;
-        }
-    };
-    let reader = match bridge.reader(&p.topic_name, &p.type_name, qos.clone()) {
-        Ok(r) => r,
-        Err(e) => {
-            tracing::warn!("ros2: cannot bridge {ros}: {e}");
-            bridge.router.unadvertise(bridge.client, &name);
-            return;
-        }
-    };
-    tracing::info!(
-        "ros2: receiving {ros} ({ros_type}{}{})",
-        if latched { ", latched" } else { "" },
-        if reliable { "" } else { ", best effort" }
-    );
-    let reading = Arc::new(Reading {
-        dds_topic: p.topic_name.clone(),
-        dds_type: p.type_name.clone(),
-        qos,
-        topic,
-        seq: AtomicU64::new(0),
-    });
-    let task = tokio::spawn(pump_up(bridge.clone(), reading.clone(), reader)).abort_handle();
-    bridge.lock().up.insert(
-        ros.to_owned(),
-        Up {
-            writers: writers
-                .iter()
-                .map(|w| w.publication_topic_data.key)
-                .collect(),
-            task: Some(task),
-            reading,
-            unwanted_since: None,
-        },
-    );
-}
-
-/// `ros` is no longer bridged (its local writers are gone, or `publish` no longer has it):
-/// stop reading it and unadvertise it.
-fn stop_up(bridge: &Bridge, ros: &str) {
-    let Some(up) = bridge.lock().up.remove(ros) else {
-        return;
-    };
-    if let Some(task) = up.task {
-        task.abort();
-    }
-    if let Ok(name) = TopicName::parse(ros) {
-        bridge.router.unadvertise(bridge.client, &name);
-    }
-}
-
-/// Forwards a reader's samples to the router as they arrived.
-async fn pump_up(bridge: Arc<Bridge>, reading: Arc<Reading>, reader: RawReader) {
-    let topic = &reading.topic;
-    let mut samples = reader.async_sample_stream();
-    while let Some(r) = samples.next().await {
-        match r {
-            Ok(sample) => {
-                // Our own writer on the same topic (bridged both ways): never back up.
-                if bridge.is_own(sample.sample_info().writer_guid()) {
-                    continue;
-                }
-                let seq = reading.seq.fetch_add(1, Relaxed) + 1;
-                topic.publish(
-                    bridge.client,
-                    seq,
-                    fleetlink_relay::unix_nanos(),
-                    Payload::new(Encoding::Cdr, sample.into_value().0),
-                );
-                bridge.stats.messages_up.fetch_add(1, Relaxed);
-            }
-            Err(e) => tracing::debug!("ros2: reading {}: {e}", topic.name()),
-        }
-    }
-}
-
-/// A router message for the graph, written by the topic's writer (created on the first
-/// message, with the topic's type and latching).
-fn down(bridge: &Bridge, msg: &Message) {
-    let name = msg.topic.name.as_str();
-    let mut st = bridge.lock();
-    let entry = st
-        .down
-        .entry(name.to_owned())
-        .or_insert_with(|| create_down(bridge, msg));
-    let Some(d) = entry else {
-        bridge.stats.dropped_down.fetch_add(1, Relaxed);
-        return;
-    };
-    let body = match bridge.to_cdr(&d.type_name, &msg.payload) {
-        Ok(b) => b,
-        Err(e) => {
-            bridge.stats.dropped_down.fetch_add(1, Relaxed);
-            tracing::debug!("ros2: dropping a message of {name}: {e}");
-            return;
-        }
-    };
-    d.write(body, &bridge.stats);
-}
-
-/// Whether a new writer holds messages ([`Held`]).
-fn holding(bridge: &Bridge) -> bool {
-    bridge
-        .lock()
-        .down
-        .values()
-        .any(|d| d.as_ref().is_some_and(|d| d.held.is_some()))
-}
-
-/// Sends held messages of writers now matched (or done waiting).
-fn release_held(bridge: &Bridge) {
-    let mut st = bridge.lock();
-    for d in st.down.values_mut().flatten() {
-        d.release(&bridge.stats);
-    }
-}
-
-/// The writer of a router topic; `None` (remembered, reported once) when its type cannot
-/// be written.
-fn create_down(bridge: &Bridge, msg: &Message) -> Option<Down> {
-    let name = msg.topic.name.as_str();
-    let type_name = &msg.topic.schema.type_name;
-    let Some(dds_type) = names::dds_type(type_name) else {
-        tracing::warn!(
-            "ros2: cannot write {name} into the graph: {type_name:?} is not a ROS type name"
-        );
-        return None;
-    };
-    let latched = bridge
-        .router
-        .topic(&msg.topic.name)
-        .is_some_and(|t| t.is_latched());
-    let dds_topic = names::topic(name);
-    match bridge.writer(&dds_topic, &dds_type, crate::qos::writer(latched)) {
-        Ok(writer) => {
-            // Local readers already waiting for the topic: the first messages wait for
-            // them to be matched.
-            let readers = bridge
-                .dp
-                .discovered_readers()
-                .iter()
-                .filter(|r| {
-                    let s = &r.subscription_topic_data;
-                    s.topic_name() == &dds_topic && !bridge.is_own(s.key())
-                })
-                .count();
-            tracing::info!(
-                "ros2: writing {name} ({type_name}{}) into the graph, {readers} local reader(s) known",
-                if latched { ", transient local" } else { "" }
-            );
-            let held = (readers > 0).then(|| Held {
-                readers: i32::try_from(readers).unwrap_or(i32::MAX),
-                until: Instant::now() + DOWN_MATCH_WAIT,
-                matched_at: None,
-                bodies: Default::default(),
-            });
-            Some(Down {
-                writer,
-                type_name: type_name.clone(),
-                held,
-            })
-        }
-        Err(e) => {
-            tracing::warn!("ros2: cannot write {name} into the graph: {e}");
-            None
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{DdsAddress, DdsAddresses};
-
-    fn set(list: &[(&str, u32, [u8; 4])]) -> Option<DdsAddresses> {
-        let seen = list
-            .iter()
-            .map(|(interface, index, a)| DdsAddress {
-                interface: (*interface).into(),
-                index: *index,
-                addr: (*a).into(),
-            })
-            .collect();
-        Some(DdsAddresses { seen })
-    }
-
-    #[test]
-    fn an_address_that_appears_is_reported_once_and_one_that_goes_is_not() {
-        let mut a = DdsAddresses::default();
-        let lo = ("lo", 1, [127, 0, 0, 1]);
-        let wlan = ("wlan0", 3, [10, 0, 0, 5]);
-        assert_eq!(
-            a.appeared(set(&[lo])).len(),
-            1,
-            "the first look after an empty one"
-        );
-        assert!(a.appeared(set(&[lo])).is_empty());
-        let new = a.appeared(set(&[lo, wlan]));
-        assert_eq!(new.len(), 1);
-        assert_eq!(new[0].to_string(), "wlan0 10.0.0.5");
-        assert!(a.appeared(set(&[lo, wlan])).is_empty(), "reported once");
-        assert!(a.appeared(set(&[lo])).is_empty(), "gone: nothing to join");
-        assert_eq!(a.appeared(set(&[lo, wlan])).len(), 1, "back: joined again");
-        let replugged = ("wlan0", 4, [10, 0, 0, 5]);
-        assert_eq!(
-            a.appeared(set(&[lo, replugged])).len(),
-            1,
-            "the same address on a new device (its memberships went with the old one)"
-        );
-        assert!(
-            a.appeared(None).is_empty(),
-            "no answer from the system: no conclusion"
-        );
-        assert!(a.appeared(set(&[lo, replugged])).is_empty());
-    }
 }
