@@ -110,11 +110,11 @@ def bench_subcommands(binary):
                 return names, f"`{binary} bench --help`"
         except (OSError, subprocess.SubprocessError, IndexError) as e:
             print(f"note: `{binary} bench --help` failed ({e}); reading the source instead")
-    src = (ROOT / "crates/fleetlink/src/cmd/bench/mod.rs").read_text(encoding="utf-8")
+    src = (ROOT / "crates/bench/src/lib.rs").read_text(encoding="utf-8")
     body = src.split("enum Command {", 1)[1].split("\n}", 1)[0]
     names = {re.sub(r"(?<!^)([A-Z])", r"-\1", m.group(1)).lower()
              for m in re.finditer(r"^\s{4}([A-Z]\w*)\s*\(", body, re.M)}
-    return names, "crates/fleetlink/src/cmd/bench/mod.rs"
+    return names, "crates/bench/src/lib.rs"
 
 
 def cargo_bench_exists(words):

@@ -12,8 +12,10 @@ pub mod msg;
 pub mod play;
 pub mod qoi_sim;
 pub mod record;
-pub mod remote;
 pub mod upstream;
+
+/// A running hub as the CLI reaches it (`record`, `play` and `bench record` share it).
+pub use fleetlink_remote as remote;
 
 /// Completes on Ctrl-C or SIGTERM.
 pub async fn shutdown_signal() {
@@ -86,15 +88,15 @@ where
     )
 }
 
-/// Raises this process's soft limit on open files to at least `want` (up to the hard
-/// limit): every connection is a file, and the usual soft limit of 1,024 would cap a hub
-/// or a fleet bench far below what it can carry. Above the hard limit it goes as far as
-/// that and says so.
 /// The hard limit on open files, if there is one.
 pub fn open_files_limit() -> Option<u64> {
     rustix::process::getrlimit(rustix::process::Resource::Nofile).maximum
 }
 
+/// Raises this process's soft limit on open files to at least `want` (up to the hard
+/// limit): every connection is a file, and the usual soft limit of 1,024 would cap a hub
+/// or a fleet bench far below what it can carry. Above the hard limit it goes as far as
+/// that and says so.
 pub fn raise_open_files(want: u64) -> anyhow::Result<()> {
     use rustix::process::{Resource, getrlimit, setrlimit};
     let lim = getrlimit(Resource::Nofile);

@@ -23,7 +23,7 @@ use tokio_tungstenite::tungstenite::Message as WsMessage;
 use tokio_util::sync::CancellationToken;
 
 use super::conn::{Conn, Ws, pong, publisher_of, put_ping};
-use super::relay::Window;
+use super::relay_args::Window;
 
 /// The pattern every subscriber asks for.
 pub const PATTERN: &str = "/bench_pub_[0-9]+/data";

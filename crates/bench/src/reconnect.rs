@@ -20,6 +20,8 @@ use fleetlink_agent::{Agent, AgentOptions};
 use fleetlink_hub::{Hub, HubConfig};
 use tokio_util::sync::CancellationToken;
 
+use crate::host::Host;
+
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Number of robots (agents) in the fleet.
@@ -39,14 +41,22 @@ struct Outcome {
     refused_busy: u64,
 }
 
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args, host: &Host) -> anyhow::Result<()> {
     if args.robots == 0 {
         bail!("--robots must be at least 1");
     }
-    crate::cmd::raise_open_files(args.robots as u64 * 2 + 256)?;
-    crate::cmd::init_logging("error");
+    (host.raise_open_files)(args.robots as u64 * 2 + 256)?;
+    (host.init_logging)("error");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(bench(args))
+}
+
+/// Messages converted with the bundled definitions only, as `fleetlink hub` and
+/// `fleetlink agent` do without `--msg-path`.
+fn transcoder() -> Arc<dyn fleetlink_relay::Transcoder> {
+    Arc::new(fleetlink_relay::transcode::RegistryTranscoder::new(
+        fleetlink_msg::Registry::bundled(),
+    ))
 }
 
 fn hub_config(listen: SocketAddr, data_dir: PathBuf) -> anyhow::Result<HubConfig> {
@@ -71,7 +81,7 @@ struct RunningHub {
 }
 
 async fn start_hub(cfg: HubConfig) -> anyhow::Result<RunningHub> {
-    let hub = Hub::bind(cfg, crate::transcoder(&[])?).await?;
+    let hub = Hub::bind(cfg, transcoder()).await?;
     let addr = hub.local_addr();
     let limits = hub.state().limits.clone();
     let stop = CancellationToken::new();
@@ -118,7 +128,7 @@ async fn bench(args: Args) -> anyhow::Result<()> {
             video: Vec::new(),
             runtime: None,
         };
-        let agent = Agent::bind(opts, crate::transcoder(&[])?).await?;
+        let agent = Agent::bind(opts, transcoder()).await?;
         states.push(agent.link_state());
         tokio::spawn(agent.run(stop.clone()));
     }

@@ -19,6 +19,7 @@ use tokio::task::JoinSet;
 use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use super::conn::hub_url;
+use crate::host::Host;
 
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
@@ -58,14 +59,14 @@ pub struct Args {
 
 const SERVICE: &str = "/bench/echo";
 
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args, host: &Host) -> anyhow::Result<()> {
     if args.callers.is_empty() || args.callers.contains(&0) {
         bail!("--callers needs at least one concurrency, each at least 1");
     }
     if args.calls == 0 {
         bail!("--calls must be at least 1");
     }
-    crate::cmd::init_logging("error");
+    (host.init_logging)("error");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(bench(args))
 }

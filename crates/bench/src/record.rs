@@ -20,6 +20,7 @@ use bytes::BytesMut;
 use fleetlink_msg::{Registry, Wire};
 use fleetlink_proto::frame::{self, DEFAULT_CHUNK_SIZE, Frame};
 use fleetlink_proto::{Encoding, Schema};
+use fleetlink_remote::Remote;
 use futures_util::{SinkExt, StreamExt};
 use hyper::Method;
 use serde_json::{Value, json};
@@ -27,7 +28,6 @@ use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use super::calls::{proc_figures, stat_cpu_seconds};
 use super::conn::{self, pong};
-use crate::cmd::remote::Remote;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -82,7 +82,7 @@ struct Summary {
     hub_cpu_percent: f64,
 }
 
-impl super::Report for Summary {
+impl crate::measure::Report for Summary {
     fn text(&self) -> String {
         format!(
             "offered {:.1} MB/s for {:.1} s: {} messages sent, {} recorded, {} dropped; \
@@ -111,7 +111,7 @@ struct Stream {
 
 pub fn run(args: Args) -> anyhow::Result<()> {
     let json = args.json;
-    super::run_measurement(None, json, bench(args))
+    crate::measure::run_measurement(None, json, bench(args))
 }
 
 /// A smooth value with noise, as bytes of a sensor's data look.

@@ -11,7 +11,7 @@ use serde::Serialize;
 use tokio_util::sync::CancellationToken;
 
 use super::publisher::Sent;
-use super::relay::{Args, Rate, Window};
+use super::relay_args::{Args, Rate, Window};
 use super::subscriber::{Shared, new_histogram};
 
 /// The final result. Field names are the `--json` keys.
@@ -100,7 +100,7 @@ pub fn summarize(
     }
 }
 
-impl super::Report for Summary {
+impl crate::measure::Report for Summary {
     fn text(&self) -> String {
         let rate = match &self.rate {
             serde_json::Value::Number(n) => match n.as_f64() {

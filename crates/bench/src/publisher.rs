@@ -30,7 +30,7 @@ use tokio_tungstenite::tungstenite::Message as WsMessage;
 use tokio_util::sync::CancellationToken;
 
 use super::conn::{Conn, Ws, pong, put_ping};
-use super::relay::{Rate, Window};
+use super::relay_args::{Rate, Window};
 use super::subscriber::Shared;
 
 /// Small frames are packed into one WebSocket message up to about this size.

@@ -1,5 +1,8 @@
-//! A running hub as the CLI reaches it: its address, the caller's token, the CA its
-//! certificate is checked against; its JSON API over HTTP(S) and its WebSocket port.
+//! A running hub as the command line reaches it: its address, the caller's token, the CA
+//! its certificate is checked against; its JSON API over HTTP(S) and its WebSocket port.
+//! Shared by `fleetlink record` and `fleetlink play` (the `fleetlink` package) and by
+//! `fleetlink bench record` (the `fleetlink-bench` package), so neither depends on the
+//! other for it.
 
 use std::path::PathBuf;
 use std::sync::Arc;

@@ -29,6 +29,7 @@ use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use super::calls::{proc_figures, with_token};
 use super::conn;
+use crate::host::Host;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Protocol {
@@ -96,14 +97,14 @@ const NATS_SUBJECT: &str = "bench.data";
 /// Longest wait for a connection and its setup exchange.
 const SETUP: Duration = Duration::from_secs(10);
 
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args, host: &Host) -> anyhow::Result<()> {
     if args.rate == 0 || args.subscribers == 0 || args.duration <= 0.0 {
         bail!("--rate, --subscribers and --duration must be positive");
     }
     if args.size < 16 {
         bail!("--size must be at least 16 bytes");
     }
-    crate::cmd::init_logging("error");
+    (host.init_logging)("error");
     let rt = tokio::runtime::Runtime::new().context("starting the async runtime")?;
     rt.block_on(bench(args))
 }

@@ -33,6 +33,7 @@ use tokio_tungstenite::tungstenite::http::HeaderValue;
 
 use super::calls::{proc_figures, with_token};
 use super::conn::{self, pong};
+use crate::host::Host;
 
 #[derive(Clone, Copy, Debug, clap::ValueEnum, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -115,7 +116,7 @@ struct Latency {
     max: f64,
 }
 
-impl super::Report for Summary {
+impl crate::measure::Report for Summary {
     fn text(&self) -> String {
         let lat = self
             .latency_ms
@@ -143,13 +144,13 @@ impl super::Report for Summary {
     }
 }
 
-pub fn run(args: Args) -> anyhow::Result<()> {
+pub fn run(args: Args, host: &Host) -> anyhow::Result<()> {
     if args.rate <= 0.0 || args.viewers == 0 || args.duration <= 0.0 || args.size < 16 {
         bail!("--rate, --viewers and --duration must be positive and --size at least 16");
     }
-    crate::cmd::init_logging("error");
+    (host.init_logging)("error");
     let json = args.json;
-    super::run_measurement(None, json, bench(args))
+    crate::measure::run_measurement(None, json, bench(args))
 }
 
 /// The window's counters, shared by the viewers.

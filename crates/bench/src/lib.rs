@@ -1,10 +1,17 @@
-//! `fleetlink bench`: whole-system load generators against a running hub. Component
-//! benchmarks are criterion benches beside their crates (`cargo bench`); results and the
-//! commands that produced them are in `docs/benchmarks.md` (the latest figure per target)
-//! and `docs/benchmarks/log.md` (every dated run).
+//! fleetlink's whole-system benchmarks: the load generators behind `fleetlink bench
+//! <subcommand>`, run against a running hub (or hubs, agents and other servers they start
+//! themselves), each reporting one summary. Component benchmarks are criterion benches
+//! beside their crates (`cargo bench`); results and the commands that produced them are in
+//! `docs/benchmarks.md` (the latest figure per target) and `docs/benchmarks/log.md` (every
+//! dated run). The `fleetlink` binary parses the command line with [`Args`] and calls
+//! [`run`], handing in what it owns for the whole process ([`Host`]).
 //!
-//! - [`relay`]: the `relay` subcommand: options, the run's order of events and what is
-//!   counted.
+//! Layout. Each subcommand is a module with its `Args` and `run`; the shared pieces below
+//! them import nothing from the subcommands that use them.
+//!
+//! - [`relay`]: the `relay` subcommand: the run's order of events and what is counted.
+//! - [`relay_args`]: the `relay` subcommand's options and measurement window, shared by
+//!   its publishers, subscribers and report.
 //! - [`calls`]: the `calls` subcommand: service round trips through a hub and an agent.
 //! - [`delivery`]: the `delivery` subcommand: a server's CPU per delivered message, for
 //!   the hub's protocols and for NATS and MQTT servers.
@@ -30,6 +37,8 @@
 //!   (bytes at equal luma PSNR, encode time).
 //! - [`journal`]: the `journal` subcommand: the agent thread's heartbeat and an adapter
 //!   while the durable outbox compacts on a slow disk (test builds).
+//! - [`measure`]: a summary's two forms and the runtime a measurement runs on.
+//! - [`host`]: what a bench borrows from the binary that runs it.
 
 mod calls;
 mod conn;
@@ -37,16 +46,21 @@ mod copy_floor;
 mod delivery;
 mod fleet;
 mod fleet_floor;
+mod host;
 mod journal;
+mod measure;
 mod publisher;
 mod reconnect;
 mod record;
 mod relay;
+mod relay_args;
 mod report;
 mod subscriber;
 mod video;
 mod viewer;
 mod ws_floor;
+
+pub use host::Host;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -58,7 +72,7 @@ pub struct Args {
 enum Command {
     /// Publishers and subscribers on fleetlink.v1 links through a running hub: delivered
     /// msg/s, MB/s, latency percentiles and drops.
-    Relay(relay::Args),
+    Relay(relay_args::Args),
     /// N simulated robots (T topics at a rate each) and their subscribers against one hub
     /// or several federated hubs: connect time, delivered msg/s, latency percentiles, and
     /// the hubs' CPU and memory per robot, idle and loaded.
@@ -99,51 +113,20 @@ enum Command {
     Journal(journal::Args),
 }
 
-pub fn run(args: Args) -> anyhow::Result<()> {
+/// Runs the subcommand `args` names.
+pub fn run(args: Args, host: &Host) -> anyhow::Result<()> {
     match args.command {
         Command::Relay(a) => relay::run(a),
-        Command::Fleet(a) => fleet::run(a),
-        Command::Reconnect(a) => reconnect::run(a),
-        Command::Calls(a) => calls::run(a),
-        Command::Delivery(a) => delivery::run(a),
+        Command::Fleet(a) => fleet::run(a, host),
+        Command::Reconnect(a) => reconnect::run(a, host),
+        Command::Calls(a) => calls::run(a, host),
+        Command::Delivery(a) => delivery::run(a, host),
         Command::CopyFloor(a) => copy_floor::run(a),
         Command::WsFloor(a) => ws_floor::run(a),
         Command::FleetFloor(a) => fleet_floor::run(a),
-        Command::Viewer(a) => viewer::run(a),
+        Command::Viewer(a) => viewer::run(a, host),
         Command::Record(a) => record::run(a),
         Command::Journal(a) => journal::run(a),
         Command::Video(a) => video::run(a),
     }
-}
-
-/// A bench's final summary: one JSON object with `--json`, else text.
-trait Report: serde::Serialize {
-    fn text(&self) -> String;
-}
-
-/// Runs `measure` on a multi-thread runtime (`threads` workers, default one per core) and
-/// prints its summary. Connections still open are dropped with the runtime; nothing
-/// waits for the hub to close them.
-fn run_measurement<R: Report>(
-    threads: Option<usize>,
-    json: bool,
-    measure: impl Future<Output = anyhow::Result<R>>,
-) -> anyhow::Result<()> {
-    use anyhow::Context;
-    let mut rt = tokio::runtime::Builder::new_multi_thread();
-    if let Some(n) = threads {
-        rt.worker_threads(n.max(1));
-    }
-    let rt = rt
-        .enable_all()
-        .build()
-        .context("starting the async runtime")?;
-    let summary = rt.block_on(measure)?;
-    if json {
-        println!("{}", serde_json::to_string(&summary)?);
-    } else {
-        print!("{}", summary.text());
-    }
-    rt.shutdown_timeout(std::time::Duration::from_millis(200));
-    Ok(())
 }
