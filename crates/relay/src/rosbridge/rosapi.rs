@@ -9,7 +9,7 @@ use serde_json::{Value, json};
 
 use crate::gate::Op;
 use crate::names::TopicName;
-use crate::router::{ClientKind, Router};
+use crate::router::{ClientKind, Router, TopicSnapshot};
 use crate::unix_nanos;
 
 /// What the session should answer for a `call_service`.
@@ -51,6 +51,8 @@ pub const SERVICES: &[&str] = &[
     "search_param",
 ];
 
+/// Answers a `call_service` of a `/rosapi/` service: `visible` says whether the caller
+/// may see a name for an operation (the ACL), `changed` hears of each parameter change.
 pub fn answer(
     router: &Router,
     node_name: &str,
@@ -70,6 +72,39 @@ pub fn answer(
         .into_iter()
         .filter(|t| t.listed() && visible(t.meta.name.as_str(), Op::Subscribe))
         .collect();
+    let values = match call {
+        "topics"
+        | "topics_and_raw_types"
+        | "topic_type"
+        | "topics_for_type"
+        | "publishers"
+        | "subscribers" => topic_info(router, call, args, &topics),
+        "get_time" | "get_ros_version" | "nodes" | "services" | "action_servers" | "interfaces"
+        | "node_details" => graph(router, node_name, call, args, &topics, visible),
+        "get_param" | "set_param" | "has_param" | "delete_param" | "get_param_names"
+        | "search_param" => params(router, call, args, visible, changed),
+        "service_request_details" | "service_response_details" | "message_details" => {
+            type_details(router, call, args)
+        }
+        "service_type" | "service_providers" | "service_node" => {
+            service_info(router, node_name, call, args, visible)
+        }
+        other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
+    };
+    values.map_or_else(
+        |e| Answer::Failed(format!("{service}: {e}")),
+        Answer::Values,
+    )
+}
+
+/// The topic services: listings, a topic's type, its publishers and subscribers.
+/// `topics` are those the caller may see.
+fn topic_info(
+    router: &Router,
+    call: &str,
+    args: &Value,
+    topics: &[TopicSnapshot],
+) -> Result<Value, String> {
     let arg_topic = || -> Result<TopicName, String> {
         let raw = args
             .get("topic")
@@ -77,7 +112,7 @@ pub fn answer(
             .ok_or("missing string argument 'topic'")?;
         TopicName::parse(raw).map_err(|e| e.to_string())
     };
-    let values = match call {
+    Ok(match call {
         "topics" => json!({
             "topics": topics.iter().map(|t| t.meta.name.as_str()).collect::<Vec<_>>(),
             "types": topics.iter().map(|t| t.meta.schema.type_name.as_str()).collect::<Vec<_>>(),
@@ -97,37 +132,47 @@ pub fn answer(
                 s.text.clone()
             }).collect::<Vec<_>>(),
         }),
-        "topic_type" => match arg_topic() {
-            Ok(n) => {
-                json!({"type": topics.iter().find(|t| t.meta.name == n).map_or("", |t| t.meta.schema.type_name.as_str())})
-            }
-            Err(e) => return Answer::Failed(format!("{service}: {e}")),
-        },
+        "topic_type" => {
+            let n = arg_topic()?;
+            json!({"type": topics.iter().find(|t| t.meta.name == n).map_or("", |t| t.meta.schema.type_name.as_str())})
+        }
         "topics_for_type" => {
             let Some(ty) = args.get("type").and_then(Value::as_str) else {
-                return Answer::Failed(format!("{service}: missing string argument 'type'"));
+                return Err("missing string argument 'type'".into());
             };
             json!({"topics": topics.iter().filter(|t| crate::router::same_type(&t.meta.schema.type_name, ty)).map(|t| t.meta.name.as_str()).collect::<Vec<_>>()})
         }
-        "publishers" | "subscribers" => match arg_topic() {
-            Ok(n) => {
-                let ids = topics
-                    .iter()
-                    .find(|t| t.meta.name == n)
-                    .map(|t| {
-                        if call == "publishers" {
-                            t.publishers.clone()
-                        } else {
-                            t.subscribers.clone()
-                        }
-                    })
-                    .unwrap_or_default();
-                let names: Vec<String> =
-                    ids.iter().map(|id| client_node_name(router, *id)).collect();
-                json!({call: names})
-            }
-            Err(e) => return Answer::Failed(format!("{service}: {e}")),
-        },
+        "publishers" | "subscribers" => {
+            let n = arg_topic()?;
+            let ids = topics
+                .iter()
+                .find(|t| t.meta.name == n)
+                .map(|t| {
+                    if call == "publishers" {
+                        t.publishers.clone()
+                    } else {
+                        t.subscribers.clone()
+                    }
+                })
+                .unwrap_or_default();
+            let names: Vec<String> = ids.iter().map(|id| client_node_name(router, *id)).collect();
+            json!({call: names})
+        }
+        _ => unreachable!("listed in the caller"),
+    })
+}
+
+/// The graph beyond topics: time, version, nodes, services, action servers, the types
+/// known here, and what one node publishes, subscribes to and provides.
+fn graph(
+    router: &Router,
+    node_name: &str,
+    call: &str,
+    args: &Value,
+    topics: &[TopicSnapshot],
+    visible: &mut dyn FnMut(&str, Op) -> bool,
+) -> Result<Value, String> {
+    Ok(match call {
         "get_time" => {
             let ns = unix_nanos();
             let (s, n) = (ns / 1_000_000_000, ns % 1_000_000_000);
@@ -170,12 +215,12 @@ pub fn answer(
         "interfaces" => json!({ "interfaces": router.transcoder().type_names() }),
         "node_details" => {
             let Some(node) = args.get("node").and_then(Value::as_str) else {
-                return Answer::Failed(format!("{service}: missing string argument 'node'"));
+                return Err("missing string argument 'node'".into());
             };
             let node = format!("/{}", node.trim_start_matches('/'));
             let is = |id: &crate::ClientId| client_node_name(router, *id) == node;
             let (mut publishing, mut subscribing) = (Vec::new(), Vec::new());
-            for t in &topics {
+            for t in topics {
                 if t.publishers.iter().any(is) {
                     publishing.push(t.meta.name.to_string());
                 }
@@ -192,67 +237,68 @@ pub fn answer(
                 .collect();
             json!({"publishing": publishing, "subscribing": subscribing, "services": services})
         }
-        "get_param" | "set_param" | "has_param" | "delete_param" | "get_param_names"
-        | "search_param" => {
-            return params(router, call, args, visible, changed).map_or_else(
-                |e| Answer::Failed(format!("{service}: {e}")),
-                Answer::Values,
-            );
-        }
-        "service_request_details" | "service_response_details" | "message_details" => {
-            let Some(ty) = args.get("type").and_then(Value::as_str) else {
-                return Answer::Failed(format!("{service}: missing string argument 'type'"));
-            };
-            let part = match call {
-                "service_request_details" => format!("{}_Request", srv_name(ty)),
-                "service_response_details" => format!("{}_Response", srv_name(ty)),
-                _ => ty.to_owned(),
-            };
-            match router.transcoder().typedefs(&part) {
-                Some(defs) => json!({ "typedefs": defs }),
-                None => {
-                    return Answer::Failed(format!(
-                        "{service}: type {ty} is not known to this server (it learns types \
-                         from advertisements and from --msg-path packages)"
-                    ));
-                }
-            }
-        }
-        "service_type" | "service_providers" | "service_node" => {
-            let raw = args.get("service").and_then(Value::as_str);
-            let Some(name) = raw.and_then(|r| TopicName::parse(r).ok()) else {
-                return Answer::Failed(format!("{service}: missing string argument 'service'"));
-            };
-            let own = name
-                .as_str()
-                .strip_prefix("/rosapi/")
-                .is_some_and(|s| SERVICES.contains(&s));
-            let found = router.calls.service(&name).filter(|s| {
-                visible(
-                    s.name.as_str(),
-                    if s.action {
-                        Op::SendActionGoal
-                    } else {
-                        Op::CallService
-                    },
-                )
-            });
-            let provider = match (&found, own) {
-                (Some(s), _) => Some(client_node_name(router, s.provider)),
-                (None, true) => Some(node_name.to_owned()),
-                (None, false) => None,
-            };
-            match call {
-                "service_type" => json!({"type": found.as_ref().map_or(
-                    if own { "rosapi/srv/Service" } else { "" },
-                    |s| s.schema.type_name.as_str())}),
-                "service_node" => json!({"node": provider.unwrap_or_default()}),
-                _ => json!({"providers": provider.into_iter().collect::<Vec<_>>()}),
-            }
-        }
-        other => return Answer::Failed(format!("unknown rosapi service '{other}'")),
+        _ => unreachable!("listed in the caller"),
+    })
+}
+
+/// The definitions of a message type, or of a service's request or response.
+fn type_details(router: &Router, call: &str, args: &Value) -> Result<Value, String> {
+    let Some(ty) = args.get("type").and_then(Value::as_str) else {
+        return Err("missing string argument 'type'".into());
     };
-    Answer::Values(values)
+    let part = match call {
+        "service_request_details" => format!("{}_Request", srv_name(ty)),
+        "service_response_details" => format!("{}_Response", srv_name(ty)),
+        _ => ty.to_owned(),
+    };
+    match router.transcoder().typedefs(&part) {
+        Some(defs) => Ok(json!({ "typedefs": defs })),
+        None => Err(format!(
+            "type {ty} is not known to this server (it learns types from advertisements \
+             and from --msg-path packages)"
+        )),
+    }
+}
+
+/// A service's type, provider and node; the server's own `/rosapi/` services are
+/// provided by `node_name`.
+fn service_info(
+    router: &Router,
+    node_name: &str,
+    call: &str,
+    args: &Value,
+    visible: &mut dyn FnMut(&str, Op) -> bool,
+) -> Result<Value, String> {
+    let raw = args.get("service").and_then(Value::as_str);
+    let Some(name) = raw.and_then(|r| TopicName::parse(r).ok()) else {
+        return Err("missing string argument 'service'".into());
+    };
+    let own = name
+        .as_str()
+        .strip_prefix("/rosapi/")
+        .is_some_and(|s| SERVICES.contains(&s));
+    let found = router.calls.service(&name).filter(|s| {
+        visible(
+            s.name.as_str(),
+            if s.action {
+                Op::SendActionGoal
+            } else {
+                Op::CallService
+            },
+        )
+    });
+    let provider = match (&found, own) {
+        (Some(s), _) => Some(client_node_name(router, s.provider)),
+        (None, true) => Some(node_name.to_owned()),
+        (None, false) => None,
+    };
+    Ok(match call {
+        "service_type" => json!({"type": found.as_ref().map_or(
+                if own { "rosapi/srv/Service" } else { "" },
+                |s| s.schema.type_name.as_str())}),
+        "service_node" => json!({"node": provider.unwrap_or_default()}),
+        _ => json!({"providers": provider.into_iter().collect::<Vec<_>>()}),
+    })
 }
 
 /// The parameter services. Reading a parameter needs `subscribe` on its name, changing it
