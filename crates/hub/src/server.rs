@@ -462,41 +462,8 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
     let local = req.extensions().get::<ConnMeta>().and_then(|m| m.local);
     // The offered subprotocols, read before any await: a borrow of the request (whose
     // body is not `Sync`) must not live across one.
-    let (agent, foxglove) = {
-        let offered = || {
-            req.headers()
-                .get_all(header::SEC_WEBSOCKET_PROTOCOL)
-                .iter()
-                .filter_map(|v| v.to_str().ok())
-                .flat_map(|v| v.split(','))
-                .map(str::trim)
-        };
-        let agent = offered().any(|p| p == SUBPROTOCOL);
-        // The client's first Foxglove subprotocol, echoed in the answer.
-        let foxglove = if agent {
-            None
-        } else {
-            fleetlink_foxglove::choose_subprotocol(offered())
-        };
-        (agent, foxglove)
-    };
-    // Compression for a viewer that offers it and a hub that allows it (never on a
-    // robot's link, which compresses its own way).
-    let deflate = if agent {
-        None
-    } else if foxglove.is_some() {
-        st.foxglove.deflate
-    } else {
-        st.rosbridge.deflate
-    }
-    .and_then(|cfg| {
-        let offers = req
-            .headers()
-            .get_all(header::SEC_WEBSOCKET_EXTENSIONS)
-            .iter()
-            .filter_map(|v| v.to_str().ok());
-        deflate::negotiate(offers).map(|agreed| (cfg, agreed.response()))
-    });
+    let (agent, foxglove) = offered_subprotocol(req.headers());
+    let deflate = negotiate_deflate(&st, req.headers(), agent, foxglove);
     // Authenticate before switching protocols: a bad credential gets a plain 401 the
     // client can show; no credential means the client authenticates in-band (agents in
     // HELLO, rosbridge clients with an `auth` operation) or reads anonymously where that
@@ -607,6 +574,61 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
             .await;
         }
     });
+    switching_protocols(&key, agent, foxglove, deflate)
+}
+
+/// The subprotocol the client asks for: whether it is the agent link's, and otherwise
+/// the client's first Foxglove subprotocol, echoed in the answer (neither: rosbridge).
+fn offered_subprotocol(headers: &HeaderMap) -> (bool, Option<&'static str>) {
+    let offered = || {
+        headers
+            .get_all(header::SEC_WEBSOCKET_PROTOCOL)
+            .iter()
+            .filter_map(|v| v.to_str().ok())
+            .flat_map(|v| v.split(','))
+            .map(str::trim)
+    };
+    let agent = offered().any(|p| p == SUBPROTOCOL);
+    let foxglove = if agent {
+        None
+    } else {
+        fleetlink_foxglove::choose_subprotocol(offered())
+    };
+    (agent, foxglove)
+}
+
+/// Compression for a viewer that offers it and a hub that allows it (never on a robot's
+/// link, which compresses its own way): the settings, and the extension to answer.
+fn negotiate_deflate(
+    st: &HubState,
+    headers: &HeaderMap,
+    agent: bool,
+    foxglove: Option<&'static str>,
+) -> Option<(DeflateConfig, String)> {
+    if agent {
+        None
+    } else if foxglove.is_some() {
+        st.foxglove.deflate
+    } else {
+        st.rosbridge.deflate
+    }
+    .and_then(|cfg| {
+        let offers = headers
+            .get_all(header::SEC_WEBSOCKET_EXTENSIONS)
+            .iter()
+            .filter_map(|v| v.to_str().ok());
+        deflate::negotiate(offers).map(|agreed| (cfg, agreed.response()))
+    })
+}
+
+/// The `101 Switching Protocols` answer: the accept key, the chosen subprotocol and the
+/// agreed compression.
+fn switching_protocols(
+    key: &HeaderValue,
+    agent: bool,
+    foxglove: Option<&'static str>,
+    deflate: Option<(DeflateConfig, String)>,
+) -> Response {
     let mut res = Response::new(Body::empty());
     *res.status_mut() = StatusCode::SWITCHING_PROTOCOLS;
     let h = res.headers_mut();

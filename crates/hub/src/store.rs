@@ -4,16 +4,23 @@
 //! It remembers every robot that ever connected, so the API can list robots that are
 //! offline, how far each robot's no-drop topics have been delivered (see
 //! [`crate::delivery`]), so a restarted hub — or the hub a robot fails over to — still
-//! delivers each message once, and the parameters. Writes run on the blocking pool. Each
-//! method holds both SQL dialects side by side; a parameter change on PostgreSQL notifies
-//! the other hubs ([`Store::on_params_changed`]).
+//! delivers each message once, and the parameters. Writes run on the blocking pool.
+//!
+//! Design choice: one [`Store`] API over two backends, chosen once, when the store is
+//! opened. Each backend is an `Engine` in its own file that holds all of its SQL
+//! dialect: `store/sqlite.rs` ([`Store::open`]) and `store/postgres.rs`
+//! ([`Store::postgres`]). The methods here only prepare values and hand them to the
+//! engine. A parameter change on PostgreSQL notifies the other hubs
+//! ([`Store::on_params_changed`]).
 
-use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
+mod postgres;
+mod sqlite;
 
-use fleetlink_postgres::changes::{Change, notify};
-use fleetlink_postgres::{Database, DbError, PgError};
-use rusqlite::{Connection, params};
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use fleetlink_postgres::{DbError, PgError};
 
 #[derive(Debug, thiserror::Error)]
 pub enum StoreError {
@@ -61,241 +68,85 @@ pub struct KeptConfig {
     pub at_ms: i64,
 }
 
-/// The PostgreSQL schema, one entry per version (never edit one that shipped; add one).
-const PG_MIGRATIONS: &[&str] = &[
-    "
-    CREATE TABLE robots (
-        name TEXT PRIMARY KEY,
-        first_seen_ms BIGINT NOT NULL,
-        last_seen_ms BIGINT NOT NULL,
-        last_addr TEXT NOT NULL,
-        connects BIGINT NOT NULL DEFAULT 0
-    );
-    CREATE TABLE params (
-        name TEXT PRIMARY KEY,
-        value TEXT NOT NULL
-    );
-    CREATE TABLE delivered (
-        robot TEXT NOT NULL,
-        topic TEXT NOT NULL,
-        epoch BIGINT NOT NULL,
-        seq BIGINT NOT NULL,
-        PRIMARY KEY (robot, topic)
-    );
-",
-    "
-    CREATE TABLE robot_configs (
-        robot TEXT PRIMARY KEY,
-        overlay TEXT NOT NULL,
-        by_whom TEXT NOT NULL,
-        at_ms BIGINT NOT NULL
-    );
-",
-];
-
+/// Handle to the hub's tables. Cheap to clone.
 #[derive(Clone)]
 pub struct Store {
-    backend: Backend,
+    engine: Arc<dyn Engine>,
 }
 
-#[derive(Clone)]
-enum Backend {
-    // std Mutex: every use is one short synchronous statement on the blocking pool.
-    Sqlite(Arc<Mutex<Connection>>),
-    Postgres(Database),
+/// One backend's statements: every [`Store`] method, in that backend's SQL dialect.
+/// Values (times, counters) are prepared by the caller, so both engines write the same.
+trait Engine: Send + Sync {
+    /// Whether other hubs may change this state too.
+    fn is_shared(&self) -> bool;
+    /// See [`Store::on_params_changed`].
+    fn on_params_changed(&self, f: Box<dyn Fn() -> bool + Send + Sync>);
+    fn robot_seen(
+        &self,
+        name: &str,
+        addr: &str,
+        now: i64,
+        connected: i64,
+    ) -> Result<(), StoreError>;
+    fn robot_config(&self, robot: &str) -> Result<Option<KeptConfig>, StoreError>;
+    fn set_robot_config(
+        &self,
+        robot: &str,
+        overlay: &str,
+        by: &str,
+        now: i64,
+    ) -> Result<(), StoreError>;
+    fn delivered(&self, robot: &str) -> Result<Vec<(String, u64, u64)>, StoreError>;
+    fn record_delivered(&self, robot: &str, marks: &[(String, u64, u64)])
+    -> Result<(), StoreError>;
+    fn params(&self) -> Result<BTreeMap<String, String>, StoreError>;
+    /// `changes` is never empty.
+    fn write_params(&self, changes: &[(String, Option<String>)]) -> Result<(), StoreError>;
+    /// `below` is the `LIKE` pattern of the names under `name`.
+    fn delete_params(&self, name: &str, below: &str) -> Result<(), StoreError>;
+    fn robots(&self) -> Result<Vec<RobotRecord>, StoreError>;
 }
 
 impl Store {
-    pub fn open(dir: &Path) -> Result<Store, StoreError> {
-        std::fs::create_dir_all(dir).map_err(|source| StoreError::CreateDir {
-            path: dir.to_owned(),
-            source,
-        })?;
-        let path = dir.join("hub.sqlite3");
-        let conn = Connection::open(&path).map_err(|source| StoreError::Open {
-            path: path.clone(),
-            source,
-        })?;
-        // Shared with `fleetlink admin` and the auth store: wait for their locks.
-        fleetlink_auth::store::init_schema(
-            &conn,
-            "CREATE TABLE IF NOT EXISTS robots (
-                 name TEXT PRIMARY KEY,
-                 first_seen_ms INTEGER NOT NULL,
-                 last_seen_ms INTEGER NOT NULL,
-                 last_addr TEXT NOT NULL,
-                 connects INTEGER NOT NULL DEFAULT 0
-             );
-             CREATE TABLE IF NOT EXISTS params (
-                 name TEXT PRIMARY KEY,
-                 value TEXT NOT NULL
-             );
-             CREATE TABLE IF NOT EXISTS delivered (
-                 robot TEXT NOT NULL,
-                 topic TEXT NOT NULL,
-                 epoch INTEGER NOT NULL,
-                 seq INTEGER NOT NULL,
-                 PRIMARY KEY (robot, topic)
-             );
-             CREATE TABLE IF NOT EXISTS robot_configs (
-                 robot TEXT PRIMARY KEY,
-                 overlay TEXT NOT NULL,
-                 by_whom TEXT NOT NULL,
-                 at_ms INTEGER NOT NULL
-             );",
-        )
-        .map_err(|source| StoreError::Open { path, source })?;
-        Ok(Store {
-            backend: Backend::Sqlite(Arc::new(Mutex::new(conn))),
-        })
-    }
-
-    /// The hub's tables in a shared PostgreSQL database, created or brought up to date
-    /// first (safe when several hubs start at once). Blocks: call it from a blocking
-    /// thread.
-    pub fn postgres(db: Database) -> Result<Store, StoreError> {
-        db.migrate("hub", PG_MIGRATIONS)?;
-        Ok(Store {
-            backend: Backend::Postgres(db),
-        })
+    fn new(engine: impl Engine + 'static) -> Store {
+        Store {
+            engine: Arc::new(engine),
+        }
     }
 
     /// Whether other hubs may change this state too (a shared PostgreSQL database).
     pub fn is_shared(&self) -> bool {
-        matches!(self.backend, Backend::Postgres(_))
+        self.engine.is_shared()
     }
 
     /// Calls `f` whenever any hub on the shared database changed a parameter, and when
     /// the notifications may have been missed (the listener reconnected). Never with
     /// SQLite, where this hub is the only writer. `f` must return at once (see
-    /// [`Database::on_change`]); returning `false` unsubscribes it.
+    /// [`fleetlink_postgres::Database::on_change`]); returning `false` unsubscribes it.
     pub fn on_params_changed(&self, f: impl Fn() -> bool + Send + Sync + 'static) {
-        if let Backend::Postgres(db) = &self.backend {
-            db.on_change(move |c| match c {
-                Change::Params | Change::Everything => f(),
-                _ => true,
-            });
-        }
-    }
-
-    fn with<T>(
-        conn: &Mutex<Connection>,
-        f: impl FnOnce(&Connection) -> rusqlite::Result<T>,
-    ) -> Result<T, StoreError> {
-        let conn = conn.lock().unwrap_or_else(|p| p.into_inner());
-        Ok(f(&conn)?)
+        self.engine.on_params_changed(Box::new(f));
     }
 
     pub fn robot_seen(&self, name: &str, addr: &str, connected: bool) -> Result<(), StoreError> {
         let now = now_ms();
         let connected = i64::from(connected);
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                c.execute(
-                    "INSERT INTO robots (name, first_seen_ms, last_seen_ms, last_addr, connects)
-                     VALUES (?1, ?2, ?2, ?3, ?4)
-                     ON CONFLICT(name) DO UPDATE SET last_seen_ms = ?2, last_addr = ?3,
-                         connects = connects + ?4",
-                    params![name, now, addr, connected],
-                )
-                .map(|_| ())
-            }),
-            Backend::Postgres(db) => {
-                db.execute(
-                    "INSERT INTO robots (name, first_seen_ms, last_seen_ms, last_addr, connects)
-                     VALUES ($1, $2, $2, $3, $4)
-                     ON CONFLICT (name) DO UPDATE SET last_seen_ms = $2, last_addr = $3,
-                         connects = robots.connects + $4",
-                    &[&name, &now, &addr, &connected],
-                )?;
-                Ok(())
-            }
-        }
+        self.engine.robot_seen(name, addr, now, connected)
     }
 
     /// The configuration changes kept for `robot`, if the hub applied any.
     pub fn robot_config(&self, robot: &str) -> Result<Option<KeptConfig>, StoreError> {
-        let sql_lite = "SELECT overlay, by_whom, at_ms FROM robot_configs WHERE robot = ?1";
-        let sql_pg = "SELECT overlay, by_whom, at_ms FROM robot_configs WHERE robot = $1";
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                let mut st = c.prepare(sql_lite)?;
-                let mut rows = st.query_map(params![robot], |r| {
-                    Ok(KeptConfig {
-                        overlay: r.get(0)?,
-                        by: r.get(1)?,
-                        at_ms: r.get(2)?,
-                    })
-                })?;
-                rows.next().transpose()
-            }),
-            Backend::Postgres(db) => Ok(db
-                .query(sql_pg, &[&robot])?
-                .first()
-                .map(|r| -> Result<KeptConfig, StoreError> {
-                    Ok(KeptConfig {
-                        overlay: r.try_get(0)?,
-                        by: r.try_get(1)?,
-                        at_ms: r.try_get(2)?,
-                    })
-                })
-                .transpose()?),
-        }
+        self.engine.robot_config(robot)
     }
 
     /// Keeps `overlay` as `robot`'s configuration changes, applied by `by` now.
     pub fn set_robot_config(&self, robot: &str, overlay: &str, by: &str) -> Result<(), StoreError> {
         let now = now_ms();
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                c.execute(
-                    "INSERT INTO robot_configs (robot, overlay, by_whom, at_ms) VALUES (?1, ?2, ?3, ?4)
-                     ON CONFLICT(robot) DO UPDATE SET overlay = ?2, by_whom = ?3, at_ms = ?4",
-                    params![robot, overlay, by, now],
-                )
-                .map(|_| ())
-            }),
-            Backend::Postgres(db) => {
-                db.execute(
-                    "INSERT INTO robot_configs (robot, overlay, by_whom, at_ms) VALUES ($1, $2, $3, $4)
-                     ON CONFLICT (robot) DO UPDATE SET overlay = $2, by_whom = $3, at_ms = $4",
-                    &[&robot, &overlay, &by, &now],
-                )?;
-                Ok(())
-            }
-        }
+        self.engine.set_robot_config(robot, overlay, by, now)
     }
 
     /// How far `robot`'s no-drop topics were delivered: (topic, epoch, last seq).
     pub fn delivered(&self, robot: &str) -> Result<Vec<(String, u64, u64)>, StoreError> {
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                let mut st =
-                    c.prepare("SELECT topic, epoch, seq FROM delivered WHERE robot = ?1")?;
-                let rows = st.query_map(params![robot], |r| {
-                    Ok((
-                        r.get::<_, String>(0)?,
-                        r.get::<_, i64>(1)? as u64,
-                        r.get::<_, i64>(2)? as u64,
-                    ))
-                })?;
-                rows.collect()
-            }),
-            Backend::Postgres(db) => db
-                .query(
-                    "SELECT topic, epoch, seq FROM delivered WHERE robot = $1",
-                    &[&robot],
-                )?
-                .iter()
-                .map(|r| {
-                    Ok((
-                        r.try_get(0)?,
-                        r.try_get::<_, i64>(1)? as u64,
-                        r.try_get::<_, i64>(2)? as u64,
-                    ))
-                })
-                .collect(),
-        }
+        self.engine.delivered(robot)
     }
 
     /// Records delivery marks of `robot` (topic, epoch, seq) in one transaction.
@@ -304,71 +155,12 @@ impl Store {
         robot: &str,
         marks: &[(String, u64, u64)],
     ) -> Result<(), StoreError> {
-        match &self.backend {
-            Backend::Sqlite(c) => {
-                let mut conn = c.lock().unwrap_or_else(|p| p.into_inner());
-                let tx = conn.transaction()?;
-                {
-                    let mut st = tx.prepare_cached(
-                        "INSERT INTO delivered (robot, topic, epoch, seq) VALUES (?1, ?2, ?3, ?4)
-                         ON CONFLICT(robot, topic) DO UPDATE SET epoch = ?3, seq = ?4",
-                    )?;
-                    for (topic, epoch, seq) in marks {
-                        st.execute(params![robot, topic, *epoch as i64, *seq as i64])?;
-                    }
-                    // Marks of an earlier epoch belong to an outbox the robot no longer has.
-                    if let Some((_, epoch, _)) = marks.first() {
-                        tx.execute(
-                            "DELETE FROM delivered WHERE robot = ?1 AND epoch != ?2",
-                            params![robot, *epoch as i64],
-                        )?;
-                    }
-                }
-                tx.commit()?;
-                Ok(())
-            }
-            Backend::Postgres(db) => {
-                let topics: Vec<&str> = marks.iter().map(|(t, _, _)| t.as_str()).collect();
-                let epochs: Vec<i64> = marks.iter().map(|(_, e, _)| *e as i64).collect();
-                let seqs: Vec<i64> = marks.iter().map(|(_, _, s)| *s as i64).collect();
-                db.transaction(async |tx| {
-                    // One statement for all marks: one round trip however many topics.
-                    tx.execute(
-                        "INSERT INTO delivered (robot, topic, epoch, seq)
-                         SELECT $1, * FROM UNNEST($2::TEXT[], $3::BIGINT[], $4::BIGINT[])
-                         ON CONFLICT (robot, topic)
-                         DO UPDATE SET epoch = excluded.epoch, seq = excluded.seq",
-                        &[&robot, &topics, &epochs, &seqs],
-                    )
-                    .await?;
-                    if let Some(epoch) = epochs.first() {
-                        tx.execute(
-                            "DELETE FROM delivered WHERE robot = $1 AND epoch != $2",
-                            &[&robot, epoch],
-                        )
-                        .await?;
-                    }
-                    Ok(())
-                })?;
-                Ok(())
-            }
-        }
+        self.engine.record_delivered(robot, marks)
     }
 
     /// Every parameter (name → JSON text).
-    pub fn params(&self) -> Result<std::collections::BTreeMap<String, String>, StoreError> {
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                let mut st = c.prepare("SELECT name, value FROM params")?;
-                let rows = st.query_map([], |r| Ok((r.get(0)?, r.get(1)?)))?;
-                rows.collect()
-            }),
-            Backend::Postgres(db) => db
-                .query("SELECT name, value FROM params", &[])?
-                .iter()
-                .map(|r| Ok((r.try_get(0)?, r.try_get(1)?)))
-                .collect(),
-        }
+    pub fn params(&self) -> Result<BTreeMap<String, String>, StoreError> {
+        self.engine.params()
     }
 
     /// Brings the named parameters in line in one transaction: each set to its value, or
@@ -377,110 +169,17 @@ impl Store {
         if changes.is_empty() {
             return Ok(());
         }
-        match &self.backend {
-            Backend::Sqlite(c) => {
-                let mut conn = c.lock().unwrap_or_else(|p| p.into_inner());
-                let tx = conn.transaction()?;
-                {
-                    let mut set = tx.prepare_cached(
-                        "INSERT INTO params (name, value) VALUES (?1, ?2)
-                         ON CONFLICT(name) DO UPDATE SET value = excluded.value",
-                    )?;
-                    let mut delete = tx.prepare_cached("DELETE FROM params WHERE name = ?1")?;
-                    for (name, value) in changes {
-                        match value {
-                            Some(v) => set.execute(params![name, v])?,
-                            None => delete.execute(params![name])?,
-                        };
-                    }
-                }
-                tx.commit()?;
-                Ok(())
-            }
-            Backend::Postgres(db) => {
-                let (mut names, mut values, mut gone) = (Vec::new(), Vec::new(), Vec::new());
-                for (name, value) in changes {
-                    match value {
-                        Some(v) => {
-                            names.push(name.as_str());
-                            values.push(v.as_str());
-                        }
-                        None => gone.push(name.as_str()),
-                    }
-                }
-                Ok(db.transaction(async |tx| {
-                    if !names.is_empty() {
-                        tx.execute(
-                            "INSERT INTO params (name, value)
-                             SELECT * FROM UNNEST($1::TEXT[], $2::TEXT[])
-                             ON CONFLICT (name) DO UPDATE SET value = excluded.value",
-                            &[&names, &values],
-                        )
-                        .await?;
-                    }
-                    if !gone.is_empty() {
-                        tx.execute("DELETE FROM params WHERE name = ANY($1)", &[&gone])
-                            .await?;
-                    }
-                    notify(tx, Change::Params).await
-                })?)
-            }
-        }
+        self.engine.write_params(changes)
     }
 
     /// Deletes `name` and every parameter under it.
     pub fn delete_params(&self, name: &str) -> Result<(), StoreError> {
         let below = format!("{name}/%");
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                c.execute(
-                    "DELETE FROM params WHERE name = ?1 OR name LIKE ?2",
-                    params![name, below],
-                )
-                .map(|_| ())
-            }),
-            Backend::Postgres(db) => Ok(db.transaction(async |tx| {
-                tx.execute(
-                    "DELETE FROM params WHERE name = $1 OR name LIKE $2",
-                    &[&name, &below],
-                )
-                .await?;
-                notify(tx, Change::Params).await
-            })?),
-        }
+        self.engine.delete_params(name, &below)
     }
 
     pub fn robots(&self) -> Result<Vec<RobotRecord>, StoreError> {
-        const SQL: &str = "SELECT name, first_seen_ms, last_seen_ms, last_addr, connects \
-                           FROM robots ORDER BY name";
-        match &self.backend {
-            Backend::Sqlite(c) => Self::with(c, |c| {
-                let mut st = c.prepare(SQL)?;
-                let rows = st.query_map([], |r| {
-                    Ok(RobotRecord {
-                        name: r.get(0)?,
-                        first_seen_ms: r.get(1)?,
-                        last_seen_ms: r.get(2)?,
-                        last_addr: r.get(3)?,
-                        connects: r.get(4)?,
-                    })
-                })?;
-                rows.collect()
-            }),
-            Backend::Postgres(db) => db
-                .query(SQL, &[])?
-                .iter()
-                .map(|r| {
-                    Ok(RobotRecord {
-                        name: r.try_get(0)?,
-                        first_seen_ms: r.try_get(1)?,
-                        last_seen_ms: r.try_get(2)?,
-                        last_addr: r.try_get(3)?,
-                        connects: r.try_get(4)?,
-                    })
-                })
-                .collect(),
-        }
+        self.engine.robots()
     }
 }
 
@@ -491,7 +190,11 @@ fn now_ms() -> i64 {
 /// Stores for the tests of this crate's modules, on either backend.
 #[cfg(test)]
 pub(crate) mod testing {
-    use super::*;
+    use std::path::PathBuf;
+
+    use fleetlink_postgres::Database;
+
+    use super::Store;
 
     #[derive(Debug, Clone, Copy)]
     pub enum Backend {

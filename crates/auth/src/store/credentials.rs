@@ -8,13 +8,16 @@
 //! Nothing here is cached by a hub: every authentication reads the token (and a session's
 //! user) from the database, so a revocation or a removed user applies on every hub sharing
 //! the database with the next request. Changes still notify [`Change::Tokens`] /
-//! [`Change::Users`] on PostgreSQL, for whatever a hub keeps in memory about them.
+//! [`Change::Users`] on PostgreSQL, for whatever a hub keeps in memory about them. The
+//! statements are in each backend's file (`sqlite.rs`, `postgres.rs`); here values become
+//! columns and rows become values.
+//!
+//! [`Change::Tokens`]: fleetlink_postgres::changes::Change::Tokens
+//! [`Change::Users`]: fleetlink_postgres::changes::Change::Users
 
-use fleetlink_postgres::changes::{Change, notify};
-use rusqlite::{OptionalExtension, Row, params};
 use serde::Serialize;
 
-use super::{Backend, Store, StoreError, corrupt, with};
+use super::{Store, StoreError, corrupt};
 use crate::UnixTime;
 use crate::authn::password;
 use crate::identity::{GroupName, RobotName, UserName};
@@ -79,10 +82,12 @@ fn opt_time(v: Option<i64>) -> Option<UnixTime> {
     v.map(UnixTime)
 }
 
-const TOKEN_COLUMNS: &str =
+/// The columns of a token row, in the order of [`RawToken`].
+pub(super) const TOKEN_COLUMNS: &str =
     "id, kind, subject, groups_json, created_at, expires_at, revoked_at, last_used_at";
 
-type RawToken = (
+/// A token row as read, before [`token_info`] checks it.
+pub(super) type RawToken = (
     i64,
     String,
     String,
@@ -92,32 +97,6 @@ type RawToken = (
     Option<i64>,
     Option<i64>,
 );
-
-fn pg_raw_token(r: &fleetlink_postgres::Row) -> Result<RawToken, fleetlink_postgres::PgError> {
-    Ok((
-        r.try_get(0)?,
-        r.try_get(1)?,
-        r.try_get(2)?,
-        r.try_get(3)?,
-        r.try_get(4)?,
-        r.try_get(5)?,
-        r.try_get(6)?,
-        r.try_get(7)?,
-    ))
-}
-
-fn raw_token(r: &Row<'_>) -> rusqlite::Result<RawToken> {
-    Ok((
-        r.get(0)?,
-        r.get(1)?,
-        r.get(2)?,
-        r.get(3)?,
-        r.get(4)?,
-        r.get(5)?,
-        r.get(6)?,
-        r.get(7)?,
-    ))
-}
 
 fn token_info(raw: RawToken) -> Result<(TokenKind, TokenInfo), StoreError> {
     let (id, kind, subject, groups, created, expires, revoked, used) = raw;
@@ -150,37 +129,8 @@ impl Store {
         let token = Token::generate(kind)?;
         let groups = groups_json(groups)?;
         let expires_at = expires_at.map(|t| t.0);
-        match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                c.execute(
-                    "INSERT INTO auth_tokens (hash, kind, subject, groups_json, created_at, expires_at)
-                     VALUES (?1, ?2, ?3, ?4, ?5, ?6)",
-                    params![
-                        token.hash().as_bytes(),
-                        kind.as_str(),
-                        subject,
-                        groups,
-                        now.0,
-                        expires_at
-                    ],
-                )?;
-                Ok(())
-            })?,
-            Backend::Postgres(db) => {
-                db.execute(
-                    "INSERT INTO auth_tokens (hash, kind, subject, groups_json, created_at, expires_at)
-                     VALUES ($1, $2, $3, $4, $5, $6)",
-                    &[
-                        &token.hash().as_bytes(),
-                        &kind.as_str(),
-                        &subject,
-                        &groups,
-                        &now.0,
-                        &expires_at,
-                    ],
-                )?;
-            }
-        }
+        self.engine
+            .insert_token(&token.hash(), kind, subject, &groups, expires_at, now)?;
         Ok(token)
     }
 
@@ -225,24 +175,7 @@ impl Store {
 
     /// Finds a token by hash, revoked and expired ones included (the caller decides).
     pub fn lookup_token(&self, hash: &TokenHash) -> Result<Option<TokenRecord>, StoreError> {
-        let raw = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.query_row(
-                    &format!("SELECT {TOKEN_COLUMNS} FROM auth_tokens WHERE hash = ?1"),
-                    [hash.as_bytes()],
-                    raw_token,
-                )
-                .optional()?)
-            })?,
-            Backend::Postgres(db) => db
-                .query_opt(
-                    &format!("SELECT {TOKEN_COLUMNS} FROM auth_tokens WHERE hash = $1"),
-                    &[&hash.as_bytes()],
-                )?
-                .as_ref()
-                .map(pg_raw_token)
-                .transpose()?,
-        };
+        let raw = self.engine.lookup_token(hash)?;
         let Some(raw) = raw else { return Ok(None) };
         let (kind, info) = token_info(raw)?;
         Ok(Some(TokenRecord {
@@ -256,47 +189,12 @@ impl Store {
     }
 
     pub(crate) fn touch_token(&self, id: TokenId, now: UnixTime) -> Result<(), StoreError> {
-        match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                c.execute(
-                    "UPDATE auth_tokens SET last_used_at = ?2 WHERE id = ?1",
-                    params![id.0, now.0],
-                )?;
-                Ok(())
-            }),
-            Backend::Postgres(db) => {
-                // Written at every authentication, and only informative: the commit does
-                // not wait for the server's disk (a crash of the database may lose the
-                // newest `last_used_at`, never a credential). One round trip, as the
-                // values are integers formatted here, not text from a client.
-                let (id, now) = (id.0, now.0);
-                db.run(async |c| {
-                    Ok(c.batch_execute(&format!(
-                        "BEGIN; SET LOCAL synchronous_commit = off;
-                         UPDATE auth_tokens SET last_used_at = {now} WHERE id = {id}; COMMIT"
-                    ))
-                    .await?)
-                })?;
-                Ok(())
-            }
-        }
+        self.engine.touch_token(id, now)
     }
 
     /// Revokes one token by id; `false` if it did not exist or was already revoked.
     pub fn revoke_token(&self, id: TokenId, now: UnixTime) -> Result<bool, StoreError> {
-        let n = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.execute(
-                    "UPDATE auth_tokens SET revoked_at = ?2 WHERE id = ?1 AND revoked_at IS NULL",
-                    params![id.0, now.0],
-                )? as u64)
-            })?,
-            Backend::Postgres(_) => self.pg_revoke(
-                "UPDATE auth_tokens SET revoked_at = $2 WHERE id = $1 AND revoked_at IS NULL",
-                &id.0,
-                now,
-            )?,
-        };
+        let n = self.engine.revoke_token(id, now)?;
         Ok(n > 0)
     }
 
@@ -306,19 +204,7 @@ impl Store {
         hash: &TokenHash,
         now: UnixTime,
     ) -> Result<bool, StoreError> {
-        let n = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.execute(
-                    "UPDATE auth_tokens SET revoked_at = ?2 WHERE hash = ?1 AND revoked_at IS NULL",
-                    params![hash.as_bytes(), now.0],
-                )? as u64)
-            })?,
-            Backend::Postgres(_) => self.pg_revoke(
-                "UPDATE auth_tokens SET revoked_at = $2 WHERE hash = $1 AND revoked_at IS NULL",
-                &hash.as_bytes(),
-                now,
-            )?,
-        };
+        let n = self.engine.revoke_token_by_hash(hash, now)?;
         Ok(n > 0)
     }
 
@@ -328,66 +214,13 @@ impl Store {
         robot: &RobotName,
         now: UnixTime,
     ) -> Result<usize, StoreError> {
-        match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.execute(
-                    "UPDATE auth_tokens SET revoked_at = ?2
-                     WHERE kind = 'robot' AND subject = ?1 AND revoked_at IS NULL",
-                    params![robot.as_str(), now.0],
-                )?)
-            }),
-            Backend::Postgres(_) => Ok(self.pg_revoke(
-                "UPDATE auth_tokens SET revoked_at = $2
-                 WHERE kind = 'robot' AND subject = $1 AND revoked_at IS NULL",
-                &robot.as_str(),
-                now,
-            )? as usize),
-        }
-    }
-
-    /// One revoking `UPDATE` (`$1` the key, `$2` the time) that notifies the other hubs.
-    fn pg_revoke(
-        &self,
-        sql: &str,
-        key: &(dyn fleetlink_postgres::ToSql + Sync),
-        now: UnixTime,
-    ) -> Result<u64, StoreError> {
-        let Backend::Postgres(db) = self.backend() else {
-            unreachable!("called on the PostgreSQL backend only")
-        };
-        Ok(db.transaction(async |tx| {
-            let n = tx.execute(sql, &[key, &now.0]).await?;
-            if n > 0 {
-                notify(tx, Change::Tokens).await?;
-            }
-            Ok(n)
-        })?)
+        self.engine.revoke_robot_tokens(robot, now)
     }
 
     /// Tokens of one kind (or all), newest first, secrets never included.
     pub fn list_tokens(&self, kind: Option<TokenKind>) -> Result<Vec<TokenInfo>, StoreError> {
         let kind = kind.map(TokenKind::as_str);
-        let raws = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                let mut stmt = c.prepare(&format!(
-                    "SELECT {TOKEN_COLUMNS} FROM auth_tokens
-                     WHERE ?1 IS NULL OR kind = ?1 ORDER BY id DESC"
-                ))?;
-                let rows = stmt.query_map([kind], raw_token)?;
-                Ok(rows.collect::<rusqlite::Result<Vec<_>>>()?)
-            })?,
-            Backend::Postgres(db) => db
-                .query(
-                    &format!(
-                        "SELECT {TOKEN_COLUMNS} FROM auth_tokens
-                         WHERE $1::TEXT IS NULL OR kind = $1 ORDER BY id DESC"
-                    ),
-                    &[&kind],
-                )?
-                .iter()
-                .map(pg_raw_token)
-                .collect::<Result<Vec<_>, _>>()?,
-        };
+        let raws = self.engine.list_tokens(kind)?;
         raws.into_iter()
             .map(|raw| token_info(raw).map(|(_, info)| info))
             .collect()
@@ -413,26 +246,7 @@ impl Store {
     ) -> Result<(), StoreError> {
         let hash = password::hash(password).map_err(StoreError::PasswordHash)?;
         let groups = groups_json(groups)?;
-        let n = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.execute(
-                    "INSERT OR IGNORE INTO auth_users (name, password_hash, groups_json, created_at)
-                     VALUES (?1, ?2, ?3, ?4)",
-                    params![name.as_str(), hash, groups, now.0],
-                )? as u64)
-            })?,
-            Backend::Postgres(db) => db.transaction(async |tx| {
-                let n = tx
-                    .execute(
-                        "INSERT INTO auth_users (name, password_hash, groups_json, created_at)
-                         VALUES ($1, $2, $3, $4) ON CONFLICT (name) DO NOTHING",
-                        &[&name.as_str(), &hash, &groups, &now.0],
-                    )
-                    .await?;
-                notify(tx, Change::Users).await?;
-                Ok(n)
-            })?,
-        };
+        let n = self.engine.add_user(name, &hash, &groups, now)?;
         if n == 0 {
             return Err(StoreError::UserExists(name.to_string()));
         }
@@ -441,24 +255,7 @@ impl Store {
 
     pub fn set_password(&self, name: &UserName, password: &str) -> Result<(), StoreError> {
         let hash = password::hash(password).map_err(StoreError::PasswordHash)?;
-        let n = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.execute(
-                    "UPDATE auth_users SET password_hash = ?2 WHERE name = ?1",
-                    params![name.as_str(), hash],
-                )? as u64)
-            })?,
-            Backend::Postgres(db) => db.transaction(async |tx| {
-                let n = tx
-                    .execute(
-                        "UPDATE auth_users SET password_hash = $2 WHERE name = $1",
-                        &[&name.as_str(), &hash],
-                    )
-                    .await?;
-                notify(tx, Change::Users).await?;
-                Ok(n)
-            })?,
-        };
+        let n = self.engine.set_password(name, &hash)?;
         if n == 0 {
             return Err(StoreError::NoSuchUser(name.to_string()));
         }
@@ -467,53 +264,11 @@ impl Store {
 
     /// Removes a user and revokes their sessions; `false` if there was no such user.
     pub fn remove_user(&self, name: &UserName, now: UnixTime) -> Result<bool, StoreError> {
-        match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                let tx = c.transaction()?;
-                let n = tx.execute("DELETE FROM auth_users WHERE name = ?1", [name.as_str()])?;
-                tx.execute(
-                    "UPDATE auth_tokens SET revoked_at = ?2
-                     WHERE kind = 'session' AND subject = ?1 AND revoked_at IS NULL",
-                    params![name.as_str(), now.0],
-                )?;
-                tx.commit()?;
-                Ok(n > 0)
-            }),
-            Backend::Postgres(db) => Ok(db.transaction(async |tx| {
-                let n = tx
-                    .execute("DELETE FROM auth_users WHERE name = $1", &[&name.as_str()])
-                    .await?;
-                tx.execute(
-                    "UPDATE auth_tokens SET revoked_at = $2
-                     WHERE kind = 'session' AND subject = $1 AND revoked_at IS NULL",
-                    &[&name.as_str(), &now.0],
-                )
-                .await?;
-                notify(tx, Change::Users).await?;
-                notify(tx, Change::Tokens).await?;
-                Ok(n > 0)
-            })?),
-        }
+        self.engine.remove_user(name, now)
     }
 
     pub fn user(&self, name: &UserName) -> Result<Option<UserRecord>, StoreError> {
-        let row: Option<(String, String)> = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                Ok(c.query_row(
-                    "SELECT password_hash, groups_json FROM auth_users WHERE name = ?1",
-                    [name.as_str()],
-                    |r| Ok((r.get(0)?, r.get(1)?)),
-                )
-                .optional()?)
-            })?,
-            Backend::Postgres(db) => db
-                .query_opt(
-                    "SELECT password_hash, groups_json FROM auth_users WHERE name = $1",
-                    &[&name.as_str()],
-                )?
-                .map(|r| Ok::<_, fleetlink_postgres::PgError>((r.try_get(0)?, r.try_get(1)?)))
-                .transpose()?,
-        };
+        let row = self.engine.user(name)?;
         row.map(|(password_hash, groups)| {
             Ok(UserRecord {
                 name: name.clone(),
@@ -525,19 +280,7 @@ impl Store {
     }
 
     pub fn list_users(&self) -> Result<Vec<UserInfo>, StoreError> {
-        const SQL: &str = "SELECT name, groups_json, created_at FROM auth_users ORDER BY name";
-        let rows: Vec<(String, String, i64)> = match self.backend() {
-            Backend::Sqlite(c) => with(c, |c| {
-                let mut stmt = c.prepare(SQL)?;
-                let rows = stmt.query_map([], |r| Ok((r.get(0)?, r.get(1)?, r.get(2)?)))?;
-                Ok(rows.collect::<rusqlite::Result<Vec<_>>>()?)
-            })?,
-            Backend::Postgres(db) => db
-                .query(SQL, &[])?
-                .iter()
-                .map(|r| Ok((r.try_get(0)?, r.try_get(1)?, r.try_get(2)?)))
-                .collect::<Result<_, fleetlink_postgres::PgError>>()?,
-        };
+        let rows = self.engine.list_users()?;
         rows.into_iter()
             .map(|(name, groups, created)| {
                 Ok(UserInfo {

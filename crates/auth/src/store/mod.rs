@@ -1,13 +1,18 @@
 //! Durable security state: rules, credentials, sessions and the audit log, in SQLite (one
 //! hub) or PostgreSQL (several hubs sharing it).
 //!
-//! Design choice: one [`Store`] API over two backends. With SQLite the tables live in the
-//! hub's own database file (all prefixed `auth_` or `audit_`, created with `IF NOT
-//! EXISTS`), behind one connection in a std `Mutex`. With PostgreSQL they live in the
-//! shared database ([`fleetlink_postgres`]: a pool, versioned migrations, change
-//! notifications). Either way every statement is short and synchronous; callers on an
-//! async runtime run store calls on the blocking pool. Each method holds both dialects
-//! side by side, so a change to one is seen next to the other.
+//! Design choice: one [`Store`] API over two backends, chosen once, when the store is
+//! opened. Each backend is an `Engine` in its own file that holds all of its SQL
+//! dialect. With SQLite (`sqlite.rs`, [`Store::open`]) the tables live in the hub's own
+//! database file (all prefixed `auth_` or `audit_`, created with `IF NOT EXISTS`), behind
+//! one connection in a std `Mutex`. With PostgreSQL (`postgres.rs`, [`Store::postgres`])
+//! they live in the shared database ([`fleetlink_postgres`]: a pool, versioned
+//! migrations, change notifications). Either way every statement is short and
+//! synchronous; callers on an async runtime run store calls on the blocking pool. The
+//! public methods (`rules.rs`, `credentials.rs`) turn values into columns and rows back
+//! into values, and leave the statements to the engine. The audit queries
+//! (`crate::audit::query`) still hold both dialects side by side in each method, on the
+//! connection the store keeps for them (`Backend`).
 //!
 //! Rule edits bump a revision counter in the same transaction, so a hub notices edits made
 //! by another process (`fleetlink admin`, another hub) by polling
@@ -15,13 +20,21 @@
 //! ([`fleetlink_postgres::changes`]), which reloads at once.
 
 mod credentials;
+mod postgres;
 mod rules;
+mod sqlite;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 use fleetlink_postgres::Database;
 use rusqlite::Connection;
+
+use crate::UnixTime;
+use crate::acl::RuleId;
+use crate::identity::{RobotName, UserName};
+use crate::token::{TokenHash, TokenKind};
+use credentials::RawToken;
 
 pub use credentials::{TokenId, TokenInfo, TokenRecord, UserInfo, UserRecord};
 
@@ -95,98 +108,12 @@ pub fn init_schema(conn: &Connection, schema: &str) -> rusqlite::Result<()> {
     }
 }
 
-const SCHEMA: &str = "
-    CREATE TABLE IF NOT EXISTS auth_meta (
-        key TEXT PRIMARY KEY,
-        value INTEGER NOT NULL
-    );
-    INSERT OR IGNORE INTO auth_meta (key, value) VALUES ('rules_revision', 0);
-    CREATE TABLE IF NOT EXISTS auth_rules (
-        id INTEGER PRIMARY KEY AUTOINCREMENT,
-        rule_json TEXT NOT NULL,
-        created_at INTEGER NOT NULL
-    );
-    CREATE TABLE IF NOT EXISTS auth_tokens (
-        id INTEGER PRIMARY KEY AUTOINCREMENT,
-        hash BLOB NOT NULL UNIQUE,
-        kind TEXT NOT NULL,
-        subject TEXT NOT NULL,
-        groups_json TEXT NOT NULL DEFAULT '[]',
-        created_at INTEGER NOT NULL,
-        expires_at INTEGER,
-        revoked_at INTEGER,
-        last_used_at INTEGER
-    );
-    CREATE INDEX IF NOT EXISTS auth_tokens_subject ON auth_tokens (kind, subject);
-    CREATE TABLE IF NOT EXISTS auth_users (
-        name TEXT PRIMARY KEY,
-        password_hash TEXT NOT NULL,
-        groups_json TEXT NOT NULL DEFAULT '[]',
-        created_at INTEGER NOT NULL
-    );
-    CREATE TABLE IF NOT EXISTS audit_log (
-        id INTEGER PRIMARY KEY AUTOINCREMENT,
-        at INTEGER NOT NULL,
-        principal TEXT NOT NULL,
-        client_ip TEXT NOT NULL,
-        action TEXT NOT NULL,
-        name TEXT NOT NULL,
-        size INTEGER,
-        allowed INTEGER NOT NULL,
-        detail TEXT
-    );
-    CREATE INDEX IF NOT EXISTS audit_log_at ON audit_log (at);
-    CREATE INDEX IF NOT EXISTS audit_log_principal ON audit_log (principal, id);
-";
-
-/// The PostgreSQL schema, one entry per version (never edit one that shipped; add one).
-const PG_MIGRATIONS: &[&str] = &["
-    CREATE TABLE auth_meta (
-        key TEXT PRIMARY KEY,
-        value BIGINT NOT NULL
-    );
-    INSERT INTO auth_meta (key, value) VALUES ('rules_revision', 0);
-    CREATE TABLE auth_rules (
-        id BIGSERIAL PRIMARY KEY,
-        rule_json TEXT NOT NULL,
-        created_at BIGINT NOT NULL
-    );
-    CREATE TABLE auth_tokens (
-        id BIGSERIAL PRIMARY KEY,
-        hash BYTEA NOT NULL UNIQUE,
-        kind TEXT NOT NULL,
-        subject TEXT NOT NULL,
-        groups_json TEXT NOT NULL DEFAULT '[]',
-        created_at BIGINT NOT NULL,
-        expires_at BIGINT,
-        revoked_at BIGINT,
-        last_used_at BIGINT
-    );
-    CREATE INDEX auth_tokens_subject ON auth_tokens (kind, subject);
-    CREATE TABLE auth_users (
-        name TEXT PRIMARY KEY,
-        password_hash TEXT NOT NULL,
-        groups_json TEXT NOT NULL DEFAULT '[]',
-        created_at BIGINT NOT NULL
-    );
-    CREATE TABLE audit_log (
-        id BIGSERIAL PRIMARY KEY,
-        at BIGINT NOT NULL,
-        principal TEXT NOT NULL,
-        client_ip TEXT NOT NULL,
-        action TEXT NOT NULL,
-        name TEXT NOT NULL,
-        size BIGINT,
-        allowed BOOLEAN NOT NULL,
-        detail TEXT
-    );
-    CREATE INDEX audit_log_at ON audit_log (at);
-    CREATE INDEX audit_log_principal ON audit_log (principal, id);
-"];
-
 /// Handle to the security tables. Cheap to clone.
 #[derive(Clone)]
 pub struct Store {
+    engine: Arc<dyn Engine>,
+    /// The same connection, for the audit queries (`crate::audit::query`), which still
+    /// hold both dialects in each method and match on it.
     backend: Backend,
 }
 
@@ -198,46 +125,62 @@ pub(crate) enum Backend {
     Postgres(Database),
 }
 
+/// One backend's statements for the rule and credential methods of [`Store`], in that
+/// backend's SQL dialect. Rows come back as plain columns; the callers parse them, so
+/// both engines read the same.
+trait Engine: Send + Sync {
+    /// The shared database, for the PostgreSQL engine.
+    fn database(&self) -> Option<&Database>;
+
+    /// Every rule row (id, JSON), oldest first.
+    fn list_rules(&self) -> Result<Vec<(i64, String)>, StoreError>;
+    /// Inserts one rule and bumps the revision; returns its id.
+    fn add_rule(&self, json: &str, now: UnixTime) -> Result<i64, StoreError>;
+    /// Deletes one rule (bumping the revision if it existed); whether it existed.
+    fn remove_rule(&self, id: RuleId) -> Result<bool, StoreError>;
+    /// Replaces every rule and bumps the revision; returns the new ids in order.
+    fn replace_rules(&self, jsons: &[String], now: UnixTime) -> Result<Vec<i64>, StoreError>;
+    fn rules_revision(&self) -> Result<Option<i64>, StoreError>;
+
+    fn insert_token(
+        &self,
+        hash: &TokenHash,
+        kind: TokenKind,
+        subject: &str,
+        groups: &str,
+        expires_at: Option<i64>,
+        now: UnixTime,
+    ) -> Result<(), StoreError>;
+    fn lookup_token(&self, hash: &TokenHash) -> Result<Option<RawToken>, StoreError>;
+    fn touch_token(&self, id: TokenId, now: UnixTime) -> Result<(), StoreError>;
+    /// The revoking methods return how many tokens they revoked.
+    fn revoke_token(&self, id: TokenId, now: UnixTime) -> Result<u64, StoreError>;
+    fn revoke_token_by_hash(&self, hash: &TokenHash, now: UnixTime) -> Result<u64, StoreError>;
+    fn revoke_robot_tokens(&self, robot: &RobotName, now: UnixTime) -> Result<usize, StoreError>;
+    /// Tokens of one kind (`None`: all), newest first.
+    fn list_tokens(&self, kind: Option<&str>) -> Result<Vec<RawToken>, StoreError>;
+
+    /// Inserts a user unless one has the name; how many rows it inserted.
+    fn add_user(
+        &self,
+        name: &UserName,
+        hash: &str,
+        groups: &str,
+        now: UnixTime,
+    ) -> Result<u64, StoreError>;
+    /// How many users it updated.
+    fn set_password(&self, name: &UserName, hash: &str) -> Result<u64, StoreError>;
+    fn remove_user(&self, name: &UserName, now: UnixTime) -> Result<bool, StoreError>;
+    /// The user's (password hash, groups JSON).
+    fn user(&self, name: &UserName) -> Result<Option<(String, String)>, StoreError>;
+    /// Every user's (name, groups JSON, created at), by name.
+    fn list_users(&self) -> Result<Vec<(String, String, i64)>, StoreError>;
+}
+
 impl Store {
-    /// Opens (creating if needed) the tables in the database file at `path`.
-    pub fn open(path: &Path) -> Result<Store, StoreError> {
-        let open_err = |source| StoreError::Open {
-            path: path.to_owned(),
-            source,
-        };
-        let conn = Connection::open(path).map_err(open_err)?;
-        init_schema(&conn, SCHEMA).map_err(open_err)?;
-        Ok(Store::from_conn(conn))
-    }
-
-    /// A private in-memory database, for tests and `fleetlink demo`.
-    pub fn open_in_memory() -> Result<Store, StoreError> {
-        let conn = Connection::open_in_memory()?;
-        init_schema(&conn, SCHEMA)?;
-        Ok(Store::from_conn(conn))
-    }
-
-    /// The tables in a shared PostgreSQL database, created or brought up to date first
-    /// (safe when several hubs start at once). Blocks: call it from a blocking thread.
-    pub fn postgres(db: Database) -> Result<Store, StoreError> {
-        db.migrate("auth", PG_MIGRATIONS)?;
-        Ok(Store {
-            backend: Backend::Postgres(db),
-        })
-    }
-
-    fn from_conn(conn: Connection) -> Store {
-        Store {
-            backend: Backend::Sqlite(Arc::new(Mutex::new(conn))),
-        }
-    }
-
     /// The shared database, when the store is in PostgreSQL.
     pub fn database(&self) -> Option<&Database> {
-        match &self.backend {
-            Backend::Sqlite(_) => None,
-            Backend::Postgres(db) => Some(db),
-        }
+        self.engine.database()
     }
 
     pub(crate) fn backend(&self) -> &Backend {

@@ -11,8 +11,8 @@ use std::sync::{Arc, Mutex};
 
 use fleetlink_proto::frame::{Frame, Level, SUBSCRIBE_REGEX, SUBSCRIBE_SERVICES, status_code};
 use fleetlink_relay::gate::Op;
-use fleetlink_relay::link::LinkEvent;
 use fleetlink_relay::link::session::{Event, LinkSession};
+use fleetlink_relay::link::{InTopic, LinkEvent};
 use fleetlink_relay::message::Via;
 use fleetlink_relay::router::{
     DemandWatch, Publication, SubOptions, SubscriptionId, Target, TopicView,
@@ -253,82 +253,114 @@ impl RobotLink {
         p.ask_keyframe(alias, session);
     }
 
+    /// The robot announces a topic it publishes (checked by its gate), bound to `alias`.
+    fn advertise(
+        &mut self,
+        alias: u32,
+        topic: InTopic,
+        via: Option<Arc<Via>>,
+        session: &mut LinkSession,
+    ) {
+        let name = match TopicName::parse(&topic.name) {
+            Ok(n) => n,
+            Err(e) => {
+                return session.status(
+                    Level::Error,
+                    status_code::MALFORMED,
+                    format!("advertise: {e}"),
+                );
+            }
+        };
+        let gate = session.gate();
+        if !gate.allows(name.as_str(), Op::Publish) {
+            let text = format!("advertise {name}: not allowed for {}", gate.principal());
+            return session.status(Level::Error, status_code::FORBIDDEN, text);
+        }
+        let how = Publication {
+            latch: topic.latched,
+            no_drop: topic.reliable,
+            via,
+            encoding: None,
+        };
+        match self
+            .router
+            .advertise_as(self.client, &name, topic.schema, how)
+        {
+            Ok(t) => {
+                // Announced further (a site hub's uplink) before a message flows.
+                t.note_encoding(topic.encoding);
+                self.by_topic.insert(t.id(), alias);
+                t.set_pull(topic.pull);
+                let epoch = self.book.lock().unwrap_or_else(|p| p.into_inner()).epoch();
+                t.set_reliable(topic.reliable.then_some(epoch));
+                let video = fleetlink_relay::gop::is_video_type(&t.meta().schema.type_name);
+                if let Some(old) = self.topics.insert(
+                    alias,
+                    PubTopic {
+                        id: t.id(),
+                        topic: t,
+                        name,
+                        counts: StatsBatch::default(),
+                        view: TopicView::default(),
+                        unflushed: false,
+                        keyframes: video.then(std::time::Instant::now),
+                    },
+                ) {
+                    // Rebound: what the old binding counted still counts.
+                    let mut old = old;
+                    old.topic.stats.flush(&mut old.counts);
+                }
+                // A fresh binding: the robot hears the demand for it anew.
+                self.interest.remove(&alias);
+                self.tell_interest(alias, session);
+            }
+            Err(e) => session.status(
+                Level::Error,
+                status_code::MALFORMED,
+                format!("advertise: {e}"),
+            ),
+        }
+    }
+
+    /// The robot no longer publishes the topic bound to `alias`.
+    fn unadvertise(&mut self, alias: u32, topic: &InTopic) {
+        if let Some(mut p) = self.topics.remove(&alias) {
+            p.topic.stats.flush(&mut p.counts);
+            p.topic.set_idle(false);
+            p.topic.set_pull(false);
+            p.topic.set_reliable(None);
+            self.by_topic.remove(&p.topic.id());
+            self.interest.remove(&alias);
+            if let Ok(name) = TopicName::parse(&topic.name) {
+                self.router.unadvertise(self.client, &name);
+            }
+        }
+    }
+
+    /// The robot wants to hear of the fleet services it may call that match `pattern`
+    /// (filtered by the gate when each is offered).
+    fn subscribe_services(&mut self, pattern: String, flags: u8, session: &mut LinkSession) {
+        let source = if flags & SUBSCRIBE_REGEX != 0 {
+            pattern
+        } else {
+            regex::escape(&pattern)
+        };
+        match Router::compile_pattern(&source) {
+            Ok(re) => self.router.calls.watch(self.client, re),
+            Err(e) => session.status(
+                Level::Error,
+                status_code::MALFORMED,
+                format!("subscribe services: {e}"),
+            ),
+        }
+    }
+
     fn on_link(&mut self, ev: LinkEvent, session: &mut LinkSession) {
         match ev {
             LinkEvent::Advertise { alias, topic, via } => {
-                let name = match TopicName::parse(&topic.name) {
-                    Ok(n) => n,
-                    Err(e) => {
-                        return session.status(
-                            Level::Error,
-                            status_code::MALFORMED,
-                            format!("advertise: {e}"),
-                        );
-                    }
-                };
-                let gate = session.gate();
-                if !gate.allows(name.as_str(), Op::Publish) {
-                    let text = format!("advertise {name}: not allowed for {}", gate.principal());
-                    return session.status(Level::Error, status_code::FORBIDDEN, text);
-                }
-                let how = Publication {
-                    latch: topic.latched,
-                    no_drop: topic.reliable,
-                    via,
-                    encoding: None,
-                };
-                match self
-                    .router
-                    .advertise_as(self.client, &name, topic.schema, how)
-                {
-                    Ok(t) => {
-                        // Announced further (a site hub's uplink) before a message flows.
-                        t.note_encoding(topic.encoding);
-                        self.by_topic.insert(t.id(), alias);
-                        t.set_pull(topic.pull);
-                        let epoch = self.book.lock().unwrap_or_else(|p| p.into_inner()).epoch();
-                        t.set_reliable(topic.reliable.then_some(epoch));
-                        let video = fleetlink_relay::gop::is_video_type(&t.meta().schema.type_name);
-                        if let Some(old) = self.topics.insert(
-                            alias,
-                            PubTopic {
-                                id: t.id(),
-                                topic: t,
-                                name,
-                                counts: StatsBatch::default(),
-                                view: TopicView::default(),
-                                unflushed: false,
-                                keyframes: video.then(std::time::Instant::now),
-                            },
-                        ) {
-                            // Rebound: what the old binding counted still counts.
-                            let mut old = old;
-                            old.topic.stats.flush(&mut old.counts);
-                        }
-                        // A fresh binding: the robot hears the demand for it anew.
-                        self.interest.remove(&alias);
-                        self.tell_interest(alias, session);
-                    }
-                    Err(e) => session.status(
-                        Level::Error,
-                        status_code::MALFORMED,
-                        format!("advertise: {e}"),
-                    ),
-                }
+                self.advertise(alias, topic, via, session)
             }
-            LinkEvent::Unadvertise { alias, topic } => {
-                if let Some(mut p) = self.topics.remove(&alias) {
-                    p.topic.stats.flush(&mut p.counts);
-                    p.topic.set_idle(false);
-                    p.topic.set_pull(false);
-                    p.topic.set_reliable(None);
-                    self.by_topic.remove(&p.topic.id());
-                    self.interest.remove(&alias);
-                    if let Ok(name) = TopicName::parse(&topic.name) {
-                        self.router.unadvertise(self.client, &name);
-                    }
-                }
-            }
+            LinkEvent::Unadvertise { alias, topic } => self.unadvertise(alias, &topic),
             LinkEvent::Message {
                 alias,
                 seq,
@@ -341,21 +373,7 @@ impl RobotLink {
             LinkEvent::Control(Frame::Subscribe { pattern, flags, .. })
                 if flags & SUBSCRIBE_SERVICES != 0 =>
             {
-                // The robot wants to hear of fleet services it may call (filtered by the
-                // gate when each is offered).
-                let source = if flags & SUBSCRIBE_REGEX != 0 {
-                    pattern
-                } else {
-                    regex::escape(&pattern)
-                };
-                match Router::compile_pattern(&source) {
-                    Ok(re) => self.router.calls.watch(self.client, re),
-                    Err(e) => session.status(
-                        Level::Error,
-                        status_code::MALFORMED,
-                        format!("subscribe services: {e}"),
-                    ),
-                }
+                self.subscribe_services(pattern, flags, session)
             }
             LinkEvent::Control(Frame::Subscribe {
                 id,

@@ -123,17 +123,7 @@ pub async fn serve_agent<R, W, P>(
     P: Send,
 {
     let who = addr.map_or_else(|| "(unknown address)".to_owned(), |a| a.to_string());
-    let mut session = LinkSession::hub(
-        SessionConfig {
-            role: Role::Hub,
-            heartbeat: Duration::from_millis(u64::from(ctx.default_heartbeat_ms)),
-            handshake_timeout: HELLO_TIMEOUT,
-            report_every: None,
-            wall: system_wall_clock(),
-        },
-        Instant::now(),
-    );
-    session.set_local_hub(ctx.hub_id);
+    let mut session = hub_session(&ctx);
     let admitted = match handshake(&mut reader, &mut sink, &mut session, &ctx, conn).await {
         Ok(a) => a,
         Err(Ended::Gone(reason)) => {
@@ -188,44 +178,9 @@ pub async fn serve_agent<R, W, P>(
         control: ctrl_tx.clone(),
         replaced: replaced.clone(),
     }));
-    // A mirror replaces an older connection of the same mirror, never its robot's.
-    let old = match kind {
-        LinkKind::Mirror { .. } => ctx.registry.insert_mirror(live.clone()),
-        LinkKind::Robot => ctx.registry.insert(live.clone()),
-    };
-    if let Some(old) = old {
-        tracing::info!(robot = %robot, "{what} reconnected; replacing its previous connection");
-        ctx.rosout.log(
-            crate::rosout::Level::Info,
-            "connected",
-            format!("{what} reconnected from {who}; its previous connection is closed"),
-        );
-        old.replace();
-        ctx.router.disconnect(old.client);
-    }
-    tracing::info!(robot = %robot, ?addr, "{what} connected");
-    ctx.rosout.log(
-        crate::rosout::Level::Info,
-        "connected",
-        format!("{what} connected from {who}"),
-    );
-    if kind == LinkKind::Robot {
-        record_seen(&ctx.store, &robot, addr, true);
-    }
+    register(&ctx, &live, &kind, &robot, &what, &who, addr);
 
-    // What a mirror publishes in its robot's namespace is input to that robot (audited
-    // as an operator's is): it speaks for no robot of its own.
-    let gate = match kind {
-        LinkKind::Mirror { .. } => {
-            crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity)
-        }
-        LinkKind::Robot => crate::security::HubGate::for_agent(
-            ctx.security.clone(),
-            ctx.registry.clone(),
-            identity,
-            &robot,
-        ),
-    };
+    let gate = link_gate(&ctx, &kind, identity, &robot);
     let writer_gate = gate.fork();
     let calls = ctx.router.calls.clone();
     session.accept(
@@ -279,6 +234,90 @@ pub async fn serve_agent<R, W, P>(
         LinkKind::Mirror { .. } => ctx.registry.remove_mirror_if_session(&robot, session_no),
         LinkKind::Robot => ctx.registry.remove_if_session(&robot, session_no),
     }
+    log_disconnected(&ctx, &robot, &what, &reason);
+    drive::stop_writer(writer, ctrl_tx, &reason).await;
+    if kind == LinkKind::Robot {
+        record_seen(&ctx.store, &robot, addr, false);
+    }
+}
+
+/// The hub's side of a new link, waiting for `HELLO`.
+fn hub_session(ctx: &AgentContext) -> LinkSession {
+    let mut session = LinkSession::hub(
+        SessionConfig {
+            role: Role::Hub,
+            heartbeat: Duration::from_millis(u64::from(ctx.default_heartbeat_ms)),
+            handshake_timeout: HELLO_TIMEOUT,
+            report_every: None,
+            wall: system_wall_clock(),
+        },
+        Instant::now(),
+    );
+    session.set_local_hub(ctx.hub_id);
+    session
+}
+
+/// Enters an admitted link in the registry of robots online, closing the connection it
+/// replaces, and tells the logs (and, for a robot, the store) that it connected.
+fn register(
+    ctx: &AgentContext,
+    live: &Arc<LiveRobot>,
+    kind: &LinkKind,
+    robot: &str,
+    what: &str,
+    who: &str,
+    addr: Option<SocketAddr>,
+) {
+    // A mirror replaces an older connection of the same mirror, never its robot's.
+    let old = match kind {
+        LinkKind::Mirror { .. } => ctx.registry.insert_mirror(live.clone()),
+        LinkKind::Robot => ctx.registry.insert(live.clone()),
+    };
+    if let Some(old) = old {
+        tracing::info!(robot = %robot, "{what} reconnected; replacing its previous connection");
+        ctx.rosout.log(
+            crate::rosout::Level::Info,
+            "connected",
+            format!("{what} reconnected from {who}; its previous connection is closed"),
+        );
+        old.replace();
+        ctx.router.disconnect(old.client);
+    }
+    tracing::info!(robot = %robot, ?addr, "{what} connected");
+    ctx.rosout.log(
+        crate::rosout::Level::Info,
+        "connected",
+        format!("{what} connected from {who}"),
+    );
+    if *kind == LinkKind::Robot {
+        record_seen(&ctx.store, robot, addr, true);
+    }
+}
+
+/// The gate the link's traffic passes. What a mirror publishes in its robot's namespace
+/// is input to that robot (audited as an operator's is): it speaks for no robot of its
+/// own.
+fn link_gate(
+    ctx: &AgentContext,
+    kind: &LinkKind,
+    identity: fleetlink_auth::Identity,
+    robot: &str,
+) -> crate::security::HubGate {
+    match kind {
+        LinkKind::Mirror { .. } => {
+            crate::security::HubGate::new(ctx.security.clone(), ctx.registry.clone(), identity)
+        }
+        LinkKind::Robot => crate::security::HubGate::for_agent(
+            ctx.security.clone(),
+            ctx.registry.clone(),
+            identity,
+            robot,
+        ),
+    }
+}
+
+/// Logs the end of a link: a warning when the robot went silent or its socket broke.
+fn log_disconnected(ctx: &AgentContext, robot: &str, what: &str, reason: &CloseReason) {
     let level = match reason {
         CloseReason::Silent { .. } | CloseReason::ReadError(_) => crate::rosout::Level::Warn,
         _ => crate::rosout::Level::Info,
@@ -289,10 +328,6 @@ pub async fn serve_agent<R, W, P>(
         "disconnected",
         format!("{what} disconnected: {reason}"),
     );
-    drive::stop_writer(writer, ctrl_tx, &reason).await;
-    if kind == LinkKind::Robot {
-        record_seen(&ctx.store, &robot, addr, false);
-    }
 }
 
 /// How a handshake ended without admitting the robot.

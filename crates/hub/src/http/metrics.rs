@@ -33,136 +33,8 @@ impl std::fmt::Debug for HubCollector {
 impl Collector for HubCollector {
     fn encode(&self, mut enc: DescriptorEncoder) -> Result<(), std::fmt::Error> {
         let st = &self.0;
-        let topics = st.router.topics();
-        let relaxed = std::sync::atomic::Ordering::Relaxed;
-
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_messages",
-            "Messages published on a topic",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            ConstCounter::new(t.stats.messages.load(relaxed))
-                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_bytes",
-            "Payload bytes published on a topic",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            ConstCounter::new(t.stats.bytes.load(relaxed))
-                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_link_bytes",
-            "Bytes a robot topic's messages took on the robot's link (compressed where they \
-             came so); their payload bytes are fleetlink_topic_link_payload_bytes",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            if let Some((wire, _)) = t.stats.link_figures() {
-                ConstCounter::new(wire)
-                    .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-            }
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_link_payload_bytes",
-            "Payload bytes of the messages that came over a robot's link, before compression",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            if let Some((_, raw)) = t.stats.link_figures() {
-                ConstCounter::new(raw)
-                    .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-            }
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_deliveries",
-            "Messages queued to subscribers of a topic",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            ConstCounter::new(t.stats.deliveries.load(relaxed))
-                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_drops",
-            "Messages a subscriber of a topic lost, by reason",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            for r in DropReason::ALL {
-                let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
-                ConstCounter::new(t.stats.drops(r)).encode(m.encode_family(&labels)?)?;
-            }
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_robot_drops",
-            "Messages of a robot's topic its agent lost before the link, by reason (as the \
-             agent last reported)",
-            None,
-            MetricType::Counter,
-        )?;
-        for t in &topics {
-            for r in DropReason::ALL {
-                let n = t.stats.robot_drops(r);
-                if n > 0 {
-                    let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
-                    ConstCounter::new(n).encode(m.encode_family(&labels)?)?;
-                }
-            }
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_topic_subscribers",
-            "Subscribers of a topic",
-            None,
-            MetricType::Gauge,
-        )?;
-        for t in &topics {
-            ConstGauge::new(t.subscribers.len() as i64)
-                .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
-        }
-
-        let now = Instant::now();
-        let clients = st.router.clients();
-        let label = |id| fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id);
-        let mut m = enc.encode_descriptor(
-            "fleetlink_client_queue_depth",
-            "Messages waiting in a client's outbound queues",
-            None,
-            MetricType::Gauge,
-        )?;
-        for (info, outbox, _) in &clients {
-            let l = [("client", label(info.id))];
-            ConstGauge::new(outbox.depth() as i64).encode(m.encode_family(&l)?)?;
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_client_lag_seconds",
-            "Age of the oldest message waiting for a client",
-            None,
-            MetricType::Gauge,
-        )?;
-        for (info, outbox, _) in &clients {
-            let l = [("client", label(info.id))];
-            ConstGauge::new(outbox.lag(now).as_secs_f64()).encode(m.encode_family(&l)?)?;
-        }
-        let mut m = enc.encode_descriptor(
-            "fleetlink_client_dropped",
-            "Messages a client lost",
-            None,
-            MetricType::Counter,
-        )?;
-        for (info, outbox, _) in &clients {
-            let l = [("client", label(info.id))];
-            ConstCounter::new(outbox.dropped.load(relaxed)).encode(m.encode_family(&l)?)?;
-        }
+        encode_topics(st, &mut enc)?;
+        encode_clients(st, &mut enc)?;
         let m = enc.encode_descriptor(
             "fleetlink_robots_online",
             "Robots connected now",
@@ -186,6 +58,144 @@ impl Collector for HubCollector {
         encode_shared_changes(&st.security, &mut enc)?;
         encode_front_door(&st.limits, &mut enc)
     }
+}
+
+/// Each topic's counters: messages, bytes, deliveries, drops and subscribers.
+fn encode_topics(st: &HubState, enc: &mut DescriptorEncoder) -> Result<(), std::fmt::Error> {
+    let topics = st.router.topics();
+    let relaxed = std::sync::atomic::Ordering::Relaxed;
+
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_messages",
+        "Messages published on a topic",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        ConstCounter::new(t.stats.messages.load(relaxed))
+            .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_bytes",
+        "Payload bytes published on a topic",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        ConstCounter::new(t.stats.bytes.load(relaxed))
+            .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_link_bytes",
+        "Bytes a robot topic's messages took on the robot's link (compressed where they \
+         came so); their payload bytes are fleetlink_topic_link_payload_bytes",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        if let Some((wire, _)) = t.stats.link_figures() {
+            ConstCounter::new(wire).encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_link_payload_bytes",
+        "Payload bytes of the messages that came over a robot's link, before compression",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        if let Some((_, raw)) = t.stats.link_figures() {
+            ConstCounter::new(raw).encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+        }
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_deliveries",
+        "Messages queued to subscribers of a topic",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        ConstCounter::new(t.stats.deliveries.load(relaxed))
+            .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_drops",
+        "Messages a subscriber of a topic lost, by reason",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        for r in DropReason::ALL {
+            let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
+            ConstCounter::new(t.stats.drops(r)).encode(m.encode_family(&labels)?)?;
+        }
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_robot_drops",
+        "Messages of a robot's topic its agent lost before the link, by reason (as the \
+         agent last reported)",
+        None,
+        MetricType::Counter,
+    )?;
+    for t in &topics {
+        for r in DropReason::ALL {
+            let n = t.stats.robot_drops(r);
+            if n > 0 {
+                let labels = [("topic", t.meta.name.as_str()), ("reason", r.as_str())];
+                ConstCounter::new(n).encode(m.encode_family(&labels)?)?;
+            }
+        }
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_topic_subscribers",
+        "Subscribers of a topic",
+        None,
+        MetricType::Gauge,
+    )?;
+    for t in &topics {
+        ConstGauge::new(t.subscribers.len() as i64)
+            .encode(m.encode_family(&[("topic", t.meta.name.as_str())])?)?;
+    }
+    Ok(())
+}
+
+/// Each client's outbound queues: depth, lag and losses.
+fn encode_clients(st: &HubState, enc: &mut DescriptorEncoder) -> Result<(), std::fmt::Error> {
+    let relaxed = std::sync::atomic::Ordering::Relaxed;
+    let now = Instant::now();
+    let clients = st.router.clients();
+    let label = |id| fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id);
+    let mut m = enc.encode_descriptor(
+        "fleetlink_client_queue_depth",
+        "Messages waiting in a client's outbound queues",
+        None,
+        MetricType::Gauge,
+    )?;
+    for (info, outbox, _) in &clients {
+        let l = [("client", label(info.id))];
+        ConstGauge::new(outbox.depth() as i64).encode(m.encode_family(&l)?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_client_lag_seconds",
+        "Age of the oldest message waiting for a client",
+        None,
+        MetricType::Gauge,
+    )?;
+    for (info, outbox, _) in &clients {
+        let l = [("client", label(info.id))];
+        ConstGauge::new(outbox.lag(now).as_secs_f64()).encode(m.encode_family(&l)?)?;
+    }
+    let mut m = enc.encode_descriptor(
+        "fleetlink_client_dropped",
+        "Messages a client lost",
+        None,
+        MetricType::Counter,
+    )?;
+    for (info, outbox, _) in &clients {
+        let l = [("client", label(info.id))];
+        ConstCounter::new(outbox.dropped.load(relaxed)).encode(m.encode_family(&l)?)?;
+    }
+    Ok(())
 }
 
 /// Robots' data budgets: what each allows, what it counted, which topics it holds back.
