@@ -143,6 +143,15 @@ pub fn full_text(
     Ok(out)
 }
 
+// The method lives here, beside what it calls, so the registry does not depend on the
+// identities computed from it.
+impl Registry {
+    /// The concatenated definition to send along with a topic (see [`crate::full_text`]).
+    pub fn full_text(&self, type_name: &str, dialect: Dialect) -> Result<String, RegistryError> {
+        full_text(self, type_name, dialect)
+    }
+}
+
 fn collect_deps(
     registry: &Registry,
     spec: &MsgSpec,

@@ -328,11 +328,6 @@ impl Registry {
         Ok(main)
     }
 
-    /// The concatenated definition to send along with a topic (see [`crate::full_text`]).
-    pub fn full_text(&self, type_name: &str, dialect: Dialect) -> Result<String, RegistryError> {
-        crate::ident::full_text(self, type_name, dialect)
-    }
-
     /// True if `type_name` (any accepted spelling) names a known message or interface.
     pub fn contains(&self, type_name: &str) -> bool {
         let Ok(name) = TypeName::parse(type_name) else {

@@ -20,6 +20,8 @@
 
 use std::collections::VecDeque;
 
+use crate::ring::release_if_drained;
+
 /// What happened to a message offered to [`Afr::push`].
 #[derive(Debug, PartialEq, Eq)]
 pub enum AfrPush<T> {
@@ -120,8 +122,8 @@ impl<T> Afr<T> {
     /// Takes the head (oldest) message; moves `p` back by one as the queue shifts.
     pub fn pop(&mut self) -> Option<T> {
         let item = self.thinned.pop_front().or_else(|| self.rest.pop_front());
-        crate::queue::release_if_drained(&mut self.thinned);
-        crate::queue::release_if_drained(&mut self.rest);
+        release_if_drained(&mut self.thinned);
+        release_if_drained(&mut self.rest);
         item
     }
 

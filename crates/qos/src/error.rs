@@ -3,7 +3,7 @@
 //! Design choice: the message path never fails (a full queue is an outcome, not an error),
 //! so the only errors are made at configuration time, and each names the field at fault.
 
-use crate::scheduler::TopicId;
+use crate::topic::TopicId;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum QosError {

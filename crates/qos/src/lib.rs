@@ -44,9 +44,11 @@ pub mod predict;
 pub mod qoi;
 pub mod queue;
 pub mod rate_limit;
+mod ring;
 pub mod rng;
 pub mod scheduler;
 pub mod time;
+mod topic;
 
 pub use bucket::TokenBucket;
 pub use budget::{BudgetConfig, DataBudget};

@@ -18,6 +18,8 @@ use std::collections::VecDeque;
 use crate::afr::{Afr, AfrPush};
 use crate::config::{Policy, TopicQos};
 use crate::rate_limit::RateLimiter;
+pub use crate::ring::KEEP_EMPTY_CAPACITY;
+use crate::ring::release_if_drained;
 use crate::rng::SplitMix64;
 use crate::time::Nanos;
 
@@ -79,17 +81,6 @@ pub struct TopicQueue<T> {
     policy: Policy,
     capacity: usize,
     limiter: Option<RateLimiter>,
-}
-
-/// Items an empty queue keeps room for; a larger buffer, left by a backlog, is let go
-/// when the backlog has drained, so an idle subscription holds little.
-pub const KEEP_EMPTY_CAPACITY: usize = 32;
-
-/// Lets a drained ring's large buffer go.
-pub(crate) fn release_if_drained<T>(ring: &mut VecDeque<T>) {
-    if ring.is_empty() && ring.capacity() > KEEP_EMPTY_CAPACITY {
-        *ring = VecDeque::new();
-    }
 }
 
 /// Seed of the `random` policy when the caller does not choose one.

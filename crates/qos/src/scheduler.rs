@@ -26,10 +26,7 @@ use crate::config::TopicQos;
 use crate::error::QosError;
 use crate::queue::{DropReason, Push, TopicQueue};
 use crate::time::Nanos;
-
-/// Caller-chosen identifier of a topic on one link.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct TopicId(pub u32);
+pub use crate::topic::TopicId;
 
 /// Size of an item on the wire, in bytes, for the byte budget.
 pub trait WireLen {

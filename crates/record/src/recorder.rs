@@ -20,6 +20,7 @@ use fleetlink_relay::{ClientId, Outbox, Router};
 use serde::{Deserialize, Serialize};
 use tokio_util::sync::CancellationToken;
 
+use crate::blackbox::SliceRange;
 use crate::file::{FileFigures, McapFile, RecordingNote};
 use crate::spec::RecordSpec;
 
@@ -71,7 +72,7 @@ pub struct RecordingInfo {
     pub error: Option<String>,
     /// Set for a slice fetched from a robot's black box.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub blackbox: Option<crate::blackbox::fetch::BlackBoxFetch>,
+    pub blackbox: Option<BlackBoxFetch>,
 }
 
 impl RecordingInfo {
@@ -100,6 +101,30 @@ impl RecordingInfo {
             blackbox: None,
         }
     }
+}
+
+/// A fetch as `recording.json` keeps it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BlackBoxFetch {
+    pub robot: String,
+    pub range: SliceRange,
+    /// The slice's size once the robot has cut it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<u64>,
+    /// Bytes of it at the hub.
+    pub received: u64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sha256: Option<String>,
+    /// Fetch calls made.
+    pub calls: u64,
+    /// Times pieces stopped coming and the rest was asked for again.
+    pub resumed: u64,
+    /// Messages of topics the requester may not read, cut out of the file.
+    #[serde(default)]
+    pub refused: u64,
+    /// What the fetch waits for, while it waits (`robot1 is offline`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub waiting: Option<String>,
 }
 
 /// What the API and the recorder's thread share.

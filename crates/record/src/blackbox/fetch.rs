@@ -29,6 +29,7 @@ use tokio::time::Instant;
 
 use super::{DATA_TOPIC, FETCH_SERVICE, FetchReply, FetchRequest, Piece, SliceRange};
 use crate::file::FileFigures;
+pub use crate::recorder::BlackBoxFetch;
 use crate::recorder::{RecordingInfo, Shared, State};
 
 /// Bytes asked for per call; the next window is asked for when half of this one is in.
@@ -96,30 +97,6 @@ fn check_robot(robot: &str) -> Result<(), String> {
         ));
     }
     Ok(())
-}
-
-/// A fetch as `recording.json` keeps it.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct BlackBoxFetch {
-    pub robot: String,
-    pub range: SliceRange,
-    /// The slice's size once the robot has cut it.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub size: Option<u64>,
-    /// Bytes of it at the hub.
-    pub received: u64,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub sha256: Option<String>,
-    /// Fetch calls made.
-    pub calls: u64,
-    /// Times pieces stopped coming and the rest was asked for again.
-    pub resumed: u64,
-    /// Messages of topics the requester may not read, cut out of the file.
-    #[serde(default)]
-    pub refused: u64,
-    /// What the fetch waits for, while it waits (`robot1 is offline`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub waiting: Option<String>,
 }
 
 /// Is this robot connected to the hub now?
