@@ -11,6 +11,8 @@
 //!   fetches slices of it through.
 //! - [`config`]: the agent's YAML configuration, with errors that name file, line and field.
 //! - [`local`]: the local rosbridge-compatible listener.
+//! - `options`: the configuration turned into each part's options (at start and for a
+//!   runtime change).
 //! - [`outbox_store`]: the durable outbox: no-drop messages on disk until the hub has them.
 //! - ROS 1 graphs are bridged by the `fleetlink-ros1` crate, started from [`agent`]
 //!   when the configuration has a `ros1:` section.
@@ -21,6 +23,7 @@ pub mod agent;
 pub mod blackbox;
 pub mod config;
 pub mod local;
+mod options;
 pub mod outbox_store;
 pub mod runtime;
 pub mod sim;

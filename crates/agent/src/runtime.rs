@@ -26,11 +26,11 @@ use serde_json::{Value, json};
 use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;
 
-use crate::agent::AgentOptions;
 use crate::config::origin::annotated_yaml;
 use crate::config::runtime::kept::{self, KeptEntry, Level, Record, SetAside};
 use crate::config::runtime::{self, CHANGEABLE};
 use crate::config::{AgentConfig, ConfigError, ConfigSource};
+use crate::options::PartOptions;
 use crate::uplink::UplinkControl;
 
 pub use fleetlink_relay::names::{
@@ -311,7 +311,7 @@ impl RuntimeConfig {
             kept,
             set_aside,
         } = update;
-        let opts = AgentOptions::from_config(&config).map_err(|e| Refusal::text(e.to_string()))?;
+        let opts = PartOptions::from_config(&config).map_err(|e| Refusal::text(e.to_string()))?;
         let parts = self.parts.lock().unwrap_or_else(|p| p.into_inner());
         if let Some(p) = parts.as_ref() {
             p.uplink

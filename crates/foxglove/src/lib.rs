@@ -12,12 +12,15 @@
 //!   with.
 //! - [`session`]: one connection's reader: channels following the router's topics,
 //!   subscriptions as router subscriptions, client publishing.
+//! - `client`: the client as the reader acts toward it (router id, gate, the replies
+//!   queue), shared by the session and its services.
 //! - `services`: service calls through the call table and parameters through rosapi's
 //!   path, for a session.
 //! - `writer`: one connection's writer: the outbox as `MessageData`, a shared payload
 //!   behind a per-subscription header.
 
 pub mod channels;
+mod client;
 pub mod protocol;
 mod services;
 pub mod session;

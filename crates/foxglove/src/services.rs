@@ -17,18 +17,18 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use fleetlink_proto::{Encoding, Payload, Schema};
-use fleetlink_relay::TopicName;
 use fleetlink_relay::calls::{
     CallEvent, CallId, CallOptions, CallStatus, ServiceChange, ServiceInfo,
 };
 use fleetlink_relay::gate::Op as GateOp;
 use fleetlink_relay::link_calls::outcome_text;
 use fleetlink_relay::rosbridge::rosapi::{self, Answer};
+use fleetlink_relay::{Router, TopicName};
 use serde_json::{Value, json};
 
 use crate::channels::{self, CLIENT_ENCODINGS};
+use crate::client::Client;
 use crate::protocol::{self, ServiceCall, ServicePart};
-use crate::session::Session;
 
 /// The services advertised to the client and the calls it has in flight.
 #[derive(Default)]
@@ -93,38 +93,40 @@ fn schema_of(router: &fleetlink_relay::Router, name: &str) -> Schema {
         .unwrap_or_else(|| Schema::named(name))
 }
 
-impl Session {
-    /// From now on the call table tells this session of services coming and going (the
-    /// ones there are come at once).
-    pub(crate) fn watch_services(&self) {
-        let all = regex::Regex::new(".*").expect("a valid pattern");
-        self.router.calls.watch(self.client, all);
-    }
+/// From now on the call table tells the session of services coming and going (the
+/// ones there are come at once).
+pub(crate) fn watch_services(client: &Client) {
+    let all = regex::Regex::new(".*").expect("a valid pattern");
+    client.router.calls.watch(client.id, all);
+}
 
-    pub(crate) async fn service_changed(&mut self, change: ServiceChange) {
+impl SessionServices {
+    pub(crate) async fn service_changed(&mut self, client: &mut Client, change: ServiceChange) {
         match change {
             ServiceChange::Added(info) => {
                 if info.action {
                     return;
                 }
-                let visible = self
+                let visible = client
                     .gate
                     .as_mut()
                     .is_some_and(|g| g.allows(info.name.as_str(), GateOp::CallService));
                 // A provider that comes again replaces the advertisement.
-                let old = self.services.by_name.remove(&info.name);
+                let old = self.by_name.remove(&info.name);
                 if let Some(id) = old {
-                    self.services.by_id.remove(&id);
-                    self.send_text(protocol::unadvertise_services(&[id])).await;
+                    self.by_id.remove(&id);
+                    client
+                        .send_text(protocol::unadvertise_services(&[id]))
+                        .await;
                 }
                 if !visible {
                     return;
                 }
-                self.services.next_id += 1;
-                let id = self.services.next_id;
+                self.next_id += 1;
+                let id = self.next_id;
                 let ty = info.schema.type_name.clone();
-                let request = part(&self.router, &ty, "_Request");
-                let response = part(&self.router, &ty, "_Response");
+                let request = part(&client.router, &ty, "_Request");
+                let response = part(&client.router, &ty, "_Response");
                 let service = protocol::Service {
                     id,
                     name: info.name.to_string(),
@@ -134,15 +136,18 @@ impl Session {
                     request,
                     response,
                 };
-                self.services.by_name.insert(info.name.clone(), id);
-                self.services.by_id.insert(id, info);
-                self.send_text(protocol::advertise_services(&[service]))
+                self.by_name.insert(info.name.clone(), id);
+                self.by_id.insert(id, info);
+                client
+                    .send_text(protocol::advertise_services(&[service]))
                     .await;
             }
             ServiceChange::Removed(info) => {
-                if let Some(id) = self.services.by_name.remove(&info.name) {
-                    self.services.by_id.remove(&id);
-                    self.send_text(protocol::unadvertise_services(&[id])).await;
+                if let Some(id) = self.by_name.remove(&info.name) {
+                    self.by_id.remove(&id);
+                    client
+                        .send_text(protocol::unadvertise_services(&[id]))
+                        .await;
                 }
             }
         }
@@ -151,15 +156,15 @@ impl Session {
     /// A `ServiceCallRequest`: checked as a rosbridge `call_service` is (the gate's call
     /// right), its request made JSON and completed against the type, then started in
     /// the call table. Whatever stops it is a `serviceCallFailure`.
-    pub(crate) async fn call_service(&mut self, c: ServiceCall) {
-        if let Err(e) = self.start_call(&c) {
+    pub(crate) async fn call_service(&mut self, client: &mut Client, c: ServiceCall) {
+        if let Err(e) = self.start_call(client, &c) {
             let text = protocol::service_call_failure(c.service, c.call, &e);
-            self.send_text(text).await;
+            client.send_text(text).await;
         }
     }
 
-    fn start_call(&mut self, c: &ServiceCall) -> Result<(), String> {
-        let Some(info) = self.services.by_id.get(&c.service).cloned() else {
+    fn start_call(&mut self, client: &mut Client, c: &ServiceCall) -> Result<(), String> {
+        let Some(info) = self.by_id.get(&c.service).cloned() else {
             return Err(format!("unknown service id {}", c.service));
         };
         let name = info.name.clone();
@@ -170,10 +175,10 @@ impl Session {
                 CLIENT_ENCODINGS.join(", ")
             ));
         };
-        self.check("call", name.as_str(), GateOp::CallService)?;
+        client.check("call", name.as_str(), GateOp::CallService)?;
         let type_name = info.schema.type_name.clone();
-        let tc = self.router.transcoder();
-        let req_schema = schema_of(&self.router, &format!("{type_name}_Request"));
+        let tc = client.router.transcoder();
+        let req_schema = schema_of(&client.router, &format!("{type_name}_Request"));
         let request = Payload::new(encoding, c.payload.clone());
         let json = if encoding == Encoding::Json {
             request
@@ -196,16 +201,16 @@ impl Session {
         };
         let size = json.len();
         let opts = CallOptions {
-            on_behalf_of: self
+            on_behalf_of: client
                 .gate
                 .as_ref()
                 .and_then(|g| g.caller())
                 .map(std::sync::Arc::new),
             ..CallOptions::default()
         };
-        match self.router.calls.call(self.client, &name, json, opts) {
+        match client.router.calls.call(client.id, &name, json, opts) {
             Ok(id) => {
-                self.services.calls.insert(
+                self.calls.insert(
                     id,
                     Made {
                         service: c.service,
@@ -219,7 +224,7 @@ impl Session {
                 Ok(())
             }
             Err(e) => {
-                if let Some(g) = self.gate.as_mut() {
+                if let Some(g) = client.gate.as_mut() {
                     g.finished(
                         name.as_str(),
                         GateOp::CallService,
@@ -234,7 +239,7 @@ impl Session {
 
     /// The end of a call this client made: the response in the request's encoding, or
     /// a failure saying why.
-    pub(crate) async fn call_event(&mut self, ev: CallEvent) {
+    pub(crate) async fn call_event(&mut self, client: &mut Client, ev: CallEvent) {
         let CallEvent::Done {
             id,
             status,
@@ -244,18 +249,18 @@ impl Session {
         else {
             return;
         };
-        if let Some((key, name)) = self.services.param_calls.remove(&id) {
+        if let Some((key, name)) = self.param_calls.remove(&id) {
             let read = match (status, payload) {
                 (CallStatus::Ok, Some(p)) => robot_param_value(&p)
                     .ok_or_else(|| format!("{name}: the robot's answer has no value")),
                 (status, _) => Err(format!("{name}: {}", outcome_text(status, &text))),
             };
-            return self.param_read(key, name, read).await;
+            return self.param_read(client, key, name, read).await;
         }
-        let Some(m) = self.services.calls.remove(&id) else {
+        let Some(m) = self.calls.remove(&id) else {
             return;
         };
-        if let Some(g) = self.gate.as_mut() {
+        if let Some(g) = client.gate.as_mut() {
             g.finished(
                 m.name.as_str(),
                 GateOp::CallService,
@@ -265,8 +270,9 @@ impl Session {
         }
         let answer = match (status, payload) {
             (CallStatus::Ok, Some(p)) => {
-                let schema = schema_of(&self.router, &format!("{}_Response", m.type_name));
-                self.router
+                let schema = schema_of(&client.router, &format!("{}_Response", m.type_name));
+                client
+                    .router
                     .transcoder()
                     .convert(&schema, &p, m.encoding)
                     .map_err(|e| {
@@ -288,11 +294,12 @@ impl Session {
             Ok(bytes) => {
                 let wire = channels::wire_name(m.encoding);
                 let frame = protocol::service_call_response(m.service, m.call, wire, &bytes);
-                self.send_binary(frame).await;
+                client.send_binary(frame).await;
             }
             Err(e) => {
                 let text = format!("call {}: {e}", m.name);
-                self.send_text(protocol::service_call_failure(m.service, m.call, &text))
+                client
+                    .send_text(protocol::service_call_failure(m.service, m.call, &text))
                     .await;
             }
         }
@@ -304,12 +311,17 @@ impl Session {
     /// parameter the client may read. Names the client may not read, or that are not set,
     /// are left out, as the protocol has no per-parameter error; a `status` names the
     /// refused and failed ones.
-    pub(crate) async fn get_parameters(&mut self, names: Vec<String>, id: Option<String>) {
-        if self.gate.is_none() {
-            return self.error("getParameters: not authenticated").await;
+    pub(crate) async fn get_parameters(
+        &mut self,
+        client: &mut Client,
+        names: Vec<String>,
+        id: Option<String>,
+    ) {
+        if client.gate.is_none() {
+            return client.error("getParameters: not authenticated").await;
         }
         let names = if names.is_empty() {
-            match self.rosapi("/rosapi/get_param_names", json!({})) {
+            match hub_rosapi(client, "/rosapi/get_param_names", json!({})) {
                 Answer::Values(v) => v["names"]
                     .as_array()
                     .map(|a| {
@@ -339,11 +351,11 @@ impl Session {
                     continue;
                 }
             };
-            if let Some((provider, rest)) = self.robot_param(&name) {
+            if let Some((provider, rest)) = robot_param(&client.router, &name) {
                 at_robots.push((name, provider, rest));
                 continue;
             }
-            match self.rosapi("/rosapi/has_param", json!({ "name": name })) {
+            match hub_rosapi(client, "/rosapi/has_param", json!({ "name": name })) {
                 Answer::Values(v) if v["exists"] == json!(true) => {}
                 Answer::Failed(e) => {
                     g.failed.push(e);
@@ -351,16 +363,17 @@ impl Session {
                 }
                 _ => continue,
             }
-            if let Answer::Values(v) = self.rosapi("/rosapi/get_param", json!({ "name": name }))
+            if let Answer::Values(v) =
+                hub_rosapi(client, "/rosapi/get_param", json!({ "name": name }))
                 && let Some(value) = param_value(&v)
             {
                 g.values.push((name, value));
             }
         }
-        let key = self.services.next_gathering;
-        self.services.next_gathering += 1;
+        let key = self.next_gathering;
+        self.next_gathering += 1;
         for (name, provider, rest) in at_robots {
-            let gate = self.gate.as_mut().expect("checked above");
+            let gate = client.gate.as_mut().expect("checked above");
             if !gate.allows(&name, GateOp::Subscribe) {
                 g.failed
                     .push(format!("not allowed to read parameter {name}"));
@@ -371,59 +384,33 @@ impl Session {
                 on_behalf_of: gate.caller().map(std::sync::Arc::new),
                 ..CallOptions::default()
             };
-            match self
+            match client
                 .router
                 .calls
-                .call(self.client, &provider, Payload::json(body), opts)
+                .call(client.id, &provider, Payload::json(body), opts)
             {
                 Ok(call) => {
-                    self.services.param_calls.insert(call, (key, name));
+                    self.param_calls.insert(call, (key, name));
                     g.waiting += 1;
                 }
                 Err(e) => g.failed.push(format!("{name}: {}", e.text)),
             }
         }
         if g.waiting == 0 {
-            return self.answer_parameters(g).await;
+            return answer_parameters(client, g).await;
         }
-        self.services.gatherings.insert(key, g);
-    }
-
-    /// One of the hub's own `/rosapi` services, under this client's gate (reads only:
-    /// nothing is changed, so nothing is audited).
-    fn rosapi(&mut self, service: &str, args: Value) -> Answer {
-        let Some(gate) = self.gate.as_mut() else {
-            return Answer::Failed("not authenticated".into());
-        };
-        let mut visible = |n: &str, op| gate.allows(n, op);
-        let mut changed = |_: &str, _: &str, _: usize| {};
-        rosapi::answer(
-            &self.router,
-            "/fleetlink",
-            service,
-            &args,
-            &mut visible,
-            &mut changed,
-        )
-    }
-
-    /// The robot that answers for parameter `name` (normalized: [`param_name`]) — its
-    /// `rosapi/get_param` service and the name as the robot sees it — when there is one.
-    ///
-    /// [`param_name`]: fleetlink_relay::params::param_name
-    fn robot_param(&self, name: &str) -> Option<(TopicName, String)> {
-        let (robot, rest) = match name[1..].find('/') {
-            Some(i) => (&name[1..=i], &name[i + 1..]),
-            None => return None,
-        };
-        let provider = TopicName::parse(&format!("/{robot}/rosapi/get_param")).ok()?;
-        self.router.calls.service(&provider)?;
-        Some((provider, rest.to_owned()))
+        self.gatherings.insert(key, g);
     }
 
     /// One robot's answer to a parameter read of gathering `key`.
-    async fn param_read(&mut self, key: u64, name: String, read: Result<Value, String>) {
-        let Some(g) = self.services.gatherings.get_mut(&key) else {
+    async fn param_read(
+        &mut self,
+        client: &Client,
+        key: u64,
+        name: String,
+        read: Result<Value, String>,
+    ) {
+        let Some(g) = self.gatherings.get_mut(&key) else {
             return;
         };
         match read {
@@ -432,19 +419,53 @@ impl Session {
         }
         g.waiting -= 1;
         if g.waiting == 0 {
-            let g = self.services.gatherings.remove(&key).expect("present");
-            self.answer_parameters(g).await;
+            let g = self.gatherings.remove(&key).expect("present");
+            answer_parameters(client, g).await;
         }
     }
+}
 
-    async fn answer_parameters(&mut self, g: Gathering) {
-        if !g.failed.is_empty() {
-            self.error(&format!("getParameters: {}", g.failed.join("; ")))
-                .await;
-        }
-        self.send_text(protocol::parameter_values(&g.values, g.id.as_deref()))
+/// One of the hub's own `/rosapi` services, under this client's gate (reads only:
+/// nothing is changed, so nothing is audited).
+fn hub_rosapi(client: &mut Client, service: &str, args: Value) -> Answer {
+    let Some(gate) = client.gate.as_mut() else {
+        return Answer::Failed("not authenticated".into());
+    };
+    let mut visible = |n: &str, op| gate.allows(n, op);
+    let mut changed = |_: &str, _: &str, _: usize| {};
+    rosapi::answer(
+        &client.router,
+        "/fleetlink",
+        service,
+        &args,
+        &mut visible,
+        &mut changed,
+    )
+}
+
+/// The robot that answers for parameter `name` (normalized: [`param_name`]) — its
+/// `rosapi/get_param` service and the name as the robot sees it — when there is one.
+///
+/// [`param_name`]: fleetlink_relay::params::param_name
+fn robot_param(router: &Router, name: &str) -> Option<(TopicName, String)> {
+    let (robot, rest) = match name[1..].find('/') {
+        Some(i) => (&name[1..=i], &name[i + 1..]),
+        None => return None,
+    };
+    let provider = TopicName::parse(&format!("/{robot}/rosapi/get_param")).ok()?;
+    router.calls.service(&provider)?;
+    Some((provider, rest.to_owned()))
+}
+
+async fn answer_parameters(client: &Client, g: Gathering) {
+    if !g.failed.is_empty() {
+        client
+            .error(&format!("getParameters: {}", g.failed.join("; ")))
             .await;
     }
+    client
+        .send_text(protocol::parameter_values(&g.values, g.id.as_deref()))
+        .await;
 }
 
 /// A rosapi `get_param` answer's value: JSON text, as rosapi gives it.

@@ -20,13 +20,13 @@ use std::sync::Arc;
 use bytes::Bytes;
 use fleetlink_proto::{Encoding, Payload, Schema};
 use fleetlink_relay::calls::{ChannelPeer, PeerMsg};
-use fleetlink_relay::gate::{Gate, Op as GateOp, SessionAuth};
+use fleetlink_relay::gate::{Op as GateOp, SessionAuth};
 use fleetlink_relay::router::{SubOptions, SubscriptionId, Target};
 use fleetlink_relay::transcode::NormalizeCache;
 use fleetlink_relay::websocket::deflate::DeflateConfig;
 use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer, Watch};
 use fleetlink_relay::websocket::{ClientMessage, PartsSink};
-use fleetlink_relay::{ClientId, ClientKind, Router, Topic, TopicId, TopicName};
+use fleetlink_relay::{ClientKind, Router, Topic, TopicId, TopicName};
 use futures_util::{Stream, StreamExt};
 use tokio::sync::mpsc;
 use tokio_tungstenite::tungstenite::protocol::CloseFrame;
@@ -35,8 +35,9 @@ use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
 use crate::channels::{self, CLIENT_ENCODINGS, ChannelForm};
-use crate::protocol::{self, ClientBinary, ClientChannel, ClientOp, Level, Subscription};
-use crate::services::SessionServices;
+use crate::client::Client;
+use crate::protocol::{self, ClientBinary, ClientChannel, ClientOp, Subscription};
+use crate::services::{self, SessionServices};
 use crate::writer::{self, Deliveries, Delivering, Reply};
 
 /// Settings shared by all Foxglove sessions of one server.
@@ -124,10 +125,12 @@ pub async fn serve<K, S>(
         deliveries.clone(),
     ));
     let mut s = Session {
-        router: router.clone(),
-        client,
-        gate: auth.gate,
-        replies: reply_tx,
+        client: Client {
+            router: router.clone(),
+            id: client,
+            gate: auth.gate,
+            replies: reply_tx,
+        },
         deliveries,
         listed: HashSet::new(),
         channels: HashMap::new(),
@@ -145,7 +148,7 @@ pub async fn serve<K, S>(
     // A change of the access rules shows in the channels as soon as it is made (a topic
     // newly allowed appears, one no longer allowed goes); deliveries follow it anyway, as
     // the writer asks for every message.
-    let mut rules = s.gate.as_ref().and_then(|g| g.rules_changed());
+    let mut rules = s.client.gate.as_ref().and_then(|g| g.rules_changed());
     // Set when the client showed no progress for the silence limit: how long. Every step
     // that may wait on the client (a full reply queue) is raced against that.
     let mut gone = None;
@@ -186,7 +189,7 @@ pub async fn serve<K, S>(
             code: CloseCode::Away,
             reason: "the server is shutting down".into(),
         };
-        let _ = s.replies.try_send(Reply::Close(Some(away)));
+        let _ = s.client.replies.try_send(Reply::Close(Some(away)));
     }
     if let Some(silent) = gone {
         tracing::info!(
@@ -230,11 +233,8 @@ struct Publishing {
 }
 
 pub(crate) struct Session {
-    pub(crate) router: Arc<Router>,
-    pub(crate) client: ClientId,
-    /// What this client may do; `None`: nothing (no credential, no anonymous access).
-    pub(crate) gate: Option<Box<dyn Gate>>,
-    replies: mpsc::Sender<Reply>,
+    /// The router, the client's id and gate, and where its replies go.
+    client: Client,
     /// The writer's view of the subscriptions (std Mutex: taken by the reader when a
     /// subscription changes and by the writer once per batch, never across an await).
     deliveries: Deliveries,
@@ -249,24 +249,11 @@ pub(crate) struct Session {
     subs: HashMap<u32, Sub>,
     /// By the client's channel id.
     published: HashMap<u32, Publishing>,
-    pub(crate) services: SessionServices,
+    services: SessionServices,
     clock: fleetlink_relay::StampClock,
 }
 
 impl Session {
-    pub(crate) async fn send_text(&self, text: String) {
-        let _ = self.replies.send(Reply::Frame(WsMessage::text(text))).await;
-    }
-
-    pub(crate) async fn send_binary(&self, b: Bytes) {
-        let _ = self.replies.send(Reply::Frame(WsMessage::Binary(b))).await;
-    }
-
-    pub(crate) async fn error(&self, message: &str) {
-        self.send_text(protocol::status(Level::Error, message))
-            .await;
-    }
-
     /// `serverInfo`, then the services (the channels follow from the topics watch).
     async fn start(&mut self, cfg: &SessionConfig) {
         let caps = [
@@ -275,31 +262,17 @@ impl Session {
             protocol::CAP_PARAMETERS,
         ];
         let info = protocol::server_info(&cfg.name, &caps, &CLIENT_ENCODINGS, &cfg.session_id);
-        self.send_text(info).await;
-        match &self.gate {
-            Some(_) => self.watch_services(),
+        self.client.send_text(info).await;
+        match &self.client.gate {
+            Some(_) => services::watch_services(&self.client),
             None => {
-                self.error(
-                    "not authenticated: this hub allows no anonymous access; connect with \
+                self.client
+                    .error(
+                        "not authenticated: this hub allows no anonymous access; connect with \
                      ?token=<token> in the URL (or an Authorization: Bearer header)",
-                )
-                .await
+                    )
+                    .await
             }
-        }
-    }
-
-    /// May the client do `op` on `name`? The refusal text names both.
-    pub(crate) fn check(&mut self, verb: &str, name: &str, op: GateOp) -> Result<(), String> {
-        let Some(gate) = self.gate.as_mut() else {
-            return Err(format!("{verb} {name}: not authenticated"));
-        };
-        if gate.allows(name, op) {
-            Ok(())
-        } else {
-            Err(format!(
-                "{verb} {name}: not allowed for {}",
-                gate.principal()
-            ))
         }
     }
 
@@ -308,19 +281,25 @@ impl Session {
         match f {
             Ok(ClientMessage::Text(t)) => match protocol::parse_client_text(&t) {
                 Ok(op) => self.on_op(op).await,
-                Err(e) => self.error(&e.to_string()).await,
+                Err(e) => self.client.error(&e.to_string()).await,
             },
             Ok(ClientMessage::Binary(b)) => match protocol::parse_client_binary(&b) {
                 Ok(ClientBinary::MessageData { channel, payload }) => {
                     if let Err(e) = self.publish(channel, payload).await {
-                        self.error(&e).await;
+                        self.client.error(&e).await;
                     }
                 }
-                Ok(ClientBinary::ServiceCallRequest(call)) => self.call_service(call).await,
-                Err(e) => self.error(&e.to_string()).await,
+                Ok(ClientBinary::ServiceCallRequest(call)) => {
+                    self.services.call_service(&mut self.client, call).await
+                }
+                Err(e) => self.client.error(&e.to_string()).await,
             },
             Ok(ClientMessage::Ping(p)) => {
-                let _ = self.replies.send(Reply::Frame(WsMessage::Pong(p))).await;
+                let _ = self
+                    .client
+                    .replies
+                    .send(Reply::Frame(WsMessage::Pong(p)))
+                    .await;
             }
             Ok(ClientMessage::Pong(_)) => {}
             Ok(ClientMessage::Close(c)) => {
@@ -328,7 +307,7 @@ impl Session {
                     code: c.code,
                     reason: "".into(),
                 });
-                let _ = self.replies.send(Reply::Close(echo)).await;
+                let _ = self.client.replies.send(Reply::Close(echo)).await;
                 return false;
             }
             Err(e) => {
@@ -344,12 +323,12 @@ impl Session {
                     }
                     _ => return false,
                 };
-                self.error(&reason).await;
+                self.client.error(&reason).await;
                 let close = CloseFrame {
                     code,
                     reason: reason.into(),
                 };
-                let _ = self.replies.send(Reply::Close(Some(close))).await;
+                let _ = self.client.replies.send(Reply::Close(Some(close))).await;
                 return false;
             }
         }
@@ -361,14 +340,15 @@ impl Session {
             ClientOp::Subscribe { subscriptions } => {
                 for s in subscriptions {
                     if let Err(e) = self.subscribe(s) {
-                        self.error(&e).await;
+                        self.client.error(&e).await;
                     }
                 }
             }
             ClientOp::Unsubscribe { subscription_ids } => {
                 for id in subscription_ids {
                     if !self.unsubscribe(id) {
-                        self.error(&format!("unsubscribe: no subscription {id}"))
+                        self.client
+                            .error(&format!("unsubscribe: no subscription {id}"))
                             .await;
                     }
                 }
@@ -376,21 +356,25 @@ impl Session {
             ClientOp::Advertise { channels } => {
                 for c in channels {
                     if let Err(e) = self.advertise(c) {
-                        self.error(&e).await;
+                        self.client.error(&e).await;
                     }
                 }
             }
             ClientOp::Unadvertise { channel_ids } => {
                 for id in channel_ids {
                     if let Err(e) = self.unadvertise(id) {
-                        self.error(&e).await;
+                        self.client.error(&e).await;
                     }
                 }
             }
             ClientOp::GetParameters {
                 parameter_names,
                 id,
-            } => self.get_parameters(parameter_names, id).await,
+            } => {
+                self.services
+                    .get_parameters(&mut self.client, parameter_names, id)
+                    .await
+            }
         }
     }
 
@@ -403,7 +387,7 @@ impl Session {
         let mut added = Vec::new();
         let mut removed = Vec::new();
         for name in names {
-            let listed = self.router.snapshot(&name).filter(|s| s.listed());
+            let listed = self.client.router.snapshot(&name).filter(|s| s.listed());
             if listed.is_some() {
                 self.listed.insert(name.clone());
             } else {
@@ -411,14 +395,15 @@ impl Session {
             }
             let now = listed
                 .filter(|_| {
-                    self.gate
+                    self.client
+                        .gate
                         .as_mut()
                         .is_some_and(|g| g.allows(name.as_str(), GateOp::Subscribe))
                 })
                 .map(|s| {
                     (
                         s.meta.id,
-                        ChannelForm::of(&s.meta.schema, self.router.transcoder()),
+                        ChannelForm::of(&s.meta.schema, self.client.router.transcoder()),
                     )
                 });
             if let Some(old) = self.channels.get(&name) {
@@ -442,17 +427,17 @@ impl Session {
             }
         }
         if !removed.is_empty() {
-            self.send_text(protocol::unadvertise(&removed)).await;
+            self.client.send_text(protocol::unadvertise(&removed)).await;
         }
         if !added.is_empty() {
-            self.send_text(protocol::advertise(&added)).await;
+            self.client.send_text(protocol::advertise(&added)).await;
         }
     }
 
     /// The listed topics whose visibility under the gate no longer matches the channels
     /// (a rule changed), brought up to date. Each question is the gate's cached decision.
     async fn recheck_rules(&mut self) {
-        let Some(gate) = self.gate.as_mut() else {
+        let Some(gate) = self.client.gate.as_mut() else {
             return;
         };
         let stale: Vec<TopicName> = self
@@ -501,13 +486,15 @@ impl Session {
                 s.channel_id
             ));
         }
-        self.check("subscribe", name.as_str(), GateOp::Subscribe)?;
+        self.client
+            .check("subscribe", name.as_str(), GateOp::Subscribe)?;
         let ch = &self.channels[&name];
         let (topic, encoding) = (ch.topic, ch.form.encoding);
         let router_sub = self
+            .client
             .router
             .subscribe(
-                self.client,
+                self.client.id,
                 Target::Exact(name.clone()),
                 SubOptions::default(),
             )
@@ -529,7 +516,9 @@ impl Session {
         let Some(sub) = self.subs.remove(&id) else {
             return false;
         };
-        self.router.unsubscribe(self.client, sub.router_sub);
+        self.client
+            .router
+            .unsubscribe(self.client.id, sub.router_sub);
         self.update_delivery(sub.topic, None);
         true
     }
@@ -577,9 +566,10 @@ impl Session {
                 c.id
             ));
         }
-        self.check("advertise", name.as_str(), GateOp::Publish)?;
+        self.client
+            .check("advertise", name.as_str(), GateOp::Publish)?;
         let schema = if c.schema_name.trim().is_empty() {
-            match self.router.topic(&name) {
+            match self.client.router.topic(&name) {
                 Some(t) if !t.meta().schema.type_name.is_empty() => t.meta().schema.clone(),
                 _ => {
                     return Err(format!(
@@ -604,8 +594,9 @@ impl Session {
             }
         };
         let topic = self
+            .client
             .router
-            .advertise(self.client, &name, schema, false)
+            .advertise(self.client.id, &name, schema, false)
             .map_err(|e| format!("advertise {name}: {e}"))?;
         self.published.insert(
             c.id,
@@ -627,7 +618,7 @@ impl Session {
         // The router counts one advertisement per client and topic: it goes with the
         // last of this client's channels on the topic.
         if !self.published.values().any(|o| o.name == p.name) {
-            self.router.unadvertise(self.client, &p.name);
+            self.client.router.unadvertise(self.client.id, &p.name);
         }
         Ok(())
     }
@@ -643,6 +634,7 @@ impl Session {
             ));
         };
         let gate = self
+            .client
             .gate
             .as_mut()
             .ok_or_else(|| format!("publish {}: not authenticated", p.name))?;
@@ -657,6 +649,7 @@ impl Session {
         if p.encoding == Encoding::Json {
             let meta = p.topic.meta();
             msg = self
+                .client
                 .router
                 .transcoder()
                 .normalize_cached(&meta.schema, msg, &mut p.normalize)
@@ -674,15 +667,19 @@ impl Session {
         p.seq += 1;
         let size = msg.len();
         let (_, stamp) = self.clock.now();
-        p.topic.publish(self.client, p.seq, stamp, msg);
+        p.topic.publish(self.client.id, p.seq, stamp, msg);
         gate.done(p.name.as_str(), GateOp::Publish, size);
         Ok(())
     }
 
     async fn on_peer(&mut self, m: PeerMsg) {
         match m {
-            PeerMsg::Changed(change) => self.service_changed(change).await,
-            PeerMsg::Event(ev) => self.call_event(ev).await,
+            PeerMsg::Changed(change) => {
+                self.services
+                    .service_changed(&mut self.client, change)
+                    .await
+            }
+            PeerMsg::Event(ev) => self.services.call_event(&mut self.client, ev).await,
             // This client provides no services: nothing is called on it.
             PeerMsg::Call(_) | PeerMsg::Cancel(_) => {}
         }

@@ -11,8 +11,8 @@ use fleetlink_relay::TopicName;
 use serde_json::Value;
 use tokio_tungstenite::tungstenite::Message as WsMessage;
 
-use crate::bridge::{Exposed, Shared, Up};
 use crate::ops;
+use crate::shared::{Exposed, Shared, Up};
 
 /// Once per period while connected: what the server has now, bridged or let go.
 pub(crate) async fn discovery(shared: Arc<Shared>) {

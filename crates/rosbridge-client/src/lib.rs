@@ -21,11 +21,14 @@
 //! - [`typedefs`]: rosapi typedefs into definition text.
 //! - [`bridge`]: the connection loop and the router side ([`run`]).
 //! - `discovery`: what the server has, through its rosapi, once per period.
+//! - `shared`: what the connection loop and discovery share: counters, the state that
+//!   outlives a connection, rosapi requests to the server.
 
 pub mod bridge;
 mod discovery;
 pub mod ops;
 pub mod options;
+mod shared;
 pub mod typedefs;
 
 pub use bridge::{RosbridgeClientStats, run};
