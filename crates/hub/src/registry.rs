@@ -20,12 +20,39 @@ use fleetlink_relay::ClientId;
 use fleetlink_relay::link::{Control, ControlSender};
 use tokio_util::sync::CancellationToken;
 
+/// What an agent link speaks for: a robot of its own, or a mirror of another robot
+/// (`HELLO.mirror`, docs/mirror.md) that acts in that robot's namespace. (A peer that is
+/// a site hub shows itself later, by sending `VIA`: `LinkIn::peer_hub`.)
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LinkKind {
+    Robot,
+    Mirror { of: String },
+}
+
+impl LinkKind {
+    /// The robot whose namespace a link named `name` acts in.
+    pub fn acts_in<'a>(&'a self, name: &'a str) -> &'a str {
+        match self {
+            LinkKind::Robot => name,
+            LinkKind::Mirror { of } => of,
+        }
+    }
+
+    /// How the hub's logs name a link called `name`.
+    pub fn describe(&self, name: &str) -> String {
+        match self {
+            LinkKind::Robot => format!("robot {name}"),
+            LinkKind::Mirror { of } => format!("mirror {name} of robot {of}"),
+        }
+    }
+}
+
 /// A robot that is online now.
 pub struct LiveRobot {
     pub name: String,
-    /// The robot this link mirrors (docs/mirror.md), if it is a mirror: `name` is then
-    /// the mirror's own.
-    pub mirror_of: Option<String>,
+    /// What the link speaks for: the robot `name`, or a mirror (named `name`) of another
+    /// robot.
+    pub kind: LinkKind,
     pub client: ClientId,
     pub session: u64,
     pub addr: Option<SocketAddr>,
@@ -107,7 +134,7 @@ const CLOCK_SAMPLES: usize = 16;
 /// What a new [`LiveRobot`] starts from.
 pub struct LiveLink {
     pub name: String,
-    pub mirror_of: Option<String>,
+    pub kind: LinkKind,
     pub client: ClientId,
     pub session: u64,
     pub addr: Option<SocketAddr>,
@@ -120,7 +147,7 @@ impl LiveRobot {
     pub fn new(l: LiveLink) -> LiveRobot {
         LiveRobot {
             name: l.name,
-            mirror_of: l.mirror_of,
+            kind: l.kind,
             client: l.client,
             session: l.session,
             addr: l.addr,
@@ -238,7 +265,7 @@ impl Registry {
         let m = self.mirrors.lock().unwrap_or_else(|p| p.into_inner());
         let mut v: Vec<_> = m
             .values()
-            .filter(|r| r.mirror_of.as_deref() == Some(robot))
+            .filter(|r| matches!(&r.kind, LinkKind::Mirror { of } if of == robot))
             .cloned()
             .collect();
         v.sort_by(|a, b| a.name.cmp(&b.name));

@@ -9,29 +9,30 @@
 //! they live in the shared database ([`fleetlink_postgres`]: a pool, versioned
 //! migrations, change notifications). Either way every statement is short and
 //! synchronous; callers on an async runtime run store calls on the blocking pool. The
-//! public methods (`rules.rs`, `credentials.rs`) turn values into columns and rows back
-//! into values, and leave the statements to the engine. The audit queries
-//! (`crate::audit::query`) still hold both dialects side by side in each method, on the
-//! connection the store keeps for them (`Backend`).
+//! public methods (`rules.rs`, `credentials.rs`, `audit.rs`) turn values into columns and
+//! rows back into values, and leave the statements to the engine.
 //!
 //! Rule edits bump a revision counter in the same transaction, so a hub notices edits made
 //! by another process (`fleetlink admin`, another hub) by polling
 //! [`Store::rules_revision`]; on PostgreSQL the same transaction also notifies every hub
 //! ([`fleetlink_postgres::changes`]), which reloads at once.
 
+mod audit;
 mod credentials;
 mod postgres;
 mod rules;
 mod sqlite;
 
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 use fleetlink_postgres::Database;
 use rusqlite::Connection;
 
 use crate::UnixTime;
 use crate::acl::RuleId;
+use crate::audit::query::{AuditPage, AuditQuery};
+use crate::audit::record::AuditRecord;
 use crate::identity::{RobotName, UserName};
 use crate::token::{TokenHash, TokenKind};
 use credentials::RawToken;
@@ -112,22 +113,11 @@ pub fn init_schema(conn: &Connection, schema: &str) -> rusqlite::Result<()> {
 #[derive(Clone)]
 pub struct Store {
     engine: Arc<dyn Engine>,
-    /// The same connection, for the audit queries (`crate::audit::query`), which still
-    /// hold both dialects in each method and match on it.
-    backend: Backend,
 }
 
-#[derive(Clone)]
-pub(crate) enum Backend {
-    // std Mutex: every use is one short synchronous statement or transaction, never held
-    // across an await; contention is low (logins, admin edits, audit batches).
-    Sqlite(Arc<Mutex<Connection>>),
-    Postgres(Database),
-}
-
-/// One backend's statements for the rule and credential methods of [`Store`], in that
-/// backend's SQL dialect. Rows come back as plain columns; the callers parse them, so
-/// both engines read the same.
+/// One backend's statements for the rule, credential and audit methods of [`Store`], in
+/// that backend's SQL dialect. Rows come back as plain columns; the callers parse them,
+/// so both engines read the same.
 trait Engine: Send + Sync {
     /// The shared database, for the PostgreSQL engine.
     fn database(&self) -> Option<&Database>;
@@ -175,6 +165,18 @@ trait Engine: Send + Sync {
     fn user(&self, name: &UserName) -> Result<Option<(String, String)>, StoreError>;
     /// Every user's (name, groups JSON, created at), by name.
     fn list_users(&self) -> Result<Vec<(String, String, i64)>, StoreError>;
+
+    /// Writes a batch of audit records in one go.
+    fn insert_audit_batch(&self, batch: &[AuditRecord]) -> Result<(), StoreError>;
+    /// Deletes audit records older than `before`; how many.
+    fn prune_audit(&self, before: UnixTime) -> Result<usize, StoreError>;
+    /// The page of at most `limit` audit records matching `q`, newest first, made by
+    /// `audit::page` from the rows the filters SQL can express select.
+    fn query_audit(&self, q: &AuditQuery, limit: usize) -> Result<AuditPage, StoreError>;
+
+    /// Holds the SQLite connection, stalling every writer.
+    #[cfg(test)]
+    fn lock_for_test(&self) -> std::sync::MutexGuard<'_, Connection>;
 }
 
 impl Store {
@@ -183,27 +185,11 @@ impl Store {
         self.engine.database()
     }
 
-    pub(crate) fn backend(&self) -> &Backend {
-        &self.backend
-    }
-
     /// Holds the connection, stalling every writer: lets tests fill the audit channel.
     #[cfg(test)]
     pub(crate) fn lock_for_test(&self) -> std::sync::MutexGuard<'_, Connection> {
-        match &self.backend {
-            Backend::Sqlite(c) => c.lock().unwrap_or_else(|p| p.into_inner()),
-            Backend::Postgres(_) => unreachable!("the audit stall test runs on SQLite"),
-        }
+        self.engine.lock_for_test()
     }
-}
-
-/// Runs `f` on the SQLite connection.
-pub(crate) fn with<T>(
-    conn: &Mutex<Connection>,
-    f: impl FnOnce(&mut Connection) -> Result<T, StoreError>,
-) -> Result<T, StoreError> {
-    let mut conn = conn.lock().unwrap_or_else(|p| p.into_inner());
-    f(&mut conn)
 }
 
 fn corrupt(what: &'static str) -> impl FnOnce(serde_json::Error) -> StoreError {

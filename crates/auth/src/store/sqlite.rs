@@ -1,9 +1,9 @@
 //! The SQLite backend of the security [`Store`]: the `auth_` and `audit_` tables in the
-//! hub's own database file (or in memory), and every rule and credential statement the
-//! store runs there.
+//! hub's own database file (or in memory), and every rule, credential and audit statement
+//! the store runs there.
 //!
-//! Design choice: one connection behind a std `Mutex`, shared with the audit queries;
-//! every use is one short synchronous statement or transaction. Rule changes bump the
+//! Design choice: one connection behind a std `Mutex`, for every table; every use is one
+//! short synchronous statement or transaction. Rule changes bump the
 //! revision in their transaction, which is how other processes on the same file notice.
 
 use std::path::Path;
@@ -12,10 +12,13 @@ use std::sync::{Arc, Mutex};
 use fleetlink_postgres::Database;
 use rusqlite::{Connection, OptionalExtension, Row, params};
 
+use super::audit::{RawAudit, page, size_column};
 use super::credentials::{RawToken, TOKEN_COLUMNS};
-use super::{Backend, Engine, Store, StoreError, TokenId, init_schema, with};
+use super::{Engine, Store, StoreError, TokenId, init_schema};
 use crate::UnixTime;
 use crate::acl::RuleId;
+use crate::audit::query::{AuditPage, AuditQuery};
+use crate::audit::record::{AuditAction, AuditRecord};
 use crate::identity::{RobotName, UserName};
 use crate::token::{TokenHash, TokenKind};
 
@@ -83,17 +86,27 @@ impl Store {
     }
 
     fn from_conn(conn: Connection) -> Store {
-        let conn = Arc::new(Mutex::new(conn));
         Store {
-            engine: Arc::new(Sqlite { conn: conn.clone() }),
-            backend: Backend::Sqlite(conn),
+            engine: Arc::new(Sqlite {
+                conn: Mutex::new(conn),
+            }),
         }
     }
 }
 
 struct Sqlite {
-    /// The same connection as the store's `Backend::Sqlite`, which the audit queries use.
-    conn: Arc<Mutex<Connection>>,
+    // std Mutex: every use is one short synchronous statement or transaction, never held
+    // across an await; contention is low (logins, admin edits, audit batches).
+    conn: Mutex<Connection>,
+}
+
+/// Runs `f` on the SQLite connection.
+fn with<T>(
+    conn: &Mutex<Connection>,
+    f: impl FnOnce(&mut Connection) -> Result<T, StoreError>,
+) -> Result<T, StoreError> {
+    let mut conn = conn.lock().unwrap_or_else(|p| p.into_inner());
+    f(&mut conn)
 }
 
 fn bump_revision(tx: &rusqlite::Transaction<'_>) -> rusqlite::Result<()> {
@@ -324,5 +337,84 @@ impl Engine for Sqlite {
             let rows = stmt.query_map([], |r| Ok((r.get(0)?, r.get(1)?, r.get(2)?)))?;
             Ok(rows.collect::<rusqlite::Result<Vec<_>>>()?)
         })
+    }
+
+    fn insert_audit_batch(&self, batch: &[AuditRecord]) -> Result<(), StoreError> {
+        with(&self.conn, |c| {
+            let tx = c.transaction()?;
+            {
+                let mut stmt = tx.prepare_cached(
+                    "INSERT INTO audit_log (at, principal, client_ip, action, name, size, allowed, detail)
+                         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)",
+                )?;
+                for r in batch {
+                    stmt.execute(params![
+                        r.at.0,
+                        r.principal,
+                        r.client_ip.to_string(),
+                        r.action.as_str(),
+                        r.name,
+                        r.size.map(size_column),
+                        r.allowed,
+                        r.detail,
+                    ])?;
+                }
+            }
+            tx.commit()?;
+            Ok(())
+        })
+    }
+
+    fn prune_audit(&self, before: UnixTime) -> Result<usize, StoreError> {
+        with(&self.conn, |c| {
+            Ok(c.execute("DELETE FROM audit_log WHERE at < ?1", [before.0])?)
+        })
+    }
+
+    fn query_audit(&self, q: &AuditQuery, limit: usize) -> Result<AuditPage, StoreError> {
+        with(&self.conn, |c| {
+            let mut stmt = c.prepare(
+                "SELECT id, at, principal, client_ip, action, name, size, allowed, detail
+                     FROM audit_log
+                     WHERE (?1 IS NULL OR id < ?1)
+                       AND (?2 IS NULL OR principal = ?2)
+                       AND (?3 IS NULL OR action = ?3)
+                       AND (?4 IS NULL OR substr(name, 1, length(?4)) = ?4)
+                       AND (?5 IS NULL OR allowed = ?5)
+                       AND (?6 IS NULL OR at >= ?6)
+                       AND (?7 IS NULL OR at < ?7)
+                     ORDER BY id DESC",
+            )?;
+            let rows = stmt.query_map(
+                params![
+                    q.after.map(|c| c.0),
+                    q.principal,
+                    q.action.map(AuditAction::as_str),
+                    q.name_prefix,
+                    q.allowed,
+                    q.since.map(|t| t.0),
+                    q.until.map(|t| t.0),
+                ],
+                |r| {
+                    Ok(RawAudit {
+                        id: r.get(0)?,
+                        at: r.get(1)?,
+                        principal: r.get(2)?,
+                        client_ip: r.get(3)?,
+                        action: r.get(4)?,
+                        name: r.get(5)?,
+                        size: r.get(6)?,
+                        allowed: r.get(7)?,
+                        detail: r.get(8)?,
+                    })
+                },
+            )?;
+            page(rows.map(|r| r.map_err(StoreError::from)), q, limit)
+        })
+    }
+
+    #[cfg(test)]
+    fn lock_for_test(&self) -> std::sync::MutexGuard<'_, Connection> {
+        self.conn.lock().unwrap_or_else(|p| p.into_inner())
     }
 }

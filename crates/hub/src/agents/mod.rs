@@ -33,7 +33,7 @@ use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
 use crate::delivery::DeliveryLedger;
-use crate::registry::{LiveLink, LiveRobot, Registry};
+use crate::registry::{LinkKind, LiveLink, LiveRobot, Registry};
 use crate::store::Store;
 use events::RobotLink;
 
@@ -72,40 +72,6 @@ struct Admitted {
     identity: fleetlink_auth::Identity,
     outbox_epoch: u64,
     kind: LinkKind,
-}
-
-/// What an agent link speaks for: a robot of its own, or a mirror of another robot
-/// (`HELLO.mirror`, docs/mirror.md) that acts in that robot's namespace. (A peer that is
-/// a site hub shows itself later, by sending `VIA`: `LinkIn::peer_hub`.)
-#[derive(Debug, Clone, PartialEq, Eq)]
-enum LinkKind {
-    Robot,
-    Mirror { of: String },
-}
-
-impl LinkKind {
-    /// The robot whose namespace a link named `name` acts in.
-    fn acts_in<'a>(&'a self, name: &'a str) -> &'a str {
-        match self {
-            LinkKind::Robot => name,
-            LinkKind::Mirror { of } => of,
-        }
-    }
-
-    /// How the hub's logs name a link called `name`.
-    fn describe(&self, name: &str) -> String {
-        match self {
-            LinkKind::Robot => format!("robot {name}"),
-            LinkKind::Mirror { of } => format!("mirror {name} of robot {of}"),
-        }
-    }
-
-    fn mirror_of(&self) -> Option<String> {
-        match self {
-            LinkKind::Robot => None,
-            LinkKind::Mirror { of } => Some(of.clone()),
-        }
-    }
 }
 
 /// Runs one agent connection to the end. `slot` (the hub's handshake admission) is held
@@ -170,7 +136,7 @@ pub async fn serve_agent<R, W, P>(
     let session_no = ctx.registry.next_session();
     let live = Arc::new(LiveRobot::new(LiveLink {
         name: robot.clone(),
-        mirror_of: kind.mirror_of(),
+        kind: kind.clone(),
         client,
         session: session_no,
         addr,
