@@ -181,6 +181,8 @@ if [ "$mode" != only ]; then
     cargo fmt --all --check
     stage "cargo clippy"
     cargo clippy --workspace --all-targets --locked -- -D warnings
+    stage "code shape (scripts/check-shape.py)"
+    python3 scripts/check-shape.py
 fi
 # One build for the Rust tests and the interop suites' binary: the `ci` profile (Cargo.toml)
 # is optimized, with test-build assertions. The binary the suites run is the one the Rust
