@@ -48,7 +48,7 @@ pub fn chunk(s: &str) -> String {
 }
 
 /// What a hub offers, as one liveliness token.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum Offer {
     Topic {
         name: String,

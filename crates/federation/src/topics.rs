@@ -232,7 +232,6 @@ impl Topics {
         tokio::join!(pump, asks, work);
     }
 
-    /// Takes the parked tokens of hubs admitted since.
     /// Takes the parked tokens of hubs admitted since. Hubs refused keep nothing parked;
     /// a hub that left withdrew its tokens, which let it go already.
     fn unpark(&mut self, touched: &mut HashSet<TopicName>) {

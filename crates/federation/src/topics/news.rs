@@ -14,12 +14,13 @@ use tokio::sync::Notify;
 
 use crate::keys::Offer;
 
-/// Tokens kept per hub not admitted yet (its links' certificates not seen yet): a hub
-/// joining offers its whole catalog at once; beyond this it is offering too much to be one.
-const PARKED_PER_HUB: usize = 100_000;
-/// Hubs not admitted yet whose tokens are kept at once. A hub is admitted as soon as a
-/// link of its own shows a certificate, so only hubs joining right now, or reached only
-/// through another hub, wait here; the tokens of a hub past this many are not kept.
+/// Tokens kept of all the hubs not admitted yet (their links' certificates not seen yet):
+/// a hub joining offers its whole catalog at once, and is admitted as soon as a link of
+/// its own shows a certificate; beyond this many, what they offer is not kept.
+const PARKED_TOKENS: usize = 100_000;
+/// Hubs not admitted yet whose tokens are kept at once. Only hubs joining right now, or
+/// reached only through another hub, wait here; the tokens of a hub past this many are
+/// not kept.
 const PARKED_HUBS: usize = 1024;
 
 /// What the catalog's tokens and the definitions asked of other hubs tell the topic loop.
@@ -80,35 +81,45 @@ impl Inbox {
 }
 
 /// The live tokens of hubs not admitted (yet), by hub, taken when the hub is admitted.
-/// Bounded: at most [`PARKED_HUBS`] hubs with [`PARKED_PER_HUB`] tokens each, further
+/// Bounded: at most [`PARKED_HUBS`] hubs and [`PARKED_TOKENS`] tokens in all, further
 /// tokens not kept; a hub whose tokens are all withdrawn (it left) is let go, and so is a
-/// hub refused.
+/// hub refused. A token is found by hashing, so withdrawing one costs the same however
+/// many are parked.
 #[derive(Default)]
 pub(super) struct Parked {
-    by_hub: HashMap<String, Vec<Offer>>,
+    /// Each hub's tokens, with the order they came in.
+    by_hub: HashMap<String, HashMap<Offer, u64>>,
+    next: u64,
+    total: usize,
 }
 
 impl Parked {
     /// Hub `hub`, not admitted, offered (`put`) or withdrew `offer`.
     pub(super) fn note(&mut self, hub: &str, offer: &Offer, put: bool) {
         if put {
-            if !self.by_hub.contains_key(hub) && self.by_hub.len() >= PARKED_HUBS {
+            if self.total >= PARKED_TOKENS
+                || (!self.by_hub.contains_key(hub) && self.by_hub.len() >= PARKED_HUBS)
+            {
                 return;
             }
             let tokens = self.by_hub.entry(hub.to_owned()).or_default();
-            if tokens.len() < PARKED_PER_HUB {
-                tokens.push(offer.clone());
+            if !tokens.contains_key(offer) {
+                tokens.insert(offer.clone(), self.next);
+                self.next += 1;
+                self.total += 1;
             }
         } else if let Some(tokens) = self.by_hub.get_mut(hub) {
-            tokens.retain(|o| o != offer);
+            if tokens.remove(offer).is_some() {
+                self.total -= 1;
+            }
             if tokens.is_empty() {
                 self.by_hub.remove(hub);
             }
         }
     }
 
-    /// Takes the tokens of the hubs `admitted` says are admitted now, and lets go of
-    /// those of the hubs `refused` says were refused.
+    /// Takes the tokens of the hubs `admitted` says are admitted now, each hub's in the
+    /// order they came, and lets go of those of the hubs `refused` says were refused.
     pub(super) fn take(
         &mut self,
         admitted: impl Fn(&str) -> bool,
@@ -120,14 +131,22 @@ impl Parked {
             .filter(|h| admitted(h))
             .cloned()
             .collect();
-        let taken = now
-            .into_iter()
-            .map(|hub| {
-                let tokens = self.by_hub.remove(&hub).unwrap_or_default();
-                (hub, tokens)
-            })
-            .collect();
-        self.by_hub.retain(|hub, _| !refused(hub));
+        let mut taken = Vec::with_capacity(now.len());
+        for hub in now {
+            let tokens = self.by_hub.remove(&hub).unwrap_or_default();
+            self.total -= tokens.len();
+            let mut tokens: Vec<(Offer, u64)> = tokens.into_iter().collect();
+            tokens.sort_unstable_by_key(|(_, n)| *n);
+            taken.push((hub, tokens.into_iter().map(|(o, _)| o).collect()));
+        }
+        let total = &mut self.total;
+        self.by_hub.retain(|hub, tokens| {
+            let keep = !refused(hub);
+            if !keep {
+                *total -= tokens.len();
+            }
+            keep
+        });
         taken
     }
 }
@@ -196,16 +215,22 @@ mod tests {
             PARKED_HUBS,
             "no more hubs than the bound"
         );
-        for i in 0..PARKED_PER_HUB + 10 {
+        for i in 0..PARKED_TOKENS + 10 {
             parked.note("hub0", &want(&format!("/t{i}")), true);
         }
-        assert_eq!(parked.by_hub["hub0"].len(), PARKED_PER_HUB);
+        assert_eq!(parked.total, PARKED_TOKENS, "no more tokens than the bound");
+        assert_eq!(
+            parked.by_hub.values().map(HashMap::len).sum::<usize>(),
+            PARKED_TOKENS
+        );
 
         // A hub that withdraws all it offered (it left) is let go, making room.
         parked.note("hub1", &want("/a"), false);
         assert!(!parked.by_hub.contains_key("hub1"));
+        assert_eq!(parked.total, PARKED_TOKENS - 1);
         parked.note("late", &want("/a"), true);
         assert!(parked.by_hub.contains_key("late"));
+        assert_eq!(parked.total, PARKED_TOKENS);
         // A withdrawal from a hub with nothing parked keeps nothing.
         parked.note("unknown", &want("/a"), false);
         assert!(!parked.by_hub.contains_key("unknown"));
@@ -220,9 +245,16 @@ mod tests {
         parked.note("good", &want("/a"), false);
         parked.note("bad", &want("/a"), true);
         parked.note("waiting", &want("/a"), true);
+        parked.note("good", &want("/c"), true);
+        parked.note("good", &want("/a"), true);
         let taken = parked.take(|h| h == "good", |h| h == "bad");
-        assert_eq!(taken, [("good".to_owned(), vec![want("/b")])]);
+        assert_eq!(
+            taken,
+            [("good".to_owned(), vec![want("/b"), want("/c"), want("/a")])],
+            "in the order they came"
+        );
         let left: Vec<&String> = parked.by_hub.keys().collect();
         assert_eq!(left, ["waiting"]);
+        assert_eq!(parked.total, 1, "only the waiting hub's token is counted");
     }
 }
