@@ -15,9 +15,8 @@ use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex};
 use std::time::SystemTime;
 
-use fleetlink_proto::frame::Frame;
 use fleetlink_relay::ClientId;
-use fleetlink_relay::link::{Control, ControlSender};
+use tokio::sync::Notify;
 use tokio_util::sync::CancellationToken;
 
 /// What an agent link speaks for: a robot of its own, or a mirror of another robot
@@ -78,8 +77,9 @@ pub struct LiveRobot {
     /// The current estimate from `clock` (`i64::MIN` = none yet), read per message
     /// without the lock.
     clock_offset: AtomicI64,
-    /// The link's writer, for frames that do not go through the session (`SHARE`).
-    control: ControlSender,
+    /// Rung when a new capacity share is in `share_bps`: the link's driver sends it
+    /// through the session (`SHARE`); shares set meanwhile coalesce into the latest.
+    pub share_news: Notify,
     /// Cancelled when a newer connection of the robot replaces this one.
     replaced: CancellationToken,
     /// From the agent's last `BUDGET`, if the robot has a data budget.
@@ -139,7 +139,6 @@ pub struct LiveLink {
     pub session: u64,
     pub addr: Option<SocketAddr>,
     pub heartbeat_ms: u32,
-    pub control: ControlSender,
     pub replaced: CancellationToken,
 }
 
@@ -163,7 +162,7 @@ impl LiveRobot {
             share_bps: AtomicU64::new(0),
             clock: Mutex::new(ClockSync::default()),
             clock_offset: AtomicI64::new(i64::MIN),
-            control: l.control,
+            share_news: Notify::new(),
             replaced: l.replaced,
             budget: Mutex::new(None),
         }
@@ -190,13 +189,12 @@ impl LiveRobot {
         }
     }
 
-    /// Sends the robot its capacity share (bytes/s; 0 = no cap). Never blocks: a writer
-    /// too backed up to take it gets the next one.
+    /// Sends the robot its capacity share (bytes/s; 0 = no cap): its link's driver puts
+    /// it through the session. Never blocks; a share set before the last one went out
+    /// is replaced by it.
     pub fn send_share(&self, bytes_per_sec: u64) {
         self.share_bps.store(bytes_per_sec, Relaxed);
-        let _ = self
-            .control
-            .try_send(Box::new(Control::Frame(Frame::Share { bytes_per_sec })));
+        self.share_news.notify_one();
     }
 
     /// Ends this connection's session: a newer one of the same robot took its place.

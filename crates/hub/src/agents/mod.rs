@@ -16,7 +16,7 @@ use std::sync::atomic::Ordering::Relaxed;
 use std::time::{Duration, Instant};
 
 use fleetlink_auth::{Credential, GroupName, Operation, RobotName, Token, TokenKind};
-use fleetlink_proto::frame::{WELCOME_COMPRESSION, WELCOME_INTEREST};
+use fleetlink_proto::frame::{Frame, WELCOME_COMPRESSION, WELCOME_INTEREST};
 use fleetlink_relay::calls::{ChannelPeer, PeerReceiver};
 use fleetlink_relay::gate::Gate;
 use fleetlink_relay::link::session::{
@@ -141,7 +141,6 @@ pub async fn serve_agent<R, W, P>(
         session: session_no,
         addr,
         heartbeat_ms,
-        control: ctrl_tx.clone(),
         replaced: replaced.clone(),
     }));
     register(&ctx, &live, &kind, &robot, &what, &who, addr);
@@ -464,6 +463,8 @@ where
     let demand = link.demand.clone();
     let mut demand_changed = std::pin::pin!(demand.changed());
     let mut call_news = std::pin::pin!(peer_rx.recv());
+    let live = link.live.clone();
+    let mut share_news = std::pin::pin!(live.share_news.notified());
     loop {
         while let Some(ev) = session.poll_event() {
             match ev {
@@ -513,6 +514,11 @@ where
                 }
             }
             _ = timer.wait(deadline) => session.handle_timeout(Instant::now()),
+            () = &mut share_news => {
+                share_news.set(live.share_news.notified());
+                let bytes_per_sec = live.share_bps.load(Relaxed);
+                session.send(Frame::Share { bytes_per_sec });
+            }
             () = &mut demand_changed => {
                 demand_changed.set(demand.changed());
                 link.on_demand_changed(session);
