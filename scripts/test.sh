@@ -52,7 +52,8 @@ report() {
     local name
     for name in "${interop_failed[@]}"; do
         echo "== what failed in $name (its log: ${INTEROP_LOGS:-target/interop-logs}/$name.log)"
-        grep -E '^(FAIL|not ok)' "${INTEROP_LOGS:-$PWD/target/interop-logs}/$name.log" | head -n 20 || true
+        # Plain FAIL/ERROR lines, and the rows of a results table marked FAIL.
+        grep -E '^(FAIL|ERROR|not ok)|\| FAIL \|' "${INTEROP_LOGS:-$PWD/target/interop-logs}/$name.log" | head -n 20 || true
     done
     echo "== time per stage"
     printf '  %s\n' "${stages[@]}"

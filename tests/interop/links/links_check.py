@@ -71,13 +71,15 @@ def main():
                 continue
             print(f"\n== scenario {key}: {name}", flush=True)
             t0 = time.monotonic()
-            try:
-                rows = fn(fleet, nominal)
-            except Failed as e:
-                rows = [("ERROR (harness)", str(e).splitlines()[0], "runs", False)]
-                print(f"ERROR: scenario {key}: {e}", file=sys.stderr, flush=True)
-            finally:
-                sc.restore(fleet)
+            rows = run_scenario(key, fn, fleet, nominal)
+            missed = timing_misses(rows)
+            if missed:
+                # Measured again once; the first attempt's misses stay in the table.
+                print(f"   timing rows missed their targets ({len(missed)}); scenario {key} "
+                      "runs once more", flush=True)
+                rows = run_again(key, fn, fleet, nominal) + [
+                    (f"first attempt: {fig}", measured, target, None)
+                    for fig, measured, target, _ in missed]
             results[f"{key} {name}"] = rows
             print(f"   ({time.monotonic() - t0:.0f} s)", flush=True)
     except Failed as e:
@@ -87,6 +89,48 @@ def main():
         procs.stop_all()
     ok = report(results, a.out, fleet, time.monotonic() - started)
     return 0 if ok else 1
+
+
+# Rows that time the machine as much as fleetlink: a latency percentile, a recovery or a
+# close within a deadline, a share delivered while two other suites share the two cores.
+# A scenario whose only failed rows are of these runs once more, and its second attempt
+# decides; a row of what was delivered (missing, duplicated, reordered, the outage's
+# messages) is never measured again, so a loss is never retried away.
+TIMING = ("recovery of /probe/fast", "uplink alive after", "/probe/fast latency",
+          "/probe/fast delivered", "/robot1/points delivered", "trickling connections closed",
+          "kept receiving /probe/fast", "new client during the attack")
+
+
+def timing_misses(rows):
+    """The failed rows, if every one of them is a timing row (else none: not retried)."""
+    failed = [r for r in rows if r[3] is False]
+    if failed and all(any(t in r[0] for t in TIMING) for r in failed):
+        return failed
+    return []
+
+
+def run_scenario(key, fn, fleet, nominal):
+    """One scenario's rows; a harness failure is an ERROR row. The link and the processes
+    are put back as they were afterwards, whatever happened."""
+    try:
+        return fn(fleet, nominal)
+    except Failed as e:
+        print(f"ERROR: scenario {key}: {e}", file=sys.stderr, flush=True)
+        return [("ERROR (harness)", str(e).splitlines()[0], "runs", False)]
+    finally:
+        sc.restore(fleet)
+
+
+def run_again(key, fn, fleet, nominal):
+    """The scenario once more, its peers' logs in a directory of their own (they are named
+    by the scenario's tags, and the first attempt's would be counted again)."""
+    base = fleet.tmp
+    fleet.tmp = os.path.join(base, f"again-{key}")
+    os.makedirs(fleet.tmp, exist_ok=True)
+    try:
+        return run_scenario(key, fn, fleet, nominal)
+    finally:
+        fleet.tmp = base
 
 
 def report(results, out, fleet, secs):
