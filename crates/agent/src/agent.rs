@@ -6,8 +6,8 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use fleetlink_relay::Router;
-use fleetlink_relay::rosbridge::SessionConfig;
 use fleetlink_relay::transcode::Transcoder;
+use fleetlink_rosbridge::SessionConfig;
 use tokio::net::TcpListener;
 use tokio::sync::watch;
 use tokio_util::sync::CancellationToken;

@@ -17,10 +17,10 @@ use std::time::Duration;
 use fleetlink_relay::Router;
 
 use crate::runtime::RuntimeConfig;
-use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::websocket::deflate;
 use fleetlink_relay::websocket::liveness::Peer;
 use fleetlink_relay::websocket::tcp_progress;
+use fleetlink_rosbridge::SessionConfig;
 use tokio::io::AsyncReadExt;
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::server::{Request, Response};
@@ -129,7 +129,8 @@ pub async fn serve(
                         addr: Some(addr),
                         progress: local.map(|l| tcp_progress::probe(l, addr, sink.written())),
                     };
-                    rosbridge::serve(sink, stream, router, peer, cfg, shutdown, auth).await
+                    fleetlink_rosbridge::serve(sink, stream, router, peer, cfg, shutdown, auth)
+                        .await
                 }
                 Err(e) => tracing::debug!("local client {addr}: WebSocket handshake failed: {e}"),
             }

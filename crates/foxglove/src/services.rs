@@ -22,7 +22,7 @@ use fleetlink_relay::calls::{
 };
 use fleetlink_relay::gate::Op as GateOp;
 use fleetlink_relay::link_calls::outcome_text;
-use fleetlink_relay::rosbridge::rosapi::{self, Answer};
+use fleetlink_relay::rosapi::{self, Answer};
 use fleetlink_relay::{Router, TopicName};
 use serde_json::{Value, json};
 

@@ -24,10 +24,10 @@ use axum::response::{IntoResponse, Response};
 use axum::routing::get;
 use fleetlink_proto::SUBPROTOCOL;
 use fleetlink_relay::Router;
-use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::transcode::Transcoder;
 use fleetlink_relay::websocket::deflate::{self, DeflateConfig};
 use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer};
+use fleetlink_rosbridge::SessionConfig;
 use tokio::net::TcpListener;
 use tokio_tungstenite::tungstenite::handshake::derive_accept_key;
 use tokio_util::sync::CancellationToken;
@@ -562,7 +562,7 @@ async fn upgrade(st: Arc<HubState>, addr: SocketAddr, mut req: Request) -> Respo
                 ))
                 .await;
             }
-            Box::pin(rosbridge::serve(
+            Box::pin(fleetlink_rosbridge::serve(
                 sink,
                 stream,
                 st.router.clone(),

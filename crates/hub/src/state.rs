@@ -11,7 +11,7 @@
 use std::sync::Arc;
 
 use fleetlink_relay::Router;
-use fleetlink_relay::rosbridge::SessionConfig;
+use fleetlink_rosbridge::SessionConfig;
 use tokio_util::sync::CancellationToken;
 
 use crate::agents::AgentContext;

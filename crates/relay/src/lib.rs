@@ -34,8 +34,8 @@
 //!   clients and MCAP files.
 //! - [`stats`]: per-topic counters and rates read by metrics and the API.
 //! - [`router`]: the topic table, subscribe/advertise/publish and the fan-out.
-//! - [`rosbridge`]: a rosbridge v2 server session over any WebSocket stream, including the
-//!   `/rosapi` services the hub answers itself.
+//! - [`rosapi`]: the answers to the `/rosapi` services from the router's own tables,
+//!   shared by the rosbridge server (the `fleetlink-rosbridge` crate) and the Foxglove one.
 //! - [`websocket`]: the server side of a WebSocket connection as a reader and a writer
 //!   that share only the socket, which rosbridge sessions run on (the `fleetlink-websocket`
 //!   crate, with the writers' wait for work that needs an outbox).
@@ -56,7 +56,7 @@ pub mod png;
 pub mod queue;
 pub mod read_interest;
 pub mod reliable;
-pub mod rosbridge;
+pub mod rosapi;
 pub mod router;
 pub mod stats;
 pub mod transcode;
@@ -176,18 +176,6 @@ pub fn unix_nanos() -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The session hands `Publish::from_json_text` a WebSocket text frame and the bytes
-    /// it converts into: they must be one buffer, or every publish takes the full parse.
-    #[test]
-    fn a_websocket_text_frame_takes_the_publish_short_path() {
-        use tokio_tungstenite::tungstenite::Utf8Bytes;
-        let text = Utf8Bytes::from(r#"{"op":"publish","topic":"/a","msg":{"data":1}}"#.to_owned());
-        let bytes = bytes::Bytes::from(text.clone());
-        let p = fleetlink_proto::rosbridge::Publish::from_json_text(text.as_str(), &bytes)
-            .expect("the short path");
-        assert_eq!(&p.msg.bytes[..], br#"{"data":1}"#);
-    }
 
     #[test]
     fn an_instant_survives_the_trip_through_unix_nanoseconds() {

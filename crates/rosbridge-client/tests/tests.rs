@@ -9,10 +9,10 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::{Payload, Schema};
 use fleetlink_relay::calls::{CallEvent, CallOptions, CallStatus, ChannelPeer, PeerMsg};
 use fleetlink_relay::outbox::Outbox;
-use fleetlink_relay::rosbridge::{self, SessionConfig};
 use fleetlink_relay::router::{SubOptions, Target};
 use fleetlink_relay::transcode::RegistryTranscoder;
 use fleetlink_relay::{ClientKind, Router, TopicName};
+use fleetlink_rosbridge::SessionConfig;
 use fleetlink_rosbridge_client::{NameFilter, RosbridgeClientOptions, RosbridgeClientStats, run};
 use tokio::net::TcpListener;
 use tokio_util::sync::CancellationToken;
@@ -44,7 +44,7 @@ fn serve(listener: TcpListener, router: Arc<Router>, stop: CancellationToken) {
                 let (sink, stream) =
                     fleetlink_relay::websocket::server(ws.into_inner(), cfg.max_message_size);
                 let auth = fleetlink_relay::gate::SessionAuth::open();
-                rosbridge::serve(sink, stream, router, Some(addr), cfg, stop, auth).await;
+                fleetlink_rosbridge::serve(sink, stream, router, Some(addr), cfg, stop, auth).await;
             });
         }
     });

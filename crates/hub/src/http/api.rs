@@ -41,7 +41,7 @@ pub fn routes() -> axum::Router<Arc<HubState>> {
 }
 
 fn client_label(st: &HubState, id: fleetlink_relay::ClientId) -> String {
-    fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id)
+    fleetlink_relay::rosapi::client_node_name(&st.router, id)
 }
 
 /// Whether the caller may subscribe to robot `name`'s namespace as a whole (`/<name>`

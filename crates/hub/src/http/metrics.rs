@@ -164,7 +164,7 @@ fn encode_clients(st: &HubState, enc: &mut DescriptorEncoder) -> Result<(), std:
     let relaxed = std::sync::atomic::Ordering::Relaxed;
     let now = Instant::now();
     let clients = st.router.clients();
-    let label = |id| fleetlink_relay::rosbridge::rosapi::client_node_name(&st.router, id);
+    let label = |id| fleetlink_relay::rosapi::client_node_name(&st.router, id);
     let mut m = enc.encode_descriptor(
         "fleetlink_client_queue_depth",
         "Messages waiting in a client's outbound queues",

@@ -57,7 +57,7 @@ impl Published {
     fn publish(
         &mut self,
         client: ClientId,
-        clock: &mut crate::StampClock,
+        clock: &mut fleetlink_relay::StampClock,
         msg: Payload,
         json_text: bool,
     ) -> usize {

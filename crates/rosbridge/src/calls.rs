@@ -22,12 +22,12 @@ use std::time::Duration;
 use bytes::Bytes;
 use fleetlink_proto::rosbridge::outbound;
 use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::calls::{CallId, CallStatus, PeerMsg};
+use fleetlink_relay::names::TopicName;
 use serde_json::{Value, json};
 use tokio_tungstenite::tungstenite::{Message as WsMessage, Utf8Bytes};
 
 use super::session::Session;
-use crate::calls::{CallId, CallStatus, PeerMsg};
-use crate::names::TopicName;
 
 /// How a caller wants its answers.
 #[derive(Debug, Clone, Copy, Default)]

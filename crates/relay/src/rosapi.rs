@@ -1,4 +1,5 @@
-//! The `/rosapi` services clients and viewers call to discover the graph.
+//! The answers to the `/rosapi` services (which clients and viewers call to discover the
+//! graph) from the router's own tables, shared by the rosbridge and Foxglove servers.
 //!
 //! rosbridge deployments run a separate `rosapi` node; fleetlink answers from the router
 //! directly, so listings are exactly what can be subscribed to here. Service names match

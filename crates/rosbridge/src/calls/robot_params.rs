@@ -7,13 +7,13 @@ use std::time::Duration;
 
 use fleetlink_proto::rosbridge::outbound;
 use fleetlink_proto::{Encoding, Payload};
+use fleetlink_relay::calls::{CallOptions, CallStatus};
+use fleetlink_relay::gate::Op as GateOp;
+use fleetlink_relay::names::TopicName;
 use serde_json::{Value, json};
 
 use super::{Answering, Gathering, Made, timeout_of};
-use crate::calls::{CallOptions, CallStatus};
-use crate::gate::Op as GateOp;
-use crate::names::TopicName;
-use crate::rosbridge::session::Session;
+use crate::session::Session;
 
 /// How long a listing of parameter names waits for a robot's own list.
 const ROBOT_NAMES_WAIT: Duration = Duration::from_secs(5);
@@ -36,7 +36,7 @@ impl Session {
     /// answered when the robot answers. The ACL applies to the full name as for the hub's
     /// own parameters (reading needs `subscribe`, changing `publish`). `None`: not such a
     /// call, the hub answers it from its own store.
-    pub(in crate::rosbridge) fn forward_param(
+    pub(crate) fn forward_param(
         &mut self,
         service: &str,
         args: &Value,
@@ -47,7 +47,7 @@ impl Session {
         if !FORWARDED_PARAMS.contains(&call) {
             return None;
         }
-        let name = crate::params::param_name(args.get("name")?.as_str()?).ok()?;
+        let name = fleetlink_relay::params::param_name(args.get("name")?.as_str()?).ok()?;
         let (robot, rest) = match name[1..].find('/') {
             Some(i) => (&name[1..=i], &name[i + 1..]),
             None => (&name[1..], "/"),
@@ -103,7 +103,7 @@ impl Session {
     /// (`/robot1/max_speed`) under the same ACL. Answered once every robot has answered or
     /// [`ROBOT_NAMES_WAIT`] has passed; a robot that fails is left out of the list.
     /// `false`: no robot provides parameters (the caller answers with `own`).
-    pub(in crate::rosbridge) fn gather_param_names(
+    pub(crate) fn gather_param_names(
         &mut self,
         own: Vec<String>,
         id: Option<&Value>,
@@ -228,10 +228,13 @@ impl Session {
         if robot.contains('/') || !FORWARDED_PARAMS.contains(&call) {
             return None;
         }
-        let args = crate::params::call_args(args)?;
+        let args = fleetlink_relay::params::call_args(args)?;
         let raw = args.get("name").and_then(Value::as_str).unwrap_or_default();
         // An invalid name is the provider's to refuse.
-        let full = match crate::params::param_name_or_root(raw).ok()?.as_str() {
+        let full = match fleetlink_relay::params::param_name_or_root(raw)
+            .ok()?
+            .as_str()
+        {
             "/" => format!("/{robot}"),
             rel => format!("/{robot}{rel}"),
         };

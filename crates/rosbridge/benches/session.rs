@@ -17,9 +17,9 @@ use std::time::{Duration, Instant};
 use criterion::{Criterion, Throughput, criterion_group};
 use fleetlink_relay::Router;
 use fleetlink_relay::gate::SessionAuth;
-use fleetlink_relay::rosbridge::{SessionConfig, serve};
 use fleetlink_relay::transcode::RegistryTranscoder;
 use fleetlink_relay::websocket;
+use fleetlink_rosbridge::{SessionConfig, serve};
 use tokio::io::{AsyncReadExt, AsyncWriteExt, DuplexStream, WriteHalf};
 use tokio_util::sync::CancellationToken;
 

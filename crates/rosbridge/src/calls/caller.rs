@@ -4,18 +4,18 @@
 use std::sync::Arc;
 
 use fleetlink_proto::{Encoding, Payload};
+use fleetlink_relay::calls::{CallEvent, CallId, CallOptions, CallStatus};
+use fleetlink_relay::gate::Op as GateOp;
+use fleetlink_relay::link_calls::outcome_text;
+use fleetlink_relay::names::TopicName;
 use serde_json::{Value, json};
 
 use super::robot_params::from_robot;
 use super::{Answering, Made, empty_map, goal_status, id_key, is_map, part, timeout_of};
-use crate::calls::{CallEvent, CallId, CallOptions, CallStatus};
-use crate::gate::Op as GateOp;
-use crate::link_calls::outcome_text;
-use crate::names::TopicName;
-use crate::rosbridge::session::Session;
+use crate::session::Session;
 
 impl Session {
-    pub(in crate::rosbridge) async fn call_service(
+    pub(crate) async fn call_service(
         &mut self,
         service: &str,
         args: Payload,
@@ -72,7 +72,7 @@ impl Session {
         args: Payload,
         opts: CallOptions,
         mut made: Made,
-    ) -> Result<CallId, crate::calls::CallRefused> {
+    ) -> Result<CallId, fleetlink_relay::calls::CallRefused> {
         let op = if opts.goal {
             GateOp::SendActionGoal
         } else {
@@ -107,7 +107,7 @@ impl Session {
         }
     }
 
-    pub(in crate::rosbridge) async fn send_action_goal(
+    pub(crate) async fn send_action_goal(
         &mut self,
         action: &str,
         args: Payload,
@@ -182,10 +182,7 @@ impl Session {
         }
     }
 
-    pub(in crate::rosbridge) fn cancel_action_goal(
-        &mut self,
-        id: Option<&Value>,
-    ) -> Result<(), String> {
+    pub(crate) fn cancel_action_goal(&mut self, id: Option<&Value>) -> Result<(), String> {
         let Some(id) = id else {
             return Err(
                 "cancel_action_goal: missing field 'id' (the id of the goal to cancel)".into(),

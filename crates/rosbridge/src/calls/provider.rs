@@ -4,19 +4,19 @@
 //! `action_feedback`, `action_result`) passed back through the call table.
 
 use fleetlink_proto::{Encoding, Payload, Schema};
+use fleetlink_relay::calls::{CallId, CallRequest, CallStatus, goal_id_text};
+use fleetlink_relay::gate::Op as GateOp;
+use fleetlink_relay::names::TopicName;
 use serde_json::{Value, json};
 use tokio_tungstenite::tungstenite::Message as WsMessage;
 
 use super::{
     Answering, GOAL_ABORTED, GOAL_CANCELED, GOAL_SUCCEEDED, Serving, id_key, is_map, part,
 };
-use crate::calls::{CallId, CallRequest, CallStatus, goal_id_text};
-use crate::gate::Op as GateOp;
-use crate::names::TopicName;
-use crate::rosbridge::session::Session;
+use crate::session::Session;
 
 impl Session {
-    pub(in crate::rosbridge) fn advertise_service(
+    pub(crate) fn advertise_service(
         &mut self,
         raw: &str,
         type_name: &str,
@@ -42,7 +42,7 @@ impl Session {
         let tc = self.router.transcoder();
         let schema = tc
             .schema_for(type_name)
-            .filter(|s| crate::router::same_type(&s.type_name, type_name))
+            .filter(|s| fleetlink_relay::router::same_type(&s.type_name, type_name))
             .unwrap_or_else(|| Schema::named(type_name));
         if let Some(prev) = self
             .router
@@ -61,11 +61,7 @@ impl Session {
         Ok(())
     }
 
-    pub(in crate::rosbridge) fn unadvertise_service(
-        &mut self,
-        raw: &str,
-        action: bool,
-    ) -> Result<(), String> {
+    pub(crate) fn unadvertise_service(&mut self, raw: &str, action: bool) -> Result<(), String> {
         let verb = if action {
             "unadvertise_action"
         } else {
@@ -123,7 +119,7 @@ impl Session {
     /// with the type's defaults and anything else fails the call (roslib 2 sends no
     /// values when its callback returns something falsy). See docs/calls.md, "A
     /// provider's answer".
-    pub(in crate::rosbridge) fn service_response(
+    pub(crate) fn service_response(
         &mut self,
         id: Option<&Value>,
         values: Option<Payload>,
@@ -180,7 +176,7 @@ impl Session {
         Ok(())
     }
 
-    pub(in crate::rosbridge) fn action_feedback(
+    pub(crate) fn action_feedback(
         &mut self,
         id: Option<&Value>,
         values: Payload,
@@ -195,7 +191,7 @@ impl Session {
         Ok(())
     }
 
-    pub(in crate::rosbridge) fn action_result(
+    pub(crate) fn action_result(
         &mut self,
         id: Option<&Value>,
         values: Option<Payload>,

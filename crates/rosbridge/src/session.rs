@@ -31,22 +31,22 @@ use tokio_tungstenite::tungstenite::protocol::frame::coding::CloseCode;
 use tokio_tungstenite::tungstenite::{Error as WsError, Message as WsMessage};
 use tokio_util::sync::CancellationToken;
 
-use crate::calls::ChannelPeer;
-use crate::gate::{Gate, Guard, Op as GateOp, SessionAuth};
-use crate::message::{FrameKind, Message};
-use crate::names::{ClientId, TopicName};
-use crate::outbox::{Delivery, Outbox};
-use crate::queue::DropReason;
-use crate::rosbridge::rosapi::{self, Answer};
-use crate::router::{
+use fleetlink_relay::calls::ChannelPeer;
+use fleetlink_relay::gate::{Gate, Guard, Op as GateOp, SessionAuth};
+use fleetlink_relay::message::{FrameKind, Message};
+use fleetlink_relay::names::{ClientId, TopicName};
+use fleetlink_relay::outbox::{Delivery, Outbox};
+use fleetlink_relay::queue::DropReason;
+use fleetlink_relay::rosapi::{self, Answer};
+use fleetlink_relay::router::{
     ClientKind, Router, SubOptions, SubscriptionId, Target, Topic, TopicView, same_type,
 };
-use crate::stats::StatsBatch;
-use crate::transcode::NormalizeCache;
-use crate::websocket::deflate::DeflateConfig;
-use crate::websocket::liveness::{LivenessConfig, Peer, Watch};
-use crate::websocket::replies::{Reply, close_with, wait_for_work};
-use crate::websocket::{ClientMessage, PartsSink};
+use fleetlink_relay::stats::StatsBatch;
+use fleetlink_relay::transcode::NormalizeCache;
+use fleetlink_relay::websocket::deflate::DeflateConfig;
+use fleetlink_relay::websocket::liveness::{LivenessConfig, Peer, Watch};
+use fleetlink_relay::websocket::replies::{Reply, close_with, wait_for_work};
+use fleetlink_relay::websocket::{ClientMessage, PartsSink};
 
 use fragments::Fragments;
 use publish::Published;
@@ -63,10 +63,11 @@ pub struct SessionConfig {
     /// Messages the writer sends per socket flush.
     pub batch: usize,
     /// How often the client is pinged, and how long it may show no progress before it
-    /// is closed and what it held released ([`crate::websocket::liveness`]).
+    /// is closed and what it held released ([`fleetlink_relay::websocket::liveness`]).
     pub liveness: LivenessConfig,
     /// permessage-deflate for clients that offer it (`None`: never negotiated). The
-    /// server answering the handshake reads it ([`crate::websocket::deflate::negotiate`]).
+    /// server answering the handshake reads it
+    /// ([`fleetlink_relay::websocket::deflate::negotiate`]).
     pub deflate: Option<DeflateConfig>,
 }
 
@@ -125,7 +126,7 @@ pub(super) struct Session {
     /// Operations the client sent in `fragment`s, being put back together.
     fragments: Fragments,
     /// Stamps the messages this client publishes.
-    clock: crate::StampClock,
+    clock: fleetlink_relay::StampClock,
     /// Published topics whose `counts` hold messages ([`Session::flush_counts`]).
     unflushed: Vec<TopicName>,
 }
@@ -400,7 +401,7 @@ impl Session {
         id: Option<&Value>,
         how: super::calls::Answering,
     ) {
-        let args_json = crate::params::call_args(args).unwrap_or(Value::Null);
+        let args_json = fleetlink_relay::params::call_args(args).unwrap_or(Value::Null);
         if let Some(forwarded) = self.forward_param(service, &args_json, id, how) {
             if let Err(e) = forwarded {
                 let reply = outbound::service_response(service, id, Value::String(e), false);
@@ -467,7 +468,7 @@ fn subscription_qos(
     let Some(v) = qos else { return Ok(None) };
     let spec: fleetlink_qos::TopicQosSpec =
         serde_json::from_value(v).map_err(|e| format!("field 'qos': {e}"))?;
-    let base = crate::queue::qos_for_options(queue_length, throttle_ms, default_queue);
+    let base = fleetlink_relay::queue::qos_for_options(queue_length, throttle_ms, default_queue);
     spec.resolve(&base)
         .map(Some)
         .map_err(|e| format!("field 'qos': {e}"))

@@ -5,10 +5,10 @@
 use super::*;
 
 /// Runs a session until the client leaves: `stream` gives the client's messages, `sink`
-/// takes what is sent to it (an accepted WebSocket's halves, see [`crate::websocket`]).
-/// Ends when the client leaves, when it shows no progress for the silence limit
-/// (`cfg.liveness`; `conn` says how to sample its connection), or when `shutdown` is
-/// cancelled.
+/// takes what is sent to it (an accepted WebSocket's halves, see
+/// [`fleetlink_relay::websocket`]). Ends when the client leaves, when it shows no progress
+/// for the silence limit (`cfg.liveness`; `conn` says how to sample its connection), or
+/// when `shutdown` is cancelled.
 ///
 /// Control frames are answered here: a `Ping` with a `Pong`, a `Close` with a `Close`
 /// echoing its code; a frame that breaks the protocol closes the connection with the
@@ -60,10 +60,10 @@ pub async fn serve<K, S>(
         gate: auth.gate,
         guard: auth.guard,
         writer_gate,
-        calls: crate::rosbridge::calls::SessionCalls::default(),
+        calls: crate::calls::SessionCalls::default(),
         level,
         fragments: Fragments::default(),
-        clock: crate::StampClock::default(),
+        clock: fleetlink_relay::StampClock::default(),
         unflushed: Vec::new(),
     };
     // One wait for the shutdown, registered once: a fresh `cancelled()` per frame costs a
@@ -297,4 +297,19 @@ pub async fn serve<K, S>(
         writer.abort();
     }
     let _ = writer.await;
+}
+
+#[cfg(test)]
+mod tests {
+    /// The session hands `Publish::from_json_text` a WebSocket text frame and the bytes
+    /// it converts into: they must be one buffer, or every publish takes the full parse.
+    #[test]
+    fn a_websocket_text_frame_takes_the_publish_short_path() {
+        use tokio_tungstenite::tungstenite::Utf8Bytes;
+        let text = Utf8Bytes::from(r#"{"op":"publish","topic":"/a","msg":{"data":1}}"#.to_owned());
+        let bytes = bytes::Bytes::from(text.clone());
+        let p = fleetlink_proto::rosbridge::Publish::from_json_text(text.as_str(), &bytes)
+            .expect("the short path");
+        assert_eq!(&p.msg.bytes[..], br#"{"data":1}"#);
+    }
 }

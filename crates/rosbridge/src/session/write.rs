@@ -28,7 +28,7 @@ pub(super) async fn write_loop<K: PartsSink>(
     // since (see below).
     let (mut unflushed, mut turns) = (false, 0u32);
     // The batch, kept across rounds so a busy writer does not allocate one per round.
-    let mut items: Vec<crate::outbox::Taken> = Vec::new();
+    let mut items: Vec<fleetlink_relay::outbox::Taken> = Vec::new();
     loop {
         let mut wrote = false;
         while let Ok(r) = replies.try_recv() {
@@ -86,7 +86,7 @@ pub(super) async fn write_loop<K: PartsSink>(
                 && fragment.is_none()
                 && let Ok(Some((text, z))) = msg.deflated_frame(kind, router.transcoder(), cfg)
             {
-                if crate::websocket::feed_deflated(&mut sink, text, &[], &z)
+                if fleetlink_relay::websocket::feed_deflated(&mut sink, text, &[], &z)
                     .await
                     .is_err()
                 {
@@ -102,9 +102,9 @@ pub(super) async fn write_loop<K: PartsSink>(
             if fragment.is_none()
                 && kind == FrameKind::RosbridgeJson
                 && let Some(parts) = msg.json_parts()
-                && msg.payload.len() <= crate::websocket::COPY_UP_TO
+                && msg.payload.len() <= fleetlink_relay::websocket::COPY_UP_TO
             {
-                if crate::websocket::feed_parts(&mut sink, &parts)
+                if fleetlink_relay::websocket::feed_parts(&mut sink, &parts)
                     .await
                     .is_err()
                 {
