@@ -11,8 +11,9 @@
 mod demand;
 mod estimator;
 mod take;
+mod uplink;
 
-use std::collections::{HashMap, HashSet, VecDeque};
+use std::collections::{HashMap, VecDeque};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering::Relaxed};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -20,23 +21,19 @@ use std::time::{Duration, Instant};
 use fleetlink_proto::rosbridge::Compression;
 use tokio::sync::Notify;
 
-use fleetlink_qos::budget::wire_cost;
-use fleetlink_qos::{
-    LinkConfig, LinkEstimator, Nanos, Push, Scheduler, SchedulerConfig, TopicId as QosTopic,
-    TopicQos,
-};
+use fleetlink_qos::{SchedulerConfig, TopicQos};
 
-use crate::link_control::{Hold, LinkControl};
 use crate::message::{Message, TopicMeta};
 use crate::names::ClientId;
 use crate::queue::{DropReason, OutboundQueue, QosQueue};
 use crate::reliable::ReliableOut;
 use crate::stats::TopicStats;
 
-use demand::Demand;
 pub use demand::LATEST_DEFAULT_LIMIT;
 pub use estimator::LinkFigures;
 pub use take::{Batch, Taken};
+pub use uplink::BudgetFigures;
+use uplink::Uplink;
 
 /// Chooses the QoS of each topic a scheduled outbox carries (the agent's per-topic
 /// configuration, or defaults by type).
@@ -115,53 +112,8 @@ enum Service {
     /// Hub subscribers: every slot has its own queue, served round-robin so a busy topic
     /// cannot starve a quiet one.
     RoundRobin { ready: VecDeque<SlotId> },
-    /// The agent uplink: the Robofleet scheduler picks what goes next (no-drop first, then
-    /// priority × time waited), paused while too many messages are unacknowledged.
-    Scheduled {
-        sched: Box<Scheduler<Arc<Message>>>,
-        origin: Instant,
-        qos_for: QosFor,
-        by_topic: HashMap<u32, SlotId, IdHash>,
-        known: HashSet<u32>,
-        link: Box<LinkControl>,
-        /// No-drop topics (the scheduler's no-drop lanes): numbered, kept until confirmed,
-        /// resent after a reconnect.
-        reliable: Box<ReliableOut>,
-        /// When a no-drop refusal was last logged (they are counted always, logged at
-        /// most once per [`REFUSAL_LOG_INTERVAL`]).
-        refusal_logged: Option<Instant>,
-        /// What the hub wants, and each topic's latest message.
-        demand: Box<Demand>,
-        /// Messages of pull topics asked for, waiting for the writer.
-        pulled: VecDeque<Arc<Message>>,
-    },
-}
-
-const REFUSAL_LOG_INTERVAL: Duration = Duration::from_secs(5);
-
-/// Logs that a no-drop message was refused, at most once per interval (every refusal is
-/// counted in the topic's drop statistics regardless).
-fn log_refusal(last: &mut Option<Instant>, now: Instant, topic: &crate::TopicName, why: &str) {
-    if last.is_some_and(|at| now.saturating_duration_since(at) < REFUSAL_LOG_INTERVAL) {
-        return;
-    }
-    *last = Some(now);
-    tracing::error!("no_drop topic {topic}: message refused: {why}");
-}
-
-/// How long after it last lost a message to the data budget a topic counts as thinned.
-const THINNED_RECENT: Duration = Duration::from_secs(2);
-
-/// A data budget's figures ([`Outbox::budget_figures`]).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct BudgetFigures {
-    pub max_bytes_per_sec: Option<f64>,
-    pub bytes_per_day: Option<f64>,
-    /// Bytes counted against the budget since it was set.
-    pub used_bytes: u64,
-    /// Link aliases of the topics that lost a message to the budget in the last two
-    /// seconds.
-    pub thinned: Vec<u32>,
+    /// The agent uplink: the Robofleet scheduler and all that goes with it ([`Uplink`]).
+    Scheduled(Box<Uplink>),
 }
 
 struct State {
@@ -207,29 +159,12 @@ impl Outbox {
     ) -> Arc<Outbox> {
         Self::with_service(
             client,
-            Service::Scheduled {
-                sched: Box::new(Scheduler::new(config)),
-                origin: Instant::now(),
-                qos_for,
-                by_topic: HashMap::default(),
-                known: HashSet::new(),
-                link: Box::new(LinkControl::new(
-                    LinkEstimator::new(LinkConfig::default()),
-                    Nanos::ZERO,
-                )),
-                reliable: Box::new(reliable),
-                refusal_logged: None,
-                demand: Box::new(Demand {
-                    latest_limit: LATEST_DEFAULT_LIMIT,
-                    ..Demand::default()
-                }),
-                pulled: VecDeque::new(),
-            },
+            Service::Scheduled(Box::new(Uplink::new(config, qos_for, reliable))),
         )
     }
 
     fn with_service(client: ClientId, service: Service) -> Arc<Outbox> {
-        let scheduled = matches!(service, Service::Scheduled { .. });
+        let scheduled = matches!(service, Service::Scheduled(_));
         Arc::new(Outbox {
             client,
             state: Mutex::new(State {
@@ -250,6 +185,15 @@ impl Outbox {
     fn lock(&self) -> std::sync::MutexGuard<'_, State> {
         // A panic while holding this lock leaves only queue contents behind; keep serving.
         self.state.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Runs `f` on the uplink's side under the lock; `None` for a plain outbox, which has
+    /// none.
+    fn with_uplink<R>(&self, f: impl FnOnce(&mut Uplink) -> R) -> Option<R> {
+        match &mut self.lock().service {
+            Service::Scheduled(u) => Some(f(u)),
+            Service::RoundRobin { .. } => None,
+        }
     }
 
     /// Adds a subscription's slot. `qos` shapes its queue; a scheduled outbox asks its
@@ -273,23 +217,8 @@ impl Outbox {
                 qos,
                 max_bytes.unwrap_or(usize::MAX),
             )) as Box<dyn OutboundQueue>),
-            Service::Scheduled {
-                sched,
-                qos_for,
-                by_topic,
-                known,
-                reliable,
-                demand,
-                ..
-            } => {
-                if known.insert(tid) {
-                    let q = demand.follow_qos(tid, qos_for(topic), reliable.is_durable());
-                    if let Err(e) = sched.add_topic(QosTopic(tid), q) {
-                        tracing::warn!("topic {}: invalid QoS ({e}); using defaults", topic.name);
-                        let _ = sched.add_topic(QosTopic(tid), TopicQos::default());
-                    }
-                }
-                by_topic.insert(tid, id);
+            Service::Scheduled(u) => {
+                u.add_topic(topic, id);
                 None
             }
         };
@@ -319,13 +248,7 @@ impl Outbox {
                     st.queued -= slot.queue.as_ref().map_or(0, |q| q.len());
                     ready.retain(|s| *s != id);
                 }
-                Service::Scheduled { by_topic, .. } => {
-                    // The scheduler keeps the topic's lane; whatever is still queued is
-                    // discarded when taken (see `take`).
-                    if by_topic.get(&slot.topic) == Some(&id) {
-                        by_topic.remove(&slot.topic);
-                    }
-                }
+                Service::Scheduled(u) => u.remove_slot(id, slot.topic),
             }
         }
     }
@@ -371,61 +294,7 @@ impl Outbox {
                 }
                 (dropped.map(|(_, r)| r), wake)
             }
-            Service::Scheduled {
-                sched,
-                origin,
-                link,
-                reliable,
-                refusal_logged,
-                demand,
-                ..
-            } => {
-                demand.keep_latest(s.topic, &msg);
-                if !demand.flows(s.topic) {
-                    // Held back: kept as the latest, announced once per connection.
-                    s.stats.record_held();
-                    if !demand.announced.contains(&s.topic)
-                        && demand.unannounced.insert(s.topic, msg).is_none()
-                    {
-                        self.notify.notify_one();
-                    }
-                    return;
-                }
-                let t = Nanos::since(*origin, now);
-                link.offered += msg.wire_len() as u64;
-                let mut msg = msg;
-                let no_drop = sched.is_no_drop(QosTopic(s.topic));
-                if no_drop {
-                    match reliable.admit(&msg) {
-                        Ok(m) => msg = m,
-                        Err(e) => {
-                            log_refusal(refusal_logged, now, &msg.topic.name, &e.to_string());
-                            s.stats.record_drop(DropReason::Backpressure);
-                            self.dropped.fetch_add(1, Relaxed);
-                            return;
-                        }
-                    }
-                }
-                match sched.offer(QosTopic(s.topic), msg, t) {
-                    Push::Queued => {
-                        st.queued += 1;
-                        if no_drop && !sched.no_drop_room(QosTopic(s.topic)) {
-                            s.stats.no_drop_flow.set_full();
-                        }
-                        (None, true)
-                    }
-                    Push::Dropped { reason, .. } => (Some(DropReason::from_qos(reason)), true),
-                    Push::Backpressure(m) => {
-                        if no_drop {
-                            let why = "its no_drop queue is full (the publisher outpaces the \
-                                       link); raise its `queue` or set `outbox.dir` so \
-                                       waiting messages spill to disk";
-                            log_refusal(refusal_logged, now, &m.topic.name, why);
-                        }
-                        (Some(DropReason::Backpressure), false)
-                    }
-                }
-            }
+            Service::Scheduled(u) => u.push(s, msg, now, &mut st.queued),
         };
         if let Some(reason) = dropped {
             s.stats.record_drop(reason);
@@ -439,18 +308,10 @@ impl Outbox {
     /// The peer acknowledged `messages` whole messages and `bytes` payload bytes: a
     /// scheduled outbox may send more.
     pub fn on_acked(&self, messages: usize, bytes: u64, now: Instant) {
-        let mut st = self.lock();
-        if let Service::Scheduled {
-            sched,
-            origin,
-            link,
-            ..
-        } = &mut st.service
+        if self
+            .with_uplink(|u| u.on_acked(messages, bytes, now))
+            .is_some()
         {
-            let t = Nanos::since(*origin, now);
-            sched.on_acked(messages, t);
-            link.on_acked_bytes(bytes, t);
-            drop(st);
             self.notify.notify_one();
         }
     }
@@ -460,103 +321,56 @@ impl Outbox {
         if !self.scheduled {
             return;
         }
-        if let Service::Scheduled { origin, link, .. } = &mut self.lock().service {
-            let t = Nanos::since(*origin, Instant::now());
-            link.on_written(bytes, t);
-        }
+        self.with_uplink(|u| u.on_written(bytes));
     }
 
     /// A message counted against the data budget at `raw` payload bytes went out as
     /// `sent` (compressed): the difference goes back to the budget.
     pub fn on_compressed(&self, raw: usize, sent: usize) {
-        if let Service::Scheduled { sched, .. } = &mut self.lock().service {
-            sched.credit_data(wire_cost(raw).saturating_sub(wire_cost(sent)));
-        }
+        self.with_uplink(|u| u.on_compressed(raw, sent));
     }
 
     /// Sets (or lifts) the robot's data budget (see [`fleetlink_qos::budget`]).
     pub fn set_data_budget(&self, budget: Option<fleetlink_qos::BudgetConfig>, now: Instant) {
-        if let Service::Scheduled { origin, sched, .. } = &mut self.lock().service {
-            let t = Nanos::since(*origin, now);
-            sched.set_data_budget(budget.map(|b| fleetlink_qos::DataBudget::new(b, t)));
-        }
+        self.with_uplink(|u| u.set_data_budget(budget, now));
         self.notify.notify_one();
     }
 
     /// The data budget's figures for the hub, if a budget is set: the bytes per second it
     /// allows, the bytes it counted, and the topics (link aliases) it thinned lately.
     pub fn budget_figures(&self, now: Instant) -> Option<BudgetFigures> {
-        let st = self.lock();
-        let Service::Scheduled { origin, sched, .. } = &st.service else {
-            return None;
-        };
-        let b = sched.data_budget()?;
-        let since = Nanos::since(*origin, now).saturating_sub(THINNED_RECENT.into());
-        Some(BudgetFigures {
-            max_bytes_per_sec: b.config().max_bytes_per_sec,
-            bytes_per_day: b.config().bytes_per_day,
-            used_bytes: b.used(),
-            thinned: sched.thinned_since(since).map(|t| t.0).collect(),
-        })
+        self.with_uplink(|u| u.budget_figures(now)).flatten()
     }
 
     /// Gives `topic` its owner's per-topic configuration anew (it changed while the topic
-    /// flows: [`Scheduler::set_qos`]). A topic that has not flowed yet gets it when it
-    /// does; a plain outbox has no per-topic configuration.
+    /// flows: [`fleetlink_qos::Scheduler::set_qos`]). A topic that has not flowed yet gets
+    /// it when it does; a plain outbox has no per-topic configuration.
     pub fn requalify(
         &self,
         topic: &TopicMeta,
         now: Instant,
     ) -> Result<(), fleetlink_qos::QosError> {
-        let mut st = self.lock();
-        let Service::Scheduled {
-            sched,
-            origin,
-            qos_for,
-            known,
-            reliable,
-            demand,
-            ..
-        } = &mut st.service
-        else {
-            return Ok(());
-        };
-        let tid = topic.id.0;
-        if !known.contains(&tid) {
-            return Ok(());
+        let requalified = self
+            .with_uplink(|u| u.requalify(topic, now, &self.dropped))
+            .transpose()?;
+        if requalified == Some(true) {
+            // The demand may have changed (a topic that flows always now).
+            self.interest.notify_waiters();
+            self.notify.notify_one();
         }
-        let q = qos_for(topic);
-        if sched.is_no_drop(QosTopic(tid)) != q.no_drop {
-            return Err(fleetlink_qos::QosError::NoDropChange(QosTopic(tid)));
-        }
-        let q = demand.follow_qos(tid, q, reliable.is_durable());
-        let dropped = sched.set_qos(QosTopic(tid), q, Nanos::since(*origin, now))?;
-        self.dropped.fetch_add(dropped.len() as u64, Relaxed);
-        drop(st);
-        // The demand may have changed (a topic that flows always now).
-        self.interest.notify_waiters();
-        self.notify.notify_one();
         Ok(())
     }
 
     /// Whether `topic` (a router topic id) flows as a no-drop topic; `None` before it
     /// first flowed, and for a plain outbox.
     pub fn known_no_drop(&self, topic: u32) -> Option<bool> {
-        match &self.lock().service {
-            Service::Scheduled { sched, known, .. } if known.contains(&topic) => {
-                Some(sched.is_no_drop(QosTopic(topic)))
-            }
-            _ => None,
-        }
+        self.with_uplink(|u| u.known_no_drop(topic)).flatten()
     }
 
     /// The QoS a scheduled outbox gives `topic` (its owner's per-topic configuration);
     /// `None` for a plain outbox.
     pub fn topic_qos(&self, topic: &TopicMeta) -> Option<TopicQos> {
-        let qos_for = match &self.lock().service {
-            Service::Scheduled { qos_for, .. } => qos_for.clone(),
-            Service::RoundRobin { .. } => return None,
-        };
+        let qos_for = self.with_uplink(|u| u.qos_for.clone())?;
         Some(qos_for(topic))
     }
 
@@ -572,16 +386,7 @@ impl Outbox {
         if !self.scheduled {
             return Ok(());
         }
-        match &mut self.lock().service {
-            Service::Scheduled { origin, link, .. } => {
-                let t = Nanos::since(*origin, now);
-                link.bulk_check(t).map_err(|hold| match hold {
-                    Hold::Window | Hold::Share(None) => None,
-                    Hold::Share(Some(at)) => Some(*origin + Duration::from_nanos(at.0)),
-                })
-            }
-            Service::RoundRobin { .. } => Ok(()),
-        }
+        self.with_uplink(|u| u.bulk_check(now)).unwrap_or(Ok(()))
     }
 
     /// The size to cut large payloads into for this link now: `None` for a plain outbox,
@@ -591,25 +396,14 @@ impl Outbox {
         if !self.scheduled {
             return None;
         }
-        match &self.lock().service {
-            Service::Scheduled { origin, link, .. } => {
-                Some(link.chunk_size(Nanos::since(*origin, Instant::now())))
-            }
-            Service::RoundRobin { .. } => None,
-        }
+        self.with_uplink(|u| u.chunk_size())
     }
 
     /// Holds back (or releases) topic `alias` in the scheduler while one of its large
     /// messages is going out in chunks (see `Scheduler::set_held`).
     pub fn hold(&self, alias: u32, held: bool, now: Instant) {
-        let mut st = self.lock();
-        if let Service::Scheduled { sched, origin, .. } = &mut st.service {
-            let t = Nanos::since(*origin, now);
-            sched.set_held(QosTopic(alias), held, t);
-            if !held {
-                drop(st);
-                self.notify.notify_one();
-            }
+        if self.with_uplink(|u| u.hold(alias, held, now)).is_some() && !held {
+            self.notify.notify_one();
         }
     }
 
@@ -618,102 +412,48 @@ impl Outbox {
     pub fn on_link_reset(&self) {
         let mut st = self.lock();
         let st = &mut *st;
-        if let Service::Scheduled {
-            sched,
-            link,
-            reliable,
-            demand,
-            origin,
-            ..
-        } = &mut st.service
-        {
-            sched.on_link_reset();
-            // A topic held for a large message the old connection was sending in chunks
-            // would stay held for good: its lane died with that connection's writer.
-            sched.release_all_held(Nanos::since(*origin, Instant::now()));
-            link.reset();
-            // A new connection has announced nothing yet.
-            demand.announced.clear();
-            demand.unannounced = demand.latest.iter().map(|(t, m)| (*t, m.clone())).collect();
-            let again = reliable.take_unconfirmed();
-            let mut topics = HashSet::new();
-            for (alias, m) in again.into_iter().rev() {
-                if sched.requeue_no_drop(QosTopic(alias), m).is_ok() {
-                    st.queued += 1;
-                    topics.insert(alias);
-                }
-            }
-            // Requeued messages may fill a queue: its publishers wait for room again.
-            for s in st.slots.values() {
-                if topics.contains(&s.topic) && !sched.no_drop_room(QosTopic(s.topic)) {
-                    s.stats.no_drop_flow.set_full();
-                }
-            }
+        if let Service::Scheduled(u) = &mut st.service {
+            u.on_link_reset(&st.slots, &mut st.queued);
         }
     }
 
     /// The peer confirmed every no-drop message of link alias `alias` up to `seq`.
     pub fn on_delivered(&self, alias: u32, seq: u64) {
-        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
-            reliable.confirm(alias, seq);
-        }
+        self.with_uplink(|u| u.on_delivered(alias, seq));
     }
 
     /// The agent is stopping: the durable outbox, if any, writes and syncs what it holds
     /// and lets go of its file.
     pub fn close_journal(&self) {
-        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
-            reliable.close_journal();
-        }
+        self.with_uplink(|u| u.close_journal());
     }
 
     /// Periodic housekeeping of the durable outbox, if any (about once a second).
     pub fn tick_journal(&self) {
-        if let Service::Scheduled { reliable, .. } = &mut self.lock().service {
-            reliable.tick();
-        }
+        self.with_uplink(|u| u.tick_journal());
     }
 
     /// `ADVERTISE` flags for topic `alias` on this outbox's link.
     pub fn advertise_flags(&self, alias: u32) -> u8 {
-        use fleetlink_proto::frame::{ADVERTISE_PULL, ADVERTISE_RELIABLE};
-        match &self.lock().service {
-            Service::Scheduled { sched, demand, .. } => {
-                if sched.is_no_drop(QosTopic(alias)) {
-                    ADVERTISE_RELIABLE
-                } else if demand.pull.contains(&alias) {
-                    ADVERTISE_PULL
-                } else {
-                    0
-                }
-            }
-            _ => 0,
-        }
+        self.with_uplink(|u| u.advertise_flags(alias)).unwrap_or(0)
     }
 
     /// Whether the peer takes compressed messages (`WELCOME_COMPRESSION`): until it says
     /// so, nothing is compressed.
     pub fn set_compression_allowed(&self, allowed: bool) {
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
-            demand.compress_allowed = allowed;
-        }
+        self.with_uplink(|u| u.set_compression_allowed(allowed));
     }
 
     /// How the topic with link alias `alias` is compressed on this link, if it is.
     pub fn compression(&self, alias: u32) -> Option<fleetlink_qos::Compression> {
-        match &self.lock().service {
-            Service::Scheduled { demand, .. } if demand.compress_allowed => {
-                demand.compression.get(&alias).copied()
-            }
-            _ => None,
-        }
+        self.with_uplink(|u| u.compression(alias)).flatten()
     }
 
     /// Messages of the topic with link alias `alias` waiting to be taken.
     pub fn queued_for(&self, alias: u32) -> usize {
         let st = self.lock();
         match &st.service {
-            Service::Scheduled { sched, .. } => sched.queued(QosTopic(alias)),
+            Service::Scheduled(u) => u.queued(alias),
             Service::RoundRobin { .. } => st
                 .slots
                 .values()
@@ -725,10 +465,7 @@ impl Outbox {
 
     /// The numbering epoch of this outbox's no-drop streams (0 for a plain outbox).
     pub fn outbox_epoch(&self) -> u64 {
-        match &self.lock().service {
-            Service::Scheduled { reliable, .. } => reliable.epoch(),
-            Service::RoundRobin { .. } => 0,
-        }
+        self.with_uplink(|u| u.epoch()).unwrap_or(0)
     }
 
     /// Queues a no-drop message read back from the durable outbox after a restart (already
@@ -737,24 +474,11 @@ impl Outbox {
     pub fn restore(&self, msg: Arc<Message>, now: Instant) -> bool {
         let mut st = self.lock();
         let st = &mut *st;
-        let Service::Scheduled {
-            sched,
-            origin,
-            reliable,
-            ..
-        } = &mut st.service
-        else {
+        let Service::Scheduled(u) = &mut st.service else {
             return false;
         };
-        let tid = msg.topic.id.0;
-        if !sched.is_no_drop(QosTopic(tid)) {
-            return false;
-        }
-        reliable.restored(&msg.topic.name, msg.seq);
-        let t = Nanos::since(*origin, now);
-        let queued = matches!(sched.offer(QosTopic(tid), msg, t), Push::Queued);
+        let queued = u.restore(msg, now, &mut st.queued);
         if queued {
-            st.queued += 1;
             self.notify.notify_one();
         }
         queued

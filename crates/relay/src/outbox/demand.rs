@@ -2,10 +2,9 @@
 //! latest message, pull topics, age limits) and the outbox's calls that set or read it.
 //! Apart because only a scheduled outbox has any of it.
 
-use super::*;
+use std::collections::{HashMap, HashSet};
 
-/// Pull requests waiting for the writer at most (more are dropped: the peer asks again).
-const MAX_PULLED: usize = 64;
+use super::*;
 
 /// Most payload bytes of all topics' latest messages kept, unless the owner sets another
 /// bound ([`Outbox::set_latest_limit`]).
@@ -98,25 +97,58 @@ impl Demand {
     }
 }
 
+impl Demand {
+    /// See [`Outbox::set_latest_limit`].
+    fn set_latest_limit(&mut self, bytes: usize) {
+        self.latest_limit = bytes;
+        if self.latest_bytes > bytes {
+            self.latest.clear();
+            self.latest_bytes = 0;
+        }
+    }
+
+    /// See [`Outbox::take_unannounced`].
+    fn take_unannounced(&mut self, out: &mut Vec<Arc<Message>>) {
+        let Demand {
+            unannounced,
+            announced,
+            ..
+        } = self;
+        for (t, m) in unannounced.drain() {
+            announced.insert(t);
+            out.push(m);
+        }
+    }
+
+    /// See [`Outbox::reads`].
+    fn reads(&self, alias: u32) -> bool {
+        self.flows(alias) || self.pull.contains(&alias)
+    }
+
+    /// See [`Outbox::asked_for`].
+    fn asked_for(&self, alias: u32) -> bool {
+        (self.driven && self.flows(alias)) || self.pull.contains(&alias)
+    }
+
+    /// See [`Outbox::forget_latest`].
+    fn forget_latest(&mut self, alias: u32) {
+        if let Some(old) = self.latest.remove(&alias) {
+            self.latest_bytes -= old.payload.len();
+        }
+    }
+}
+
 impl Outbox {
     /// Most payload bytes of topics' latest messages this (scheduled) outbox keeps, all
     /// topics together; 0 keeps none.
     pub fn set_latest_limit(&self, bytes: usize) {
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
-            demand.latest_limit = bytes;
-            if demand.latest_bytes > bytes {
-                demand.latest.clear();
-                demand.latest_bytes = 0;
-            }
-        }
+        self.with_uplink(|u| u.demand.set_latest_limit(bytes));
     }
 
     /// Whether the peer tells this (scheduled) outbox which topics it wants: from now on a
     /// topic nobody wants is held back. `false` (an older hub) lets everything flow.
     pub fn set_demand_driven(&self, driven: bool) {
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
-            demand.driven = driven;
-        }
+        self.with_uplink(|u| u.demand.driven = driven);
         self.notify.notify_one();
         self.interest.notify_waiters();
     }
@@ -126,41 +158,15 @@ impl Outbox {
     pub fn set_wanted(&self, alias: u32, wanted: bool, now: Instant) {
         let mut st = self.lock();
         let st = &mut *st;
-        let Service::Scheduled {
-            sched,
-            origin,
-            link,
-            demand,
-            ..
-        } = &mut st.service
-        else {
-            return;
-        };
-        if !wanted {
-            if demand.wanted.remove(&alias) {
-                self.interest.notify_waiters();
-            }
-            return;
-        }
-        if !demand.wanted.insert(alias) {
-            return;
-        }
-        self.interest.notify_waiters();
-        if demand.always.contains(&alias) {
-            return;
-        }
-        demand.unannounced.remove(&alias);
-        let Some(latest) = demand.latest.get(&alias).cloned() else {
-            return;
-        };
-        if sched.queued(QosTopic(alias)) > 0 || demand.too_old(alias, &latest, now) {
-            return;
-        }
-        link.offered += latest.wire_len() as u64;
-        let t = Nanos::since(*origin, now);
-        if let Push::Queued = sched.offer(QosTopic(alias), latest, t) {
-            st.queued += 1;
-            self.notify.notify_one();
+        if let Service::Scheduled(u) = &mut st.service {
+            u.set_wanted(
+                alias,
+                wanted,
+                now,
+                &mut st.queued,
+                &self.interest,
+                &self.notify,
+            );
         }
     }
 
@@ -169,23 +175,9 @@ impl Outbox {
     /// taken even though the topic does not flow.
     pub fn pull(&self, alias: u32, now: Instant) {
         let mut st = self.lock();
-        let st = &mut *st;
-        let Service::Scheduled { demand, pulled, .. } = &mut st.service else {
-            return;
-        };
-        if !demand.pull.contains(&alias) {
-            return;
-        }
-        let Some(latest) = demand.latest.get(&alias).cloned() else {
-            return;
-        };
-        if demand.too_old(alias, &latest, now) {
-            return;
-        }
-        // Queued beside the scheduler (a request is rare and small in number): the writer
-        // takes it with the next batch.
-        if pulled.len() < MAX_PULLED {
-            pulled.push_back(latest);
+        if let Service::Scheduled(u) = &mut st.service
+            && u.pull(alias, now)
+        {
             self.notify.notify_one();
         }
     }
@@ -196,49 +188,30 @@ impl Outbox {
         if !self.scheduled {
             return;
         }
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
-            let Demand {
-                unannounced,
-                announced,
-                ..
-            } = &mut **demand;
-            for (t, m) in unannounced.drain() {
-                announced.insert(t);
-                out.push(m);
-            }
-        }
+        self.with_uplink(|u| u.demand.take_unannounced(out));
     }
 
     /// The writer withdrew the topic with link alias `alias` (`UNADVERTISE`): if it is
     /// published again while held back, it is announced again.
     pub fn forget_announced(&self, alias: u32) {
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service {
-            demand.announced.remove(&alias);
-        }
+        self.with_uplink(|u| {
+            u.demand.announced.remove(&alias);
+        });
     }
 
     /// Whether the topic with link alias `alias` needs reading from its source for this
     /// link: it is sent (wanted, `always`, no-drop, or a peer that does not say what it
     /// wants) or a pull topic (its latest message must be at hand).
     pub fn reads(&self, alias: u32) -> bool {
-        match &self.lock().service {
-            Service::Scheduled { demand, .. } => {
-                demand.flows(alias) || demand.pull.contains(&alias)
-            }
-            Service::RoundRobin { .. } => true,
-        }
+        self.with_uplink(|u| u.demand.reads(alias)).unwrap_or(true)
     }
 
     /// Whether the peer has asked for `alias`: [`Outbox::reads`], but a peer that has not
     /// said what it wants (not connected yet, or a hub that sends everything) asks for
     /// nothing. For what costs the robot to make, not merely to read (a video encoder).
     pub fn asked_for(&self, alias: u32) -> bool {
-        match &self.lock().service {
-            Service::Scheduled { demand, .. } => {
-                (demand.driven && demand.flows(alias)) || demand.pull.contains(&alias)
-            }
-            Service::RoundRobin { .. } => true,
-        }
+        self.with_uplink(|u| u.demand.asked_for(alias))
+            .unwrap_or(true)
     }
 
     /// [`Outbox::reads`] of the topic a slot of this outbox receives (false for a slot it
@@ -249,9 +222,7 @@ impl Outbox {
             return false;
         };
         match &st.service {
-            Service::Scheduled { demand, .. } => {
-                demand.flows(topic) || demand.pull.contains(&topic)
-            }
+            Service::Scheduled(u) => u.demand.reads(topic),
             Service::RoundRobin { .. } => true,
         }
     }
@@ -264,18 +235,12 @@ impl Outbox {
 
     /// Lets go of the latest message kept for topic `alias`.
     pub fn forget_latest(&self, alias: u32) {
-        if let Service::Scheduled { demand, .. } = &mut self.lock().service
-            && let Some(old) = demand.latest.remove(&alias)
-        {
-            demand.latest_bytes -= old.payload.len();
-        }
+        self.with_uplink(|u| u.demand.forget_latest(alias));
     }
 
     /// Whether the topic with link alias `alias` is held back (nobody wants it).
     pub fn is_held_back(&self, alias: u32) -> bool {
-        match &self.lock().service {
-            Service::Scheduled { demand, .. } => !demand.flows(alias),
-            Service::RoundRobin { .. } => false,
-        }
+        self.with_uplink(|u| !u.demand.flows(alias))
+            .unwrap_or(false)
     }
 }

@@ -2,6 +2,13 @@
 //! `LinkEstimator`, the hub's capacity share, and the `LinkFigures` reported to the hub.
 //! Apart from the queues: none of it touches a message.
 
+use std::collections::VecDeque;
+
+use fleetlink_qos::{Nanos, Scheduler};
+
+use crate::link_control::LinkControl;
+
+use super::uplink::Uplink;
 use super::*;
 
 /// Whether an uplink has something to measure its link with: data waiting (queued, or
@@ -49,15 +56,74 @@ pub struct LinkFigures {
     pub measured_at: Option<Instant>,
 }
 
+impl Uplink {
+    /// The hub's capacity share for this robot (bytes per second; `None` = no cap).
+    pub(super) fn set_share(&mut self, bytes_per_sec: Option<f64>, now: Instant) {
+        let t = Nanos::since(self.origin, now);
+        self.link.set_share(bytes_per_sec, t);
+    }
+
+    /// Runs `f` on the uplink's estimator with the outbox's clock origin and whether the
+    /// link is busy (data queued, pulled or unacknowledged).
+    pub(super) fn with_estimator<R>(
+        &mut self,
+        f: impl FnOnce(&mut fleetlink_qos::LinkEstimator, Instant, bool) -> R,
+    ) -> R {
+        let busy = link_busy(&self.sched, &self.link, &self.pulled);
+        f(&mut self.link.est, self.origin, busy)
+    }
+
+    /// What the link looks like now; restarts the demand measurement.
+    pub(super) fn link_figures(&mut self, now: Instant) -> LinkFigures {
+        let Uplink {
+            origin,
+            link,
+            sched,
+            ..
+        } = self;
+        let t = Nanos::since(*origin, now);
+        // Measured only while data flows; an idle link keeps its last figure, and its age.
+        if std::mem::take(&mut link.acked_since_report) {
+            link.measured = Some((link.est.rate().max(link.delivered_rate(t)), t));
+        }
+        let capacity = [
+            link.measured.map(|(r, _)| r).filter(|r| *r > 0.0),
+            limit_by_rule(link, sched),
+        ]
+        .into_iter()
+        .flatten()
+        .reduce(f64::min);
+        let span = t.saturating_sub(link.offered_since).as_secs_f64();
+        let demand = if span > 0.0 {
+            link.offered as f64 / span
+        } else {
+            0.0
+        };
+        link.offered = 0;
+        link.offered_since = t;
+        let d = |n: Nanos| Duration::from_nanos(n.0);
+        LinkFigures {
+            demand_bps: demand,
+            rate_bps: link.est.rate(),
+            latency: link.est.latency().map(d),
+            rtt: link.est.rtt().map(d),
+            clock_offset_ns: link.est.clock_offset(),
+            share_bps: link.share,
+            in_flight_bytes: link.unacked_bytes(),
+            capacity_bps: capacity,
+            measured_at: link.measured.map(|(_, at)| *origin + d(at)),
+        }
+    }
+}
+
 impl Outbox {
     /// The hub's capacity share for this robot (bytes per second; `None` = no cap): the
     /// scheduler keeps the sending rate within it.
     pub fn set_share(&self, bytes_per_sec: Option<f64>, now: Instant) {
-        let mut st = self.lock();
-        if let Service::Scheduled { origin, link, .. } = &mut st.service {
-            let t = Nanos::since(*origin, now);
-            link.set_share(bytes_per_sec, t);
-            drop(st);
+        if self
+            .with_uplink(|u| u.set_share(bytes_per_sec, now))
+            .is_some()
+        {
             self.notify.notify_one();
         }
     }
@@ -65,11 +131,8 @@ impl Outbox {
     /// What the link may carry by rule, bytes/s: the smaller of the hub's capacity share
     /// and the data budget's rate; `None` without either (and for a plain outbox).
     pub fn send_limit(&self) -> Option<f64> {
-        let st = self.lock();
-        let Service::Scheduled { link, sched, .. } = &st.service else {
-            return None;
-        };
-        limit_by_rule(link, sched)
+        self.with_uplink(|u| limit_by_rule(&u.link, &u.sched))
+            .flatten()
     }
 
     /// An echo probe due now, if any (scheduled outboxes only): its id goes out in a PING.
@@ -93,27 +156,13 @@ impl Outbox {
         .flatten()
     }
 
-    /// Runs `f` on the uplink's estimator with the outbox's clock origin and whether the
-    /// link is busy (data queued, pulled or unacknowledged); `None` for a round-robin
-    /// outbox, which has no link.
+    /// [`Uplink::with_estimator`] under the lock; `None` for a round-robin outbox, which
+    /// has no link.
     fn with_estimator<R>(
         &self,
         f: impl FnOnce(&mut fleetlink_qos::LinkEstimator, Instant, bool) -> R,
     ) -> Option<R> {
-        let mut st = self.lock();
-        match &mut st.service {
-            Service::Scheduled {
-                origin,
-                link,
-                sched,
-                pulled,
-                ..
-            } => {
-                let busy = link_busy(sched, link, pulled);
-                Some(f(&mut link.est, *origin, busy))
-            }
-            Service::RoundRobin { .. } => None,
-        }
+        self.with_uplink(|u| u.with_estimator(f))
     }
 
     /// The hub echoed probe `id`, reading `hub_ns` (Unix ns) on its clock.
@@ -148,47 +197,6 @@ impl Outbox {
     /// What the link looks like now; restarts the demand measurement (call about once a
     /// second, for the hub's capacity sharing).
     pub fn link_figures(&self, now: Instant) -> Option<LinkFigures> {
-        let mut st = self.lock();
-        let Service::Scheduled {
-            origin,
-            link,
-            sched,
-            ..
-        } = &mut st.service
-        else {
-            return None;
-        };
-        let t = Nanos::since(*origin, now);
-        // Measured only while data flows; an idle link keeps its last figure, and its age.
-        if std::mem::take(&mut link.acked_since_report) {
-            link.measured = Some((link.est.rate().max(link.delivered_rate(t)), t));
-        }
-        let capacity = [
-            link.measured.map(|(r, _)| r).filter(|r| *r > 0.0),
-            limit_by_rule(link, sched),
-        ]
-        .into_iter()
-        .flatten()
-        .reduce(f64::min);
-        let span = t.saturating_sub(link.offered_since).as_secs_f64();
-        let demand = if span > 0.0 {
-            link.offered as f64 / span
-        } else {
-            0.0
-        };
-        link.offered = 0;
-        link.offered_since = t;
-        let d = |n: Nanos| Duration::from_nanos(n.0);
-        Some(LinkFigures {
-            demand_bps: demand,
-            rate_bps: link.est.rate(),
-            latency: link.est.latency().map(d),
-            rtt: link.est.rtt().map(d),
-            clock_offset_ns: link.est.clock_offset(),
-            share_bps: link.share,
-            in_flight_bytes: link.unacked_bytes(),
-            capacity_bps: capacity,
-            measured_at: link.measured.map(|(_, at)| *origin + d(at)),
-        })
+        self.with_uplink(|u| u.link_figures(now))
     }
 }

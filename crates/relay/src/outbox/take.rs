@@ -1,6 +1,7 @@
 //! The writer's side of the outbox: batches taken round-robin across ready slots, or in
-//! the scheduler's order with demand, age limits and no-drop bookkeeping applied. Apart
-//! from the publishers' side (`push`) and the link's.
+//! the scheduler's order with demand, age limits and no-drop bookkeeping applied (the
+//! uplink's part, `Uplink::take_into`). Apart from the publishers' side (`push`) and the
+//! link's.
 
 use super::*;
 
@@ -85,80 +86,16 @@ impl Outbox {
                     }
                 }
             }
-            Service::Scheduled {
-                sched,
-                origin,
-                by_topic,
-                reliable,
-                demand,
-                pulled,
-                ..
-            } => {
-                let t = Nanos::since(*origin, now);
-                while items.len() < max_items
-                    && let Some(m) = pulled.pop_front()
-                {
-                    let slot = by_topic.get(&m.topic.id.0).copied().unwrap_or(SlotId(0));
-                    bytes += m.wire_len();
-                    sched.debit_data(wire_cost(m.wire_len()), t);
-                    items.push((slot, Delivery::default(), m));
-                }
-                while items.len() < max_items && bytes < max_bytes {
-                    let Some((tid, m)) = sched.poll_next(t) else {
-                        break;
-                    };
-                    st.queued = st.queued.saturating_sub(1);
-                    // Counted against the data budget now, so one batch cannot overdraw
-                    // it (given back below when the message is not sent after all).
-                    let cost = wire_cost(m.wire_len());
-                    sched.debit_data(cost, t);
-                    if !demand.flows(tid.0) {
-                        // Queued before interest went: not sent, and no longer counted
-                        // in flight.
-                        sched.on_acked(1, t);
-                        sched.credit_data(cost);
-                        continue;
-                    }
-                    if sched.is_no_drop(tid) {
-                        // Sent even when its publisher has gone: it was promised delivery.
-                        reliable.sent(tid.0, m.clone());
-                        let slot = by_topic.get(&tid.0).copied().unwrap_or(SlotId(0));
-                        if sched.no_drop_room(tid)
-                            && let Some(s) = st.slots.get(&slot)
-                        {
-                            s.stats.no_drop_flow.set_room();
-                        }
-                        bytes += m.wire_len();
-                        items.push((slot, Delivery::default(), m));
-                        continue;
-                    }
-                    let Some(slot) = by_topic.get(&tid.0) else {
-                        // Unsubscribed while queued: it was in flight by the scheduler's
-                        // count, so acknowledge it locally.
-                        sched.on_acked(1, t);
-                        sched.credit_data(cost);
-                        continue;
-                    };
-                    if demand.too_old(tid.0, &m, now) {
-                        // Stale by the time its turn came (after a blackout, say): a
-                        // reconnect does not flood the hub with it.
-                        sched.on_acked(1, t);
-                        sched.credit_data(cost);
-                        if let Some(s) = st.slots.get(slot) {
-                            s.stats.record_drop(DropReason::TooOld);
-                        }
-                        self.dropped.fetch_add(1, Relaxed);
-                        continue;
-                    }
-                    let delivery = st.slots.get(slot).map(|s| s.delivery).unwrap_or_default();
-                    bytes += m.wire_len();
-                    items.push((*slot, delivery, m));
-                }
-                if items.is_empty()
-                    && let Some(at) = sched.poll_timeout(t)
-                {
-                    wake_at = Some(*origin + std::time::Duration::from_nanos(at.0));
-                }
+            Service::Scheduled(u) => {
+                wake_at = u.take_into(
+                    items,
+                    max_items,
+                    max_bytes,
+                    now,
+                    &st.slots,
+                    &mut st.queued,
+                    &self.dropped,
+                );
             }
         }
         self.sent.fetch_add((items.len() - before) as u64, Relaxed);
