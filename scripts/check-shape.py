@@ -23,11 +23,6 @@ FN_LINES = 150
 
 # What still breaks a rule, and why. Remove an entry when its cause is gone.
 KNOWN = {
-    # Split into steps, the rosbridge session's read and write loops measured 8-27 %
-    # slower per delivery (the `session` bench, then relay's, eef3a12); they stay whole
-    # until a split that bench finds no slower.
-    ("fn", "crates/rosbridge/src/session/read.rs", "serve"),
-    ("fn", "crates/rosbridge/src/session/write.rs", "write_loop"),
     # The rosbridge Session's call handling is methods of Session in calls/, and Session
     # holds the call tables: one type split over files.
     ("circle", "rosbridge", "calls session"),

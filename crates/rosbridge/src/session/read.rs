@@ -1,6 +1,14 @@
 //! The session's reader: `serve`, the loop that runs one connection, reads the client's
 //! frames and hands each operation to `Session`. Apart from what the operations do
-//! (session.rs and its other modules), which this loop only calls.
+//! (session.rs and its other modules), which this loop only calls. What runs once or
+//! rarely (the setup, the end, control frames, the look around every `LOOK_AROUND`
+//! frames) is in functions of its own; what runs for each frame stays in the loop.
+
+use std::ops::ControlFlow::{self, Break, Continue};
+use std::time::Duration;
+
+use fleetlink_relay::calls::PeerReceiver;
+use tokio::task::JoinHandle;
 
 use super::*;
 
@@ -15,7 +23,7 @@ use super::*;
 /// code that says why (1002, 1007 for text that is not UTF-8, 1009 when too large).
 pub async fn serve<K, S>(
     sink: K,
-    stream: S,
+    mut stream: S,
     router: Arc<Router>,
     conn: impl Into<Peer>,
     cfg: Arc<SessionConfig>,
@@ -27,80 +35,24 @@ pub async fn serve<K, S>(
 {
     let conn: Peer = conn.into();
     let addr = conn.addr;
-    let (client, outbox) = router.connect(ClientKind::Rosbridge, addr);
-    if sink.deflate().is_some() {
-        router.note_deflate(client);
-    }
-    let (peer, peer_rx) = ChannelPeer::new();
-    router.calls.attach(client, peer);
-    let mut stream = stream;
+    let (mut session, mut watch, peer_rx, writer) = open(sink, &router, conn, cfg, auth);
     // The client's recent publish envelopes (kept here, beside the session, because the
     // frame that is read with them borrows them while the session publishes).
     let mut shapes = fleetlink_proto::rosbridge::EnvelopeShapes::default();
-    let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
-    let mut watch = Watch::new(cfg.liveness, conn.progress, reply_tx.clone());
-    let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
-    let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
-    let writer = tokio::spawn(write_loop(
-        sink,
-        outbox.clone(),
-        reply_rx,
-        router.clone(),
-        cfg.batch,
-        writer_gate.clone(),
-        level.clone(),
-    ));
-    let mut session = Session {
-        router: router.clone(),
-        client,
-        cfg,
-        published: HashMap::default(),
-        subs: HashMap::new(),
-        replies: reply_tx,
-        gate: auth.gate,
-        guard: auth.guard,
-        writer_gate,
-        calls: crate::calls::SessionCalls::default(),
-        level,
-        fragments: Fragments::default(),
-        clock: fleetlink_relay::StampClock::default(),
-        unflushed: Vec::new(),
-    };
     // One wait for the shutdown, registered once: a fresh `cancelled()` per frame costs a
     // lock and a waker registration on every operation.
-    let cancelled = shutdown.cancelled();
-    tokio::pin!(cancelled);
-    // Frames are taken first while the client has some queued: a frame already read is
-    // taken without a select, since polling every branch for each of thousands of small
-    // operations in a read costs more than handling them. So that a flooding client still
-    // sees its call replies and a shutdown, both are looked at every `LOOK_AROUND` frames
-    // without waiting.
+    let mut cancelled = std::pin::pin!(shutdown.cancelled());
+    // For the look around every `LOOK_AROUND` frames (`look_around` says why).
     let mut frames = 0u32;
     // Set when the client showed no progress for the silence limit: how long.
     let mut gone = None;
     loop {
         frames += 1;
-        if frames.is_multiple_of(LOOK_AROUND) {
-            if shutdown.is_cancelled() {
-                break;
-            }
-            session.flush_counts();
-            // A client sending without pause is read without waiting: it is alive, and
-            // its pings fall due here.
-            watch.read();
-            if let Some(silent) = watch.check() {
-                gone = Some(silent);
-                break;
-            }
-            while let Ok(Some(m)) = peer_rx.try_recv() {
-                if let Err(silent) = watch.race(session.on_peer(m)).await {
-                    gone = Some(silent);
-                    break;
-                }
-            }
-            if gone.is_some() {
-                break;
-            }
+        if frames.is_multiple_of(LOOK_AROUND)
+            && let Break(silent) = look_around(&shutdown, &mut session, &mut watch, &peer_rx).await
+        {
+            gone = silent;
+            break;
         }
         let frame = match stream.next().now_or_never() {
             Some(f) => f,
@@ -134,9 +86,6 @@ pub async fn serve<K, S>(
         let Some(frame) = frame else {
             break;
         };
-        if matches!(frame, Ok(ClientMessage::Binary(_))) {
-            session.calls.binary = true;
-        }
         let (text, binary);
         let req = match frame {
             Ok(ClientMessage::Text(t)) => {
@@ -158,11 +107,8 @@ pub async fn serve<K, S>(
                 };
                 text = t;
                 let Ok(utf8) = std::str::from_utf8(&text) else {
-                    let close = CloseFrame {
-                        code: CloseCode::Invalid,
-                        reason: "a text message is not UTF-8".into(),
-                    };
-                    let _ = session.replies.send(Reply::Close(Some(close))).await;
+                    let close = closing(CloseCode::Invalid, "a text message is not UTF-8");
+                    let _ = session.replies.send(close).await;
                     break;
                 };
                 let publish = if fitted {
@@ -188,6 +134,7 @@ pub async fn serve<K, S>(
                 }
             }
             Ok(ClientMessage::Binary(b)) => {
+                session.calls.binary = true;
                 binary = b;
                 match Publish::from_cbor_frame(&binary) {
                     Some(p) => match session.publish_now(p, None) {
@@ -200,63 +147,16 @@ pub async fn serve<K, S>(
                     None => Request::from_cbor(&binary).map(Incoming::Other),
                 }
             }
-            Ok(ClientMessage::Ping(p)) => {
-                session.send(WsMessage::Pong(p)).await;
-                continue;
-            }
-            Ok(ClientMessage::Close(c)) => {
-                // The close handshake: the client's code echoed back.
-                let echo = c.map(|c| CloseFrame {
-                    code: c.code,
-                    reason: "".into(),
-                });
-                let _ = session.replies.send(Reply::Close(echo)).await;
-                break;
-            }
-            Ok(_) => continue,
-            Err(e) => {
-                let (code, reason) = match &e {
-                    WsError::Capacity(e) => (CloseCode::Size, format!("frame too large: {e}")),
-                    WsError::Protocol(e) => (CloseCode::Protocol, e.to_string()),
-                    WsError::Utf8(e) => (CloseCode::Invalid, e.clone()),
-                    // A compressed message that does not inflate.
-                    WsError::Io(e) if e.kind() == std::io::ErrorKind::InvalidData => {
-                        (CloseCode::Protocol, e.to_string())
-                    }
-                    _ => break,
-                };
-                let close = CloseFrame {
-                    code,
-                    reason: reason.into(),
-                };
-                let _ = session.replies.send(Reply::Close(Some(close))).await;
-                break;
-            }
+            other => match answer_control(&session, other).await {
+                Continue(()) => continue,
+                Break(()) => break,
+            },
         };
         // A publish may wait for room on a no-drop topic (`Session::wait_for_room`); a
         // shutdown must not wait for it. `biased`: the step nearly always finishes at once.
-        let step = async {
-            match req {
-                Ok(Incoming::Publish(p)) => session.handle_publish(p).await,
-                Ok(Incoming::Refused(id, msg)) => {
-                    session.status("error", msg, id.value().as_ref()).await;
-                    session.clock.waited();
-                }
-                // Other operations are rare and may wait (a reply queue, a call): the next
-                // message's arrival is read from the clock again.
-                Ok(Incoming::Other(req)) => {
-                    session.handle(req).await;
-                    session.clock.waited();
-                }
-                Err(e) => {
-                    session.parse_error(e).await;
-                    session.clock.waited();
-                }
-            }
-        };
         tokio::select! {
             biased;
-            _ = step => {}
+            _ = step(&mut session, req) => {}
             _ = &mut cancelled => break,
             silent = watch.gone() => {
                 gone = Some(silent);
@@ -269,6 +169,173 @@ pub async fn serve<K, S>(
         // subscribers' queues overflow).
         tokio::task::consume_budget().await;
     }
+    finish(session, watch, writer, gone, &shutdown, &router, addr).await;
+}
+
+/// Sets a session up: the client known to the router and its call tables (their
+/// messages for it come out of the `PeerReceiver`), the reply channel, the liveness watch,
+/// and the writer task (spawned here, with `sink`).
+fn open<K: PartsSink + Send + 'static>(
+    sink: K,
+    router: &Arc<Router>,
+    conn: Peer,
+    cfg: Arc<SessionConfig>,
+    auth: SessionAuth,
+) -> (Session, Watch, PeerReceiver, JoinHandle<()>) {
+    let (client, outbox) = router.connect(ClientKind::Rosbridge, conn.addr);
+    if sink.deflate().is_some() {
+        router.note_deflate(client);
+    }
+    let (peer, peer_rx) = ChannelPeer::new();
+    router.calls.attach(client, peer);
+    let (reply_tx, reply_rx) = mpsc::channel(REPLY_QUEUE);
+    let watch = Watch::new(cfg.liveness, conn.progress, reply_tx.clone());
+    let writer_gate = Arc::new(Mutex::new(auth.gate.as_ref().map(|g| g.fork())));
+    let level = Arc::new(std::sync::atomic::AtomicU8::new(DEFAULT_LEVEL));
+    let writer = tokio::spawn(write_loop(
+        sink,
+        outbox.clone(),
+        reply_rx,
+        router.clone(),
+        cfg.batch,
+        writer_gate.clone(),
+        level.clone(),
+    ));
+    let session = Session {
+        router: router.clone(),
+        client,
+        cfg,
+        published: HashMap::default(),
+        subs: HashMap::new(),
+        replies: reply_tx,
+        gate: auth.gate,
+        guard: auth.guard,
+        writer_gate,
+        calls: crate::calls::SessionCalls::default(),
+        level,
+        fragments: Fragments::default(),
+        clock: fleetlink_relay::StampClock::default(),
+        unflushed: Vec::new(),
+    };
+    (session, watch, peer_rx, writer)
+}
+
+/// The look around `serve` takes every `LOOK_AROUND` frames, without waiting: the
+/// shutdown, the counters, the client's liveness, and the call replies queued for it.
+/// `Break` ends the session, with how long the client showed no progress when that is
+/// why.
+///
+/// Frames are taken first while the client has some queued: a frame already read is
+/// taken without a select, since polling every branch for each of thousands of small
+/// operations in a read costs more than handling them. So that a flooding client still
+/// sees its call replies and a shutdown, both are looked at here.
+async fn look_around(
+    shutdown: &CancellationToken,
+    session: &mut Session,
+    watch: &mut Watch,
+    peer_rx: &PeerReceiver,
+) -> ControlFlow<Option<Duration>> {
+    if shutdown.is_cancelled() {
+        return Break(None);
+    }
+    session.flush_counts();
+    // A client sending without pause is read without waiting: it is alive, and its pings
+    // fall due here.
+    watch.read();
+    if let Some(silent) = watch.check() {
+        return Break(Some(silent));
+    }
+    while let Ok(Some(m)) = peer_rx.try_recv() {
+        if let Err(silent) = watch.race(session.on_peer(m)).await {
+            return Break(Some(silent));
+        }
+    }
+    Continue(())
+}
+
+/// An operation that needs more than the short path of a publish (`Incoming`), as one
+/// step of `serve`'s loop (which stops waiting for it on a shutdown).
+async fn step(session: &mut Session, req: Result<Incoming<'_>, ParseError>) {
+    match req {
+        Ok(Incoming::Publish(p)) => session.handle_publish(p).await,
+        Ok(Incoming::Refused(id, msg)) => {
+            session.status("error", msg, id.value().as_ref()).await;
+            session.clock.waited();
+        }
+        // Other operations are rare and may wait (a reply queue, a call): the next
+        // message's arrival is read from the clock again.
+        Ok(Incoming::Other(req)) => {
+            session.handle(req).await;
+            session.clock.waited();
+        }
+        Err(e) => {
+            session.parse_error(e).await;
+            session.clock.waited();
+        }
+    }
+}
+
+/// A close frame with `code` and `reason`, as the writer takes it.
+fn closing(code: CloseCode, reason: &str) -> Reply {
+    Reply::Close(Some(CloseFrame {
+        code,
+        reason: reason.into(),
+    }))
+}
+
+/// Answers a frame that is neither text nor binary, or a read that failed. `Break` ends
+/// the session.
+async fn answer_control(
+    session: &Session,
+    frame: Result<ClientMessage, WsError>,
+) -> ControlFlow<()> {
+    match frame {
+        Ok(ClientMessage::Ping(p)) => {
+            session.send(WsMessage::Pong(p)).await;
+            Continue(())
+        }
+        Ok(ClientMessage::Close(c)) => {
+            // The close handshake: the client's code echoed back.
+            let echo = c.map(|c| CloseFrame {
+                code: c.code,
+                reason: "".into(),
+            });
+            let _ = session.replies.send(Reply::Close(echo)).await;
+            Break(())
+        }
+        Ok(_) => Continue(()),
+        Err(e) => {
+            let (code, reason) = match &e {
+                WsError::Capacity(e) => (CloseCode::Size, format!("frame too large: {e}")),
+                WsError::Protocol(e) => (CloseCode::Protocol, e.to_string()),
+                WsError::Utf8(e) => (CloseCode::Invalid, e.clone()),
+                // A compressed message that does not inflate.
+                WsError::Io(e) if e.kind() == std::io::ErrorKind::InvalidData => {
+                    (CloseCode::Protocol, e.to_string())
+                }
+                _ => return Break(()),
+            };
+            let close = CloseFrame {
+                code,
+                reason: reason.into(),
+            };
+            let _ = session.replies.send(Reply::Close(Some(close))).await;
+            Break(())
+        }
+    }
+}
+
+/// The end of a session, once its loop stopped: a shutdown told to the client, what it
+/// held released, and its writer finished (`gone`: it showed no progress for that long).
+async fn finish(
+    mut session: Session,
+    watch: Watch,
+    writer: JoinHandle<()>,
+    gone: Option<Duration>,
+    shutdown: &CancellationToken,
+    router: &Router,
+    addr: Option<std::net::SocketAddr>,
+) {
     session.flush_counts();
     if shutdown.is_cancelled() {
         // Going away (RFC 6455, 7.4.1), after what is queued; a writer too backed up to
@@ -289,7 +356,7 @@ pub async fn serve<K, S>(
     }
     // What the client held goes now: its subscriptions (and the demand they made), its
     // advertisements, its calls and goals, their callers and providers told.
-    router.disconnect(client);
+    router.disconnect(session.client);
     drop(session);
     drop(watch);
     if gone.is_some() {

@@ -46,35 +46,9 @@ pub(super) async fn write_loop<K: PartsSink>(
         let wake_at = outbox.take_into(&mut items, batch, 8 << 20, now);
         let took = items.len();
         // Checked on delivery, so a rule change reaches live subscriptions.
-        {
-            let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
-            match g.as_mut() {
-                Some(g) => {
-                    // A batch mostly holds runs of one topic: ask once per run.
-                    let mut last = None;
-                    items.retain(|(_, _, m)| match last {
-                        Some((id, ok)) if id == m.topic.id => ok,
-                        _ => {
-                            let ok = g.allows_topic(
-                                m.topic.id.0,
-                                m.topic.name.as_str(),
-                                GateOp::Subscribe,
-                            );
-                            last = Some((m.topic.id, ok));
-                            ok
-                        }
-                    })
-                }
-                None => items.clear(),
-            }
-        }
+        keep_allowed(&gate, &mut items);
         for (slot, delivery, msg) in items.drain(..) {
-            let kind = match delivery.compression {
-                Compression::Cbor => FrameKind::RosbridgeCbor,
-                Compression::CborRaw => FrameKind::RosbridgeCborRaw,
-                Compression::Png => FrameKind::RosbridgePng,
-                Compression::None => FrameKind::RosbridgeJson,
-            };
+            let kind = frame_kind(delivery.compression);
             let fragment = delivery
                 .fragment_size
                 .map(|s| s as usize)
@@ -135,12 +109,10 @@ pub(super) async fn write_loop<K: PartsSink>(
                 Ok(f) => f,
                 Err(e) => {
                     outbox.record_drop(slot, DropReason::Encode);
-                    let wants = level.load(std::sync::atomic::Ordering::Relaxed) <= 1;
-                    if wants && warned.insert(msg.topic.name.clone(), ()).is_none() {
-                        let text = outbound::status("warning", &e.to_string(), None);
-                        if sink.feed(WsMessage::text(text)).await.is_err() {
-                            return;
-                        }
+                    if let Some(warning) = encode_warning(&level, &mut warned, &msg, &e)
+                        && sink.feed(warning).await.is_err()
+                    {
+                        return;
                     }
                     continue;
                 }
@@ -189,4 +161,54 @@ pub(super) async fn write_loop<K: PartsSink>(
             return;
         }
     }
+}
+
+/// Leaves in `items` the messages the client's gate lets it receive (none before it
+/// authenticates).
+fn keep_allowed(
+    gate: &Mutex<Option<Box<dyn Gate>>>,
+    items: &mut Vec<fleetlink_relay::outbox::Taken>,
+) {
+    let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
+    match g.as_mut() {
+        Some(g) => {
+            // A batch mostly holds runs of one topic: ask once per run.
+            let mut last = None;
+            items.retain(|(_, _, m)| match last {
+                Some((id, ok)) if id == m.topic.id => ok,
+                _ => {
+                    let ok = g.allows_topic(m.topic.id.0, m.topic.name.as_str(), GateOp::Subscribe);
+                    last = Some((m.topic.id, ok));
+                    ok
+                }
+            })
+        }
+        None => items.clear(),
+    }
+}
+
+/// The frame kind a subscription's `compression` asks for.
+fn frame_kind(compression: Compression) -> FrameKind {
+    match compression {
+        Compression::Cbor => FrameKind::RosbridgeCbor,
+        Compression::CborRaw => FrameKind::RosbridgeCborRaw,
+        Compression::Png => FrameKind::RosbridgePng,
+        Compression::None => FrameKind::RosbridgeJson,
+    }
+}
+
+/// The `status` warning for a message that could not be encoded for this client: once
+/// per topic, and only if the client's level asks for warnings.
+fn encode_warning(
+    level: &std::sync::atomic::AtomicU8,
+    warned: &mut HashMap<TopicName, ()>,
+    msg: &Message,
+    e: &impl std::fmt::Display,
+) -> Option<WsMessage> {
+    let wants = level.load(std::sync::atomic::Ordering::Relaxed) <= 1;
+    if wants && warned.insert(msg.topic.name.clone(), ()).is_none() {
+        let text = outbound::status("warning", &e.to_string(), None);
+        return Some(WsMessage::text(text));
+    }
+    None
 }
