@@ -116,12 +116,44 @@ fn locator_ip(locator: &str) -> IpAddr {
         .map_or(IpAddr::V6(Ipv6Addr::UNSPECIFIED), |a| a.ip())
 }
 
+/// How many refused hubs the book remembers (the latest): a Zenoh id is its session's own
+/// choice, so a peer reconnecting under fresh ids must not grow the book without end.
+const REFUSED_KEPT: usize = 1024;
+
 #[derive(Default)]
 struct Book {
     /// Admitted hubs by Zenoh id, with how many of their links are up.
     admitted: HashMap<String, (Admitted, usize)>,
-    /// Hubs refused, by Zenoh id, with why (logged once each).
-    refused: HashMap<String, String>,
+    /// Hubs refused, by Zenoh id, with why and when (the count of refusals before it);
+    /// logged once each while remembered. At most [`REFUSED_KEPT`].
+    refused: HashMap<String, (String, u64)>,
+    /// Refusals so far.
+    refusals: u64,
+}
+
+impl Book {
+    /// Remembers that hub `zid` was refused for `why`; true if it was not remembered
+    /// already. The earliest refusal is forgotten when the book is full.
+    fn refuse(&mut self, zid: &str, why: &str) -> bool {
+        if let Some((reason, _)) = self.refused.get_mut(zid) {
+            why.clone_into(reason);
+            return false;
+        }
+        if self.refused.len() >= REFUSED_KEPT {
+            let oldest = self
+                .refused
+                .iter()
+                .min_by_key(|(_, (_, at))| *at)
+                .map(|(z, _)| z.clone());
+            if let Some(z) = oldest {
+                self.refused.remove(&z);
+            }
+        }
+        self.refusals += 1;
+        self.refused
+            .insert(zid.to_owned(), (why.to_owned(), self.refusals));
+        true
+    }
 }
 
 /// Which hubs of the federation this hub admits, kept from Zenoh's link events.
@@ -162,16 +194,16 @@ impl Admission {
     /// Why hub `zid` was refused, if it was.
     pub fn refusal(&self, zid: &str) -> Option<String> {
         let book = self.book.lock().unwrap_or_else(|p| p.into_inner());
-        book.refused.get(zid).cloned()
+        book.refused.get(zid).map(|(why, _)| why.clone())
     }
 
-    /// Hubs refused so far: Zenoh id and reason.
+    /// Hubs refused (the latest [`REFUSED_KEPT`]): Zenoh id and reason.
     pub fn refused(&self) -> Vec<(String, String)> {
         let book = self.book.lock().unwrap_or_else(|p| p.into_inner());
         let mut v: Vec<_> = book
             .refused
             .iter()
-            .map(|(z, r)| (z.clone(), r.clone()))
+            .map(|(z, (r, _))| (z.clone(), r.clone()))
             .collect();
         v.sort();
         v
@@ -243,7 +275,7 @@ impl Admission {
                 Ok(admitted)
             }
             Err(why) => {
-                if book.refused.insert(zid.to_owned(), why.clone()).is_none() {
+                if book.refuse(zid, &why) {
                     tracing::warn!("federation: refused hub {zid} at {remote}: {why}");
                 }
                 Err(why)
@@ -288,6 +320,30 @@ mod tests {
             },
             me: HubCertName::parse("a@acme").unwrap(),
         }
+    }
+
+    #[test]
+    fn the_refused_book_keeps_the_latest_refusals_only() {
+        let adm = Admission::new(tls(), "acme");
+        // A stranger reconnecting under ever new Zenoh ids.
+        for i in 0..REFUSED_KEPT + 10 {
+            assert!(adm.link_up(&format!("z{i}"), None, "10.0.0.9:1").is_err());
+        }
+        let refused = adm.refused();
+        assert_eq!(refused.len(), REFUSED_KEPT);
+        // The first ten went, the latest stayed.
+        assert!(adm.refusal("z0").is_none() && adm.refusal("z9").is_none());
+        assert!(adm.refusal("z10").is_some());
+        assert!(adm.refusal(&format!("z{}", REFUSED_KEPT + 9)).is_some());
+        // Refused again: remembered once, with the latest reason, and not counted twice.
+        let again = adm
+            .link_up("z10", Some("x@globex"), "10.0.0.9:1")
+            .unwrap_err();
+        assert_eq!(adm.refusal("z10").as_deref(), Some(again.as_str()));
+        assert_eq!(adm.refused().len(), REFUSED_KEPT);
+        // An id admitted later leaves the book.
+        adm.link_up("z11", Some("eu1@acme"), "10.0.0.1:1").unwrap();
+        assert!(adm.refusal("z11").is_none());
     }
 
     #[test]
