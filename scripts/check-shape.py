@@ -23,9 +23,6 @@ FN_LINES = 150
 
 # What still breaks a rule, and why. Remove an entry when its cause is gone.
 KNOWN = {
-    # The rosbridge Session's call handling is methods of Session in calls/, and Session
-    # holds the call tables: one type split over files.
-    ("circle", "rosbridge", "calls session"),
     # Bridge owns every part's state (node info, parameters, actions, services) and each
     # part is methods of Bridge.
     ("circle", "ros2", "bridge node_info offered_actions params services"),

@@ -7,27 +7,26 @@
 //! the session makes (`call:<n>` / `goal:<n>`, unique on the session), so two callers
 //! using the same id never collide at the provider.
 //!
-//! Layout: this file holds what both sides share (the session's call tables, the
-//! answers' framing and conversion); `caller` the calls and goals this client makes,
+//! Layout: this file holds the session's call tables and the helpers both sides use;
+//! `shared` the session's methods both sides use (bodies completed against their types,
+//! answers framed and sent, the call table's messages dispatched); `caller` the calls
+//! and goals this client makes,
 //! `provider` the services and actions it offers and the answers it gives, and
 //! `robot_params` the parameter calls the hub forwards to robots' agents.
 
 mod caller;
 mod provider;
 mod robot_params;
+mod shared;
 
 use std::collections::{HashMap, HashSet};
 use std::time::Duration;
 
 use bytes::Bytes;
-use fleetlink_proto::rosbridge::outbound;
-use fleetlink_proto::{Encoding, Payload, Schema};
-use fleetlink_relay::calls::{CallId, CallStatus, PeerMsg};
+use fleetlink_proto::{Encoding, Payload};
+use fleetlink_relay::calls::{CallId, CallStatus};
 use fleetlink_relay::names::TopicName;
-use serde_json::{Value, json};
-use tokio_tungstenite::tungstenite::{Message as WsMessage, Utf8Bytes};
-
-use super::session::Session;
+use serde_json::Value;
 
 /// How a caller wants its answers.
 #[derive(Debug, Clone, Copy, Default)]
@@ -130,115 +129,6 @@ fn timeout_of(secs: Option<f64>) -> Option<Duration> {
 /// The part of a service or action type a payload is: `pkg/srv/T` + `_Request`.
 fn part(type_name: &str, suffix: &str) -> String {
     format!("{type_name}{suffix}")
-}
-
-impl Session {
-    /// A rosbridge body (JSON or CBOR) checked against the part of `name`'s type it is
-    /// and completed, as a publish is: missing fields take their defaults, a field the
-    /// type does not have is refused naming it. Unchanged when the service or its type is
-    /// not known here.
-    fn completed(&self, name: &TopicName, suffix: &str, body: Payload) -> Result<Payload, String> {
-        let Some(info) = self.router.calls.service(name) else {
-            return Ok(body);
-        };
-        if info.schema.type_name.is_empty() {
-            return Ok(body);
-        }
-        let tc = self.router.transcoder();
-        let type_name = part(&info.schema.type_name, suffix);
-        let schema = tc
-            .schema_for(&type_name)
-            .unwrap_or_else(|| Schema::named(&type_name));
-        match tc.normalize(&schema, &body) {
-            Ok(Some(done)) => Ok(done),
-            Ok(None) => Ok(body),
-            Err(e) => Err(e.cause_text()),
-        }
-    }
-
-    /// A payload as the bytes of a JSON (or CBOR) value for this client.
-    fn body_for(&self, p: &Payload, type_name: &str, cbor: bool) -> Result<Bytes, String> {
-        let to = if cbor { Encoding::Cbor } else { Encoding::Json };
-        if p.encoding == to {
-            return Ok(p.bytes.clone());
-        }
-        let tc = self.router.transcoder();
-        let schema = tc
-            .schema_for(type_name)
-            .unwrap_or_else(|| Schema::named(type_name));
-        tc.convert(&schema, p, to).map_err(|e| e.to_string())
-    }
-
-    /// Sends an operation whose `body_key` is `body` (JSON or CBOR bytes).
-    async fn send_op(&self, fields: Value, body_key: &str, body: &Bytes, how: Answering) {
-        if how.cbor {
-            let b = outbound::op_cbor(&fields, body_key, body);
-            return self.send(WsMessage::Binary(b)).await;
-        }
-        let text = outbound::op_json(&fields, body_key, body);
-        let Ok(text) = Utf8Bytes::try_from(text) else {
-            let msg = format!("{body_key}: the answer is not valid UTF-8 JSON");
-            return self.status("error", msg, fields.get("id")).await;
-        };
-        match how.fragment_size.map(|s| s as usize).filter(|s| *s > 0) {
-            Some(size) if text.len() > size => {
-                let fid = fields.get("id").map_or_else(|| "answer".to_owned(), id_key);
-                for piece in outbound::fragments(&fid, text.as_str(), size) {
-                    self.send(WsMessage::text(piece)).await;
-                }
-            }
-            _ => self.send(WsMessage::Text(text)).await,
-        }
-    }
-
-    /// A failed `call_service`, answered as rosbridge does: `result: false` and a text.
-    async fn service_failed(&self, service: &str, id: Option<&Value>, text: String, cbor: bool) {
-        let fields = json!({"op": "service_response", "service": service, "result": false});
-        self.refuse(fields, id, text, cbor).await;
-    }
-
-    async fn goal_failed(
-        &self,
-        action: &str,
-        id: Option<&Value>,
-        status: CallStatus,
-        text: String,
-        cbor: bool,
-    ) {
-        let fields = json!({"op": "action_result", "action": action,
-            "status": goal_status(status), "result": false});
-        self.refuse(fields, id, text, cbor).await;
-    }
-
-    /// Sends `fields` with the caller's `id` and `values` = `text`, as JSON or CBOR.
-    async fn refuse(&self, mut fields: Value, id: Option<&Value>, text: String, cbor: bool) {
-        if let Some(id) = id {
-            fields["id"] = id.clone();
-        }
-        fields["values"] = Value::String(text);
-        self.send_value(&fields, cbor).await;
-    }
-
-    /// One whole operation, as a CBOR binary frame or JSON text.
-    pub(super) async fn send_value(&self, v: &Value, cbor: bool) {
-        let mut buf = Vec::new();
-        let frame = if cbor && ciborium::into_writer(v, &mut buf).is_ok() {
-            WsMessage::Binary(Bytes::from(buf))
-        } else {
-            WsMessage::text(v.to_string())
-        };
-        self.send(frame).await;
-    }
-
-    /// Something the call table queued for this client.
-    pub(super) async fn on_peer(&mut self, m: PeerMsg) {
-        match m {
-            PeerMsg::Call(req) => self.serve_call(req).await,
-            PeerMsg::Cancel(call) => self.cancel_served(call).await,
-            PeerMsg::Event(ev) => self.call_event(ev).await,
-            PeerMsg::Changed(_) => {}
-        }
-    }
 }
 
 fn empty_map(cbor: bool) -> Bytes {
