@@ -17,7 +17,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use fleetlink_proto::Encoding;
-use fleetlink_relay::gate::{Gate, Op as GateOp};
+use fleetlink_relay::gate::{Gate, retain_allowed};
 use fleetlink_relay::outbox::Taken;
 use fleetlink_relay::websocket::deflate::stored_block;
 use fleetlink_relay::websocket::replies::{close_with, wait_for_work};
@@ -78,22 +78,7 @@ pub(crate) async fn write_loop<K: PartsSink>(
         }
         let wake_at = outbox.take_into(&mut items, batch, BATCH_BYTES, Instant::now());
         let took = items.len();
-        // Checked on delivery, so a rule change reaches live subscriptions.
-        match gate.as_mut() {
-            Some(g) => {
-                let mut last = None;
-                items.retain(|(_, _, m)| match last {
-                    Some((id, ok)) if id == m.topic.id => ok,
-                    _ => {
-                        let ok =
-                            g.allows_topic(m.topic.id.0, m.topic.name.as_str(), GateOp::Subscribe);
-                        last = Some((m.topic.id, ok));
-                        ok
-                    }
-                })
-            }
-            None => items.clear(),
-        }
+        retain_allowed(gate.as_deref_mut(), &mut items);
         {
             let d = deliveries.lock().unwrap_or_else(|p| p.into_inner());
             sends.extend(

@@ -28,6 +28,26 @@ pub enum Op {
     AdvertiseAction,
 }
 
+/// Leaves in `items` (a batch a writer took from its client's outbox) the messages `gate`
+/// lets the client receive; none without a gate (a client not yet authenticated). Asked
+/// at take time, so a rule change reaches live subscriptions; a batch mostly holds runs of
+/// one topic, so the gate is asked once per run.
+pub fn retain_allowed(gate: Option<&mut dyn Gate>, items: &mut Vec<crate::outbox::Taken>) {
+    let Some(g) = gate else {
+        items.clear();
+        return;
+    };
+    let mut last = None;
+    items.retain(|(_, _, m)| match last {
+        Some((id, ok)) if id == m.topic.id => ok,
+        _ => {
+            let ok = g.allows_topic(m.topic.id.0, m.topic.name.as_str(), Op::Subscribe);
+            last = Some((m.topic.id, ok));
+            ok
+        }
+    });
+}
+
 pub trait Gate: Send + Sync + 'static {
     /// May this connection do `op` on `name`? Refusals are recorded by the gate.
     fn allows(&mut self, name: &str, op: Op) -> bool;

@@ -95,9 +95,7 @@ impl Demand {
             .get(&topic)
             .is_some_and(|age| now.saturating_duration_since(msg.received()) > *age)
     }
-}
 
-impl Demand {
     /// See [`Outbox::set_latest_limit`].
     fn set_latest_limit(&mut self, bytes: usize) {
         self.latest_limit = bytes;

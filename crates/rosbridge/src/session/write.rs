@@ -2,6 +2,9 @@
 //! onto the socket, flushed once per burst. Apart because it shares nothing with the
 //! reader but the reply channel, its copy of the gate and the `status` level.
 
+use fleetlink_relay::gate::retain_allowed;
+use fleetlink_relay::outbox::Taken;
+
 use super::*;
 
 /// Messages taken in one go that mean a burst is being read (`write_loop`).
@@ -45,7 +48,6 @@ pub(super) async fn write_loop<K: PartsSink>(
         let now = Instant::now();
         let wake_at = outbox.take_into(&mut items, batch, 8 << 20, now);
         let took = items.len();
-        // Checked on delivery, so a rule change reaches live subscriptions.
         keep_allowed(&gate, &mut items);
         for (slot, delivery, msg) in items.drain(..) {
             let kind = frame_kind(delivery.compression);
@@ -163,28 +165,10 @@ pub(super) async fn write_loop<K: PartsSink>(
     }
 }
 
-/// Leaves in `items` the messages the client's gate lets it receive (none before it
-/// authenticates).
-fn keep_allowed(
-    gate: &Mutex<Option<Box<dyn Gate>>>,
-    items: &mut Vec<fleetlink_relay::outbox::Taken>,
-) {
+/// The client's gate applied to a batch at take time (see [`retain_allowed`]).
+fn keep_allowed(gate: &Mutex<Option<Box<dyn Gate>>>, items: &mut Vec<Taken>) {
     let mut g = gate.lock().unwrap_or_else(|p| p.into_inner());
-    match g.as_mut() {
-        Some(g) => {
-            // A batch mostly holds runs of one topic: ask once per run.
-            let mut last = None;
-            items.retain(|(_, _, m)| match last {
-                Some((id, ok)) if id == m.topic.id => ok,
-                _ => {
-                    let ok = g.allows_topic(m.topic.id.0, m.topic.name.as_str(), GateOp::Subscribe);
-                    last = Some((m.topic.id, ok));
-                    ok
-                }
-            })
-        }
-        None => items.clear(),
-    }
+    retain_allowed(g.as_deref_mut(), items);
 }
 
 /// The frame kind a subscription's `compression` asks for.
