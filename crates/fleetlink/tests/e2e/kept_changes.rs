@@ -24,9 +24,23 @@ async fn start_from(file: &Path) -> TestAgent {
 
 async fn view(hub: &TestHub, robot: &str) -> Value {
     let path = format!("/api/v1/robots/{robot}/config");
-    let (status, view) = http_json(hub.addr, "GET", &path, Some(&hub.operator_token), None).await;
-    assert_eq!(status, 200, "{view}");
-    view
+    // The robot reports its configuration after it connects: asked for at once, the
+    // view may not have it yet.
+    within(
+        &format!("{robot}'s effective configuration at the hub"),
+        async {
+            loop {
+                let (status, view) =
+                    http_json(hub.addr, "GET", &path, Some(&hub.operator_token), None).await;
+                assert_eq!(status, 200, "{view}");
+                if view["effective"].as_str().is_some_and(|t| !t.is_empty()) {
+                    return view;
+                }
+                tokio::time::sleep(Duration::from_millis(20)).await;
+            }
+        },
+    )
+    .await
 }
 
 /// The line of `view`'s effective configuration that contains `needle`.
